@@ -1,0 +1,52 @@
+/*
+ * silk/camera.h - viewing: lookAt, perspective or orthographic projection.
+ *
+ * OpenGL conventions: the camera looks down its -z axis, clip space is
+ * x,y,z in [-w, w], pixel (0,0) is the top-left pixel and is sampled at its
+ * centre (0.5, 0.5).  Matrices are row-major Q16.16 and act on column vectors.
+ */
+#ifndef SILK_CAMERA_H
+#define SILK_CAMERA_H
+
+#include "fixed.h"
+#include "error.h"
+
+typedef struct silk_mat4 { silk_fx m[4][4]; } silk_mat4;
+
+typedef struct silk_camera {
+    silk_vec3 eye, target, up;
+    int ortho;                 /* 0: perspective, 1: orthographic */
+    silk_fx fov_deg;           /* vertical field of view (perspective), (0, 180) */
+    silk_fx ortho_half_height; /* half the view height in world units (orthographic) */
+    silk_fx znear, zfar;       /* distances along the view axis, 0 < znear < zfar */
+    int width, height;         /* viewport in pixels */
+} silk_camera;
+
+/* What the per-frame stages need, derived once per frame. */
+typedef struct silk_view {
+    silk_camera cam;
+    silk_mat4 view;            /* world -> eye */
+    silk_mat4 proj;            /* eye -> clip */
+    silk_mat4 viewproj;        /* world -> clip */
+    silk_vec3 forward;         /* unit view direction (eye -> target) */
+    silk_vec3 right, upv;      /* unit camera axes in world space */
+    silk_fx pixels_per_unit;   /* screen pixels per world unit at distance 1 (persp) or anywhere (ortho) */
+} silk_view;
+
+silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err);
+
+/* Transform a point (w = 1) to clip space. */
+silk_vec4 silk_mat4_apply_point(const silk_mat4 *m, silk_vec3 p);
+silk_vec3 silk_mat4_apply_dir(const silk_mat4 *m, silk_vec3 d);   /* w = 0, upper 3x3 */
+silk_mat4 silk_mat4_mul(const silk_mat4 *a, const silk_mat4 *b);
+silk_mat4 silk_mat4_identity(void);
+
+/* Project a world point to pixel coordinates (x right, y down, Q16.16) and
+ * return 1, or return 0 when it lies behind the near plane. */
+int silk_view_project(const silk_view *v, silk_vec3 p, silk_vec2 *px);
+
+/* Direction used for visibility: for perspective E - P (towards the eye), for
+ * orthographic -forward (constant).  Not normalised. */
+silk_vec3 silk_view_to_eye(const silk_view *v, silk_vec3 p);
+
+#endif

@@ -1,0 +1,167 @@
+/*
+ * silk/fixed.h - the fixed-point scalar and vector types every stage uses.
+ *
+ * silk_fx is Q16.16 in an int32_t, the same layout as OpenGL ES's GLfixed:
+ * range [-32768, 32768), resolution 1/65536 (about 1.5e-5).  Products and
+ * quotients go through 64-bit intermediates, round to nearest and saturate
+ * to +-SILK_FX_MAX instead of wrapping, so an overflow shows up as a clamped
+ * value, never as a sign flip.  docs/fixed-point.md lists each function's
+ * range and its measured worst error.
+ */
+#ifndef SILK_FIXED_H
+#define SILK_FIXED_H
+
+#include <stdint.h>
+
+typedef int32_t silk_fx;                   /* Q16.16 */
+
+#define SILK_FX_SHIFT 16
+#define SILK_FX_ONE   ((silk_fx)65536)
+#define SILK_FX_HALF  ((silk_fx)32768)
+#define SILK_FX_MAX   ((silk_fx)INT32_MAX)
+#define SILK_FX_MIN   ((silk_fx)-INT32_MAX)  /* symmetric, so negation never overflows */
+#define SILK_FX_PI    ((silk_fx)205887)      /* pi in Q16.16 */
+
+/* Compile-time constants from integer ratios: SILK_FX_C(3, 2) is 1.5. */
+#define SILK_FX_C(num, den) ((silk_fx)(((int64_t)(num) * 65536) / (den)))
+
+typedef struct silk_vec2 { silk_fx x, y; } silk_vec2;
+typedef struct silk_vec3 { silk_fx x, y, z; } silk_vec3;
+typedef struct silk_vec4 { silk_fx x, y, z, w; } silk_vec4;
+
+/* ---- scalar helpers (inline: they sit in every inner loop) ---------------- */
+
+/* Clamp a 64-bit intermediate into the silk_fx range. */
+static inline silk_fx silk_fx_sat(int64_t v)
+{
+    if (v > SILK_FX_MAX) return SILK_FX_MAX;
+    if (v < SILK_FX_MIN) return SILK_FX_MIN;
+    return (silk_fx)v;
+}
+
+static inline silk_fx silk_fx_from_int(int32_t i) { return silk_fx_sat((int64_t)i * 65536); }
+
+/* Round to nearest integer (halves away from zero). */
+static inline int32_t silk_fx_round(silk_fx a)
+{
+    return a >= 0 ? (int32_t)(((int64_t)a + 32768) >> 16) : -(int32_t)(((int64_t)-a + 32768) >> 16);
+}
+
+static inline int32_t silk_fx_floor(silk_fx a) { return (int32_t)(a >> 16); }
+
+/* Shift a 64-bit value right by s with rounding to nearest (halves away from
+ * zero), symmetric for negative values so that -f(x) == f(-x). */
+static inline int64_t silk_shr_round64(int64_t v, int s)
+{
+    int64_t half = (int64_t)1 << (s - 1);
+    return v >= 0 ? (v + half) >> s : -((-v + half) >> s);
+}
+
+static inline silk_fx silk_fx_add(silk_fx a, silk_fx b) { return silk_fx_sat((int64_t)a + b); }
+static inline silk_fx silk_fx_sub(silk_fx a, silk_fx b) { return silk_fx_sat((int64_t)a - b); }
+
+/* a*b, rounded to nearest, saturated.  Error <= 0.5 ulp. */
+static inline silk_fx silk_fx_mul(silk_fx a, silk_fx b)
+{
+    return silk_fx_sat(silk_shr_round64((int64_t)a * b, 16));
+}
+
+/* a/b, rounded to nearest, saturated; b == 0 gives +-SILK_FX_MAX (0/0 gives 0). */
+silk_fx silk_fx_div(silk_fx a, silk_fx b);
+
+/* (a*b)/c with a 64-bit product, rounded, saturated: the one way to scale a
+ * value by a ratio without losing the product's low bits. */
+silk_fx silk_fx_muldiv(silk_fx a, silk_fx b, silk_fx c);
+
+static inline silk_fx silk_fx_abs(silk_fx a) { return a < 0 ? -a : a; }
+static inline silk_fx silk_fx_min(silk_fx a, silk_fx b) { return a < b ? a : b; }
+static inline silk_fx silk_fx_max(silk_fx a, silk_fx b) { return a > b ? a : b; }
+static inline silk_fx silk_fx_clamp(silk_fx a, silk_fx lo, silk_fx hi)
+{
+    return a < lo ? lo : (a > hi ? hi : a);
+}
+
+silk_fx silk_fx_recip(silk_fx a);          /* 1/a, saturated */
+silk_fx silk_fx_sqrt(silk_fx a);           /* a >= 0; negative input gives 0 */
+silk_fx silk_fx_rsqrt(silk_fx a);          /* 1/sqrt(a), a > 0; a <= 0 gives SILK_FX_MAX */
+
+/* Integer square roots, exact floor. */
+uint32_t silk_isqrt32(uint32_t v);
+uint32_t silk_isqrt64(uint64_t v);
+
+/* Trigonometry.  Angles in degrees (Q16.16) for the camera API, radians for
+ * geometry.  Results in [-1, 1] as Q16.16. */
+void silk_fx_sincos_deg(silk_fx deg, silk_fx *s, silk_fx *c);
+void silk_fx_sincos(silk_fx rad, silk_fx *s, silk_fx *c);
+silk_fx silk_fx_atan2(silk_fx y, silk_fx x);   /* radians in [-pi, pi] */
+silk_fx silk_fx_acos(silk_fx x);               /* x clamped to [-1,1]; radians in [0, pi] */
+
+/* Parse decimal text ("-12.5", "3e-2", ".5", "1E+03") into Q16.16, rounded to
+ * nearest.  Returns 0 on success and sets *end past the number; returns -1 for
+ * text that is not a number (including "nan", "inf") and -2 for a number
+ * outside the silk_fx range.  No floating point is involved. */
+int silk_fx_parse(const char *s, const char **end, silk_fx *out);
+
+/* A decimal number m * 10^e with at most 18 significant digits in m: the
+ * exact form of numbers read from text, so that scaling by a user factor
+ * ("--scale 0.001") happens before rounding to Q16.16, not after. */
+typedef struct silk_decimal { int64_t mant; int32_t exp10; } silk_decimal;
+
+/* Same syntax and return values as silk_fx_parse (-2 only for exponents
+ * beyond +-400). */
+int silk_decimal_parse(const char *s, const char **end, silk_decimal *out);
+silk_decimal silk_decimal_mul(silk_decimal a, silk_decimal b);   /* keeps 18 digits */
+/* Round to Q16.16; returns 0, or -2 when |d| does not fit silk_fx. */
+int silk_decimal_to_fx(silk_decimal d, silk_fx *out);
+
+/* Format into buf (at least 16 bytes) with up to 5 decimals; returns buf. */
+char *silk_fx_format(silk_fx v, char *buf);
+
+/* ---- vectors --------------------------------------------------------------- */
+
+static inline silk_vec3 silk_v3(silk_fx x, silk_fx y, silk_fx z)
+{
+    silk_vec3 r = { x, y, z };
+    return r;
+}
+static inline silk_vec3 silk_v3_add(silk_vec3 a, silk_vec3 b)
+{
+    return silk_v3(silk_fx_add(a.x, b.x), silk_fx_add(a.y, b.y), silk_fx_add(a.z, b.z));
+}
+static inline silk_vec3 silk_v3_sub(silk_vec3 a, silk_vec3 b)
+{
+    return silk_v3(silk_fx_sub(a.x, b.x), silk_fx_sub(a.y, b.y), silk_fx_sub(a.z, b.z));
+}
+static inline silk_vec3 silk_v3_scale(silk_vec3 a, silk_fx s)
+{
+    return silk_v3(silk_fx_mul(a.x, s), silk_fx_mul(a.y, s), silk_fx_mul(a.z, s));
+}
+static inline silk_vec3 silk_v3_neg(silk_vec3 a) { return silk_v3(-a.x, -a.y, -a.z); }
+
+/* Dot product as a Q32.32 int64: exact, no rounding, cannot overflow for any
+ * silk_fx inputs.  Use it whenever only the sign or a ratio is needed. */
+static inline int64_t silk_v3_dot64(silk_vec3 a, silk_vec3 b)
+{
+    return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+}
+/* Dot product in Q16.16, rounded, saturated. */
+static inline silk_fx silk_v3_dot(silk_vec3 a, silk_vec3 b)
+{
+    return silk_fx_sat(silk_shr_round64(silk_v3_dot64(a, b), 16));
+}
+static inline int silk_v3_sign_dot(silk_vec3 a, silk_vec3 b)
+{
+    int64_t d = silk_v3_dot64(a, b);
+    return (d > 0) - (d < 0);
+}
+
+silk_vec3 silk_v3_cross(silk_vec3 a, silk_vec3 b);     /* rounded, saturated */
+silk_fx   silk_v3_length(silk_vec3 a);                 /* exact-rounded, saturated */
+/* Unit vector in a's direction, accurate for any nonzero a (including
+ * components of 1 ulp): it rescales before taking the length.  The zero
+ * vector gives the zero vector; returns 0 then, 1 otherwise. */
+int       silk_v3_normalize(silk_vec3 a, silk_vec3 *out);
+/* a + (b-a)*t */
+silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t);
+
+#endif

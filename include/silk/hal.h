@@ -1,0 +1,100 @@
+/*
+ * silk/hal.h - the hardware-abstraction layer: a vertex stage and a fragment
+ * stage behind function pointers, as on a GPU.
+ *
+ * The per-frame silhouette work does not emit finished positions.  It emits
+ * compact vertex records (paper Fig. 16): "corner k of triangle t", "point t
+ * on curve c", or "vertex v moved by offset o".  The vertex stage evaluates a
+ * record into a position, normal and texture coordinate and transforms it to
+ * clip space; the fragment stage shades.  A device with a real GPU can take
+ * over both stages without touching the rest of silk.
+ */
+#ifndef SILK_HAL_H
+#define SILK_HAL_H
+
+#include <stdint.h>
+#include "fixed.h"
+#include "mesh.h"
+#include "camera.h"
+#include "raster.h"
+
+/* A cubic Hermite curve (paper eq. 5) with normals and texture coordinates
+ * interpolated linearly along it (eq. 6). */
+typedef struct silk_curve {
+    silk_vec3 p0, p1;        /* end points */
+    silk_vec3 t0, t1;        /* end tangents */
+    silk_vec3 n0, n1;        /* unit normals at the ends */
+    silk_vec2 uv0, uv1;
+} silk_curve;
+
+typedef enum silk_vrec_kind {
+    SILK_VREC_CORNER = 0,    /* a: triangle*3 + corner of the mesh */
+    SILK_VREC_CURVE = 1,     /* a: curve index, t: parameter in [0,1] */
+    SILK_VREC_MOVED = 2      /* a: triangle*3 + corner, b: offset index */
+} silk_vrec_kind;
+
+typedef struct silk_vrec {
+    uint32_t kind;           /* silk_vrec_kind */
+    uint32_t a, b;
+    silk_fx t;
+} silk_vrec;
+
+/* What records refer to in one frame. */
+typedef struct silk_geom {
+    const silk_mesh *mesh;
+    const silk_curve *curves;
+    const silk_vec3 *offsets;
+} silk_geom;
+
+typedef struct silk_vertex_attr {
+    silk_vec3 pos, normal;
+    silk_vec2 uv;
+} silk_vertex_attr;
+
+/* Evaluate a record: Hermite position, linearly interpolated (then
+ * normalised) normal and uv.  Stages call this; it is the only place that
+ * knows the record layout. */
+void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *out);
+/* Point of a Hermite curve at t (eq. 5). */
+silk_vec3 silk_hermite_point(const silk_curve *c, silk_fx t);
+
+typedef struct silk_hal {
+    void (*vertex)(const struct silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
+    /* var: the interpolated varyings; returns 0xRRGGBB */
+    uint32_t (*fragment)(const struct silk_hal *h, const silk_fx *var);
+    int nvaryings;
+    const void *uniforms;
+} silk_hal;
+
+/* ---- the default stages: Phong ---------------------------------------------- */
+
+#define SILK_MAX_LIGHTS 4
+
+typedef enum silk_light_kind { SILK_LIGHT_DIRECTIONAL = 0, SILK_LIGHT_POINT = 1 } silk_light_kind;
+
+typedef struct silk_light {
+    silk_light_kind kind;
+    silk_vec3 vec;           /* directional: unit direction towards the light; point: position */
+    silk_vec3 color;         /* linear RGB, 1.0 = full */
+} silk_light;
+
+typedef struct silk_material {
+    silk_vec3 color;         /* base colour, components in [0,1] */
+    silk_fx ambient, diffuse, specular;
+    int shininess;           /* Phong exponent, 1..256 */
+    silk_vec3 specular_color;
+} silk_material;
+
+typedef struct silk_phong {
+    const silk_view *view;
+    silk_light lights[SILK_MAX_LIGHTS];
+    int nlights;
+    silk_material mat;
+    int two_sided;           /* light back faces with the flipped normal */
+} silk_phong;
+
+/* varyings: world position (3), normal (3), uv (2) */
+void silk_phong_default(silk_phong *p, const silk_view *view); /* a key light and a fill light */
+void silk_hal_phong(silk_hal *h, const silk_phong *p);
+
+#endif

@@ -1,0 +1,135 @@
+/*
+ * silk/mesh.h - the compact indexed mesh every stage reads.
+ *
+ * Loading is two passes over a byte buffer the caller already holds (the
+ * core does no file I/O): the first counts, the second fills arrays of
+ * exactly that size from the arena.  silk_mesh_build() then derives the edge
+ * adjacency, the shading normals (angle-weighted, split at feature edges) and
+ * the feature flags.  All arrays are plain indices, no pointers between
+ * elements, so a packed mesh can live in flash unchanged.
+ */
+#ifndef SILK_MESH_H
+#define SILK_MESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "fixed.h"
+#include "arena.h"
+#include "error.h"
+
+#ifndef SILK_INDEX_T
+#define SILK_INDEX_T uint32_t
+#endif
+typedef SILK_INDEX_T silk_index;
+#define SILK_NO_INDEX ((silk_index)~(silk_index)0)
+
+/* Model coordinates (after --scale) must satisfy |c| <= SILK_COORD_MAX, and
+ * the bounding-box diagonal must be at least SILK_SIZE_MIN, so that every
+ * later product fits Q16.16 and the model keeps enough resolution. */
+#define SILK_COORD_MAX  SILK_FX_C(1024, 1)
+#define SILK_SIZE_MIN   SILK_FX_C(1, 16)
+
+enum silk_edge_flag {
+    SILK_EDGE_BOUNDARY    = 1u << 0,  /* one incident triangle */
+    SILK_EDGE_NONMANIFOLD = 1u << 1,  /* three or more incident triangles */
+    SILK_EDGE_CREASE      = 1u << 2,  /* dihedral angle above the crease threshold */
+    SILK_EDGE_GROUPS      = 1u << 3,  /* separates two OBJ smoothing groups */
+    SILK_EDGE_DEGENERATE  = 1u << 4,  /* zero length, or next to a zero-area triangle */
+    /* any of the first four makes the edge a feature edge */
+    SILK_EDGE_FEATURE = SILK_EDGE_BOUNDARY | SILK_EDGE_NONMANIFOLD | SILK_EDGE_CREASE | SILK_EDGE_GROUPS
+};
+
+typedef struct silk_edge {
+    silk_index v[2];          /* v[0] < v[1] */
+    silk_index t[2];          /* incident triangles; t[1] == SILK_NO_INDEX on a boundary.
+                                 On a non-manifold edge the first two found. */
+    uint32_t flags;           /* enum silk_edge_flag */
+} silk_edge;
+
+/* A feature segment (paper III-A): the Hermite tangents of one feature edge,
+ * computed once at load.  The curve runs from edge.v[0] to edge.v[1]; its
+ * end points are the vertex positions, so only the tangents are stored. */
+typedef struct silk_feature_seg {
+    silk_vec3 t0, t1;
+} silk_feature_seg;
+
+struct silk_vis;   /* Gaussian-sphere hierarchy, silk/visibility.h */
+
+typedef struct silk_mesh {
+    uint32_t nverts, ntris, nnormals, nuvs, nedges;
+    uint32_t nfeature_edges, nboundary_edges, nnonmanifold_edges, ndegenerate_tris;
+
+    silk_vec3  *pos;          /* nverts, model units */
+    silk_vec3  *normal;       /* nnormals unit shading normals: one per smooth group of each vertex */
+    silk_index *normal_vertex;/* nnormals: the vertex each normal belongs to */
+    silk_vec2  *uv;           /* nuvs, or NULL */
+
+    silk_index *tri;          /* 3*ntris vertex indices, counter-clockwise seen from outside */
+    silk_index *tri_normal;   /* 3*ntris: index into normal[] for each corner */
+    silk_index *tri_uv;       /* 3*ntris indices into uv[], or NULL */
+    silk_index *tri_edge;     /* 3*ntris: edge k joins corners k and (k+1)%3 */
+    silk_edge  *edge;         /* nedges */
+
+    /* vertex -> incident edges, CSR: edges of vertex v are
+     * vert_edge[vert_edge_start[v] .. vert_edge_start[v+1]-1] */
+    uint32_t   *vert_edge_start;   /* nverts + 1 */
+    silk_index *vert_edge;
+
+    /* feature segments, one per feature edge (purpose FEATURES) */
+    silk_index *edge_feature;      /* nedges: index into feature[], or SILK_NO_INDEX */
+    silk_feature_seg *feature;     /* nfeature_edges */
+
+    const struct silk_vis *vis;    /* visibility hierarchy, or NULL (built on request) */
+
+    silk_vec3 bbox_min, bbox_max;
+} silk_mesh;
+
+typedef enum silk_normals_source {
+    SILK_NORMALS_COMPUTE = 0, /* angle-weighted, split at feature edges (paper III-B) */
+    SILK_NORMALS_FILE         /* the file's vn / nx ny nz, where every corner has one */
+} silk_normals_source;
+
+typedef struct silk_load_opts {
+    silk_decimal scale;       /* coordinates are multiplied by this before rounding; {1,0} = none */
+    silk_fx crease_deg;       /* dihedral angle (degrees) above which an edge is a feature */
+    silk_normals_source normals;
+} silk_load_opts;
+
+/* Documented default crease angle; see docs/formats.md for how it was chosen. */
+extern const silk_fx SILK_DEFAULT_CREASE_DEG;
+void silk_load_opts_default(silk_load_opts *o);
+
+/* Parse OBJ / PLY from memory.  name is used only in error messages.  The
+ * result's arrays live in the arena (purposes MESH and ADJACENCY). */
+silk_status silk_load_obj(const void *data, size_t len, const char *name,
+                          const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
+silk_status silk_load_ply(const void *data, size_t len, const char *name,
+                          const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
+/* Picks the format from the content ("ply\n" magic) and falls back to OBJ. */
+silk_status silk_load_mesh(const void *data, size_t len, const char *name,
+                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
+
+/* The loaders' common back end: given pos/tri (and optional uv/tri_uv,
+ * file normals, smoothing group per triangle) already in the arena, derive
+ * edges, vertex->edge links, shading normals and feature flags. */
+typedef struct silk_mesh_input {
+    uint32_t nverts, ntris, nuvs, nfile_normals;
+    silk_vec3 *pos;
+    silk_index *tri;
+    silk_vec2 *uv;            silk_index *tri_uv;          /* may be NULL */
+    silk_vec3 *file_normal;   silk_index *tri_file_normal; /* may be NULL */
+    uint32_t *tri_group;      /* OBJ smoothing group per triangle (0 = off), or NULL */
+} silk_mesh_input;
+
+silk_status silk_mesh_build(const silk_mesh_input *in, const char *name, const silk_load_opts *opts,
+                            silk_arena *a, silk_mesh *out, silk_error *err);
+
+/* Unit face normal of triangle t (zero vector for a degenerate triangle).
+ * Computed in 64 bits, so tiny triangles keep their direction. */
+silk_vec3 silk_mesh_face_normal(const silk_mesh *m, uint32_t t);
+
+/* Bytes of the arena each part of the mesh takes (for `silk info`). */
+typedef struct silk_mesh_bytes { size_t positions, normals, uvs, triangles, edges, vertex_edges, total; } silk_mesh_bytes;
+void silk_mesh_bytes_used(const silk_mesh *m, silk_mesh_bytes *b);
+
+#endif

@@ -1,0 +1,20 @@
+/*
+ * silk - smooth silhouettes for coarse meshes, in fixed point, in software.
+ * One include for the whole public API.
+ */
+#ifndef SILK_H
+#define SILK_H
+
+#define SILK_VERSION "0.1.0"
+
+#include "fixed.h"
+#include "arena.h"
+#include "error.h"
+#include "mesh.h"
+#include "camera.h"
+#include "raster.h"
+#include "hal.h"
+#include "visibility.h"
+#include "render.h"
+
+#endif

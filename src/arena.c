@@ -1,0 +1,119 @@
+/*
+ * arena.c - the double-ended arena (see silk/arena.h).
+ *
+ * Persistent data grows up from the bottom, per-frame scratch grows down from
+ * the top.  Nothing is freed individually: a frame releases its scratch by
+ * returning the top to a mark, which also restores the per-purpose counts,
+ * so the report after a frame still adds up.
+ */
+#include <string.h>
+#include "silk/arena.h"
+
+static size_t align_up(size_t n)
+{
+    return (n + (SILK_ARENA_ALIGN - 1)) & ~(size_t)(SILK_ARENA_ALIGN - 1);
+}
+
+void silk_arena_init(silk_arena *a, void *buf, size_t size)
+{
+    memset(a, 0, sizeof *a);
+    /* Start on an aligned address so every block is aligned. */
+    uintptr_t p = (uintptr_t)buf;
+    size_t skip = (size_t)((SILK_ARENA_ALIGN - (p % SILK_ARENA_ALIGN)) % SILK_ARENA_ALIGN);
+    if (buf == NULL || size < skip) {
+        a->base = NULL;
+        a->size = 0;
+        return;
+    }
+    a->base = (uint8_t *)buf + skip;
+    a->size = (size - skip) & ~(size_t)(SILK_ARENA_ALIGN - 1);
+}
+
+static void account(silk_arena *a, size_t n, silk_purpose p)
+{
+    a->used[p] += n;
+    if (a->used[p] > a->peak_used[p]) a->peak_used[p] = a->used[p];
+    if (a->bottom + a->top > a->peak) a->peak = a->bottom + a->top;
+}
+
+/* Every allocation gets at least one aligned unit, so a zero-size request
+ * still returns a distinct, valid pointer. */
+static int reserve(silk_arena *a, size_t n, size_t *out)
+{
+    if (n > a->size) { a->failed_request = n; return 0; }
+    size_t m = align_up(n ? n : 1);
+    if (m > a->size - a->bottom - a->top) { a->failed_request = n; return 0; }
+    *out = m;
+    return 1;
+}
+
+void *silk_arena_alloc(silk_arena *a, size_t n, silk_purpose p)
+{
+    size_t m;
+    if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, &m)) return NULL;
+    uint8_t *r = a->base + a->bottom;
+    a->bottom += m;
+    account(a, m, p);
+    memset(r, 0, m);
+    return r;
+}
+
+void *silk_arena_alloc_top(silk_arena *a, size_t n, silk_purpose p)
+{
+    size_t m;
+    if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, &m)) return NULL;
+    a->top += m;
+    uint8_t *r = a->base + a->size - a->top;
+    account(a, m, p);
+    memset(r, 0, m);
+    return r;
+}
+
+static int mul_ok(size_t count, size_t size, size_t *out)
+{
+    if (size && count > (size_t)-1 / size) return 0;
+    *out = count * size;
+    return 1;
+}
+
+void *silk_arena_array(silk_arena *a, size_t count, size_t size, silk_purpose p)
+{
+    size_t n;
+    if (!mul_ok(count, size, &n)) { a->failed_request = (size_t)-1; return NULL; }
+    return silk_arena_alloc(a, n, p);
+}
+
+void *silk_arena_array_top(silk_arena *a, size_t count, size_t size, silk_purpose p)
+{
+    size_t n;
+    if (!mul_ok(count, size, &n)) { a->failed_request = (size_t)-1; return NULL; }
+    return silk_arena_alloc_top(a, n, p);
+}
+
+silk_arena_mark silk_arena_top_mark(const silk_arena *a)
+{
+    silk_arena_mark m;
+    m.top = a->top;
+    memcpy(m.used, a->used, sizeof m.used);
+    return m;
+}
+
+void silk_arena_top_release(silk_arena *a, const silk_arena_mark *m)
+{
+    if (m->top > a->top) return;  /* a stale mark: releasing would grow the top */
+    a->top = m->top;
+    memcpy(a->used, m->used, sizeof a->used);
+}
+
+size_t silk_arena_free_bytes(const silk_arena *a)
+{
+    return a->size - a->bottom - a->top;
+}
+
+const char *silk_purpose_name(silk_purpose p)
+{
+    static const char *const names[SILK_MEM_COUNT] = {
+        "mesh", "adjacency", "features", "visibility", "raster", "frame", "load"
+    };
+    return (unsigned)p < SILK_MEM_COUNT ? names[p] : "?";
+}

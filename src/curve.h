@@ -1,0 +1,39 @@
+/*
+ * curve.h - internal: the curve constructions of paper section III, as pure
+ * functions of fixed-point vectors (implemented in curve.c).  Everything the
+ * per-frame stages and the load-time feature stage build is a silk_curve
+ * (silk/hal.h): a cubic Hermite curve, eq. 5.
+ */
+#ifndef SILK_CURVE_H
+#define SILK_CURVE_H
+
+#include "silk/silk.h"
+
+/* Eq. 4: dir scaled to length 2|chord| / (1 + cos theta), theta the angle
+ * between dir and chord, so that the Hermite curve over chord with this end
+ * tangent approximates a circular arc.  dir need not be unit.  A zero dir,
+ * a zero chord or 1+cos theta near 0 are handled (see curve.c); never
+ * overflows. */
+silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
+
+/* Eqs. 2-5: the silhouette bridge over p0->p1 with unit normals n0, n1:
+ * tangent directions are the chord projected onto each end's tangent plane
+ * (eqs. 2, 3), lengths from eq. 4.  Fills p0, p1, t0, t1, n0, n1 of out;
+ * uv0/uv1 are left as they are. */
+void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_curve *out);
+
+/* Eqs. 6-7: the parameter u in [0,1] where the linearly interpolated normal
+ * (1-u)n0 + u n1 is perpendicular to the linearly interpolated view
+ * direction (1-u)d0 + u d1.  Parallel projection passes d0 == d1.  When the
+ * signs of n0.d0 and n1.d1 differ, the result is the unique root in [0,1]
+ * (quadratic solved without cancellation); otherwise the end with the
+ * smaller |n.d| is returned. */
+silk_fx silk_silhouette_param(silk_vec3 n0, silk_vec3 d0, silk_vec3 n1, silk_vec3 d1);
+
+/* Eq. 8: n_s = ceil( sqrt(h * r / e) / 2 ), r = sqrt((1 - cos_alpha)/2),
+ * h the projected height in pixels, e the tolerance in pixels.  At least 1,
+ * capped at SILK_MAX_SAMPLES. */
+#define SILK_MAX_SAMPLES 64
+uint32_t silk_sample_count(silk_fx h_px, silk_fx cos_alpha, silk_fx tol_px);
+
+#endif

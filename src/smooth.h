@@ -1,0 +1,35 @@
+/*
+ * smooth.h - internal: what the per-frame silhouette stages hand to the
+ * renderer.  Not installed; the public entry point is silk_render().
+ *
+ * A frame's geometry is a list of vertex records (silk/hal.h) and triangles
+ * over them.  In FLAT mode every triangle corner is a CORNER record; in SMOOTH
+ * mode silhouette triangles and triangles with visible feature segments are
+ * replaced by triangles through CURVE samples, and vertices next to concave
+ * silhouette segments become MOVED records.
+ */
+#ifndef SILK_SMOOTH_H
+#define SILK_SMOOTH_H
+
+#include "silk/silk.h"
+
+typedef struct silk_frame_geom {
+    silk_vrec  *vrec;  uint32_t nvrec;
+    uint32_t   *tri;   uint32_t ntri;    /* 3 per triangle, indices into vrec */
+    uint8_t    *tri_added;               /* per triangle: 1 if made by re-meshing (drawn red by --wire) */
+    silk_curve *curve; uint32_t ncurve;
+    silk_vec3  *offset; uint32_t noffset;
+} silk_frame_geom;
+
+/* The coarse mesh as it is: one CORNER record per triangle corner. */
+silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err);
+
+/* Paper section III for one view.  All arrays come from the top of the arena
+ * (purpose FRAME); the caller releases them.  When the arena runs out part way,
+ * the triangles not yet re-meshed are emitted as they are, stats->fell_back is
+ * set and SILK_OK is returned. */
+silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view *v,
+                              silk_fx tolerance_px, silk_vis_method vis,
+                              silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
+
+#endif

@@ -1,0 +1,72 @@
+/*
+ * check.h - the test harness: every tests/test_*.c is its own program.
+ *
+ *   TEST(name) { CHECK(x == 1); CHECKF(err < 2, "err %g", err); }
+ *   int main(void) { RUN(name); return check_done(); }
+ *
+ * A test passes when none of its checks fail.  check_done() prints
+ * "N passed, N failed" for this program; tests/run.sh adds them up.
+ */
+#ifndef SILK_CHECK_H
+#define SILK_CHECK_H
+
+#include <stdio.h>
+#include <stdlib.h>
+
+static int check_tests_passed, check_tests_failed, check_cur_failed;
+static const char *check_cur_name = "";
+
+#define TEST(name) static void name(void)
+
+#define CHECKF(cond, ...)                                                          \
+    do {                                                                           \
+        if (!(cond)) {                                                             \
+            check_cur_failed++;                                                    \
+            fprintf(stderr, "FAIL %s (%s:%d): %s: ", check_cur_name, __FILE__,     \
+                    __LINE__, #cond);                                              \
+            fprintf(stderr, __VA_ARGS__);                                          \
+            fputc('\n', stderr);                                                   \
+        }                                                                          \
+    } while (0)
+
+#define CHECK(cond) CHECKF(cond, "%s", "")
+
+#define RUN(name)                                                                  \
+    do {                                                                           \
+        check_cur_name = #name;                                                    \
+        check_cur_failed = 0;                                                      \
+        name();                                                                    \
+        if (check_cur_failed) { check_tests_failed++; printf("not ok %s\n", #name); } \
+        else { check_tests_passed++; printf("ok %s\n", #name); }                   \
+        fflush(stdout);                                                            \
+    } while (0)
+
+static inline int check_done(void)
+{
+    printf("%d passed, %d failed\n", check_tests_passed, check_tests_failed);
+    return check_tests_failed ? 1 : 0;
+}
+
+/* Deterministic random numbers for property tests (xorshift64*). */
+static unsigned long long check_rng_state = 0x9E3779B97F4A7C15ull;
+static inline unsigned long long check_rand64(void)
+{
+    unsigned long long x = check_rng_state;
+    x ^= x >> 12; x ^= x << 25; x ^= x >> 27;
+    check_rng_state = x;
+    return x * 0x2545F4914F6CDD1Dull;
+}
+/* uniform in [lo, hi) */
+static inline double check_uniform(double lo, double hi)
+{
+    return lo + (hi - lo) * ((double)(check_rand64() >> 11) / 9007199254740992.0);
+}
+
+/* Path of the shared reference meshes (../shared/meshes by default). */
+static inline const char *check_meshes_dir(void)
+{
+    const char *d = getenv("SILK_MESHES");
+    return d ? d : "../shared/meshes";
+}
+
+#endif
