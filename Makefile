@@ -16,6 +16,9 @@ endif
 CFLAGS   ?=
 ALL_CFLAGS = $(CFLAGS_BASE) $(SANFLAGS) $(CFLAGS)
 LDFLAGS  ?=
+# The board: the silk tool's defaults for this target (boards/*/board.mk).
+BOARD    ?= host
+include boards/$(BOARD)/board.mk
 PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 
@@ -39,6 +42,10 @@ lib: $(BUILD)/libsilk.a
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(PNG_CFLAGS) -MMD -MP -c $< -o $@
+
+# The tool takes its defaults (image size, pixel format) from the board.
+$(TOOL_OBJ): ALL_CFLAGS += $(BOARD_CFLAGS)
+$(TOOL_OBJ): boards/$(BOARD)/board.mk
 
 $(BUILD)/libsilk.a: $(CORE_OBJ)
 	@mkdir -p $(dir $@)
@@ -78,6 +85,11 @@ test: check-nofloat
 # Just the normal build's suite.
 test-fast: check-nofloat tests
 	SILK=$(BUILD)/silk sh tests/run.sh $(BUILD)
+
+# Per-frame visibility, brute pass against the hierarchy: out/bench_visibility.txt
+# (CALLGRIND=1 adds instruction counts).
+bench: $(BUILD)/silk
+	sh bench/visibility.sh $(BUILD)/silk out
 
 demo: $(BUILD)/silk
 	sh tools/demo.sh $(BUILD)/silk out

@@ -63,6 +63,7 @@ void *silk_arena_alloc_top(silk_arena *a, size_t n, silk_purpose p)
     size_t m;
     if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, &m)) return NULL;
     a->top += m;
+    if (a->top > a->top_peak) a->top_peak = a->top;
     uint8_t *r = a->base + a->size - a->top;
     account(a, m, p);
     memset(r, 0, m);

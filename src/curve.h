@@ -16,6 +16,16 @@
  * overflows. */
 silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
 
+/* The clamp of eq. 4: L <= SILK_ARC_MAX_RATIO * |chord|, reached when
+ * cos theta <= -1/2 (theta >= 120 degrees, an arc of 240 degrees).  A bridge
+ * never gets there (its tangents are the chord projected onto a plane, so
+ * theta <= 90 degrees and L <= 2|chord|); only feature tangents at hairpin
+ * turns do, and a longer tangent would make the cubic loop.  With model
+ * coordinates within +-SILK_COORD_MAX, |chord| <= 2048 sqrt 3 and so
+ * L < 14200, well inside Q16.16; beyond that the tangent is shortened as a
+ * whole to fit, keeping its direction.  Must be <= 4 (curve.c's bounds). */
+#define SILK_ARC_MAX_RATIO 4
+
 /* Eqs. 2-5: the silhouette bridge over p0->p1 with unit normals n0, n1:
  * tangent directions are the chord projected onto each end's tangent plane
  * (eqs. 2, 3), lengths from eq. 4.  Fills p0, p1, t0, t1, n0, n1 of out;

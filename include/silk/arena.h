@@ -32,6 +32,7 @@ typedef struct silk_arena {
     size_t bottom;                      /* bytes used from the bottom */
     size_t top;                         /* bytes used from the top */
     size_t peak;                        /* high-water mark of bottom + top */
+    size_t top_peak;                    /* high-water mark of top alone (reset by the caller per frame) */
     size_t used[SILK_MEM_COUNT];        /* bytes held now, per purpose */
     size_t peak_used[SILK_MEM_COUNT];   /* high-water mark per purpose */
     size_t failed_request;              /* size of the last request that did not fit */

@@ -35,6 +35,20 @@ typedef struct silk_view {
 
 silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err);
 
+/* World -> clip for the renderer: proj * (R * (p - eye)) with the
+ * difference and the rotation done in 64 bits and rounded once, so points
+ * far from the origin keep their precision (the 4x4 viewproj has the
+ * translation rounded into it).  The Phong vertex stage uses this. */
+silk_vec4 silk_view_clip(const silk_view *v, silk_vec3 p);
+
+/* Supported input ranges (docs/raster.md): fov in [SILK_FOV_MIN, SILK_FOV_MAX]
+ * degrees, znear >= SILK_ZNEAR_MIN, ortho_half_height >= SILK_ZNEAR_MIN,
+ * width and height in [1, SILK_MAX_DIM], |P - eye| < 32768 for drawn points. */
+#define SILK_FOV_MIN    SILK_FX_C(1, 1)
+#define SILK_FOV_MAX    SILK_FX_C(175, 1)
+#define SILK_ZNEAR_MIN  SILK_FX_C(1, 1024)
+#define SILK_MAX_DIM    8192
+
 /* Transform a point (w = 1) to clip space. */
 silk_vec4 silk_mat4_apply_point(const silk_mat4 *m, silk_vec3 p);
 silk_vec3 silk_mat4_apply_dir(const silk_mat4 *m, silk_vec3 d);   /* w = 0, upper 3x3 */

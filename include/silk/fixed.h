@@ -138,8 +138,11 @@ static inline silk_vec3 silk_v3_scale(silk_vec3 a, silk_fx s)
 }
 static inline silk_vec3 silk_v3_neg(silk_vec3 a) { return silk_v3(-a.x, -a.y, -a.z); }
 
-/* Dot product as a Q32.32 int64: exact, no rounding, cannot overflow for any
- * silk_fx inputs.  Use it whenever only the sign or a ratio is needed. */
+/* Dot product as a Q32.32 int64: exact, no rounding.  It cannot overflow
+ * while the three products sum below 2^63: always when either vector has
+ * components within +-16384 (so for model coordinates and unit vectors),
+ * but three near-full-range products can (3 * 2^62).  Use it whenever only
+ * the sign or a ratio is needed. */
 static inline int64_t silk_v3_dot64(silk_vec3 a, silk_vec3 b)
 {
     return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;

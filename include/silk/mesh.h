@@ -40,7 +40,7 @@ enum silk_edge_flag {
 };
 
 typedef struct silk_edge {
-    silk_index v[2];          /* v[0] < v[1] */
+    silk_index v[2];          /* v[0] < v[1] (equal only on a zero-length DEGENERATE edge) */
     silk_index t[2];          /* incident triangles; t[1] == SILK_NO_INDEX on a boundary.
                                  On a non-manifold edge the first two found. */
     uint32_t flags;           /* enum silk_edge_flag */
@@ -129,7 +129,11 @@ silk_status silk_mesh_build(const silk_mesh_input *in, const char *name, const s
 silk_vec3 silk_mesh_face_normal(const silk_mesh *m, uint32_t t);
 
 /* Bytes of the arena each part of the mesh takes (for `silk info`). */
-typedef struct silk_mesh_bytes { size_t positions, normals, uvs, triangles, edges, vertex_edges, total; } silk_mesh_bytes;
+typedef struct silk_mesh_bytes {
+    size_t positions, normals, uvs, triangles, edges, vertex_edges;
+    size_t features;          /* edge_feature[] and feature[] */
+    size_t total;
+} silk_mesh_bytes;
 void silk_mesh_bytes_used(const silk_mesh *m, silk_mesh_bytes *b);
 
 #endif

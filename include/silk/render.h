@@ -44,4 +44,20 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
                         const silk_render_opts *o, silk_target *t, silk_frame_stats *stats,
                         silk_error *err);
 
+/* Band rendering for devices without a frame buffer: band's buffers hold
+ * band->rows lines of band->width pixels (band->height is the frame height);
+ * the frame is drawn band by band from the top, each finished band handed to
+ * sink->band (as an SPI display driver takes it).  The per-frame silhouette
+ * work and the vertex stage run once per frame, not once per band; only the
+ * rasterizer runs per band.  Pixels are identical to silk_render()'s. */
+typedef struct silk_sink {
+    /* return 0 to go on, non-zero to stop the frame (reported as SILK_ERR_IO) */
+    int (*band)(void *user, const silk_target *band);
+    void *user;
+} silk_sink;
+
+silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
+                              const silk_render_opts *o, silk_target *band, const silk_sink *sink,
+                              silk_frame_stats *stats, silk_error *err);
+
 #endif

@@ -1,0 +1,185 @@
+/*
+ * features.c - feature segments (paper section III-A): the Hermite end
+ * tangents of every feature edge, computed once at load.
+ *
+ * Feature edges are chained into maximal feature polylines V0..Vk, which
+ * end where a vertex has other than two feature edges (or close on
+ * themselves).  At an inner vertex the tangent direction is that of the
+ * circle through Vi-1, Vi, Vi+1 (eq. 1, with W0 = Vi - Vi-1, W1 = Vi+1 - Vi
+ * taken as unit directions, see inner_dir); at an end it is the tangent of
+ * the circle through the first (last) three vertices.  Lengths follow eq. 4
+ * (silk_arc_tangent), so a polyline sampled from a circle gives Hermite
+ * segments that stay on the circle.  A polyline of one edge stays straight.
+ */
+#include "mesh_build.h"
+#include "curve.h"
+
+static silk_status nomem(silk_error *err, const char *name, const silk_arena *a)
+{
+    return silk_fail(err, SILK_ERR_NOMEM, name, 0,
+                     "out of arena memory for the feature segments (%lu bytes requested, %lu free)",
+                     (unsigned long)a->failed_request, (unsigned long)silk_arena_free_bytes(a));
+}
+
+static int is_feature(const silk_edge *e)
+{
+    return (e->flags & SILK_EDGE_FEATURE) && e->v[0] != e->v[1];
+}
+
+static silk_index other_end(const silk_edge *e, silk_index v)
+{
+    return e->v[0] == v ? e->v[1] : e->v[0];
+}
+
+/* The tangent at p of the circle through prev, p, next.  Eq. 1 as printed,
+ * |W1| W0 + |W0| W1, bisects the two directions; that is the circle's
+ * tangent only for equal spacing.  The circle's tangent for any spacing is
+ * |W1| W0/|W0| + |W0| W1/|W1|, or (times |W0||W1|) |W1|^2 W0 + |W0|^2 W1,
+ * which needs no square root: the squared lengths are exact 64-bit dot
+ * products, brought to 30 bits by one common shift so their ratio stays.
+ * Where it vanishes (the polyline turns straight back, or a neighbour sits
+ * on the vertex) there is no circle; follow whichever side has a length. */
+static silk_vec3 inner_dir(silk_vec3 prev, silk_vec3 p, silk_vec3 next)
+{
+    silk_vec3 w0 = silk_v3_sub(p, prev), w1 = silk_v3_sub(next, p), d;
+    int64_t s0 = silk_v3_dot64(w0, w0), s1 = silk_v3_dot64(w1, w1);
+    while (s0 >= ((int64_t)1 << 30) || s1 >= ((int64_t)1 << 30)) {
+        s0 = silk_shr_round64(s0, 1);
+        s1 = silk_shr_round64(s1, 1);
+    }
+    int64_t t[3] = { s1 * w0.x + s0 * w1.x, s1 * w0.y + s0 * w1.y, s1 * w0.z + s0 * w1.z };
+    if (silk_v3_normalize64(t, &d)) return d;
+    if (silk_v3_normalize(w1, &d)) return d;
+    silk_v3_normalize(w0, &d);
+    return d;
+}
+
+/* Tangent at an end of a polyline.  chord runs along the polyline from the
+ * end vertex to its neighbour's position (forward at the start, backward
+ * reversed at the finish: always the direction of travel), d is the unit
+ * tangent at that neighbour.  The circle through the end, the neighbour and
+ * the next vertex is symmetric about the bisector plane of the chord, so its
+ * tangent at the end is d mirrored in that plane and reversed:
+ * 2 (d.u) u - d, u the unit chord. */
+static silk_vec3 end_dir(silk_vec3 chord, silk_vec3 d)
+{
+    silk_vec3 u, r;
+    if (!silk_v3_normalize(chord, &u)) return u;
+    int64_t du = silk_v3_dot64(d, u);   /* Q32.32 */
+    const int64_t one = (int64_t)1 << 32;
+    int64_t t[3] = { 2 * du * u.x - d.x * one, 2 * du * u.y - d.y * one, 2 * du * u.z - d.z * one };
+    if (silk_v3_normalize64(t, &r)) return r;
+    return u;
+}
+
+/* Follows feature edges from vertex start along edge e until a vertex with
+ * other than two feature edges, or back to start.  Fills vert[0..k] and
+ * edges[0..k-1]; returns k. */
+static uint32_t walk(const silk_mesh *m, const uint32_t *fdeg, uint8_t *used, silk_index start, uint32_t e,
+                     silk_index *vert, uint32_t *edges)
+{
+    uint32_t k = 0;
+    silk_index v = start;
+    vert[0] = start;
+    for (;;) {
+        used[e] = 1;
+        edges[k] = e;
+        v = other_end(&m->edge[e], v);
+        vert[++k] = v;
+        if (fdeg[v] != 2 || v == start) return k;
+        uint32_t next = e;
+        for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1]; i++) {
+            uint32_t f = m->vert_edge[i];
+            if (f != e && is_feature(&m->edge[f])) next = f;
+        }
+        if (next == e || used[next]) return k;
+        e = next;
+    }
+}
+
+static void store(silk_mesh *m, uint32_t e, silk_index from, silk_vec3 t_from, silk_vec3 t_to)
+{
+    silk_feature_seg *s = &m->feature[m->edge_feature[e]];
+    if (m->edge[e].v[0] == from) {
+        s->t0 = t_from;
+        s->t1 = t_to;
+    } else {
+        /* The same curve run backwards: swap the ends, reverse the tangents. */
+        s->t0 = silk_v3_neg(t_to);
+        s->t1 = silk_v3_neg(t_from);
+    }
+}
+
+/* closed: vert[k] == vert[0] is an inner vertex.  An open polyline may also
+ * come back to its first vertex (a loop through a junction): then that
+ * vertex is two ends. */
+static void polyline_segments(silk_mesh *m, const silk_index *vert, const uint32_t *edges, uint32_t k,
+                              int closed, silk_vec3 *dir)
+{
+    const silk_vec3 *p = m->pos;
+    if (k == 1) {
+        silk_vec3 chord = silk_v3_sub(p[vert[1]], p[vert[0]]);
+        store(m, edges[0], vert[0], chord, chord);
+        return;
+    }
+    for (uint32_t i = 1; i < k; i++) dir[i] = inner_dir(p[vert[i - 1]], p[vert[i]], p[vert[i + 1]]);
+    if (closed) {
+        dir[0] = dir[k] = inner_dir(p[vert[k - 1]], p[vert[0]], p[vert[1]]);
+    } else {
+        dir[0] = end_dir(silk_v3_sub(p[vert[1]], p[vert[0]]), dir[1]);
+        dir[k] = end_dir(silk_v3_sub(p[vert[k]], p[vert[k - 1]]), dir[k - 1]);
+    }
+    for (uint32_t j = 0; j < k; j++) {
+        silk_vec3 chord = silk_v3_sub(p[vert[j + 1]], p[vert[j]]);
+        store(m, edges[j], vert[j], silk_arc_tangent(dir[j], chord), silk_arc_tangent(dir[j + 1], chord));
+    }
+}
+
+silk_status silk_build_features(const char *name, silk_arena *a, silk_mesh *m, silk_error *err)
+{
+    uint32_t nfe = 0;
+    for (uint32_t e = 0; e < m->nedges; e++) nfe += (uint32_t)is_feature(&m->edge[e]);
+    m->nfeature_edges = nfe;
+    m->edge_feature = silk_arena_array(a, m->nedges, sizeof *m->edge_feature, SILK_MEM_FEATURES);
+    m->feature = silk_arena_array(a, nfe, sizeof *m->feature, SILK_MEM_FEATURES);
+    if (!m->edge_feature || !m->feature) return nomem(err, name, a);
+    for (uint32_t e = 0, f = 0; e < m->nedges; e++)
+        m->edge_feature[e] = is_feature(&m->edge[e]) ? f++ : SILK_NO_INDEX;
+    if (nfe == 0) return SILK_OK;
+
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    uint32_t *fdeg = silk_arena_array_top(a, m->nverts, sizeof *fdeg, SILK_MEM_LOAD);
+    uint8_t *used = silk_arena_array_top(a, m->nedges, sizeof *used, SILK_MEM_LOAD);
+    silk_index *vert = silk_arena_array_top(a, (size_t)nfe + 1, sizeof *vert, SILK_MEM_LOAD);
+    uint32_t *edges = silk_arena_array_top(a, nfe, sizeof *edges, SILK_MEM_LOAD);
+    silk_vec3 *dir = silk_arena_array_top(a, (size_t)nfe + 1, sizeof *dir, SILK_MEM_LOAD);
+    if (!fdeg || !used || !vert || !edges || !dir) {
+        silk_status st = nomem(err, name, a);
+        silk_arena_top_release(a, &mark);
+        return st;
+    }
+    for (uint32_t e = 0; e < m->nedges; e++)
+        if (is_feature(&m->edge[e])) {
+            fdeg[m->edge[e].v[0]]++;
+            fdeg[m->edge[e].v[1]]++;
+        }
+
+    /* Open polylines start at their ends (and at junctions) ... */
+    for (silk_index v = 0; v < m->nverts; v++) {
+        if (fdeg[v] == 0 || fdeg[v] == 2) continue;
+        for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1]; i++) {
+            uint32_t e = m->vert_edge[i];
+            if (!is_feature(&m->edge[e]) || used[e]) continue;
+            uint32_t k = walk(m, fdeg, used, v, e, vert, edges);
+            polyline_segments(m, vert, edges, k, 0, dir);
+        }
+    }
+    /* ... what is left are closed loops through vertices of two feature edges. */
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        if (!is_feature(&m->edge[e]) || used[e]) continue;
+        uint32_t k = walk(m, fdeg, used, m->edge[e].v[0], e, vert, edges);
+        polyline_segments(m, vert, edges, k, k >= 3 && vert[k] == vert[0], dir);
+    }
+    silk_arena_top_release(a, &mark);
+    return SILK_OK;
+}

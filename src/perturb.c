@@ -1,0 +1,122 @@
+/*
+ * perturb.c - vertex perturbation against silhouette blocking (paper III-E,
+ * Figs. 14 and 15).
+ *
+ * A concave silhouette segment S_i (N_A.F > 0 and N_B.F < 0, F = B - A) runs
+ * inside the coarse mesh, so the triangles around it hide it and the
+ * silhouette stays polygonal (the inner rim of a torus).  Its mid point
+ * M_i = S_i(1/2) and the normal N_i there define a plane P_i that contains the
+ * view direction, with the segment above it.  Every neighbouring vertex V (a
+ * corner of the silhouette triangle, or one edge away from a corner) is
+ * lowered along R^ = normalise(sum of the N_i of the concave segments it
+ * neighbours) until it is below all their planes:
+ *
+ *     s = max_i ( (V - M_i).N_i / (R^.N_i) ),   V' = V - s R^   when s > 0.
+ *
+ * The paper prints l = max_i { -(V - M_i).N_i / (R^.N_i) }, V' = V + l R^;
+ * taken literally that satisfies only the plane needing the least motion (and
+ * moves V up when it is already below one), so the sign is turned here into
+ * what the text asks for: the largest motion needed, downwards.  Two guards
+ * the paper does not need in floating point: a plane nearly parallel to R^
+ * (R^.N_i < 1/4) is skipped rather than divided by, and a vertex never moves
+ * farther than its distance to M_i.
+ *
+ * The result is one offset per moved vertex; every corner at that vertex
+ * becomes a MOVED record with it, so the vertex moves as one.
+ */
+#include <string.h>
+#include "silhouette.h"
+
+#define MIN_COS ((int64_t)1 << 30)     /* 1/4 in Q32.32 */
+#define RISE_CAP (2 * SILK_FX_ONE)
+
+int silk_perturb_alloc(silk_sil_frame *f)
+{
+    silk_arena *a = f->a;
+    f->vert_slot = f->vert_offset = NULL;
+    f->offset = NULL;
+    f->noffset = f->nslots = 0;
+    f->near_bound = silk_remesh_near_bound(f);
+    if (!f->near_bound) return 1;
+    uint32_t b = f->near_bound;
+    f->vert_slot = silk_arena_array_top(a, f->m->nverts, sizeof *f->vert_slot, SILK_MEM_FRAME);
+    f->acc = silk_arena_array_top(a, b, sizeof *f->acc, SILK_MEM_FRAME);
+    f->lift = silk_arena_array_top(a, b, sizeof *f->lift, SILK_MEM_FRAME);
+    f->slot_vert = silk_arena_array_top(a, b, sizeof *f->slot_vert, SILK_MEM_FRAME);
+    f->slot_stamp = silk_arena_array_top(a, b, sizeof *f->slot_stamp, SILK_MEM_FRAME);
+    f->offset = silk_arena_array_top(a, b, sizeof *f->offset, SILK_MEM_FRAME);
+    if (!f->vert_slot || !f->acc || !f->lift || !f->slot_vert || !f->slot_stamp || !f->offset)
+        return 0;
+    memset(f->vert_slot, 0xFF, (size_t)f->m->nverts * sizeof *f->vert_slot);
+    return 1;
+}
+
+/* One neighbouring vertex of segment s, once per stamp. */
+static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint32_t stamp, int pass)
+{
+    uint32_t sl = f->vert_slot[vtx];
+    if (sl == SILK_SIL_NONE) {
+        if (f->nslots >= f->near_bound) return;   /* cannot happen: the bound counts every visit */
+        sl = f->nslots++;
+        f->vert_slot[vtx] = sl;
+        f->slot_vert[sl] = vtx;
+        f->acc[sl] = silk_v3(0, 0, 0);
+        f->lift[sl] = 0;
+        f->slot_stamp[sl] = 0;
+    }
+    if (f->slot_stamp[sl] == stamp) return;
+    f->slot_stamp[sl] = stamp;
+    if (pass == 0) {
+        f->acc[sl] = silk_v3_add(f->acc[sl], s->nm);
+        return;
+    }
+    int64_t den = silk_v3_dot64(f->acc[sl], s->nm);
+    if (den < MIN_COS) return;
+    silk_vec3 vm = silk_v3_sub(f->m->pos[vtx], s->m);
+    int64_t num = silk_v3_dot64(vm, s->nm);
+    if (num <= 0) return;                          /* already below P_i */
+    /* num < 2^46 for model coordinates within SILK_COORD_MAX: the shift fits */
+    silk_fx lift = silk_fx_sat((num << 16) / den);
+    lift = silk_fx_min(lift, silk_fx_min(silk_v3_length(vm), silk_fx_mul(RISE_CAP, s->rise)));
+    if (lift > f->lift[sl]) f->lift[sl] = lift;
+}
+
+static void visit_near(silk_sil_frame *f, const silk_sil_seg *s, uint32_t stamp, int pass)
+{
+    const silk_mesh *m = f->m;
+    for (int c = 0; c < 3; c++) {
+        silk_index vtx = m->tri[3 * s->tri + c];
+        visit(f, vtx, s, stamp, pass);
+        for (uint32_t i = m->vert_edge_start[vtx]; i < m->vert_edge_start[vtx + 1]; i++) {
+            const silk_edge *e = &m->edge[m->vert_edge[i]];
+            visit(f, e->v[0] == vtx ? e->v[1] : e->v[0], s, stamp, pass);
+        }
+    }
+}
+
+void silk_perturb(silk_sil_frame *f)
+{
+    if (!f->near_bound) return;
+    uint32_t ns = f->nsegs;
+    for (int pass = 0; pass < 2; pass++) {
+        for (uint32_t i = 0; i < ns; i++) {
+            const silk_sil_seg *s = &f->segs[i];
+            if (!s->concave || f->edges[s->comp].rejected) continue;
+            visit_near(f, s, pass * ns + i + 1, pass);
+        }
+        if (pass == 0)
+            for (uint32_t sl = 0; sl < f->nslots; sl++)
+                if (!silk_v3_normalize(f->acc[sl], &f->acc[sl])) f->acc[sl] = silk_v3(0, 0, 0);
+    }
+    /* From here on vert_slot maps a vertex to its offset. */
+    for (uint32_t sl = 0; sl < f->nslots; sl++) {
+        silk_index vtx = f->slot_vert[sl];
+        if (f->lift[sl] > 0) {
+            f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);
+            f->vert_slot[vtx] = f->noffset++;
+        } else {
+            f->vert_slot[vtx] = SILK_SIL_NONE;
+        }
+    }
+    f->vert_offset = f->vert_slot;
+}

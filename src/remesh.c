@@ -1,0 +1,562 @@
+/*
+ * remesh.c - silhouette segments, adaptive sampling and local re-meshing
+ * (paper III-D, III-E, Figs. 11 and 12), and the vertex records they become.
+ *
+ * A silhouette triangle L B1 B2 (L the corner whose visibility differs) has
+ * silhouette points A on side L-B1 and B on side B2-L; its silhouette segment
+ * S(t) runs from A to B (Hermite over the points and their normals, eq. 5)
+ * and is sampled with n intervals from eq. 8.  S cuts the triangle in two:
+ *
+ *   the part around L:     its samples are connected to L (Fig. 11, "in front");
+ *   the part along B1-B2:  its samples are connected to the base edge
+ *                          (Fig. 11, "behind"): the early samples to B1, the
+ *                          late ones to B2, and the sample nearest the base
+ *                          edge's bisector to both.
+ *
+ * Both parts are always built, whichever side the viewer sees, so the output
+ * is closed wherever the input is.  The base edge gets no points of its own
+ * (its "points" are its end vertices), so the triangle across it is left
+ * alone.  Points on the sides are the edge chains of silhouette.c and are
+ * walked in full, so any other points there (feature samples, the other
+ * side's silhouette point across a crease) are included.  One rule keeps the
+ * result a clean 2-manifold: no output triangle may have all three corners on
+ * one side of the input triangle (the triangle across that side would build
+ * the same sliver, and two surfaces would share an edge).  When a part of a
+ * silhouette triangle has such extra side points, a fan from a corner would
+ * break the rule, so that part is fanned from its own centre instead, as
+ * Fig. 12b does for feature segments.  A triangle that is not a silhouette
+ * triangle but has points on its sides is fanned from the opposite vertex
+ * when one side has points (Fig. 12a), else from its centre (Fig. 12b).
+ *
+ * Memory: every part of the frame that is re-meshed together (edges joined by
+ * re-meshed triangles: a union-find over edges) has a cost in records,
+ * triangles and curves.  When the output does not fit, smooth.c drops parts
+ * from the last one back (silk_remesh_reject_last); a dropped part is drawn
+ * as the coarse mesh, which is crack-free because no edge is shared between
+ * parts.
+ */
+#include <string.h>
+#include "silhouette.h"
+#include "curve.h"
+
+#define T_TWO_THIRDS ((silk_fx)43691)
+
+static silk_sil_edge *edge_at(const silk_sil_frame *f, uint32_t t, uint32_t k)
+{
+    uint32_t w = f->edge_slot[f->m->tri_edge[3 * t + k]];
+    return w == SILK_SIL_NONE ? NULL : &f->edges[w];
+}
+
+/* Points on side k of t this frame (0 when the side's part was dropped). */
+static uint32_t side_points(const silk_sil_frame *f, uint32_t t, uint32_t k)
+{
+    const silk_sil_edge *e = edge_at(f, t, k);
+    if (!e || f->edges[e->parent].rejected) return 0;
+    return e->nchain;
+}
+
+/* The silhouette point of side k of silhouette triangle t: its parameter on
+ * the edge and its index in the edge's chain. */
+static const silk_sil_pair *side_pair(const silk_sil_frame *f, const silk_sil_edge *e,
+                                      const silk_sil_side *s)
+{
+    for (uint32_t i = 0; i < e->npairs; i++) {
+        const silk_sil_pair *p = &f->pairs[e->pair0 + i];
+        if (p->n0 == s->n0 && p->n1 == s->n1) return p;
+    }
+    return NULL;
+}
+
+static silk_fx sample_t(uint32_t i, uint32_t n)
+{
+    return silk_fx_sat(((int64_t)i * SILK_FX_ONE + n / 2) / n);
+}
+
+/* The sample of segment s closest to the bisector plane of the base edge
+ * b1 -> b2: joined to both base vertices it gives the fattest middle triangle. */
+static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
+{
+    silk_vec3 dir = silk_v3_sub(b2, b1);
+    silk_vec3 mid = silk_v3(silk_fx_sat(((int64_t)b1.x + b2.x) / 2),
+                            silk_fx_sat(((int64_t)b1.y + b2.y) / 2),
+                            silk_fx_sat(((int64_t)b1.z + b2.z) / 2));
+    uint32_t best = s->n / 2;
+    int64_t best_d = INT64_MAX;
+    for (uint32_t i = 0; i <= s->n; i++) {
+        int64_t d = silk_v3_dot64(silk_v3_sub(silk_hermite_point(&s->c, sample_t(i, s->n)), mid), dir);
+        if (d < 0) d = -d;
+        if (d < best_d) { best_d = d; best = i; }
+    }
+    return best;
+}
+
+static void unite(silk_sil_frame *f, silk_sil_edge *x, silk_sil_edge *y)
+{
+    uint32_t rx = silk_sil_find_root(f->edges, (uint32_t)(x - f->edges));
+    uint32_t ry = silk_sil_find_root(f->edges, (uint32_t)(y - f->edges));
+    /* the smaller index is the root, so parts are numbered in mesh order */
+    if (rx < ry) f->edges[ry].parent = rx;
+    else if (ry < rx) f->edges[rx].parent = ry;
+}
+
+/* Where things are on the boundary of silhouette triangle t, walked from L:
+ * cyc = L, side L's points, B1, the base's points, B2, side L+2's points. */
+typedef struct sil_layout {
+    uint32_t len;            /* boundary length */
+    uint32_t iA, iB;         /* the silhouette points */
+    uint32_t iB1, iB2;       /* the base vertices */
+    int centre1, centre2;    /* the part around L / along the base needs a centre */
+} sil_layout;
+
+/* Index, in triangle direction, of the silhouette point of side k. */
+static uint32_t pair_pos(const silk_sil_frame *f, uint32_t t, uint32_t k)
+{
+    const silk_sil_edge *e = edge_at(f, t, k);
+    const silk_sil_side *s = silk_sil_side_of(f, e, t, k);
+    const silk_sil_pair *p = side_pair(f, e, s);
+    int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
+    return fwd ? p->chain : e->nchain - 1 - p->chain;
+}
+
+static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
+{
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
+    uint32_t kb = (lone + 1) % 3, k2 = (lone + 2) % 3;
+    uint32_t na = side_points(f, t, lone), nb = side_points(f, t, kb), n2 = side_points(f, t, k2);
+    l->iA = 1 + pair_pos(f, t, lone);
+    l->iB1 = 1 + na;
+    l->iB2 = 2 + na + nb;
+    l->iB = 3 + na + nb + pair_pos(f, t, k2);
+    l->len = 3 + na + nb + n2;
+    /* a corner fan is safe only when no other point shares a side with the apex's part */
+    l->centre1 = l->iA != 1 || l->iB != l->len - 1;
+    l->centre2 = l->iA != l->iB1 - 1 || l->iB != l->iB2 + 1;
+}
+
+/* Output of one re-meshed triangle: triangles, extra records, extra curves,
+ * boundary length. */
+static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg,
+                     uint32_t *tris, uint32_t *recs, uint32_t *curves, uint32_t *poly)
+{
+    uint32_t np[3], sum = 0, nchained = 0;
+    for (uint32_t k = 0; k < 3; k++) {
+        np[k] = side_points(f, t, k);
+        sum += np[k];
+        nchained += np[k] > 0;
+    }
+    *poly = 3 + sum;
+    if (seg) {
+        sil_layout l;
+        layout(f, t, &l);
+        uint32_t n = seg->n;
+        *recs = n - 1;
+        *curves = 1;
+        if (l.centre1) { *tris = n + l.iA + l.len - l.iB; (*recs)++; (*curves)++; }
+        else *tris = n;
+        if (l.centre2) { *tris += n + l.iB - l.iA; (*recs)++; (*curves)++; }
+        else *tris += n + 1 + (l.iB2 - l.iB1 - 1);
+        *poly += n + 2;
+    } else if (nchained == 1) {
+        *tris = sum + 1; *recs = 0; *curves = 0;
+    } else if (nchained >= 2) {
+        *tris = sum + 3; *recs = 1; *curves = 1;
+    } else {
+        *tris = 1; *recs = 0; *curves = 0;
+    }
+}
+
+silk_status silk_remesh_plan(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
+    silk_arena *a = f->a;
+    f->segs = silk_arena_array_top(a, f->nsil, sizeof *f->segs, SILK_MEM_FRAME);
+    f->cost = silk_arena_array_top(a, f->nedges, sizeof *f->cost, SILK_MEM_FRAME);
+    if (!f->segs || !f->cost) return SILK_ERR_NOMEM;
+
+    /* Segments (III-D) and the parts of the frame. */
+    f->nsegs = 0;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        uint8_t st = f->tri_state[t];
+        silk_sil_edge *e3[3];
+        for (uint32_t k = 0; k < 3; k++) e3[k] = edge_at(f, t, k);
+        if (st & SILK_TS_SIL) {
+            uint32_t lone = st & SILK_TS_LONE, kb = (lone + 2) % 3;
+            silk_sil_edge *ea = e3[lone], *eb = e3[kb];
+            const silk_sil_side *sa = silk_sil_side_of(f, ea, t, lone);
+            const silk_sil_side *sb = silk_sil_side_of(f, eb, t, kb);
+            const silk_sil_pair *pa = sa ? side_pair(f, ea, sa) : NULL;
+            const silk_sil_pair *pb = sb ? side_pair(f, eb, sb) : NULL;
+            if (!pa || !pb) { f->tri_state[t] = 0; continue; }   /* cannot happen for a sane mesh */
+            silk_sil_seg *s = &f->segs[f->nsegs++];
+            memset(s, 0, sizeof *s);
+            s->tri = t;
+            silk_vec3 A, B, nA, nB;
+            silk_sil_edge_point(f, ea, sa, pa->u, &A, &nA, &s->c.uv0);
+            silk_sil_edge_point(f, eb, sb, pb->u, &B, &nB, &s->c.uv1);
+            silk_bridge(A, nA, B, nB, &s->c);
+            s->c.p0 = A;
+            s->c.p1 = B;
+            s->n = silk_sil_intervals(f->v, &s->c, silk_v3_dot(nA, nB), f->tol);
+            if (s->n < 1) s->n = 1;
+            s->split = split_sample(s, m->pos[m->tri[3 * t + (lone + 1) % 3]], m->pos[m->tri[3 * t + kb]]);
+            /* III-E: concave when N_A.F > 0 and N_B.F < 0, F = B - A */
+            silk_vec3 F = silk_v3_sub(B, A);
+            s->concave = silk_v3_dot64(nA, F) > 0 && silk_v3_dot64(nB, F) < 0;
+            s->m = silk_hermite_point(&s->c, SILK_FX_HALF);
+            if (!silk_v3_normalize(silk_v3_lerp(nA, nB, SILK_FX_HALF), &s->nm)) s->concave = 0;
+            s->rise = silk_fx_max(silk_fx_max(silk_v3_dot(silk_v3_sub(A, s->m), s->nm),
+                                              silk_v3_dot(silk_v3_sub(B, s->m), s->nm)), 0);
+            unite(f, ea, eb);
+            if (e3[(lone + 1) % 3] && e3[(lone + 1) % 3]->nchain) unite(f, ea, e3[(lone + 1) % 3]);
+        } else {
+            silk_sil_edge *first = NULL;
+            for (uint32_t k = 0; k < 3; k++) {
+                if (!e3[k] || !e3[k]->nchain) continue;
+                if (first) unite(f, first, e3[k]); else first = e3[k];
+            }
+        }
+    }
+    for (uint32_t w = 0; w < f->nedges; w++) f->edges[w].parent = silk_sil_find_root(f->edges, w);
+
+    /* What each part costs. */
+    for (uint32_t w = 0; w < f->nedges; w++) {
+        const silk_sil_edge *e = &f->edges[w];
+        if (!e->nchain) continue;
+        silk_sil_cost *c = &f->cost[e->parent];
+        for (uint32_t i = 0; i < e->nsides; i++)
+            if (f->sides[e->side0 + i].owner == e->side0 + i) { c->recs += e->nchain; c->curves++; }
+    }
+    uint32_t si = 0;
+    f->max_poly = 0;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        const silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
+        uint32_t root = SILK_SIL_NONE;
+        for (uint32_t k = 0; k < 3 && root == SILK_SIL_NONE; k++) {
+            const silk_sil_edge *e = edge_at(f, t, k);
+            if (e && e->nchain) root = e->parent;
+        }
+        if (root == SILK_SIL_NONE) continue;
+        uint32_t tris, recs, curves, poly;
+        tri_cost(f, t, s, &tris, &recs, &curves, &poly);
+        silk_sil_cost *c = &f->cost[root];
+        c->tris += tris - 1;
+        c->recs += recs;
+        c->curves += curves;
+        if (poly > f->max_poly) f->max_poly = poly;
+        if (s) {
+            ((silk_sil_seg *)s)->comp = root;
+            if (s->concave) {
+                /* the triangle's corners and everything one edge away */
+                uint32_t near = 3;
+                for (int k = 0; k < 3; k++) {
+                    silk_index vtx = m->tri[3 * t + k];
+                    near += m->vert_edge_start[vtx + 1] - m->vert_edge_start[vtx];
+                }
+                c->near += near;
+            }
+        }
+    }
+    return SILK_OK;
+}
+
+int silk_remesh_reject_last(silk_sil_frame *f)
+{
+    for (uint32_t w = f->nedges; w-- > 0;) {
+        silk_sil_edge *e = &f->edges[w];
+        if (e->parent != w || e->rejected) continue;
+        const silk_sil_cost *c = &f->cost[w];
+        if (!c->recs && !c->tris && !c->curves && !c->near) continue;
+        e->rejected = 1;
+        return 1;
+    }
+    return 0;
+}
+
+/* Totals over the parts still accepted. */
+static void totals(const silk_sil_frame *f, uint64_t *recs, uint64_t *tris, uint64_t *curves,
+                   uint64_t *near)
+{
+    *recs = 3 * (uint64_t)f->m->ntris;
+    *tris = f->m->ntris;
+    *curves = 0;
+    *near = 0;
+    for (uint32_t w = 0; w < f->nedges; w++) {
+        const silk_sil_edge *e = &f->edges[w];
+        if (e->parent != w || e->rejected) continue;
+        *recs += f->cost[w].recs;
+        *tris += f->cost[w].tris;
+        *curves += f->cost[w].curves;
+        *near += f->cost[w].near;
+    }
+}
+
+uint32_t silk_remesh_near_bound(const silk_sil_frame *f)
+{
+    uint64_t r, t, c, n;
+    totals(f, &r, &t, &c, &n);
+    return n > f->m->nverts ? f->m->nverts : (uint32_t)n;
+}
+
+int silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g)
+{
+    uint64_t recs, tris, curves, near;
+    totals(f, &recs, &tris, &curves, &near);
+    if (recs > UINT32_MAX || 3 * tris > UINT32_MAX) return 0;
+    silk_arena *a = f->a;
+    g->vrec = silk_arena_array_top(a, (size_t)recs, sizeof *g->vrec, SILK_MEM_FRAME);
+    g->tri = silk_arena_array_top(a, (size_t)(3 * tris), sizeof *g->tri, SILK_MEM_FRAME);
+    g->tri_added = silk_arena_array_top(a, (size_t)tris, 1, SILK_MEM_FRAME);
+    g->curve = silk_arena_array_top(a, (size_t)curves, sizeof *g->curve, SILK_MEM_FRAME);
+    f->poly = silk_arena_array_top(a, 2 * (size_t)f->max_poly, sizeof *f->poly, SILK_MEM_FRAME);
+    return g->vrec && g->tri && g->tri_added && g->curve && f->poly;
+}
+
+/* ---- emission ------------------------------------------------------------------ */
+
+static void put_tri(silk_frame_geom *g, uint32_t a, uint32_t b, uint32_t c, uint8_t added)
+{
+    uint32_t *p = &g->tri[3 * g->ntri];
+    p[0] = a; p[1] = b; p[2] = c;
+    g->tri_added[g->ntri++] = added;
+}
+
+/* Triangles (apex, list[j], list[j+1]): a fan over a boundary chain. */
+static void fan(silk_frame_geom *g, uint32_t apex, const uint32_t *list, uint32_t n)
+{
+    for (uint32_t j = 0; j + 1 < n; j++) put_tri(g, apex, list[j], list[j + 1], 1);
+}
+
+static uint32_t put_curve_rec(silk_frame_geom *g, uint32_t curve, silk_fx t)
+{
+    silk_vrec *r = &g->vrec[g->nvrec];
+    r->kind = SILK_VREC_CURVE;
+    r->a = curve;
+    r->b = 0;
+    r->t = t;
+    return g->nvrec++;
+}
+
+/* Append side k of t (its chain, in the triangle's direction) to out. */
+static uint32_t walk_side(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t *out)
+{
+    uint32_t n = side_points(f, t, k);
+    if (!n) return 0;
+    const silk_sil_edge *e = edge_at(f, t, k);
+    const silk_sil_side *s = silk_sil_side_of(f, e, t, k);
+    uint32_t rec = f->sides[s->owner].rec;
+    int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
+    for (uint32_t j = 0; j < n; j++) out[j] = fwd ? rec + j : rec + n - 1 - j;
+    return n;
+}
+
+static silk_vec3 mid3(silk_vec3 a, silk_vec3 b)
+{
+    return silk_v3(silk_fx_sat(((int64_t)a.x + b.x) / 2), silk_fx_sat(((int64_t)a.y + b.y) / 2),
+                   silk_fx_sat(((int64_t)a.z + b.z) / 2));
+}
+
+static silk_vec2 mid2(silk_vec2 a, silk_vec2 b)
+{
+    silk_vec2 r = { silk_fx_sat(((int64_t)a.x + b.x) / 2), silk_fx_sat(((int64_t)a.y + b.y) / 2) };
+    return r;
+}
+
+static silk_vec3 mean_normal(silk_vec3 a, silk_vec3 b)
+{
+    silk_vec3 r;
+    return silk_v3_normalize(silk_v3_add(a, b), &r) ? r : a;
+}
+
+/* A new vertex t along the straight line p0 -> p1 (a Hermite curve with
+ * both tangents equal to the chord is exactly linear), normal and uv
+ * interpolated linearly: the centres of Fig. 12b. */
+static uint32_t put_centre(silk_frame_geom *g, silk_vec3 p0, silk_vec3 n0, silk_vec2 uv0,
+                           silk_vec3 p1, silk_vec3 n1, silk_vec2 uv1, silk_fx t)
+{
+    silk_curve *c = &g->curve[g->ncurve];
+    c->p0 = p0; c->n0 = n0; c->uv0 = uv0;
+    c->p1 = p1; c->n1 = n1; c->uv1 = uv1;
+    c->t0 = c->t1 = silk_v3_sub(p1, p0);
+    return put_curve_rec(g, g->ncurve++, t);
+}
+
+static void corner_attrs(const silk_mesh *m, uint32_t c, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv)
+{
+    *p = m->pos[m->tri[c]];
+    *n = m->normal[m->tri_normal[c]];
+    uv->x = uv->y = 0;
+    if (m->tri_uv && m->uv && m->tri_uv[c] < m->nuvs) *uv = m->uv[m->tri_uv[c]];
+}
+
+/* A closed fan: (apex, cyc[j], cyc[j+1 mod n]) for every boundary edge. */
+static void fan_closed(silk_frame_geom *g, uint32_t apex, const uint32_t *cyc, uint32_t n)
+{
+    for (uint32_t j = 0; j < n; j++) put_tri(g, apex, cyc[j], cyc[(j + 1) % n], 1);
+}
+
+/* Fig. 11: the silhouette triangle cut by its segment. */
+static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, silk_sil_seg *s)
+{
+    const silk_mesh *m = f->m;
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
+    uint32_t *cyc = f->poly, *list = f->poly + f->max_poly;
+    sil_layout l;
+    layout(f, t, &l);
+    uint32_t len = 0;
+    for (uint32_t i = 0; i < 3; i++) {
+        uint32_t k = (lone + i) % 3;
+        cyc[len++] = 3 * t + k;
+        len += walk_side(f, t, k, &cyc[len]);
+    }
+
+    /* the segment: interior samples as records on its own curve */
+    s->curve = g->ncurve++;
+    g->curve[s->curve] = s->c;
+    s->rec = g->nvrec;
+    for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, s->curve, sample_t(i, s->n));
+#define SAMPLE(i) ((i) == 0 ? cyc[l.iA] : (i) == s->n ? cyc[l.iB] : s->rec + (i) - 1)
+
+    /* around L: L, side L up to A, the samples, B and side L+2 back to L */
+    uint32_t n = 0;
+    if (l.centre1) list[n++] = cyc[0];
+    for (uint32_t j = 1; j <= l.iA; j++) list[n++] = cyc[j];
+    for (uint32_t i = 1; i < s->n; i++) list[n++] = SAMPLE(i);
+    for (uint32_t j = l.iB; j < l.len; j++) list[n++] = cyc[j];
+    silk_vec3 pl, nl, pab = mid3(s->c.p0, s->c.p1), nab = mean_normal(s->c.n0, s->c.n1);
+    silk_vec2 uvl, uvab = mid2(s->c.uv0, s->c.uv1);
+    if (l.centre1) {
+        corner_attrs(m, 3 * t + lone, &pl, &nl, &uvl);
+        fan_closed(g, put_centre(g, pl, nl, uvl, pab, nab, uvab, T_TWO_THIRDS), list, n);
+    } else {
+        fan(g, cyc[0], list, n);
+    }
+
+    if (l.centre2) {
+        /* A .. B1 .. B2 .. B along the sides, then the samples back to A */
+        n = 0;
+        for (uint32_t j = l.iA; j <= l.iB; j++) list[n++] = cyc[j];
+        for (uint32_t i = s->n - 1; i > 0; i--) list[n++] = SAMPLE(i);
+        silk_vec3 p1, n1, p2, n2;
+        silk_vec2 uv1, uv2;
+        corner_attrs(m, 3 * t + (lone + 1) % 3, &p1, &n1, &uv1);
+        corner_attrs(m, 3 * t + (lone + 2) % 3, &p2, &n2, &uv2);
+        fan_closed(g, put_centre(g, pab, nab, uvab, mid3(p1, p2), mean_normal(n1, n2), mid2(uv1, uv2),
+                                 SILK_FX_HALF), list, n);
+    } else {
+        /* samples 0..split to B1, split..n to B2, the split sample to the base */
+        uint32_t ks = s->split;
+        n = 0;
+        for (uint32_t i = ks; i > 0; i--) list[n++] = SAMPLE(i);
+        list[n++] = SAMPLE(0);
+        fan(g, cyc[l.iB1], list, n);
+        n = 0;
+        for (uint32_t j = l.iB1; j <= l.iB2; j++) list[n++] = cyc[j];
+        fan(g, SAMPLE(ks), list, n);
+        n = 0;
+        for (uint32_t i = s->n; i > ks; i--) list[n++] = SAMPLE(i);
+        list[n++] = SAMPLE(ks);
+        fan(g, cyc[l.iB2], list, n);
+    }
+#undef SAMPLE
+}
+
+/* Fig. 12: points on the sides of a triangle the silhouette does not cross. */
+static void emit_fanned(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
+{
+    const silk_mesh *m = f->m;
+    uint32_t nchained = 0, only = 0;
+    for (uint32_t k = 0; k < 3; k++)
+        if (side_points(f, t, k)) { nchained++; only = k; }
+    uint32_t *cyc = f->poly;
+    uint32_t len = 0;
+    if (nchained == 1) {
+        /* from the opposite vertex over the side with points */
+        uint32_t o = (only + 2) % 3;
+        for (uint32_t i = 0; i < 3; i++) {
+            uint32_t k = (o + i) % 3;
+            cyc[len++] = 3 * t + k;
+            len += walk_side(f, t, k, &cyc[len]);
+        }
+        fan(g, cyc[0], cyc + 1, len - 1);
+        return;
+    }
+    for (uint32_t k = 0; k < 3; k++) {
+        cyc[len++] = 3 * t + k;
+        len += walk_side(f, t, k, &cyc[len]);
+    }
+    /* the centre: two thirds along from corner 0 to the midpoint of the
+     * opposite side, so position, normal and uv are the corners' average */
+    silk_vec3 p[3], n[3];
+    silk_vec2 uv[3];
+    for (int k = 0; k < 3; k++) corner_attrs(m, 3 * t + k, &p[k], &n[k], &uv[k]);
+    fan_closed(g, put_centre(g, p[0], n[0], uv[0], mid3(p[1], p[2]), mean_normal(n[1], n[2]),
+                             mid2(uv[1], uv[2]), T_TWO_THIRDS), cyc, len);
+}
+
+void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats)
+{
+    const silk_mesh *m = f->m;
+    g->nvrec = g->ntri = g->ncurve = 0;
+
+    /* Every corner keeps its record; corners at a perturbed vertex all use the
+     * same offset, so the vertex moves as one. */
+    for (uint32_t i = 0; i < 3 * m->ntris; i++) {
+        silk_vrec *r = &g->vrec[i];
+        uint32_t off = f->vert_offset ? f->vert_offset[m->tri[i]] : SILK_SIL_NONE;
+        r->kind = off == SILK_SIL_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+        r->a = i;
+        r->b = off == SILK_SIL_NONE ? 0 : off;
+        r->t = 0;
+    }
+    g->nvrec = 3 * m->ntris;
+
+    /* Edge chains: one curve and one run of records per distinct side. */
+    uint32_t samples = 0, bridges = 0;
+    for (uint32_t w = 0; w < f->nedges; w++) {
+        silk_sil_edge *e = &f->edges[w];
+        if (!e->nchain || f->edges[e->parent].rejected) continue;
+        bridges += e->npairs;
+        samples += e->nchain;
+        for (uint32_t i = 0; i < e->nsides; i++) {
+            silk_sil_side *s = &f->sides[e->side0 + i];
+            if (s->owner != e->side0 + i) continue;
+            silk_curve c = e->geom;
+            c.n0 = m->normal[s->n0];
+            c.n1 = m->normal[s->n1];
+            if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
+                c.uv0 = m->uv[s->uv0];
+                c.uv1 = m->uv[s->uv1];
+            }
+            s->curve = g->ncurve++;
+            g->curve[s->curve] = c;
+            s->rec = g->nvrec;
+            for (uint32_t j = 0; j < e->nchain; j++) put_curve_rec(g, s->curve, f->chain[e->chain0 + j]);
+        }
+    }
+
+    uint32_t si = 0, nsil = 0;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
+        if (s && !f->edges[s->comp].rejected) {
+            emit_silhouette(f, g, t, s);
+            samples += s->n - 1;
+            nsil++;
+            continue;
+        }
+        int chained = 0;
+        for (uint32_t k = 0; k < 3; k++) chained |= side_points(f, t, k) > 0;
+        if (chained) emit_fanned(f, g, t);
+        else put_tri(g, 3 * t, 3 * t + 1, 3 * t + 2, 0);
+    }
+
+    g->offset = f->offset;
+    g->noffset = f->noffset;
+    if (stats) {
+        stats->silhouette_tris = f->nsil;
+        stats->bridges = bridges;
+        stats->samples = samples;
+        stats->tris_drawn = g->ntri;
+        stats->moved_vertices = f->noffset;
+    }
+    (void)nsil;
+}

@@ -1,0 +1,140 @@
+/*
+ * render.c - one frame: per-frame geometry, vertex stage, rasterizer.
+ *
+ * The silhouette stages (smooth.c) or the plain coarse mesh (flat.c) produce
+ * vertex records and triangles over them.  Each record goes through the HAL's
+ * vertex stage exactly once, so a vertex shared by many triangles reaches the
+ * rasterizer with the same bits in all of them (no cracks); then every
+ * triangle is rasterized into the target's band, and --wire draws the edges on
+ * top.  All per-frame memory is taken from the top of the arena and released
+ * before returning, so frames can be rendered forever from one arena.
+ */
+#include <string.h>
+#include "smooth.h"
+
+void silk_render_opts_default(silk_render_opts *o)
+{
+    o->mode = SILK_MODE_SMOOTH;
+    o->tolerance_px = SILK_FX_HALF;
+    o->wire = 0;
+    o->wire_rgb = 0x202020;
+    o->wire_new_rgb = 0xE02020;
+    o->bg_rgb = 0xFFFFFF;
+}
+
+/* A frame ready to rasterize: geometry plus the vertex stage's output. */
+typedef struct frame {
+    const silk_hal *hal;
+    silk_geom geom;
+    silk_frame_geom g;
+    silk_vertex_out *cache;   /* NULL when the arena could not hold it */
+} frame;
+
+/* Vertex stage output for record i: from the cache when the frame could
+ * afford one, else recomputed (same bits either way: the stage is a pure
+ * function of the record). */
+static const silk_vertex_out *vertex_out(const frame *f, uint32_t i, silk_vertex_out *tmp)
+{
+    if (f->cache) return &f->cache[i];
+    f->hal->vertex(f->hal, &f->geom, &f->g.vrec[i], tmp);
+    return tmp;
+}
+
+static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                 const silk_hal *h, const silk_render_opts *o,
+                                 silk_frame_stats *stats, silk_error *err)
+{
+    if (!a || !m || !v || !h || !o || !h->vertex || !h->fragment)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
+    memset(f, 0, sizeof *f);
+    f->hal = h;
+    silk_status st;
+    if (o->mode == SILK_MODE_SMOOTH)
+        st = silk_frame_smooth(a, m, v, o->tolerance_px, SILK_VIS_AUTO, &f->g, stats, err);
+    else if (o->mode == SILK_MODE_FLAT)
+        st = silk_frame_flat(a, m, &f->g, err);
+    else
+        st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
+    if (st != SILK_OK) return st;
+
+    f->geom.mesh = m;
+    f->geom.curves = f->g.curve;
+    f->geom.offsets = f->g.offset;
+    /* Without room for the cache the frame is still drawn, only slower. */
+    f->cache = silk_arena_array_top(a, f->g.nvrec, sizeof *f->cache, SILK_MEM_FRAME);
+    if (f->cache)
+        for (uint32_t i = 0; i < f->g.nvrec; i++) h->vertex(h, &f->geom, &f->g.vrec[i], &f->cache[i]);
+    stats->tris_drawn = f->g.ntri;
+    return SILK_OK;
+}
+
+static void frame_draw(const frame *f, const silk_render_opts *o, silk_target *t)
+{
+    const silk_frame_geom *g = &f->g;
+    silk_vertex_out tmp[3];
+    silk_target_clear(t, o->bg_rgb);
+    for (uint32_t k = 0; k < g->ntri; k++) {
+        const uint32_t *c = &g->tri[3 * k];
+        silk_raster_triangle(t, f->hal, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
+                             vertex_out(f, c[2], &tmp[2]));
+    }
+    if (!o->wire) return;
+    /* Original triangles first, so the red of re-meshed ones stays on top. */
+    for (int pass = 0; pass < 2; pass++)
+        for (uint32_t k = 0; k < g->ntri; k++) {
+            int added = g->tri_added && g->tri_added[k];
+            if (added != pass) continue;
+            const uint32_t *c = &g->tri[3 * k];
+            for (int e = 0; e < 3; e++)
+                silk_raster_line(t, vertex_out(f, c[e], &tmp[0]), vertex_out(f, c[(e + 1) % 3], &tmp[1]),
+                                 added ? o->wire_new_rgb : o->wire_rgb);
+        }
+}
+
+silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
+                        const silk_render_opts *o, silk_target *t, silk_frame_stats *stats,
+                        silk_error *err)
+{
+    silk_frame_stats local;
+    if (!stats) stats = &local;
+    memset(stats, 0, sizeof *stats);
+    if (!a || !t) return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
+
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    a->top_peak = a->top;
+    frame f;
+    silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
+    if (st == SILK_OK) frame_draw(&f, o, t);
+    stats->frame_bytes = a->top_peak - mark.top;
+    silk_arena_top_release(a, &mark);
+    return st;
+}
+
+silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
+                              const silk_render_opts *o, silk_target *band, const silk_sink *sink,
+                              silk_frame_stats *stats, silk_error *err)
+{
+    silk_frame_stats local;
+    if (!stats) stats = &local;
+    memset(stats, 0, sizeof *stats);
+    if (!a || !band || !sink || !sink->band || band->rows < 1 || band->height < 1)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: missing argument");
+
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    a->top_peak = a->top;
+    frame f;
+    silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
+    const int rows = band->rows;
+    for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
+        band->y0 = y0;
+        band->rows = band->height - y0 < rows ? band->height - y0 : rows;
+        frame_draw(&f, o, band);
+        if (sink->band(sink->user, band))
+            st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
+    }
+    band->y0 = 0;
+    band->rows = rows;
+    stats->frame_bytes = a->top_peak - mark.top;
+    silk_arena_top_release(a, &mark);
+    return st;
+}

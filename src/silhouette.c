@@ -1,0 +1,342 @@
+/*
+ * silhouette.c - silhouette triangles, silhouette bridges and silhouette
+ * points for one view (paper III-B, III-C, III-D).
+ *
+ * A triangle is a silhouette triangle when the visibility of its three
+ * corner normals (the normal of the triangle's own smooth group at feature
+ * vertices) is not the same.  Its two sides whose end normals disagree get a
+ * silhouette point: on the bridge of eqs. 2-5 for an ordinary edge, on the
+ * precomputed feature segment for a feature edge (case a of III-D), at the
+ * parameter of eqs. 6-7.  Visible feature edges are also sampled, with a
+ * count from eq. 8 that depends on the edge alone.
+ *
+ * Everything placed on an edge is computed here once per edge and frame and
+ * collected into the edge's chain of parameters, which every triangle on the
+ * edge then walks (see silhouette.h), so neighbours agree bit for bit.
+ */
+#include <string.h>
+#include "silhouette.h"
+#include "curve.h"
+
+/* ---- small helpers ---------------------------------------------------------- */
+
+static int edge_ok(const silk_mesh *m, silk_index e) { return e < m->nedges; }
+
+/* Whether side k of triangle t runs from edge.v[0] to edge.v[1]. */
+static int side_forward(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e)
+{
+    return m->tri[3 * t + k] == e->v[0];
+}
+
+/* The normals (and uvs) at edge.v[0], edge.v[1] as side k of t sees them. */
+static void side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e,
+                       silk_index *n0, silk_index *n1, silk_index *uv0, silk_index *uv1)
+{
+    uint32_t ca = 3 * t + k, cb = 3 * t + (k + 1) % 3;
+    if (!side_forward(m, t, k, e)) { uint32_t s = ca; ca = cb; cb = s; }
+    *n0 = m->tri_normal[ca];
+    *n1 = m->tri_normal[cb];
+    if (m->tri_uv && m->uv) { *uv0 = m->tri_uv[ca]; *uv1 = m->tri_uv[cb]; }
+    else { *uv0 = SILK_NO_INDEX; *uv1 = SILK_NO_INDEX; }
+}
+
+static int is_front(const silk_mesh *m, const silk_view *v, uint32_t t)
+{
+    silk_vec3 fn = silk_mesh_face_normal(m, t);
+    silk_vec3 d = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+    return silk_v3_dot64(fn, d) > 0;
+}
+
+/* Triangles whose three normals and corners are usable; anything else is
+ * drawn as it is (never smoothed), so a broken index cannot crash a frame. */
+static int tri_ok(const silk_mesh *m, uint32_t t)
+{
+    for (int k = 0; k < 3; k++)
+        if (m->tri[3 * t + k] >= m->nverts || m->tri_normal[3 * t + k] >= m->nnormals ||
+            !edge_ok(m, m->tri_edge[3 * t + k]))
+            return 0;
+    return 1;
+}
+
+uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i)
+{
+    uint32_t r = i;
+    while (edges[r].parent != r) r = edges[r].parent;
+    while (edges[i].parent != r) { uint32_t nx = edges[i].parent; edges[i].parent = r; i = nx; }
+    return r;
+}
+
+const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
+                                      uint32_t tri, uint32_t k)
+{
+    for (uint32_t i = 0; i < e->nsides; i++) {
+        const silk_sil_side *s = &f->sides[e->side0 + i];
+        if (s->tri == tri && s->k == k) return s;
+    }
+    return NULL;
+}
+
+void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
+                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv)
+{
+    const silk_mesh *m = f->m;
+    *p = silk_hermite_point(&e->geom, u);
+    /* eq. 6: the normal along a bridge is interpolated linearly */
+    if (!silk_v3_normalize(silk_v3_lerp(m->normal[s->n0], m->normal[s->n1], u), n))
+        *n = m->normal[s->n0];
+    if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
+        silk_vec2 a = m->uv[s->uv0], b = m->uv[s->uv1];
+        uv->x = silk_fx_add(a.x, silk_fx_mul(silk_fx_sub(b.x, a.x), u));
+        uv->y = silk_fx_add(a.y, silk_fx_mul(silk_fx_sub(b.y, a.y), u));
+    } else {
+        uv->x = uv->y = 0;
+    }
+}
+
+/* ---- per-edge geometry ------------------------------------------------------- */
+
+/* The curve every point on edge w lies on: the feature segment of a feature
+ * edge (a straight one if it has none), else the silhouette bridge built from
+ * the normals of the first silhouette side found on it. */
+static void edge_geometry(const silk_sil_frame *f, silk_sil_edge *w)
+{
+    const silk_mesh *m = f->m;
+    const silk_edge *e = &m->edge[w->edge];
+    silk_vec3 p0 = m->pos[e->v[0]], p1 = m->pos[e->v[1]];
+    memset(&w->geom, 0, sizeof w->geom);
+    if (w->is_feature || w->npairs == 0) {
+        silk_index fi = m->edge_feature ? m->edge_feature[w->edge] : SILK_NO_INDEX;
+        if (fi != SILK_NO_INDEX && fi < m->nfeature_edges && m->feature) {
+            w->geom.t0 = m->feature[fi].t0;
+            w->geom.t1 = m->feature[fi].t1;
+        } else {
+            w->geom.t0 = w->geom.t1 = silk_v3_sub(p1, p0);
+        }
+        w->geom.p0 = p0;
+        w->geom.p1 = p1;
+    } else {
+        silk_bridge(p0, m->normal[w->bn0], p1, m->normal[w->bn1], &w->geom);
+        w->geom.p0 = p0;    /* the bridge must end exactly on the vertices */
+        w->geom.p1 = p1;
+    }
+}
+
+/* Eq. 8 reads n_s = ceil(sqrt(h r / e) / 2) with r = sin(alpha/2).  For a
+ * circular arc of radius R split into n equal pieces the error is about
+ * R alpha^2 / (8 n^2); with h the arc's projected CHORD, h = 2 R r, that is
+ * h r / (4 n^2), and requiring it <= e gives exactly eq. 8 for n pieces.
+ * With h the arc's height (the text's wording, R alpha^2 / 8) the formula
+ * would give 2/sqrt(r) times too few pieces - a single chord for every
+ * silhouette triangle of a 200-triangle sphere at 512x512, 1.4 px off - so
+ * h here is the projected chord, and n_s the number of intervals. */
+uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol)
+{
+    silk_vec2 a, b;
+    /* A curve reaching behind the eye is clipped anyway: one interval. */
+    if (!silk_view_project(v, c->p0, &a) || !silk_view_project(v, c->p1, &b)) return 1;
+    silk_fx chord = silk_v3_length(silk_v3(silk_fx_sub(a.x, b.x), silk_fx_sub(a.y, b.y), 0));
+    return silk_sample_count(chord, cos_alpha, tol);
+}
+
+static silk_fx unit_dot(silk_vec3 a, silk_vec3 b)
+{
+    silk_vec3 ua, ub;
+    if (!silk_v3_normalize(a, &ua) || !silk_v3_normalize(b, &ub)) return SILK_FX_ONE;
+    return silk_v3_dot(ua, ub);
+}
+
+/* Insert u into the ascending, distinct list c[0..*n). */
+static void chain_insert(silk_fx *c, uint32_t *n, silk_fx u)
+{
+    uint32_t i = *n;
+    while (i > 0 && c[i - 1] > u) i--;
+    if (i > 0 && c[i - 1] == u) return;
+    memmove(&c[i + 1], &c[i], (*n - i) * sizeof *c);
+    c[i] = u;
+    (*n)++;
+}
+
+static uint32_t chain_index(const silk_fx *c, uint32_t n, silk_fx u)
+{
+    uint32_t lo = 0, hi = n;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (c[mid] < u) lo = mid + 1; else hi = mid;
+    }
+    return lo;
+}
+
+/* ---- the stage ----------------------------------------------------------------- */
+
+/* Mark edge e as carrying points; the first time, give it a slot. */
+static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
+{
+    if (f->edge_slot[e] == SILK_SIL_NONE) f->edge_slot[e] = (*n)++;
+}
+
+silk_status silk_sil_find(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
+    const silk_view *v = f->v;
+    silk_arena *a = f->a;
+
+    f->visible = silk_arena_array_top(a, m->nnormals, 1, SILK_MEM_FRAME);
+    f->tri_state = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
+    f->edge_slot = silk_arena_array_top(a, m->nedges, sizeof *f->edge_slot, SILK_MEM_FRAME);
+    if (!f->visible || !f->tri_state || !f->edge_slot) return SILK_ERR_NOMEM;
+    memset(f->edge_slot, 0xFF, (size_t)m->nedges * sizeof *f->edge_slot);
+
+    /* III-B.  The hierarchy may want scratch we do not have; the brute pass
+     * gives the same answer without any. */
+    if (silk_visibility(m, v, f->vis, f->visible, a, NULL) != SILK_OK)
+        silk_visibility_brute(m, v, f->visible);
+
+    /* Silhouette triangles, and which triangles next to a feature edge face us. */
+    int features = m->nfeature_edges > 0 || m->nboundary_edges > 0 || m->nnonmanifold_edges > 0;
+    uint32_t nwork = 0;
+    f->nsil = 0;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        uint8_t st = 0;
+        f->tri_state[t] = 0;
+        if (!tri_ok(m, t)) continue;
+        const silk_index *tn = &m->tri_normal[3 * t];
+        uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
+        if (v0 != v1 || v1 != v2) {
+            uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
+            st = (uint8_t)(SILK_TS_SIL | lone);
+            f->nsil++;
+            mark_edge(f, m->tri_edge[3 * t + lone], &nwork);
+            mark_edge(f, m->tri_edge[3 * t + (lone + 2) % 3], &nwork);
+        }
+        if (features) {
+            int has_feature = 0;
+            for (int k = 0; k < 3; k++)
+                if (m->edge[m->tri_edge[3 * t + k]].flags & SILK_EDGE_FEATURE) has_feature = 1;
+            if (has_feature && is_front(m, v, t)) {
+                st |= SILK_TS_FRONT;
+                for (int k = 0; k < 3; k++) {
+                    silk_index e = m->tri_edge[3 * t + k];
+                    if (m->edge[e].flags & SILK_EDGE_FEATURE) mark_edge(f, e, &nwork);
+                }
+            }
+        }
+        f->tri_state[t] = st;
+    }
+
+    f->nedges = nwork;
+    f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
+    if (!f->edges) return SILK_ERR_NOMEM;
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        uint32_t w = f->edge_slot[e];
+        if (w == SILK_SIL_NONE) continue;
+        f->edges[w].edge = e;
+        f->edges[w].parent = w;
+        f->edges[w].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
+    }
+
+    /* Count the sides (every triangle side on a carrying edge) and the
+     * silhouette sides of each edge, then lay them out edge by edge. */
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        if (!tri_ok(m, t)) continue;
+        uint8_t st = f->tri_state[t];
+        for (uint32_t k = 0; k < 3; k++) {
+            uint32_t w = f->edge_slot[m->tri_edge[3 * t + k]];
+            if (w == SILK_SIL_NONE) continue;
+            silk_sil_edge *we = &f->edges[w];
+            we->nsides++;
+            if (st & SILK_TS_SIL) {
+                uint32_t lone = st & SILK_TS_LONE;
+                if (k == lone || k == (lone + 2) % 3) we->npairs++;
+            }
+            if ((st & SILK_TS_FRONT) && we->is_feature) we->sampled = 1;
+        }
+    }
+    uint32_t nsides = 0, npairs = 0;
+    for (uint32_t w = 0; w < nwork; w++) {
+        f->edges[w].side0 = nsides; nsides += f->edges[w].nsides; f->edges[w].nsides = 0;
+        f->edges[w].pair0 = npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
+    }
+    f->nsides = nsides;
+    f->npairs = npairs;
+    f->sides = silk_arena_array_top(a, nsides, sizeof *f->sides, SILK_MEM_FRAME);
+    f->pairs = silk_arena_array_top(a, npairs, sizeof *f->pairs, SILK_MEM_FRAME);
+    if (!f->sides || !f->pairs) return SILK_ERR_NOMEM;
+
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        if (!tri_ok(m, t)) continue;
+        uint8_t st = f->tri_state[t];
+        for (uint32_t k = 0; k < 3; k++) {
+            silk_index e = m->tri_edge[3 * t + k];
+            uint32_t w = f->edge_slot[e];
+            if (w == SILK_SIL_NONE) continue;
+            silk_sil_edge *we = &f->edges[w];
+            silk_sil_side *s = &f->sides[we->side0 + we->nsides];
+            s->tri = t;
+            s->k = k;
+            side_attrs(m, t, k, &m->edge[e], &s->n0, &s->n1, &s->uv0, &s->uv1);
+            s->owner = (uint32_t)(s - f->sides);
+            for (uint32_t i = 0; i < we->nsides; i++) {
+                const silk_sil_side *o = &f->sides[we->side0 + i];
+                if (o->n0 == s->n0 && o->n1 == s->n1 && o->uv0 == s->uv0 && o->uv1 == s->uv1) {
+                    s->owner = we->side0 + i;
+                    break;
+                }
+            }
+            we->nsides++;
+
+            if (!(st & SILK_TS_SIL)) continue;
+            uint32_t lone = st & SILK_TS_LONE;
+            if (k != lone && k != (lone + 2) % 3) continue;
+            /* One silhouette point per distinct normal pair on the edge. */
+            uint32_t i;
+            for (i = 0; i < we->npairs; i++) {
+                const silk_sil_pair *p = &f->pairs[we->pair0 + i];
+                if (p->n0 == s->n0 && p->n1 == s->n1) break;
+            }
+            if (i < we->npairs) continue;
+            silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
+            p->n0 = s->n0;
+            p->n1 = s->n1;
+            if (we->npairs == 1) { we->bn0 = s->n0; we->bn1 = s->n1; }
+        }
+    }
+
+    /* Per edge: its curve, its silhouette points (eqs. 6-7), its feature
+     * sampling (eq. 8), then the chain of all its parameters. */
+    uint32_t nchain = 0;
+    for (uint32_t w = 0; w < nwork; w++) {
+        silk_sil_edge *we = &f->edges[w];
+        const silk_edge *e = &m->edge[we->edge];
+        edge_geometry(f, we);
+        silk_vec3 d0 = silk_view_to_eye(v, we->geom.p0), d1 = silk_view_to_eye(v, we->geom.p1);
+        for (uint32_t i = 0; i < we->npairs; i++) {
+            silk_sil_pair *p = &f->pairs[we->pair0 + i];
+            p->u = silk_fx_clamp(silk_silhouette_param(m->normal[p->n0], d0, m->normal[p->n1], d1),
+                                 0, SILK_FX_ONE);
+        }
+        we->nfeat = 0;
+        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))
+            we->nfeat = silk_sil_intervals(v, &we->geom, unit_dot(we->geom.t0, we->geom.t1), f->tol);
+        nchain += (we->nfeat > 1 ? we->nfeat - 1 : 0) + we->npairs;
+    }
+    f->chain = silk_arena_array_top(a, nchain, sizeof *f->chain, SILK_MEM_FRAME);
+    if (!f->chain) return SILK_ERR_NOMEM;
+    nchain = 0;
+    for (uint32_t w = 0; w < nwork; w++) {
+        silk_sil_edge *we = &f->edges[w];
+        silk_fx *c = &f->chain[nchain];
+        uint32_t n = 0;
+        for (uint32_t i = 1; i < we->nfeat; i++)
+            c[n++] = silk_fx_sat(((int64_t)i * SILK_FX_ONE + we->nfeat / 2) / we->nfeat);
+        for (uint32_t i = 0; i < we->npairs; i++) chain_insert(c, &n, f->pairs[we->pair0 + i].u);
+        for (uint32_t i = 0; i < we->npairs; i++) {
+            silk_sil_pair *p = &f->pairs[we->pair0 + i];
+            p->chain = chain_index(c, n, p->u);
+        }
+        we->chain0 = nchain;
+        we->nchain = n;
+        nchain += n;
+    }
+    f->nchain = nchain;
+    return SILK_OK;
+}

@@ -1,0 +1,152 @@
+/*
+ * silhouette.h - internal: the per-frame data the silhouette stages pass to
+ * each other (paper section III-B..E).  Not installed.
+ *
+ *   silhouette.c  visibility, silhouette triangles, the edges that carry
+ *                 points this frame (silhouette bridges, feature segments),
+ *                 silhouette points and the sorted point chain of each edge
+ *   remesh.c      silhouette segments, adaptive sampling, the re-meshing of
+ *                 Figs. 11 and 12, and the emission of vertex records
+ *   perturb.c     vertex perturbation next to concave silhouette segments
+ *   smooth.c      runs the stages and degrades gracefully when memory runs out
+ *
+ * Crack-freeness rests on one rule: every point placed on a mesh edge lives
+ * in that edge's chain, which is computed once per frame from per-edge data
+ * only, and every triangle using the edge walks the whole chain.  Triangles
+ * on the two sides of an edge may evaluate the chain on different curves
+ * (their own normals and uvs) but with the same end points, tangents and
+ * parameters, so the positions agree bit for bit.
+ */
+#ifndef SILK_SILHOUETTE_H
+#define SILK_SILHOUETTE_H
+
+#include "smooth.h"
+
+#define SILK_SIL_NONE UINT32_MAX
+
+/* tri_state bits */
+enum {
+    SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
+    SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
+    SILK_TS_FRONT = 8       /* front-facing (computed only for triangles with a feature side) */
+};
+
+/* A silhouette point (eqs. 6-7): one normal pair on one edge. */
+typedef struct silk_sil_pair {
+    silk_index n0, n1;       /* normals at edge.v[0] and edge.v[1] */
+    silk_fx u;               /* parameter from edge.v[0] */
+    uint32_t chain;          /* index of u in the edge's chain */
+} silk_sil_pair;
+
+/* One triangle side lying on a carrying edge.  Sides with the same normals
+ * and uvs share one curve and one run of records (owner). */
+typedef struct silk_sil_side {
+    uint32_t tri;
+    uint32_t k;              /* side k joins corners k and (k+1)%3 */
+    silk_index n0, n1;       /* normals at edge.v[0], edge.v[1] */
+    silk_index uv0, uv1;     /* uvs there, or SILK_NO_INDEX */
+    uint32_t owner;          /* side whose curve and records this one uses */
+    uint32_t curve, rec;     /* output: curve index and first chain record (owners only) */
+} silk_sil_side;
+
+/* An edge that carries points this frame. */
+typedef struct silk_sil_edge {
+    silk_curve geom;         /* p0, p1, t0, t1 along edge.v[0] -> v[1]: bridge or feature segment */
+    uint32_t edge;           /* mesh edge index */
+    uint32_t pair0, npairs;  /* silhouette points */
+    uint32_t side0, nsides;  /* triangle sides on this edge */
+    uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
+    uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
+    uint32_t parent;         /* union-find over edges joined by a re-meshed triangle */
+    silk_index bn0, bn1;     /* normals the bridge was built from (non-feature edges) */
+    uint8_t is_feature, sampled, rejected;
+} silk_sil_edge;
+
+/* The silhouette segment of one silhouette triangle (III-D) and its samples. */
+typedef struct silk_sil_seg {
+    silk_curve c;            /* A -> B with normals and uvs at the silhouette points */
+    uint32_t tri;
+    uint32_t n;              /* sampling intervals (eq. 8) */
+    uint32_t split;          /* sample joined to both base vertices (Fig. 11) */
+    uint32_t comp;           /* union-find root (edge index) */
+    int concave;             /* III-E: N_A.F > 0 and N_B.F < 0 */
+    silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E */
+    silk_fx rise;            /* how far the segment's ends rise above P_i */
+    uint32_t curve, rec;     /* output: segment curve and its first interior sample */
+} silk_sil_seg;
+
+/* Per union-find root: what accepting that part of the frame costs. */
+typedef struct silk_sil_cost {
+    uint32_t recs, tris, curves, near;   /* near: neighbour vertices of its concave segments */
+} silk_sil_cost;
+
+typedef struct silk_sil_frame {
+    silk_arena *a;
+    const silk_mesh *m;
+    const silk_view *v;
+    silk_fx tol;
+    silk_vis_method vis;
+
+    uint8_t *visible;        /* nnormals */
+    uint8_t *tri_state;      /* ntris, SILK_TS_* */
+    uint32_t *edge_slot;     /* nedges: index into edges[], or SILK_SIL_NONE */
+    uint32_t nsil;
+
+    silk_sil_edge *edges;  uint32_t nedges;
+    silk_sil_pair *pairs;  uint32_t npairs;
+    silk_sil_side *sides;  uint32_t nsides;
+    silk_fx *chain;        uint32_t nchain;
+    silk_sil_seg *segs;    uint32_t nsegs;
+    silk_sil_cost *cost;     /* nedges (indexed by root) */
+    uint32_t ncentre;        /* accepted triangles re-meshed around their centre */
+    uint32_t max_poly;       /* longest boundary of one re-meshed triangle */
+    uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
+
+    /* perturbation (perturb.c) */
+    uint32_t near_bound;     /* neighbour slots needed by the accepted concave segments */
+    uint32_t *vert_slot;     /* nverts: perturbation slot, or SILK_SIL_NONE */
+    silk_vec3 *acc;          /* per slot: sum of plane normals, then the unit R */
+    silk_fx *lift;           /* per slot: how far to move down along R */
+    uint32_t *slot_vert, *slot_stamp, nslots;
+    uint32_t *vert_offset;   /* nverts view of vert_slot after perturbation: offset index */
+    silk_vec3 *offset;     uint32_t noffset;
+
+    int fell_back;
+} silk_sil_frame;
+
+/* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs out. */
+silk_status silk_sil_find(silk_sil_frame *f);
+/* Edge e's side k of triangle t in triangle order: first record and whether
+ * the chain runs forwards. */
+const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
+                                      uint32_t tri, uint32_t k);
+/* Position and normal of point u on edge e for side s (what the HAL will
+ * compute for the record). */
+void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
+                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv);
+
+/* Eq. 8 for curve c: the number of intervals to sample it with, from its
+ * projected chord in pixels and cos alpha (see silhouette.c for why the
+ * chord). */
+uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol);
+
+/* remesh.c */
+silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments, counts, components, costs */
+int  silk_remesh_reject_last(silk_sil_frame *f);     /* drop one more component; 0 if none left */
+uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
+int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g);   /* 0 when it does not fit */
+void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats);
+
+/* perturb.c */
+int  silk_perturb_alloc(silk_sil_frame *f);          /* 0 when it does not fit */
+void silk_perturb(silk_sil_frame *f);                /* fills offset, vert_offset */
+
+/* Shared helpers. */
+uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i);
+static inline int silk_sil_chained(const silk_sil_frame *f, uint32_t edge)
+{
+    uint32_t w = f->edge_slot[edge];
+    return w != SILK_SIL_NONE && !f->edges[w].rejected && f->edges[w].nchain > 0;
+}
+
+#endif

@@ -1,0 +1,64 @@
+/*
+ * smooth.c - one frame of silhouette smoothing (paper section III, Fig. 7):
+ * visibility and silhouette triangles, bridges and silhouette points
+ * (silhouette.c), segments, adaptive sampling and re-meshing (remesh.c),
+ * vertex perturbation (perturb.c), and the vertex records for the HAL.
+ *
+ * Memory runs out gracefully: scratch that does not fit turns the frame into
+ * the coarse mesh; output that does not fit drops re-meshed parts from the
+ * last one back until it does.  Either way stats->fell_back is set and the
+ * frame is still drawn.
+ */
+#include <string.h>
+#include "silhouette.h"
+
+static silk_status fall_back_flat(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
+                                  silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
+{
+    silk_arena_top_release(a, mark);
+    memset(g, 0, sizeof *g);
+    silk_status st = silk_frame_flat(a, m, g, err);
+    if (st != SILK_OK) return st;
+    if (stats) {
+        stats->silhouette_tris = stats->bridges = stats->samples = stats->moved_vertices = 0;
+        stats->tris_drawn = g->ntri;
+        stats->fell_back = 1;
+    }
+    return SILK_OK;
+}
+
+silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view *v,
+                              silk_fx tolerance_px, silk_vis_method vis,
+                              silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
+{
+    if (!a || !m || !v || !g)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_smooth: missing argument");
+    if (tolerance_px <= 0)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_smooth: tolerance must be positive");
+    memset(g, 0, sizeof *g);
+    if (stats) stats->fell_back = 0;
+
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    silk_sil_frame f;
+    memset(&f, 0, sizeof f);
+    f.a = a;
+    f.m = m;
+    f.v = v;
+    f.tol = tolerance_px;
+    f.vis = vis;
+
+    if (silk_sil_find(&f) != SILK_OK || silk_remesh_plan(&f) != SILK_OK)
+        return fall_back_flat(a, m, &mark, g, stats, err);
+
+    for (;;) {
+        silk_arena_mark try_mark = silk_arena_top_mark(a);
+        if (silk_perturb_alloc(&f) && silk_remesh_alloc(&f, g)) break;
+        silk_arena_top_release(a, &try_mark);
+        f.fell_back = 1;
+        if (!silk_remesh_reject_last(&f)) return fall_back_flat(a, m, &mark, g, stats, err);
+    }
+    silk_perturb(&f);
+    silk_remesh_emit(&f, g, stats);
+    if (stats) stats->fell_back = f.fell_back;
+    return SILK_OK;
+}

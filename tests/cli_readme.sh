@@ -1,0 +1,36 @@
+#!/bin/sh
+# cli_readme.sh - the README keeps its promises: the library example in it
+# compiles warning-free against the built library and renders a generated
+# sphere with smoothed silhouettes; the commands it names exist.
+. "$(dirname "$0")/shlib.sh"
+
+readme=$here/../README.md
+awk '/^```c$/ { on = 1; next } /^```$/ { on = 0 } on' "$readme" >"$tmp/example.c"
+check "README has a C example" test -s "$tmp/example.c"
+
+flags="-std=c11 -Wall -Wextra -Wpedantic -Werror"
+case "$build" in *san*) flags="$flags -fsanitize=address,undefined" ;; esac
+if ${CC:-cc} $flags -I"$here/../include" "$tmp/example.c" "$build/libsilk.a" -o "$tmp/example" 2>"$err"; then
+    pass "README example compiles without warnings"
+else
+    fail "README example compiles without warnings" "$(head -c 500 "$err")"
+fi
+
+"$SILK" gen sphere -o "$tmp/sphere.obj"
+"$tmp/example" "$tmp/sphere.obj" >"$out" 2>"$err"
+rc=$?
+example_ok() {
+    [ "$rc" -eq 0 ] && awk '{ exit !($1 > 200 && $5 > 0 && $0 ~ /triangles drawn, [0-9]+ on the silhouette, arena peak [0-9]+ bytes/) }' "$out"
+}
+check "README example renders ($(cat "$out"))" example_ok
+"$tmp/example" "$tmp/missing.obj" >"$out" 2>"$err"
+check "README example reports a load error" test $? -eq 1 -a -s "$err"
+
+for c in "make demo" "make test" "silk render" "silk info" "silk gen" ".ci/run"; do
+    check "README mentions $c" grep -q -- "$c" "$readme"
+done
+for c in "render --help" "info --help" "gen --help"; do
+    check "silk $c works" "$SILK" $c >/dev/null
+done
+
+done_testing

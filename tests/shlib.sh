@@ -1,0 +1,98 @@
+# shlib.sh - helpers for the shell tests of the silk command (tests/cli_*.sh),
+# sourced, not run.  Each test script gets the build directory as $1 and
+# ends with done_testing, which prints "N passed, N failed" like check.h.
+#
+#   check NAME COMMAND...            passes when COMMAND succeeds
+#   run_silk ARGS...                 runs $SILK; sets $rc, $out, $err (files)
+#   expect_usage NAME ARGS...        exit 2, one "silk: " line on stderr
+#   expect_input NAME ARGS...        exit 1, one "silk: " line on stderr
+
+build=${1:-build}
+SILK=$build/silk
+here=$(cd "$(dirname "$0")" && pwd)
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/silk-cli.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+out=$tmp/stdout
+err=$tmp/stderr
+
+pass() { passed=$((passed + 1)); echo "ok $1"; }
+# run.sh shows lines starting with FAIL
+fail() { failed=$((failed + 1)); echo "FAIL $1: $2"; }
+
+check() {
+    name=$1; shift
+    if "$@"; then pass "$name"; else fail "$name" "$*"; fi
+}
+
+run_silk() {
+    "$SILK" "$@" >"$out" 2>"$err"
+    rc=$?
+}
+
+# One line on stderr, "silk: ..." (and a message matching $want if set).
+one_error_line() {
+    [ "$(wc -l <"$err")" -eq 1 ] && head -n 1 "$err" | grep -q '^silk: ' &&
+        { [ -z "${want:-}" ] || grep -qE -- "$want" "$err"; }
+}
+
+expect_status() {
+    code=$1; name=$2; shift 2
+    run_silk "$@"
+    if [ "$rc" -eq "$code" ] && one_error_line; then
+        pass "$name"
+    else
+        fail "$name" "silk $* -> exit $rc, stderr: $(head -c 300 "$err")"
+    fi
+    want=
+}
+expect_usage() { expect_status 2 "$@"; }
+expect_input() { expect_status 1 "$@"; }
+
+# Files in a directory whose names contain ".tmp" (uncommitted outputs).
+no_tmp_files() {
+    [ -z "$(find "$1" -name '*.tmp*' 2>/dev/null)" ]
+}
+
+# The first bytes of a file as hex pairs separated by spaces.
+hex_head() {
+    od -An -tx1 -N"$2" "$1" | tr -s ' \n' '  ' | sed 's/^ //; s/ $//'
+}
+
+# Width and height from a PNG's IHDR chunk (big-endian at byte 16).
+png_size() {
+    od -An -tu1 -j16 -N8 "$1" | awk '{ printf "%dx%d\n", (($1*256+$2)*256+$3)*256+$4, (($5*256+$6)*256+$7)*256+$8 }'
+}
+
+is_png() {
+    [ "$(hex_head "$1" 8)" = "89 50 4e 47 0d 0a 1a 0a" ]
+}
+
+# "WxH" from a P6 header (the sink writes "P6\nW H\n255\n").
+ppm_size() {
+    head -c 20 "$1" | awk 'NR == 1 && $0 != "P6" { exit 1 } NR == 2 { print $1 "x" $2; exit }'
+}
+
+# Pixels of a PPM that differ from the colour RRGGBB (hex).
+ppm_count_not() {
+    bg=$2
+    r=$(printf '%d' "0x$(echo "$bg" | cut -c1-2)")
+    g=$(printf '%d' "0x$(echo "$bg" | cut -c3-4)")
+    b=$(printf '%d' "0x$(echo "$bg" | cut -c5-6)")
+    hdr=$(head -n 3 "$1" | wc -c)
+    od -An -v -tu1 -j"$hdr" "$1" | awk -v r="$r" -v g="$g" -v b="$b" '
+        { for (i = 1; i <= NF; i++) { c[k++ % 3] = $i; if (k % 3 == 0 && (c[0] != r || c[1] != g || c[2] != b)) n++ } }
+        END { print n + 0 }'
+}
+
+# The value of a "name: value" line of `silk info`; name includes the
+# line's indentation ("  samples" in the frame section).
+info_value() {
+    grep -E "^$2: " "$1" | head -n 1 | sed -E "s/^$2: +//"
+}
+
+done_testing() {
+    echo "$passed passed, $failed failed"
+    [ "$failed" -eq 0 ]
+}

@@ -1,0 +1,130 @@
+/*
+ * test_bad.c - the malformed-input corpus in tests/bad/, through the
+ * library: every file must fail to load with exactly the line its
+ * NAME.expected gives (less the CLI's "silk: " prefix), leave the arena as it
+ * was, and do so under the sanitizers without reading outside the buffer.
+ * tests/cli_bad.sh checks the same files through the `silk` command.
+ * Run from the repository root (tests/run.sh does).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <stdint.h>
+#include <string.h>
+#include "check.h"
+#include "silk/silk.h"
+
+#define BAD_DIR "tests/bad"
+
+static char *read_file(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    char *buf = NULL;
+    size_t cap = 0, n = 0;
+    for (;;) {
+        if (n == cap) {
+            char *nb = realloc(buf, cap = cap ? 2 * cap : 4096);
+            if (!nb) { free(buf); fclose(f); return NULL; }
+            buf = nb;
+        }
+        size_t got = fread(buf + n, 1, cap - n, f);
+        n += got;
+        if (got == 0) break;
+    }
+    fclose(f);
+    *len = n;
+    return buf;
+}
+
+static int cmp_names(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+TEST(corpus)
+{
+    DIR *d = opendir(BAD_DIR);
+    CHECKF(d != NULL, "cannot open %s (run from the repository root)", BAD_DIR);
+    if (!d) return;
+    char *names[512];
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) && n < 512) {
+        size_t l = strlen(e->d_name);
+        if (l > 4 && (!strcmp(e->d_name + l - 4, ".obj") || !strcmp(e->d_name + l - 4, ".ply")))
+            names[n++] = strdup(e->d_name);
+    }
+    closedir(d);
+    qsort(names, (size_t)n, sizeof *names, cmp_names);
+
+    size_t arena_size = 8u << 20;
+    unsigned char *mem = malloc(arena_size);
+    int checked = 0, objs = 0, plys = 0;
+    for (int i = 0; i < n; i++) {
+        char path[600], expected_path[640], name[600];
+        snprintf(path, sizeof path, "%s/%s", BAD_DIR, names[i]);
+        snprintf(expected_path, sizeof expected_path, "%s.expected", path);
+        size_t len, elen;
+        char *data = read_file(path, &len);
+        char *expected = read_file(expected_path, &elen);
+        CHECKF(data && expected, "%s: missing file or .expected", path);
+        if (!data || !expected) { free(data); free(expected); continue; }
+        /* one line, "silk: " + the message */
+        CHECKF(elen > 7 && expected[elen - 1] == '\n' && memchr(expected, '\n', elen - 1) == NULL &&
+               !strncmp(expected, "silk: ", 6), "%s: .expected must be one line starting with 'silk: '", path);
+        if (elen) expected[elen - 1] = '\0';
+
+        /* exactly len bytes on the heap, so that ASan sees any overread */
+        char *exact = malloc(len ? len : 1);
+        memcpy(exact, data, len);
+        snprintf(name, sizeof name, "%s", path);
+        silk_arena a;
+        silk_mesh m;
+        silk_error err;
+        memset(&err, 0, sizeof err);
+        silk_arena_init(&a, mem, arena_size);
+        silk_status st = silk_load_mesh(exact, len, name, NULL, &a, &m, &err);
+        CHECKF(st != SILK_OK, "%s: loaded, but should fail", path);
+        CHECKF(strcmp(err.msg, expected + 6) == 0, "%s:\n     got  \"%s\"\n     want \"%s\"", names[i], err.msg,
+               expected + 6);
+        CHECKF(a.bottom == 0 && a.top == 0, "%s: arena not restored", path);
+        checked++;
+        if (strstr(names[i], ".obj")) objs++; else plys++;
+        free(exact);
+        free(data);
+        free(expected);
+        free(names[i]);
+    }
+    free(mem);
+    CHECKF(checked >= 40, "only %d malformed files", checked);
+    CHECKF(objs >= 10 && plys >= 10, "%d OBJ and %d PLY files", objs, plys);
+    printf("  %d malformed files (%d OBJ, %d PLY)\n", checked, objs, plys);
+}
+
+/* The corpus is not all: every .expected has its file. */
+TEST(no_orphans)
+{
+    DIR *d = opendir(BAD_DIR);
+    if (!d) return;
+    struct dirent *e;
+    int orphans = 0;
+    while ((e = readdir(d))) {
+        size_t l = strlen(e->d_name);
+        if (l > 9 && !strcmp(e->d_name + l - 9, ".expected")) {
+            char path[600];
+            snprintf(path, sizeof path, "%s/%.*s", BAD_DIR, (int)(l - 9), e->d_name);
+            FILE *f = fopen(path, "rb");
+            if (!f) { orphans++; fprintf(stderr, "no file for %s\n", e->d_name); }
+            else fclose(f);
+        }
+    }
+    closedir(d);
+    CHECK(orphans == 0);
+}
+
+int main(void)
+{
+    RUN(corpus);
+    RUN(no_orphans);
+    return check_done();
+}

@@ -1,0 +1,568 @@
+/*
+ * test_normals.c - crease and smoothing-group flags, and the split,
+ * angle-weighted shading normals (paper III-B, Fig. 8), against a double
+ * reference; file normals; and the measurement behind the default crease
+ * angle (dihedral angles of the shared meshes, docs/formats.md).
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "silk/silk.h"
+
+#define ARENA_BYTES (48u << 20)
+#define PI 3.14159265358979323846
+
+static silk_fx to_fx(double d) { return (silk_fx)llround(d * 65536.0); }
+static double fx_d(silk_fx v) { return v / 65536.0; }
+
+typedef struct fixture {
+    void *buf;
+    silk_arena a;
+    silk_mesh_input in;
+    silk_load_opts opts;
+    silk_mesh m;
+    silk_error err;
+} fixture;
+
+static void fx_init(fixture *f, size_t bytes)
+{
+    memset(f, 0, sizeof *f);
+    f->buf = malloc(bytes);
+    silk_arena_init(&f->a, f->buf, bytes);
+    silk_load_opts_default(&f->opts);
+}
+
+static void fx_reset(fixture *f, size_t bytes)
+{
+    silk_arena_init(&f->a, f->buf, bytes);
+    memset(&f->in, 0, sizeof f->in);
+    memset(&f->m, 0, sizeof f->m);
+}
+
+static int fx_input(fixture *f, const double *pos, uint32_t nv, const uint32_t *tri, uint32_t nt)
+{
+    f->in.nverts = nv;
+    f->in.ntris = nt;
+    f->in.pos = silk_arena_array(&f->a, nv, sizeof(silk_vec3), SILK_MEM_MESH);
+    f->in.tri = silk_arena_array(&f->a, 3 * (size_t)nt, sizeof(silk_index), SILK_MEM_MESH);
+    if (!f->in.pos || !f->in.tri) return 0;
+    for (uint32_t v = 0; v < nv; v++)
+        f->in.pos[v] = silk_v3(to_fx(pos[3 * v]), to_fx(pos[3 * v + 1]), to_fx(pos[3 * v + 2]));
+    for (uint32_t c = 0; c < 3 * nt; c++) f->in.tri[c] = tri[c];
+    return 1;
+}
+
+static silk_status fx_build(fixture *f) { return silk_mesh_build(&f->in, "test", &f->opts, &f->a, &f->m, &f->err); }
+
+/* Minimal reader for the shared meshes (only `v` and `f` lines). */
+static int read_obj(const char *name, fixture *f)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s.obj", check_meshes_dir(), name);
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return 0;
+    fseek(fp, 0, SEEK_END);
+    long len = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    char *text = malloc((size_t)len + 1);
+    size_t got = fread(text, 1, (size_t)len, fp);
+    fclose(fp);
+    text[got] = 0;
+    uint32_t nv = 0, nt = 0;
+    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
+        if (l[0] == 'v' && l[1] == ' ') nv++;
+        if (l[0] == 'f' && l[1] == ' ') nt++;
+    }
+    double *pos = malloc(3 * sizeof(double) * (nv ? nv : 1));
+    uint32_t *tri = malloc(3 * sizeof(uint32_t) * (nt ? nt : 1));
+    uint32_t iv = 0, it = 0;
+    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
+        char *p = l + 2;
+        if (l[0] == 'v' && l[1] == ' ') {
+            for (int k = 0; k < 3; k++) pos[3 * iv + k] = strtod(p, &p);
+            iv++;
+        } else if (l[0] == 'f' && l[1] == ' ') {
+            for (int k = 0; k < 3; k++) tri[3 * it + k] = (uint32_t)strtoul(p, &p, 10) - 1;
+            it++;
+        }
+    }
+    int ok = fx_input(f, pos, nv, tri, nt);
+    free(text);
+    free(pos);
+    free(tri);
+    return ok;
+}
+
+/* ---- the double reference ------------------------------------------------------------ */
+
+static void posd(const silk_mesh *m, uint32_t v, double p[3])
+{
+    p[0] = fx_d(m->pos[v].x);
+    p[1] = fx_d(m->pos[v].y);
+    p[2] = fx_d(m->pos[v].z);
+}
+
+static void cross3(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static double len3(const double a[3]) { return sqrt(dot3(a, a)); }
+
+/* Unit face normal (zero for zero area) and the angle at each corner. */
+static void ref_face(const silk_mesh *m, uint32_t t, double n[3], double ang[3])
+{
+    double p[3][3];
+    for (int k = 0; k < 3; k++) posd(m, m->tri[3 * t + k], p[k]);
+    double e1[3], e2[3];
+    for (int i = 0; i < 3; i++) e1[i] = p[1][i] - p[0][i], e2[i] = p[2][i] - p[0][i];
+    cross3(e1, e2, n);
+    double l = len3(n);
+    for (int i = 0; i < 3; i++) n[i] = l > 0 ? n[i] / l : 0;
+    for (int k = 0; k < 3; k++) {
+        double a[3], b[3], c[3];
+        for (int i = 0; i < 3; i++) a[i] = p[(k + 1) % 3][i] - p[k][i], b[i] = p[(k + 2) % 3][i] - p[k][i];
+        cross3(a, b, c);
+        ang[k] = l > 0 ? atan2(len3(c), dot3(a, b)) : 0;
+    }
+}
+
+/* Dihedral angle (between face normals) of a two-triangle edge in degrees,
+ * or -1 when it has none. */
+static double ref_dihedral(const silk_mesh *m, uint32_t e)
+{
+    const silk_edge *ed = &m->edge[e];
+    if (ed->t[1] == SILK_NO_INDEX || (ed->flags & (SILK_EDGE_NONMANIFOLD | SILK_EDGE_DEGENERATE))) return -1;
+    double n0[3], n1[3], a[3];
+    ref_face(m, ed->t[0], n0, a);
+    ref_face(m, ed->t[1], n1, a);
+    double d = dot3(n0, n1);
+    return acos(d > 1 ? 1 : (d < -1 ? -1 : d)) * 180 / PI;
+}
+
+static uint32_t find(uint32_t *p, uint32_t c)
+{
+    while (p[c] != c) c = p[c] = p[p[c]];
+    return c;
+}
+static void unite(uint32_t *p, uint32_t a, uint32_t b)
+{
+    a = find(p, a);
+    b = find(p, b);
+    if (a != b) p[a > b ? a : b] = a < b ? a : b;
+}
+
+typedef struct normal_report {
+    double max_err_ulp;      /* worst component error of a shading normal */
+    double max_err_kappa;    /* its conditioning (sum of weights / length of the weighted sum) */
+    uint32_t groups, checked;
+} normal_report;
+
+/* Checks the crease flags against the double dihedral angle (edges within
+ * margin_deg of the threshold may go either way), then the grouping and the
+ * normals against a double angle-weighted average over groups formed from
+ * m's feature flags. */
+static void check_normals(const silk_mesh *m, double crease_deg, double margin_deg, normal_report *r)
+{
+    memset(r, 0, sizeof *r);
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        double d = ref_dihedral(m, e);
+        int crease = (m->edge[e].flags & SILK_EDGE_CREASE) != 0;
+        if (d < 0) CHECKF(!crease, "edge %u has no dihedral angle but is a crease", e);
+        else if (fabs(d - crease_deg) > margin_deg)
+            CHECKF(crease == (d > crease_deg), "edge %u dihedral %.4f crease %d", e, d, crease);
+    }
+    uint32_t nc = 3 * m->ntris;
+    uint32_t *p = malloc(sizeof *p * nc);
+    for (uint32_t c = 0; c < nc; c++) p[c] = c;
+    for (uint32_t t = 0; t < m->ntris; t++)
+        for (int k = 0; k < 3; k++)
+            for (int j = k + 1; j < 3; j++)
+                if (m->tri[3 * t + k] == m->tri[3 * t + j]) unite(p, 3 * t + k, 3 * t + j);
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        const silk_edge *ed = &m->edge[e];
+        if (ed->t[1] == SILK_NO_INDEX || (ed->flags & SILK_EDGE_FEATURE)) continue;
+        for (int end = 0; end < 2; end++)
+            for (int k = 0; k < 3; k++)
+                for (int j = 0; j < 3; j++)
+                    if (m->tri[3 * ed->t[0] + k] == ed->v[end] && m->tri[3 * ed->t[1] + j] == ed->v[end])
+                        unite(p, 3 * ed->t[0] + k, 3 * ed->t[1] + j);
+    }
+    double *sum = calloc(nc, 3 * sizeof(double)), *wsum = calloc(nc, sizeof(double));
+    uint32_t *silk_of = malloc(sizeof *silk_of * nc), *ref_of = malloc(sizeof *ref_of * (m->nnormals + 1));
+    for (uint32_t c = 0; c < nc; c++) silk_of[c] = SILK_NO_INDEX;
+    for (uint32_t g = 0; g <= m->nnormals; g++) ref_of[g] = SILK_NO_INDEX;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        double n[3], ang[3];
+        ref_face(m, t, n, ang);
+        for (int k = 0; k < 3; k++) {
+            uint32_t c = 3 * t + k, r0 = find(p, c), g = m->tri_normal[c];
+            for (int i = 0; i < 3; i++) sum[3 * r0 + i] += ang[k] * n[i];
+            wsum[r0] += ang[k];
+            /* the same partition: ref group <-> silk normal, one to one */
+            if (silk_of[r0] == SILK_NO_INDEX) silk_of[r0] = g;
+            CHECKF(silk_of[r0] == g, "corner %u: normal %u, its group has %u", c, g, silk_of[r0]);
+            if (g < m->nnormals) {
+                if (ref_of[g] == SILK_NO_INDEX) ref_of[g] = r0;
+                CHECKF(ref_of[g] == r0, "normal %u spans two groups", g);
+            }
+        }
+    }
+    for (uint32_t c = 0; c < nc; c++) {
+        if (find(p, c) != c) continue;
+        r->groups++;
+        double l = len3(&sum[3 * c]);
+        if (l < 1e-9) continue;
+        r->checked++;
+        silk_vec3 n = m->normal[m->tri_normal[c]];
+        double got[3] = { fx_d(n.x), fx_d(n.y), fx_d(n.z) };
+        /* Rounded face normals and angles, summed exactly, normalised once:
+         * about 1 ulp, growing with the cancellation in the sum (kappa). */
+        double kappa = wsum[c] / l;
+        for (int i = 0; i < 3; i++) {
+            double err = fabs(got[i] - sum[3 * c + i] / l) * 65536;
+            CHECKF(err <= 1.0 + 0.5 * kappa, "normal %u component %d off by %.2f ulp (kappa %.2f)",
+                   m->tri_normal[c], i, err, kappa);
+            if (err > r->max_err_ulp) {
+                r->max_err_ulp = err;
+                r->max_err_kappa = kappa;
+            }
+        }
+    }
+    CHECKF(r->groups == m->nnormals, "%u reference groups, %u normals", r->groups, m->nnormals);
+    free(p);
+    free(sum);
+    free(wsum);
+    free(silk_of);
+    free(ref_of);
+}
+
+/* ---- small meshes ------------------------------------------------------------------------- */
+
+static const double cube_pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 };
+static const uint32_t cube_tri[] = {
+    0, 3, 2, 0, 2, 1,  4, 5, 6, 4, 6, 7,  0, 1, 5, 0, 5, 4,
+    2, 3, 7, 2, 7, 6,  1, 2, 6, 1, 6, 5,  0, 4, 7, 0, 7, 3,
+};
+
+TEST(cube_split_normals)
+{
+    fixture f;
+    fx_init(&f, 1 << 16);
+    CHECK(fx_input(&f, cube_pos, 8, cube_tri, 12) && fx_build(&f) == SILK_OK);
+    const silk_mesh *m = &f.m;
+    CHECK(m->nnormals == 24);
+    uint32_t per_vertex[8] = { 0 };
+    for (uint32_t g = 0; g < m->nnormals; g++) {
+        silk_vec3 n = m->normal[g];
+        per_vertex[m->normal_vertex[g]]++;
+        /* exactly a unit axis: the two triangles of a face are coplanar */
+        int axes = (n.x != 0) + (n.y != 0) + (n.z != 0);
+        int unit = silk_fx_abs(n.x) + silk_fx_abs(n.y) + silk_fx_abs(n.z) == SILK_FX_ONE;
+        CHECKF(axes == 1 && unit, "normal %u = %d %d %d", g, n.x, n.y, n.z);
+        if (g > 0) CHECK(m->normal_vertex[g] >= m->normal_vertex[g - 1]);   /* vertex order */
+    }
+    for (int v = 0; v < 8; v++) CHECKF(per_vertex[v] == 3, "vertex %d has %u normals", v, per_vertex[v]);
+    /* both triangles of a face share the normal at a shared corner */
+    CHECK(m->tri_normal[0] == m->tri_normal[3]);
+    CHECK(m->nfeature_edges == 12);   /* the cube's edges, not its diagonals */
+    normal_report r;
+    check_normals(m, fx_d(f.opts.crease_deg), 1e-3, &r);
+    CHECK(r.max_err_ulp == 0);
+    free(f.buf);
+}
+
+TEST(crease_threshold)
+{
+    /* two triangles hinged on the x axis, 50 degrees between their normals */
+    double s = sin(50 * PI / 180), c = cos(50 * PI / 180);
+    double pos[] = { 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -c, -s };
+    static const uint32_t tri[] = { 0, 1, 2, 1, 0, 3 };
+    fixture f;
+    fx_init(&f, 1 << 16);
+    f.opts.crease_deg = SILK_FX_C(40, 1);
+    CHECK(fx_input(&f, pos, 4, tri, 2) && fx_build(&f) == SILK_OK);
+    CHECK(f.m.edge[f.m.tri_edge[0]].flags & SILK_EDGE_CREASE);
+    CHECK(f.m.nnormals == 6);
+    fx_reset(&f, 1 << 16);
+    f.opts.crease_deg = SILK_FX_C(60, 1);
+    CHECK(fx_input(&f, pos, 4, tri, 2) && fx_build(&f) == SILK_OK);
+    CHECK(!(f.m.edge[f.m.tri_edge[0]].flags & SILK_EDGE_CREASE));
+    CHECK(f.m.nnormals == 4);   /* the hinge vertices have one normal: the bisector */
+    CHECK(f.m.normal[f.m.tri_normal[0]].x == 0);   /* the bisector of the two faces */
+    normal_report r;
+    check_normals(&f.m, 60, 1e-3, &r);
+    CHECKF(r.max_err_ulp <= 3, "hinge normal error %.2f ulp", r.max_err_ulp);
+    free(f.buf);
+}
+
+TEST(smoothing_groups)
+{
+    /* a flat square whose two triangles are in different smoothing groups */
+    static const double pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+    static const uint32_t tri[] = { 0, 1, 2, 0, 2, 3 };
+    fixture f;
+    fx_init(&f, 1 << 16);
+    CHECK(fx_input(&f, pos, 4, tri, 2));
+    uint32_t groups[2] = { 1, 2 };
+    f.in.tri_group = groups;
+    CHECK(fx_build(&f) == SILK_OK);
+    uint32_t diag = f.m.tri_edge[2];   /* side 2-0 of triangle 0 */
+    CHECK(f.m.edge[diag].flags & SILK_EDGE_GROUPS);
+    CHECK(!(f.m.edge[diag].flags & SILK_EDGE_CREASE));
+    CHECK(f.m.nnormals == 6 && f.m.nfeature_edges == 5);
+    fx_reset(&f, 1 << 16);
+    CHECK(fx_input(&f, pos, 4, tri, 2));
+    groups[1] = 1;
+    f.in.tri_group = groups;
+    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(f.m.nnormals == 4 && f.m.nfeature_edges == 4);
+    free(f.buf);
+}
+
+TEST(file_normals)
+{
+    static const double pos[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+    static const uint32_t tri[] = { 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2 };
+    fixture f;
+    fx_init(&f, 1 << 16);
+    CHECK(fx_input(&f, pos, 4, tri, 4));
+    /* one file normal per vertex, not unit length, and one zero normal */
+    silk_vec3 fn[4] = { { 0, 0, 0 }, { to_fx(3), 0, 0 }, { 0, to_fx(0.5), 0 }, { to_fx(1), to_fx(1), to_fx(1) } };
+    silk_index tfn[12];
+    for (int c = 0; c < 12; c++) tfn[c] = tri[c];
+    f.in.file_normal = fn;
+    f.in.tri_file_normal = tfn;
+    f.in.nfile_normals = 4;
+    f.opts.normals = SILK_NORMALS_FILE;
+    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(f.m.nnormals == 4);
+    CHECK(f.m.normal[f.m.tri_normal[1]].y == SILK_FX_ONE);   /* vertex 2: (0,0.5,0) normalised */
+    CHECK(f.m.normal[f.m.tri_normal[2]].x == SILK_FX_ONE);
+    silk_vec3 n3 = f.m.normal[f.m.tri_normal[5]];
+    CHECK(abs(n3.x - 37837) <= 1 && n3.x == n3.y && n3.y == n3.z);   /* 1/sqrt 3 */
+    silk_vec3 n0 = f.m.normal[f.m.tri_normal[0]];                     /* zero: a face normal */
+    CHECK(abs(silk_fx_abs(n0.x) + silk_fx_abs(n0.y) + silk_fx_abs(n0.z) - SILK_FX_ONE) <= 2);
+    CHECK(f.m.nfeature_edges == 6);   /* features are still found: every edge is sharp */
+
+    /* per-corner file normals: three normals at each vertex */
+    fx_reset(&f, 1 << 16);
+    CHECK(fx_input(&f, pos, 4, tri, 4));
+    silk_vec3 fn12[12];
+    for (int c = 0; c < 12; c++) {
+        fn12[c] = silk_v3(0, 0, to_fx(c + 1));
+        tfn[c] = (silk_index)c;
+    }
+    f.in.file_normal = fn12;
+    f.in.tri_file_normal = tfn;
+    f.in.nfile_normals = 12;
+    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(f.m.nnormals == 12 && f.m.normal[5].z == SILK_FX_ONE);
+
+    /* a corner without a file normal: computed normals instead */
+    fx_reset(&f, 1 << 16);
+    CHECK(fx_input(&f, pos, 4, tri, 4));
+    tfn[7] = SILK_NO_INDEX;
+    f.in.file_normal = fn12;
+    f.in.tri_file_normal = tfn;
+    f.in.nfile_normals = 12;
+    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(f.m.nnormals == 12 && f.m.normal[5].z != SILK_FX_ONE);
+    normal_report r;
+    check_normals(&f.m, fx_d(f.opts.crease_deg), 1e-3, &r);
+
+    /* a file normal index out of range is an error, not a crash */
+    fx_reset(&f, 1 << 16);
+    CHECK(fx_input(&f, pos, 4, tri, 4));
+    tfn[7] = 12;
+    f.in.file_normal = fn12;
+    f.in.tri_file_normal = tfn;
+    f.in.nfile_normals = 12;
+    CHECK(fx_build(&f) == SILK_ERR_ARG);
+    free(f.buf);
+}
+
+/* ---- the shared meshes ----------------------------------------------------------------------- */
+
+static const char *const all_meshes[] = {
+    "sphere-200", "sphere-fine", "knot-480", "knot-fine", "bunny-500", "bunny-2k", "bunny-fine", "fish-500",
+    "fish-fine", "cat-500", "cat-fine", "cow-500", "cow-fine", "spot-500", "spot-fine", "maxplanck-500",
+    "maxplanck-fine", "venus-500", "venus-fine", "feline-500", "feline-2k", "feline-fine", "armadillo-500",
+    "armadillo-fine", "dragon-500", "dragon-5k", "dragon-fine", "fandisk-128", "fandisk-1000", "fandisk-fine",
+    "torus-576", "torus-fine", "pawn-304", "cone-70", "springer-500", "springer-fine", "wingnut-500",
+    "wingnut-fine", "rockerarm-500", "rockerarm-fine",
+};
+
+TEST(shared_meshes_normals_vs_reference)
+{
+    fixture f;
+    fx_init(&f, ARENA_BYTES);
+    double worst = 0, worst_kappa = 0;
+    const char *worst_name = "";
+    for (size_t i = 0; i < sizeof all_meshes / sizeof *all_meshes; i++) {
+        fx_reset(&f, ARENA_BYTES);
+        CHECKF(read_obj(all_meshes[i], &f), "cannot read %s", all_meshes[i]);
+        silk_status st = fx_build(&f);
+        CHECKF(st == SILK_OK, "%s: %s", all_meshes[i], f.err.msg);
+        if (st != SILK_OK) continue;
+        normal_report r;
+        check_normals(&f.m, fx_d(f.opts.crease_deg), 1e-3, &r);
+        printf("  %-15s %6u normals  worst %.2f ulp (kappa %.2f)\n", all_meshes[i], f.m.nnormals, r.max_err_ulp,
+               r.max_err_kappa);
+        if (r.max_err_ulp > worst) worst = r.max_err_ulp, worst_kappa = r.max_err_kappa, worst_name = all_meshes[i];
+    }
+    printf("  worst normal component error %.2f ulp (%s, kappa %.2f)\n", worst, worst_name, worst_kappa);
+    free(f.buf);
+}
+
+/* Segments of the fine fandisk's sharp edges: where the real creases are. */
+typedef struct seg { double a[3], b[3]; } seg;
+
+static double point_seg_dist(const double p[3], const seg *s)
+{
+    double ab[3], ap[3];
+    for (int i = 0; i < 3; i++) ab[i] = s->b[i] - s->a[i], ap[i] = p[i] - s->a[i];
+    double l2 = dot3(ab, ab), t = l2 > 0 ? dot3(ab, ap) / l2 : 0;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    double d[3];
+    for (int i = 0; i < 3; i++) d[i] = p[i] - (s->a[i] + t * ab[i]);
+    return len3(d);
+}
+
+/* The dihedral-angle distribution of the coarse models, and what the
+ * default crease angle makes of it (docs/formats.md has the table). */
+TEST(crease_default_on_shared_meshes)
+{
+    static const char *const names[] = {
+        "bunny-500", "cat-500", "cow-500", "spot-500", "armadillo-500", "dragon-500", "fish-500", "venus-500",
+        "feline-500", "maxplanck-500", "springer-500", "knot-480", "sphere-200", "torus-576", "rockerarm-500",
+        "wingnut-500", "pawn-304", "fandisk-128", "cone-70",
+    };
+    static const double th[] = { 30, 45, 60, 70, 80, 90 };
+    double deflt = fx_d(SILK_DEFAULT_CREASE_DEG);
+    fixture f;
+    fx_init(&f, ARENA_BYTES);
+    printf("  default crease angle %.1f degrees\n", deflt);
+    printf("  %-14s %5s  %-28s  crease edges at (deg)          default\n", "mesh", "edges",
+           "dihedral histogram 0..180/20");
+    printf("  %-14s %5s  %-28s  %5.0f %5.0f %5.0f %5.0f %5.0f %5.0f\n", "", "", "", th[0], th[1], th[2], th[3],
+           th[4], th[5]);
+    uint32_t organic = 0, organic_edges = 0;
+    for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
+        fx_reset(&f, ARENA_BYTES);
+        CHECKF(read_obj(names[i], &f), "cannot read %s", names[i]);
+        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
+        const silk_mesh *m = &f.m;
+        uint32_t hist[9] = { 0 }, above[6] = { 0 }, creases = 0;
+        for (uint32_t e = 0; e < m->nedges; e++) {
+            double d = ref_dihedral(m, e);
+            creases += (m->edge[e].flags & SILK_EDGE_CREASE) != 0;
+            if (d < 0) continue;
+            hist[d >= 180 ? 8 : (int)(d / 20)]++;
+            for (int k = 0; k < 6; k++) above[k] += d > th[k];
+        }
+        char h[64];
+        int n = 0;
+        for (int k = 0; k < 9; k++) n += snprintf(h + n, sizeof h - (size_t)n, "%u%s", hist[k], k < 8 ? "," : "");
+        printf("  %-14s %5u  %-28s  %5u %5u %5u %5u %5u %5u  %5u\n", names[i], m->nedges, h, above[0], above[1],
+               above[2], above[3], above[4], above[5], creases);
+        normal_report r;
+        check_normals(m, deflt, 1e-3, &r);
+        if (i < 15) organic += creases, organic_edges += m->nedges;
+
+        if (!strcmp(names[i], "sphere-200") || !strcmp(names[i], "torus-576"))
+            CHECKF(creases == 0, "%s has %u creases", names[i], creases);
+        if (!strcmp(names[i], "cone-70")) {
+            /* exactly the rim: 35 edges with both ends at y = 0, off the axis */
+            uint32_t rim = 0;
+            for (uint32_t e = 0; e < m->nedges; e++) {
+                silk_vec3 a = m->pos[m->edge[e].v[0]], b = m->pos[m->edge[e].v[1]];
+                int on_rim = a.y == 0 && b.y == 0 && (a.x || a.z) && (b.x || b.z);
+                rim += on_rim;
+                CHECKF(on_rim == ((m->edge[e].flags & SILK_EDGE_CREASE) != 0), "cone edge %u", e);
+            }
+            CHECK(rim == 35 && creases == 35);
+            /* two normals at each rim vertex, one at the apex and the base centre */
+            uint32_t *count = calloc(m->nverts, sizeof *count);
+            for (uint32_t g = 0; g < m->nnormals; g++) count[m->normal_vertex[g]]++;
+            for (uint32_t v = 0; v < m->nverts; v++) {
+                int on_rim = m->pos[v].y == 0 && (m->pos[v].x || m->pos[v].z);
+                CHECKF(count[v] == (on_rim ? 2u : 1u), "cone vertex %u has %u normals", v, count[v]);
+            }
+            CHECK(m->nnormals == 72);
+            free(count);
+        }
+        if (!strcmp(names[i], "fandisk-128")) {
+            /* the real creases: coarse edges lying (ends and middle within 1%
+             * of the model size) along sharp edges (> 45 deg) of fandisk-fine */
+            silk_mesh coarse = *m;
+            fixture g;
+            fx_init(&g, ARENA_BYTES);
+            CHECK(read_obj("fandisk-fine", &g) && fx_build(&g) == SILK_OK);
+            seg *sharp = malloc(sizeof *sharp * g.m.nedges);
+            uint32_t nsharp = 0;
+            for (uint32_t e = 0; e < g.m.nedges; e++)
+                if (ref_dihedral(&g.m, e) > 45) {
+                    posd(&g.m, g.m.edge[e].v[0], sharp[nsharp].a);
+                    posd(&g.m, g.m.edge[e].v[1], sharp[nsharp].b);
+                    nsharp++;
+                }
+            double lo[3], hi[3], dg[3];
+            posd(&g.m, 0, lo);
+            posd(&g.m, 0, hi);
+            for (uint32_t v = 0; v < g.m.nverts; v++) {
+                double p[3];
+                posd(&g.m, v, p);
+                for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], p[k]), hi[k] = fmax(hi[k], p[k]);
+            }
+            for (int k = 0; k < 3; k++) dg[k] = hi[k] - lo[k];
+            double tol = 0.01 * len3(dg);
+            uint32_t real = 0, real_kept = 0, real_sharp = 0, spurious = 0;
+            for (uint32_t e = 0; e < coarse.nedges; e++) {
+                double p[3][3];
+                posd(&coarse, coarse.edge[e].v[0], p[0]);
+                posd(&coarse, coarse.edge[e].v[1], p[1]);
+                for (int k = 0; k < 3; k++) p[2][k] = (p[0][k] + p[1][k]) / 2;
+                int on = 1;
+                for (int q = 0; q < 3 && on; q++) {
+                    double best = 1e30;
+                    for (uint32_t s = 0; s < nsharp; s++) best = fmin(best, point_seg_dist(p[q], &sharp[s]));
+                    on = best < tol;
+                }
+                int crease = (coarse.edge[e].flags & SILK_EDGE_CREASE) != 0;
+                double d = ref_dihedral(&coarse, e);
+                real += on;
+                real_kept += on && crease;
+                spurious += !on && crease;
+                if (on && d >= 45) {
+                    real_sharp++;
+                    CHECKF(crease, "fandisk-128 edge %u (%.1f deg) lies on a real crease but is not one", e, d);
+                }
+            }
+            printf("  fandisk-128: %u edges on real creases (%u of them sharper than 45 deg), %u kept, "
+                   "%u other creases\n", real, real_sharp, real_kept, spurious);
+            free(sharp);
+            free(g.buf);
+        }
+    }
+    printf("  the 15 organic / smooth models: %u crease edges of %u (%.1f%%)\n", organic, organic_edges,
+           100.0 * organic / organic_edges);
+    free(f.buf);
+}
+
+int main(void)
+{
+    RUN(cube_split_normals);
+    RUN(crease_threshold);
+    RUN(smoothing_groups);
+    RUN(file_normals);
+    RUN(shared_meshes_normals_vs_reference);
+    RUN(crease_default_on_shared_meshes);
+    return check_done();
+}

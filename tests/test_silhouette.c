@@ -1,0 +1,465 @@
+/*
+ * test_silhouette.c - silhouette triangles, bridges, silhouette points and
+ * sampling (paper III-B..E) against double-precision references, and the
+ * sharing rule: every point on a mesh edge is computed once per frame and
+ * evaluates to the same bits in every triangle that uses the edge.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "silk/silk.h"
+#include "../src/silhouette.h"
+#include "../src/curve.h"
+
+#define ARENA_BYTES (32u << 20)
+static unsigned char *arena_buf;
+
+static double fx2d(silk_fx v) { return v / 65536.0; }
+static silk_fx d2fx(double v) { return (silk_fx)llround(v * 65536.0); }
+
+static int load_shared(silk_arena *a, const char *name, silk_mesh *m)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
+    FILE *fp = fopen(path, "rb");
+    if (!fp) { fprintf(stderr, "cannot read %s\n", path); return 0; }
+    fseek(fp, 0, SEEK_END);
+    long n = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    char *t = malloc((size_t)n + 1);
+    size_t got = fread(t, 1, (size_t)n, fp);
+    fclose(fp);
+    silk_arena_init(a, arena_buf, ARENA_BYTES);
+    silk_load_opts o;
+    silk_load_opts_default(&o);
+    silk_error err;
+    silk_status st = silk_load_obj(t, got, name, &o, a, m, &err);
+    free(t);
+    if (st != SILK_OK) { fprintf(stderr, "%s\n", err.msg); return 0; }
+    return 1;
+}
+
+static int make_view(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v)
+{
+    double c[3], r = 0;
+    for (int i = 0; i < 3; i++) {
+        double lo = fx2d((&m->bbox_min.x)[i]), hi = fx2d((&m->bbox_max.x)[i]);
+        c[i] = (lo + hi) / 2;
+        r += (hi - lo) * (hi - lo) / 4;
+    }
+    r = sqrt(r);
+    double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    silk_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = silk_v3(d2fx(c[0] + dir[0] / len * dist * r), d2fx(c[1] + dir[1] / len * dist * r),
+                      d2fx(c[2] + dir[2] / len * dist * r));
+    cam.target = silk_v3(d2fx(c[0]), d2fx(c[1]), d2fx(c[2]));
+    cam.up = fabs(dir[1] / len) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
+    cam.ortho = ortho;
+    cam.fov_deg = SILK_FX_C(45, 1);
+    cam.ortho_half_height = d2fx(r * 1.2);
+    cam.znear = d2fx(r * 0.01);
+    cam.zfar = d2fx(r * (dist + 4));
+    cam.width = 512;
+    cam.height = 512;
+    silk_error err;
+    return silk_view_init(v, &cam, &err) == SILK_OK;
+}
+
+static void random_dir(double d[3])
+{
+    double l;
+    do {
+        for (int i = 0; i < 3; i++) d[i] = check_uniform(-1, 1);
+        l = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    } while (l < 0.01 || l > 1);
+}
+
+/* The stages exactly as silk_frame_smooth runs them when memory suffices,
+ * keeping the internal frame for inspection. */
+static int run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol,
+                     silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *st)
+{
+    memset(f, 0, sizeof *f);
+    memset(g, 0, sizeof *g);
+    memset(st, 0, sizeof *st);
+    f->a = a; f->m = m; f->v = v; f->tol = tol; f->vis = SILK_VIS_BRUTE;
+    if (silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK) return 0;
+    if (!silk_perturb_alloc(f) || !silk_remesh_alloc(f, g)) return 0;
+    silk_perturb(f);
+    silk_remesh_emit(f, g, st);
+    return 1;
+}
+
+static void vec3d(silk_vec3 v, double o[3]) { o[0] = fx2d(v.x); o[1] = fx2d(v.y); o[2] = fx2d(v.z); }
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* View direction towards the eye, in double, from the same camera. */
+static void to_eye_d(const silk_view *v, silk_vec3 p, double d[3])
+{
+    if (v->cam.ortho) { vec3d(v->forward, d); for (int i = 0; i < 3; i++) d[i] = -d[i]; return; }
+    double e[3], q[3];
+    vec3d(v->cam.eye, e);
+    vec3d(p, q);
+    for (int i = 0; i < 3; i++) d[i] = e[i] - q[i];
+}
+
+/* ---- references ------------------------------------------------------------ */
+
+/* Eqs. 2-5: tangents of the bridge over p0 -> p1. */
+static void bridge_ref(const double p0[3], const double n0[3], const double p1[3], const double n1[3],
+                       double t0[3], double t1[3])
+{
+    double c[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+    double cl = sqrt(dot3(c, c));
+    const double *n[2] = { n0, n1 };
+    double *t[2] = { t0, t1 };
+    for (int k = 0; k < 2; k++) {
+        double cn = dot3(c, n[k]);
+        double d[3] = { c[0] - cn * n[k][0], c[1] - cn * n[k][1], c[2] - cn * n[k][2] };
+        double dl = sqrt(dot3(d, d));
+        double cos_t = dl > 0 ? dot3(d, c) / (dl * cl) : 1;
+        double len = 2 * cl / (1 + cos_t);
+        for (int i = 0; i < 3; i++) t[k][i] = dl > 0 ? d[i] / dl * len : c[i];
+    }
+}
+
+/* Eqs. 6-7: the root in [0,1] of ((1-u) d0 + u d1).((1-u) n0 + u n1), by bisection. */
+static double param_ref(const double n0[3], const double d0[3], const double n1[3], const double d1[3])
+{
+    double lo = 0, hi = 1;
+    double h0 = dot3(n0, d0);
+    for (int it = 0; it < 200; it++) {
+        double u = (lo + hi) / 2, n[3], d[3];
+        for (int i = 0; i < 3; i++) { n[i] = (1 - u) * n0[i] + u * n1[i]; d[i] = (1 - u) * d0[i] + u * d1[i]; }
+        double h = dot3(n, d);
+        if ((h >= 0) == (h0 >= 0)) lo = u; else hi = u;
+    }
+    return (lo + hi) / 2;
+}
+
+static void hermite_ref(const double p0[3], const double p1[3], const double t0[3], const double t1[3], double u,
+                        double out[3])
+{
+    double h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u;
+    double h01 = -2 * u * u * u + 3 * u * u, h11 = u * u * u - u * u;
+    for (int i = 0; i < 3; i++) out[i] = h00 * p0[i] + h10 * t0[i] + h01 * p1[i] + h11 * t1[i];
+}
+
+/* ---- tests ----------------------------------------------------------------- */
+
+/* III-B: a triangle is a silhouette triangle when its corner normals'
+ * visibility N.(E-V) >= 0 disagrees.  The double reference is exact here:
+ * every product of two Q16.16 numbers below 2^27 fits a double's mantissa. */
+static void silhouette_triangles(const char *name, int nviews)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    uint32_t wrong_tri = 0, wrong_lone = 0, wrong_count = 0, total = 0;
+    for (int i = 0; i < nviews; i++) {
+        double d[3];
+        random_dir(d);
+        silk_view v;
+        if (!make_view(&m, d, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_sil_frame f;
+        silk_frame_geom g;
+        silk_frame_stats st;
+        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        uint32_t count = 0;
+        for (uint32_t t = 0; t < m.ntris; t++) {
+            int vis[3];
+            for (int k = 0; k < 3; k++) {
+                double n[3], e[3];
+                vec3d(m.normal[m.tri_normal[3 * t + k]], n);
+                to_eye_d(&v, m.pos[m.tri[3 * t + k]], e);
+                vis[k] = dot3(n, e) >= 0;
+            }
+            int sil = vis[0] != vis[1] || vis[1] != vis[2];
+            count += sil;
+            int got = (f.tri_state[t] & SILK_TS_SIL) != 0;
+            if (got != sil) wrong_tri++;
+            if (sil && got) {
+                int lone = vis[0] == vis[1] ? 2 : (vis[0] == vis[2] ? 1 : 0);
+                if ((int)(f.tri_state[t] & SILK_TS_LONE) != lone) wrong_lone++;
+            }
+        }
+        if (st.silhouette_tris != count) wrong_count++;
+        total += count;
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %s: %d views, %u silhouette triangles in all\n", name, nviews, total);
+    CHECKF(wrong_tri == 0, "%s: %u triangles misclassified", name, wrong_tri);
+    CHECKF(wrong_lone == 0, "%s: %u wrong lone corners", name, wrong_lone);
+    CHECKF(wrong_count == 0, "%s: stats count wrong in %u views", name, wrong_count);
+    CHECK(total > 0);
+}
+
+TEST(silhouette_triangles_sphere) { silhouette_triangles("sphere-200.obj", 40); }
+TEST(silhouette_triangles_torus) { silhouette_triangles("torus-576.obj", 40); }
+TEST(silhouette_triangles_split_normals) { silhouette_triangles("fandisk-128.obj", 40); silhouette_triangles("cone-70.obj", 40); }
+
+/* III-C, III-D: bridges and silhouette points against double references. */
+static void bridges_vs_reference(const char *name, int nviews)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    double worst_t = 0, worst_u = 0, worst_p = 0;
+    uint32_t n_bridges = 0, n_points = 0, bad_in_range = 0;
+    for (int i = 0; i < nviews; i++) {
+        double dir[3];
+        random_dir(dir);
+        silk_view v;
+        if (!make_view(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_sil_frame f;
+        silk_frame_geom g;
+        silk_frame_stats st;
+        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        for (uint32_t w = 0; w < f.nedges; w++) {
+            const silk_sil_edge *e = &f.edges[w];
+            const silk_edge *me = &m.edge[e->edge];
+            double p0[3], p1[3], n0[3], n1[3], t0[3], t1[3];
+            vec3d(m.pos[me->v[0]], p0);
+            vec3d(m.pos[me->v[1]], p1);
+            double chord = sqrt((p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1]) +
+                                (p1[2] - p0[2]) * (p1[2] - p0[2]));
+            if (!e->is_feature && e->npairs) {
+                vec3d(m.normal[e->bn0], n0);
+                vec3d(m.normal[e->bn1], n1);
+                bridge_ref(p0, n0, p1, n1, t0, t1);
+                double g0[3], g1[3];
+                vec3d(e->geom.t0, g0);
+                vec3d(e->geom.t1, g1);
+                for (int k = 0; k < 3; k++) {
+                    double err = fmax(fabs(g0[k] - t0[k]), fabs(g1[k] - t1[k])) / chord;
+                    if (err > worst_t) worst_t = err;
+                }
+                n_bridges++;
+            } else {
+                vec3d(e->geom.t0, t0);
+                vec3d(e->geom.t1, t1);
+            }
+            double d0[3], d1[3];
+            to_eye_d(&v, m.pos[me->v[0]], d0);
+            to_eye_d(&v, m.pos[me->v[1]], d1);
+            for (uint32_t j = 0; j < e->npairs; j++) {
+                const silk_sil_pair *p = &f.pairs[e->pair0 + j];
+                double a0[3], a1[3];
+                vec3d(m.normal[p->n0], a0);
+                vec3d(m.normal[p->n1], a1);
+                /* the two ends must disagree: that is why this is a silhouette side */
+                if ((dot3(a0, d0) >= 0) == (dot3(a1, d1) >= 0)) bad_in_range++;
+                double u = param_ref(a0, d0, a1, d1);
+                double du = fabs(fx2d(p->u) - u);
+                if (du > worst_u) worst_u = du;
+                /* the point itself, on the edge's curve (ref curve from the fixed tangents) */
+                double q[3], qr[3];
+                hermite_ref(p0, p1, t0, t1, u, qr);
+                vec3d(silk_hermite_point(&e->geom, p->u), q);
+                double dp = sqrt((q[0] - qr[0]) * (q[0] - qr[0]) + (q[1] - qr[1]) * (q[1] - qr[1]) +
+                                 (q[2] - qr[2]) * (q[2] - qr[2])) / chord;
+                if (dp > worst_p) worst_p = dp;
+                n_points++;
+            }
+        }
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %s: %u bridges, worst tangent error %.2e x chord; %u silhouette points, worst |u - u_ref| %.2e, "
+           "worst position error %.2e x chord\n", name, n_bridges, worst_t, n_points, worst_u, worst_p);
+    CHECK(n_points > 0);
+    CHECKF(bad_in_range == 0, "%u silhouette points on sides whose ends agree", bad_in_range);
+    /* Q16.16 tangents of edges ~0.1..50 units long: a few ulp relative */
+    CHECKF(worst_t < 2e-3, "tangent error %.3g", worst_t);
+    /* u is Q16.16: half an ulp from rounding plus the inputs' rounding */
+    CHECKF(worst_u < 1e-3, "u error %.3g", worst_u);
+    CHECKF(worst_p < 2e-3, "point error %.3g", worst_p);
+}
+
+TEST(bridges_and_points_sphere) { bridges_vs_reference("sphere-200.obj", 30); }
+TEST(bridges_and_points_torus) { bridges_vs_reference("torus-576.obj", 30); }
+TEST(bridges_and_points_features) { bridges_vs_reference("fandisk-128.obj", 30); bridges_vs_reference("cone-70.obj", 30); }
+
+/* The sharing rule, checked on the emitted records: for every edge that
+ * carries points, every triangle side on it walks the same chain, and the
+ * records of different sides evaluate to bit-identical positions.  Across a
+ * feature edge the sides have different normals (the crease stays sharp). */
+static void shared_points(const char *name, int nviews, int want_split)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    uint32_t compared = 0, mismatched = 0, split_normals = 0, edges_two_sides = 0, bad_sides = 0;
+    for (int i = 0; i < nviews; i++) {
+        double dir[3];
+        random_dir(dir);
+        silk_view v;
+        if (!make_view(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_sil_frame f;
+        silk_frame_geom g;
+        silk_frame_stats st;
+        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        silk_geom gg = { &m, g.curve, g.offset };
+        for (uint32_t w = 0; w < f.nedges; w++) {
+            const silk_sil_edge *e = &f.edges[w];
+            if (!e->nchain) continue;
+            /* every triangle using the edge has a side on it */
+            uint32_t users = 0;
+            for (uint32_t t = 0; t < m.ntris; t++)
+                for (int k = 0; k < 3; k++) users += m.tri_edge[3 * t + k] == e->edge;
+            if (users != e->nsides) bad_sides++;
+            if (e->nsides < 2) continue;
+            edges_two_sides++;
+            const silk_sil_side *s0 = &f.sides[f.sides[e->side0].owner];
+            for (uint32_t k = 1; k < e->nsides; k++) {
+                const silk_sil_side *sk = &f.sides[f.sides[e->side0 + k].owner];
+                for (uint32_t j = 0; j < e->nchain; j++) {
+                    silk_vertex_attr x, y;
+                    silk_vrec_eval(&gg, &g.vrec[s0->rec + j], &x);
+                    silk_vrec_eval(&gg, &g.vrec[sk->rec + j], &y);
+                    compared++;
+                    if (x.pos.x != y.pos.x || x.pos.y != y.pos.y || x.pos.z != y.pos.z) mismatched++;
+                    if (sk != s0 && (x.normal.x != y.normal.x || x.normal.y != y.normal.y ||
+                                     x.normal.z != y.normal.z))
+                        split_normals++;
+                }
+            }
+        }
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %s: %u shared edges, %u point pairs compared, %u with split normals\n", name, edges_two_sides,
+           compared, split_normals);
+    CHECK(compared > 0);
+    CHECKF(mismatched == 0, "%u points differ between the two sides of an edge", mismatched);
+    CHECKF(bad_sides == 0, "%u edges not walked by all their triangles", bad_sides);
+    if (want_split) CHECKF(split_normals > 0, "no crease with different normals on its two sides");
+}
+
+TEST(shared_points_bit_identical_sphere) { shared_points("sphere-200.obj", 30, 0); }
+TEST(shared_points_bit_identical_torus) { shared_points("torus-576.obj", 30, 0); }
+TEST(shared_points_bit_identical_creases) { shared_points("cone-70.obj", 40, 1); shared_points("fandisk-128.obj", 40, 1); }
+
+/* Eq. 8 (read with h = the projected chord, see silhouette.c): the number of
+ * intervals of every silhouette segment and every sampled feature segment
+ * against a double reference; feature counts come from the edge alone. */
+static void sample_counts(const char *name, int nviews, silk_fx tol)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    uint32_t segs = 0, feats = 0, off = 0, multi = 0, zero = 0;
+    double e = fx2d(tol);
+    for (int i = 0; i < nviews; i++) {
+        double dir[3];
+        random_dir(dir);
+        silk_view v;
+        if (!make_view(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_sil_frame f;
+        silk_frame_geom g;
+        silk_frame_stats st;
+        if (!run_frame(&a, &m, &v, tol, &f, &g, &st)) { CHECK(0); return; }
+        for (uint32_t s = 0; s < f.nsegs + f.nedges; s++) {
+            const silk_curve *c;
+            double cosa;
+            uint32_t n;
+            if (s < f.nsegs) {
+                c = &f.segs[s].c;
+                double na[3], nb[3];
+                vec3d(c->n0, na);
+                vec3d(c->n1, nb);
+                cosa = dot3(na, nb);
+                n = f.segs[s].n;
+                segs++;
+            } else {
+                const silk_sil_edge *w = &f.edges[s - f.nsegs];
+                if (!w->sampled || (m.edge[w->edge].flags & SILK_EDGE_DEGENERATE)) continue;
+                c = &w->geom;
+                double ta[3], tb[3];
+                vec3d(c->t0, ta);
+                vec3d(c->t1, tb);
+                double la = sqrt(dot3(ta, ta)), lb = sqrt(dot3(tb, tb));
+                cosa = la > 0 && lb > 0 ? dot3(ta, tb) / (la * lb) : 1;
+                n = w->nfeat;
+                feats++;
+            }
+            silk_vec2 pa, pb;
+            if (!silk_view_project(&v, c->p0, &pa) || !silk_view_project(&v, c->p1, &pb)) {
+                if (n != 1) off++;
+                continue;
+            }
+            double h = hypot(fx2d(pa.x - pb.x), fx2d(pa.y - pb.y));
+            double r = sqrt(fmax(0, (1 - cosa) / 2));
+            double x = sqrt(h * r / e) / 2;
+            double ref = h > 0 ? fmax(1, ceil(x)) : 1;
+            if (ref > SILK_MAX_SAMPLES) ref = SILK_MAX_SAMPLES;
+            /* the inputs are rounded to Q16.16: only a value within a hair of an integer may go either way */
+            if (fabs(n - ref) > 0 && !(fabs(n - ref) <= 1 && fabs(x - round(x)) < 2e-3)) off++;
+            if (n > 1) multi++;
+            if (n == 0) zero++;
+        }
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %s at tolerance %.2f: %u segments, %u feature segments, %u sampled more than once\n", name, e, segs,
+           feats, multi);
+    CHECKF(off == 0, "%u counts differ from eq. 8", off);
+    CHECKF(zero == 0, "%u curves with no interval", zero);
+    CHECK(segs > 0 && multi > 0);
+}
+
+TEST(sample_counts_eq8)
+{
+    sample_counts("sphere-200.obj", 30, SILK_FX_HALF);
+    sample_counts("torus-576.obj", 30, SILK_FX_C(1, 4));
+    sample_counts("cone-70.obj", 30, SILK_FX_ONE);
+}
+
+/* Tighter tolerance, more samples; more pixels, more samples. */
+TEST(sample_counts_monotone)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, "sphere-200.obj", &m)) { CHECK(0); return; }
+    double dir[3] = { 0.3, 0.4, 1 };
+    silk_view v;
+    if (!make_view(&m, dir, 3, 0, &v)) { CHECK(0); return; }
+    uint32_t prev = 0;
+    int mono = 1;
+    static const silk_fx tols[] = { SILK_FX_C(4, 1), SILK_FX_C(2, 1), SILK_FX_ONE, SILK_FX_HALF, SILK_FX_C(1, 4) };
+    for (int i = 0; i < 5; i++) {
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_sil_frame f;
+        silk_frame_geom g;
+        silk_frame_stats st;
+        if (!run_frame(&a, &m, &v, tols[i], &f, &g, &st)) { CHECK(0); return; }
+        if (st.samples < prev) mono = 0;
+        printf("  tolerance %.2f px: %u samples, %u triangles\n", fx2d(tols[i]), st.samples, g.ntri);
+        prev = st.samples;
+        silk_arena_top_release(&a, &mk);
+    }
+    CHECK(mono);
+}
+
+int main(void)
+{
+    arena_buf = malloc(ARENA_BYTES);
+    RUN(silhouette_triangles_sphere);
+    RUN(silhouette_triangles_torus);
+    RUN(silhouette_triangles_split_normals);
+    RUN(bridges_and_points_sphere);
+    RUN(bridges_and_points_torus);
+    RUN(bridges_and_points_features);
+    RUN(shared_points_bit_identical_sphere);
+    RUN(shared_points_bit_identical_torus);
+    RUN(shared_points_bit_identical_creases);
+    RUN(sample_counts_eq8);
+    RUN(sample_counts_monotone);
+    free(arena_buf);
+    return check_done();
+}

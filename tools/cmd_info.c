@@ -1,0 +1,158 @@
+/*
+ * cmd_info.c - `silk info MESH`: what the mesh holds (counts, features,
+ * defects), the arena bytes each part takes, and what one frame from the
+ * given (or default) camera costs, from silk_frame_stats.
+ *
+ * Every value is one "name: value" line, so scripts can grep for them;
+ * docs/memory.md explains each memory line.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+
+static void help(FILE *f)
+{
+    fprintf(f,
+            "usage: silk info MESH [options]\n"
+            "\n"
+            "Print MESH's counts (vertices, triangles, normals, edges, feature, boundary\n"
+            "and non-manifold edges, degenerate triangles), the arena memory each part\n"
+            "takes, and the per-frame counts of one frame rendered (not written) with\n"
+            "the camera and frame options below.\n"
+            "\n");
+    cli_print_scene_help(f);
+    fprintf(f,
+            "\n"
+            "examples:\n"
+            "  silk info bunny.obj\n"
+            "  silk info bunny.obj --eye 0,0,3 --size 512x512 --tolerance 1\n");
+}
+
+/* "name:" padded to a column, then the value. */
+static void line(const char *name, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static void line(const char *name, const char *fmt, ...)
+{
+    va_list ap;
+    int n = printf("%s:", name);
+    printf("%*s", n < 24 ? 24 - n : 1, "");
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    putchar('\n');
+}
+
+static void print_vec(const char *name, silk_vec3 v)
+{
+    line(name, "%.5g %.5g %.5g", cli_fx_to_double(v.x), cli_fx_to_double(v.y), cli_fx_to_double(v.z));
+}
+
+static void print_mesh(const cli_scene *s, const cli_scene_opts *o)
+{
+    const silk_mesh *m = &s->mesh;
+    line("file", "%s (%zu bytes)", o->mesh_path, s->file_len);
+    line("vertices", "%u", m->nverts);
+    line("triangles", "%u", m->ntris);
+    line("normals", "%u", m->nnormals);
+    line("uvs", "%u", m->nuvs);
+    line("edges", "%u", m->nedges);
+    line("feature edges", "%u", m->nfeature_edges);
+    line("boundary edges", "%u", m->nboundary_edges);
+    line("non-manifold edges", "%u", m->nnonmanifold_edges);
+    line("degenerate triangles", "%u", m->ndegenerate_tris);
+    print_vec("bbox min", m->bbox_min);
+    print_vec("bbox max", m->bbox_max);
+}
+
+static void print_memory(const cli_scene *s)
+{
+    silk_mesh_bytes b;
+    silk_mesh_bytes_used(&s->mesh, &b);
+    printf("\nmesh memory (bytes)\n");
+    line("  positions", "%zu", b.positions);
+    line("  normals", "%zu", b.normals);
+    line("  uvs", "%zu", b.uvs);
+    line("  triangles", "%zu", b.triangles);
+    line("  edges", "%zu", b.edges);
+    line("  vertex edges", "%zu", b.vertex_edges);
+    line("  features", "%zu", b.features);
+    line("  mesh total", "%zu", b.total);
+    line("  visibility hierarchy", "%zu", silk_vis_bytes(s->mesh.vis));
+
+    const silk_arena *a = &s->arena;
+    printf("\narena (bytes)\n");
+    line("  size", "%zu", a->size);
+    line("  after loading", "%zu", s->load_bytes);
+    line("  persistent (bottom)", "%zu", a->bottom);
+    line("  peak", "%zu", a->peak);
+    line("  free", "%zu", silk_arena_free_bytes(a));
+    printf("  %-22s %12s %12s\n", "purpose", "now", "peak");
+    for (int p = 0; p < SILK_MEM_COUNT; p++)
+        printf("  %-22s %12zu %12zu\n", silk_purpose_name((silk_purpose)p), a->used[p], a->peak_used[p]);
+}
+
+static void print_frame(const cli_scene *s, const cli_scene_opts *o, const silk_frame_stats *st)
+{
+    const silk_camera *c = &s->cam;
+    printf("\nframe\n");
+    line("  size", "%dx%d %s", o->width, o->height, o->fmt == SILK_PIX_RGB565 ? "rgb565" : "rgb888");
+    line("  mode", "%s", o->render.mode == SILK_MODE_FLAT ? "flat" : "smooth");
+    print_vec("  eye", c->eye);
+    print_vec("  target", c->target);
+    print_vec("  up", c->up);
+    if (c->ortho) line("  projection", "orthographic, half height %.5g", cli_fx_to_double(c->ortho_half_height));
+    else line("  projection", "perspective, fov %.5g", cli_fx_to_double(c->fov_deg));
+    line("  silhouette triangles", "%u", st->silhouette_tris);
+    line("  bridges", "%u", st->bridges);
+    line("  samples", "%u", st->samples);
+    line("  moved vertices", "%u", st->moved_vertices);
+    line("  triangles drawn", "%u", st->tris_drawn);
+    line("  frame bytes", "%zu", st->frame_bytes);
+    line("  fell back", "%s", st->fell_back ? "yes (the arena ran out; part of the frame not smoothed)" : "no");
+}
+
+int cmd_info(int argc, char **argv)
+{
+    cli_scene_opts o;
+    cli_scene_opts_default(&o);
+    int rc = 0;
+    for (int i = 1; i < argc && !rc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            help(stdout);
+            return 0;
+        }
+        int r = cli_scene_option(&o, argc, argv, &i);
+        if (r < 0) rc = CLI_EXIT_USAGE;
+        if (r != 0) continue;
+        if (a[0] == '-' && a[1]) rc = cli_fail(CLI_EXIT_USAGE, "info: unknown option %s (try silk info --help)", a);
+        else if (o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "info: one mesh at a time (got %s and %s)", o.mesh_path, a);
+        else o.mesh_path = a;
+    }
+    if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "info: no mesh given (silk info MESH)");
+    if (rc) return rc;
+
+    cli_scene s;
+    rc = cli_scene_load(&s, &o);
+    if (rc) {
+        cli_scene_free(&s);
+        return rc;
+    }
+    silk_frame_stats st;
+    silk_error err;
+    silk_status r = silk_render(&s.arena, &s.mesh, &s.view, &s.hal, &o.render, &s.target, &st, &err);
+    if (r != SILK_OK) {
+        cli_scene_free(&s);
+        return cli_fail(CLI_EXIT_INPUT, "%s: %s", o.mesh_path, err.msg);
+    }
+    print_mesh(&s, &o);
+    print_memory(&s);
+    print_frame(&s, &o, &st);
+    cli_scene_free(&s);
+    return ferror(stdout) ? CLI_EXIT_INPUT : 0;
+}

@@ -1,0 +1,78 @@
+/*
+ * silk.c - the `silk` command: main and the dispatch to its subcommands
+ * (render, info, gen, bench), each in its own cmd_*.c file.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+
+typedef struct command {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *synopsis, *summary;
+} command;
+
+static const command commands[] = {
+    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY) to PNG or PPM" },
+    { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
+    { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
+    { "bench", cmd_bench, "bench --visibility MESH...", "time visibility: brute pass vs hierarchy" },
+};
+enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "silk %s - smooth silhouettes for coarse triangle meshes (fixed point, software)\n"
+            "\n"
+            "usage: silk COMMAND [options]\n"
+            "\n"
+            "commands:\n",
+            SILK_VERSION);
+    for (int i = 0; i < NCOMMANDS; i++) fprintf(f, "  silk %-27s %s\n", commands[i].synopsis, commands[i].summary);
+    fprintf(f,
+            "\n"
+            "  silk help COMMAND                every option of one command (or COMMAND --help)\n"
+            "  silk --version                   the version\n"
+            "\n"
+            "Exit status: 0 success, 1 bad input (a file, a mesh, a failed write),\n"
+            "2 bad usage (an unknown option or a value out of range).\n");
+}
+
+static const command *find(const char *name)
+{
+    for (int i = 0; i < NCOMMANDS; i++)
+        if (strcmp(commands[i].name, name) == 0) return &commands[i];
+    return NULL;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return CLI_EXIT_USAGE;
+    }
+    const char *name = argv[1];
+    if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(name, "--version") == 0) {
+        printf("silk %s\n", SILK_VERSION);
+        return 0;
+    }
+    if (strcmp(name, "help") == 0) {
+        if (argc < 3) {
+            usage(stdout);
+            return 0;
+        }
+        const command *c = find(argv[2]);
+        if (!c) return cli_fail(CLI_EXIT_USAGE, "unknown command \"%s\" (try silk --help)", argv[2]);
+        char *help_argv[] = { argv[2], "--help", NULL };
+        return c->run(2, help_argv);
+    }
+    const command *c = find(name);
+    if (!c) return cli_fail(CLI_EXIT_USAGE, "unknown command \"%s\" (try silk --help)", name);
+    return c->run(argc - 1, argv + 1);
+}
