@@ -34,15 +34,21 @@ awk '$1 == "visibility" { split($5, b, "="); split($6, g, "="); split($8, a, "="
 if [ "${CALLGRIND:-0}" = 1 ] && command -v valgrind >/dev/null; then
   for f in $work/knot-50000.obj $work/knot-200000.obj $meshes/bunny-fine.obj; do
     [ -f "$f" ] || continue
-    for m in brute gauss; do
-      cg="$work/callgrind.$m.out"
-      valgrind --tool=callgrind --callgrind-out-file="$cg" "$silk" bench --visibility --only $m --batches 1 "$f" >/dev/null 2>&1
-      # 36 views x 2 projections = 72 frames
-      ir=$(callgrind_annotate --inclusive=yes "$cg" 2>/dev/null | awk -v fn="silk_visibility_$m" \
-           '$0 ~ fn" " || $0 ~ fn"$" || $0 ~ ":"fn" " { gsub(",", "", $1); print $1; exit }')
-      echo "# callgrind $f $m instructions_per_frame=$(( ${ir:-0} / 72 ))" >> "$out/bench_visibility.txt.tmp"
+    for p in parallel perspective; do
+      line="# callgrind $f $p"
+      for m in brute gauss; do
+        cg="$work/callgrind.$m.out"
+        valgrind --tool=callgrind --callgrind-out-file="$cg" \
+          "$silk" bench --visibility --only $m --projection $p --batches 1 "$f" >/dev/null 2>&1
+        # inclusive instructions of the pass over its 36 frames
+        ir=$(callgrind_annotate --inclusive=yes "$cg" 2>/dev/null |
+             awk -v fn="silk_visibility_$m" 'index($0, ":" fn " ") { gsub(",", "", $1); print $1; exit }')
+        line="$line ${m}_instructions=$(( ${ir:-0} / 36 ))"
+      done
+      echo "$line" >> "$out/bench_visibility.txt.tmp"
     done
   done
+  rm -f "$work"/callgrind.*.out
 fi
 mv "$out/bench_visibility.txt.tmp" "$out/bench_visibility.txt"
 cat "$out/bench_visibility.txt"

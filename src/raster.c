@@ -17,7 +17,6 @@
  * the same bytes as rendering the whole frame.
  */
 #include <string.h>
-#include <stdio.h>
 #include "silk/raster.h"
 #include "silk/hal.h"
 
@@ -465,7 +464,6 @@ static void raster_polygon(silk_target *t, const silk_hal *h, int nvar, int lo, 
         for (int i = 1; i + 1 < n; i++) raster_tri(t, h, nvar, lo, hi, &sv[0], &sv[i], &sv[i + 1]);
         return;
     }
-    fprintf(stderr, "EARPATH n=%d\n", n);
     int idx[MAXPOLY], m = 0;
     for (int i = 0; i < n; i++)                     /* drop repeated points */
         if (m == 0 || sv[i].x != sv[idx[m - 1]].x || sv[i].y != sv[idx[m - 1]].y) idx[m++] = i;
@@ -496,7 +494,6 @@ static void raster_polygon(silk_target *t, const silk_hal *h, int nvar, int lo, 
             raster_tri(t, h, nvar, lo, hi, &sv[idx[0]], &sv[idx[1]], &sv[idx[2]]);
         return;
     }
-    fprintf(stderr, "FALLBACK m=%d\n", m);
     for (int i = 1; i + 1 < m; i++)
         if (sgn(orient(&sv[idx[0]], &sv[idx[i]], &sv[idx[i + 1]])) == s)
             raster_tri(t, h, nvar, lo, hi, &sv[idx[0]], &sv[idx[i]], &sv[idx[i + 1]]);

@@ -923,6 +923,16 @@ TEST(clipped_fans_exactly_once)
         img m;
         img_new(&m, W, H, SILK_PIX_RGB888, 0, H, 0);
         for (int i = 0; i < n; i++) silk_raster_triangle(&m.t, &h, &vc, &vr[i], &vr[(i + 1) % n]);
+        if (getenv("DBG") && trial == atoi(getenv("DBG"))) {
+            for (int i = 0; i < n; i++) {
+                img m1; img_new(&m1, W, H, SILK_PIX_RGB888, 0, H, 0);
+                silk_raster_triangle(&m1.t, &h, &vc, &vr[i], &vr[(i + 1) % n]);
+                printf("tri %d writes %d\n", i, cnt(&m1, 59, 50));
+                const silk_vertex_out *q[3] = { &vc, &vr[i], &vr[(i + 1) % n] };
+                for (int e = 0; e < 3; e++) printf("  %d %d %d %d\n", q[e]->clip.x, q[e]->clip.y, q[e]->clip.z, q[e]->clip.w);
+                img_free(&m1);
+            }
+        }
         for (int y = 0; y < H && bad < 3; y++)
             for (int x = 0; x < W; x++) {
                 double sx = x * SUB + SUB / 2, sy = y * SUB + SUB / 2;

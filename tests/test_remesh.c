@@ -543,7 +543,7 @@ TEST(zero_length_edges_and_slivers)
         /* top: +z split into 5 and 6 */
         "f 1 2 5\nf 2 3 5\nf 3 4 6\nf 4 1 6\nf 5 3 6\nf 6 1 5\n"
         /* bottom, with a sliver vertex 8 almost on edge 1-2 */
-        "f 1 8 7\nf 8 2 7\nf 2 8 1\nf 3 2 7\nf 4 3 7\nf 1 4 7\n";
+        "f 2 8 7\nf 8 1 7\nf 2 1 8\nf 3 2 7\nf 4 3 7\nf 1 4 7\n";
     silk_arena a;
     silk_mesh m;
     if (!load_text(&a, ARENA_BYTES, obj, sizeof obj - 1, "degenerate.obj", &m)) { CHECK(0); return; }
@@ -558,8 +558,8 @@ TEST(zero_length_edges_and_slivers)
         if (!smooth_frame(&a, &m, &v, SILK_FX_HALF, &g, &st)) { CHECK(0); return; }
         topo tp;
         check_topology(&m, &g, &tp);
-        /* the sliver "f 2 8 1" folds over "f 1 8 7 / 8 2 7": the input itself is
-         * closed, so the output must be too */
+        /* the input is closed (the sliver "f 2 1 8" fills the gap between
+         * edge 1-2 and vertex 8), so the output must be too */
         CHECKF(tp.bad_records == 0 && tp.open_edges == 0, "view %d: bad %u open %u", i, tp.bad_records,
                tp.open_edges);
         silk_arena_top_release(&a, &mk);
@@ -570,16 +570,25 @@ TEST(zero_length_edges_and_slivers)
  * may crash and every record must be valid. */
 TEST(boundary_and_nonmanifold_edges)
 {
-    static const char open_obj[] =   /* a pyramid without its floor */
-        "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv 0 1.2 0\n"
-        "f 1 5 2\nf 2 5 3\nf 3 5 4\nf 4 5 1\n";
+    /* an open tube: 12 around, two circular boundary loops */
+    char open_obj[2048];
+    size_t n = 0;
+    for (int i = 0; i < 12; i++) {
+        double ang = i * 3.14159265358979 / 6;
+        n += (size_t)snprintf(open_obj + n, sizeof open_obj - n, "v %.6f 0 %.6f\nv %.6f 1 %.6f\n", cos(ang),
+                              sin(ang), cos(ang), sin(ang));
+    }
+    for (int i = 0; i < 12; i++) {
+        int a0 = 2 * i + 1, a1 = 2 * i + 2, b0 = 2 * ((i + 1) % 12) + 1, b1 = b0 + 1;
+        n += (size_t)snprintf(open_obj + n, sizeof open_obj - n, "f %d %d %d\nf %d %d %d\n", a0, a1, b1, a0, b1, b0);
+    }
     static const char book_obj[] =   /* three pages on one spine, plus a closed tetrahedron */
         "v 0 -1 0\nv 0 1 0\nv 1 0 0.2\nv -1 0 0.3\nv 0.1 0 -1\n"
         "v 3 0 0\nv 4 0 0\nv 3 1 0\nv 3 0 1\n"
         "f 1 2 3\nf 2 1 4\nf 1 2 5\n"
         "f 6 8 7\nf 6 7 9\nf 7 8 9\nf 6 9 8\n";
     const char *texts[] = { open_obj, book_obj };
-    size_t lens[] = { sizeof open_obj - 1, sizeof book_obj - 1 };
+    size_t lens[] = { n, sizeof book_obj - 1 };
     for (int k = 0; k < 2; k++) {
         silk_arena a;
         silk_mesh m;
@@ -598,10 +607,11 @@ TEST(boundary_and_nonmanifold_edges)
             topo tp;
             check_topology(&m, &g, &tp);
             CHECK(tp.bad_records == 0);
+            if (k == 0) CHECKF(tp.multi_edges == 0, "open tube: %u repeated edges", tp.multi_edges);
             remeshed += g.ntri > m.ntris;
             silk_arena_top_release(&a, &mk);
         }
-        CHECK(remeshed > 0);
+        CHECKF(remeshed > 0, "%s: never re-meshed", k ? "book" : "open");
     }
 }
 

@@ -397,7 +397,10 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
     }
     for (int k = 0; k < 3; k++)
         if (fabs(eye[k]) > CLI_MAX_COORD)
-            return cli_fail(CLI_EXIT_INPUT, "the default camera would be outside +-%g; give --eye", CLI_MAX_COORD);
+            return cli_fail(CLI_EXIT_USAGE,
+                            "the model cannot be framed in a %dx%d view with --fov %g: the eye would be beyond "
+                            "+-%g; give --eye or a wider --fov",
+                            o->width, o->height, o->fov, CLI_MAX_COORD);
 
     /* Everything visible lies within the sphere around c; no closer than a
      * thousandth of the far distance, so depth keeps its resolution. */
@@ -406,6 +409,7 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
     double znear = len3(ec) - r * 1.01;
     if (znear < zfar / 1000) znear = zfar / 1000;
     if (znear < 1.0 / 256) znear = 1.0 / 256;
+    if (znear > 4096) znear = 4096;   /* the projection keeps 2 znear in Q16.16 */
     if (zfar > 30000) zfar = 30000;
     if (!(zfar > znear)) zfar = znear * 2;
 
@@ -480,7 +484,7 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
     int rc = cli_camera(o, &s->mesh, &s->cam);
     if (rc) return rc;
     if (silk_view_init(&s->view, &s->cam, &err) != SILK_OK)
-        return cli_fail(CLI_EXIT_USAGE, "camera: %s", err.msg);
+        return cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
 
     size_t px = (size_t)o->width * (size_t)o->height;
     uint8_t *color = silk_arena_array(&s->arena, px, silk_pixfmt_bytes(o->fmt), SILK_MEM_RASTER);

@@ -43,7 +43,8 @@ static void help(FILE *f)
             "  --depth N          hierarchy depth 1..10 [from the mesh size]\n"
             "  --leaf N           largest cell not split [default of the library]\n"
             "  --only brute|gauss run one method only, 36 views x batches frames (for\n"
-            "                     callgrind: valgrind --tool=callgrind silk bench ...)\n",
+            "                     callgrind: valgrind --tool=callgrind silk bench ...)\n"
+            "  --projection perspective|parallel   only this projection [both]\n",
             BENCH_VIEWS);
 }
 
@@ -92,7 +93,11 @@ typedef struct bench_opts {
     int batches;
     silk_vis_opts vis;
     int only;                  /* 0 all, SILK_VIS_BRUTE or SILK_VIS_GAUSS */
+    int proj;                  /* bit 0: perspective, bit 1: parallel */
 } bench_opts;
+
+/* Projection p (0 perspective, 1 parallel) is to be measured. */
+static int want(const bench_opts *o, int p) { return o->proj >> p & 1; }
 
 /* Best ns per frame over the batches; a batch repeats the frame until it
  * has run for at least 50 us. */
@@ -155,7 +160,7 @@ static int bench_mesh(const char *path, const bench_opts *o)
     silk_vis_stats st;
     if (o->only != SILK_VIS_GAUSS)
         for (int p = 0; p < 2; p++)
-            for (int k = 0; k < BENCH_VIEWS; k++) {
+            for (int k = 0; k < BENCH_VIEWS && want(o, p); k++) {
                 bench_view(&m, k, p, &v);
                 brute[p][k] = o->only ? 0 : time_frame(&m, &v, SILK_VIS_BRUTE, vis, &a, o->batches, NULL);
                 if (o->only)
@@ -173,7 +178,7 @@ static int bench_mesh(const char *path, const bench_opts *o)
         goto done;
     }
     for (int p = 0; p < 2; p++)
-        for (int k = 0; k < BENCH_VIEWS; k++) {
+        for (int k = 0; k < BENCH_VIEWS && want(o, p); k++) {
             bench_view(&m, k, p, &v);
             if (o->only) {
                 for (int b = 0; b < o->batches; b++) silk_visibility(&m, &v, SILK_VIS_GAUSS, vis, &a, NULL);
@@ -187,12 +192,14 @@ static int bench_mesh(const char *path, const bench_opts *o)
         }
     if (o->only) goto done;
     for (int p = 1; p >= 0; p--)
-        printf("visibility %s %s normals=%u brute_ns=%.0f gauss_ns=%.0f cell_decided=%.0f auto_ns=%.0f\n", path,
-               p ? "parallel" : "perspective", m.nnormals, median(brute[p], BENCH_VIEWS),
-               median(gauss[p], BENCH_VIEWS), median(decided[p], BENCH_VIEWS), median(autot[p], BENCH_VIEWS));
+        if (want(o, p))
+            printf("visibility %s %s normals=%u brute_ns=%.0f gauss_ns=%.0f cell_decided=%.0f auto_ns=%.0f\n", path,
+                   p ? "parallel" : "perspective", m.nnormals, median(brute[p], BENCH_VIEWS),
+                   median(gauss[p], BENCH_VIEWS), median(decided[p], BENCH_VIEWS), median(autot[p], BENCH_VIEWS));
     for (int p = 1; p >= 0; p--)
-        printf("# %s %s cells_visited=%.0f one_by_one=%.0f\n", path, p ? "parallel" : "perspective",
-               median(visited[p], BENCH_VIEWS), median(onebyone[p], BENCH_VIEWS));
+        if (want(o, p))
+            printf("# %s %s cells_visited=%.0f one_by_one=%.0f\n", path, p ? "parallel" : "perspective",
+                   median(visited[p], BENCH_VIEWS), median(onebyone[p], BENCH_VIEWS));
     printf("# %s triangles=%u nodes=%u depth=%u leaf_max=%u bytes=%zu bytes_per_normal=%.2f build_ms=%.1f\n", path,
            m.ntris, m.vis->nnodes, m.vis->depth, m.vis->leaf_max, silk_vis_bytes(m.vis),
            m.nnormals ? (double)m.vis->nnodes * sizeof(silk_vis_node) / m.nnormals : 0.0, build_ms);
@@ -208,6 +215,7 @@ int cmd_bench(int argc, char **argv)
     bench_opts o;
     memset(&o, 0, sizeof o);
     o.batches = 5;
+    o.proj = 3;
     int visibility = 0, first_mesh = 0;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
@@ -235,6 +243,12 @@ int cmd_bench(int argc, char **argv)
             if (strcmp(val, "brute") == 0) o.only = SILK_VIS_BRUTE;
             else if (strcmp(val, "gauss") == 0) o.only = SILK_VIS_GAUSS;
             else return cli_fail(CLI_EXIT_USAGE, "--only must be brute or gauss, not '%s'", val);
+        } else if (cli_is(arg, "--projection")) {
+            const char *val = cli_value(argc, argv, &i);
+            if (!val) return CLI_EXIT_USAGE;
+            if (strcmp(val, "perspective") == 0) o.proj = 1;
+            else if (strcmp(val, "parallel") == 0) o.proj = 2;
+            else return cli_fail(CLI_EXIT_USAGE, "--projection must be perspective or parallel, not '%s'", val);
         } else if (arg[0] == '-' && arg[1]) {
             return cli_fail(CLI_EXIT_USAGE, "bench: unknown option '%s' (see silk bench --help)", arg);
         } else if (!first_mesh) {

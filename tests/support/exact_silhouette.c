@@ -326,7 +326,9 @@ typedef struct segs {
     double half;
     int gw, gh;                /* grid cells, one per pixel plus a margin of 1 */
     int *start, *item;
-    int *near;                 /* per cell: a segment near its centre (propagated), or -1 */
+    int *near;                 /* per cell: a segment near its centre (propagated), or -1;
+                                  made on the first query that needs it */
+    double *near_d;            /* its distance from the cell centre */
 } segs;
 
 static int segs_push(segs *g, double x0, double y0, double x1, double y1)
@@ -350,6 +352,7 @@ static void segs_free(segs *g)
     free(g->start);
     free(g->item);
     free(g->near);
+    free(g->near_d);
     memset(g, 0, sizeof *g);
 }
 
@@ -377,10 +380,11 @@ static void propagate(segs *g, int k, int o)
 {
     int cand = g->near[o];
     if (cand < 0 || cand == g->near[k]) return;
-    double cx = k % g->gw - 0.5, cy = k / g->gw - 0.5;   /* cell centre in image coordinates */
-    if (g->near[k] < 0 || point_segment(cx, cy, &g->v[(size_t)cand * 4]) <
-                              point_segment(cx, cy, &g->v[(size_t)g->near[k] * 4]))
+    double d = point_segment(k % g->gw - 0.5, k / g->gw - 0.5, &g->v[(size_t)cand * 4]);
+    if (d < g->near_d[k]) {
         g->near[k] = cand;
+        g->near_d[k] = d;
+    }
 }
 
 /* A nearest-segment map over the cells, by two raster passes that carry
@@ -391,16 +395,19 @@ static int segs_nearest_map(segs *g)
 {
     int gw = g->gw, gh = g->gh;
     g->near = malloc((size_t)gw * gh * sizeof *g->near);
-    if (!g->near) return -1;
-    for (int k = 0; k < gw * gh; k++) g->near[k] = -1;
-    for (int k = 0; k < gw * gh; k++)
+    g->near_d = malloc((size_t)gw * gh * sizeof *g->near_d);
+    if (!g->near || !g->near_d) return -1;
+    for (int k = 0; k < gw * gh; k++) {
+        g->near[k] = -1;
+        g->near_d[k] = ES_FAR;
         for (int i = g->start[k]; i < g->start[k + 1]; i++) {
-            int cand = g->item[i];
-            double cx = k % gw - 0.5, cy = k / gw - 0.5;
-            if (g->near[k] < 0 || point_segment(cx, cy, &g->v[(size_t)cand * 4]) <
-                                      point_segment(cx, cy, &g->v[(size_t)g->near[k] * 4]))
-                g->near[k] = cand;
+            double d = point_segment(k % gw - 0.5, k / gw - 0.5, &g->v[(size_t)g->item[i] * 4]);
+            if (d < g->near_d[k]) {
+                g->near[k] = g->item[i];
+                g->near_d[k] = d;
+            }
         }
+    }
     for (int y = 0; y < gh; y++) {
         for (int x = 0; x < gw; x++) {
             int k = y * gw + x;
@@ -449,14 +456,14 @@ static int segs_index(segs *g, int width, int height)
         g->item[fill[cell_of(g, 0.5 * (s[0] + s[2]), 0.5 * (s[1] + s[3]))]++] = i;
     }
     free(fill);
-    return segs_nearest_map(g);
+    return 0;
 }
 
 /* Distance from (x, y) to the nearest segment: exact by searching rings of
  * cells outwards up to RING_LIMIT (a segment whose midpoint is k rings away
  * is farther than k - 1 - half), beyond that from the propagated map. */
 #define RING_LIMIT 4
-static double segs_nearest(const segs *g, double x, double y)
+static double segs_nearest(segs *g, double x, double y)
 {
     if (g->n == 0) return ES_FAR;
     int c = cell_of(g, x, y), cx = c % g->gw, cy = c / g->gw;
@@ -476,6 +483,7 @@ static double segs_nearest(const segs *g, double x, double y)
         }
         if (best <= r - g->half) return best;
     }
+    if (!g->near && segs_nearest_map(g)) return best;   /* out of memory: the rings' answer */
     for (int yy = cy - 1; yy <= cy + 1; yy++)
         for (int xx = cx - 1; xx <= cx + 1; xx++) {
             if (xx < 0 || yy < 0 || xx >= g->gw || yy >= g->gh) continue;
@@ -581,7 +589,7 @@ int es_compare(const unsigned char *test, const unsigned char *exact, const es_p
     return 0;
 }
 
-static double directed_hausdorff(const segs *from, const segs *to)
+static double directed_hausdorff(const segs *from, segs *to)
 {
     double worst = 0;
     for (int i = 0; i < from->n; i++) {
