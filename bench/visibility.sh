@@ -41,7 +41,7 @@ if [ "${CALLGRIND:-0}" = 1 ] && command -v valgrind >/dev/null; then
         valgrind --tool=callgrind --callgrind-out-file="$cg" \
           "$silk" bench --visibility --only $m --projection $p --batches 1 "$f" >/dev/null 2>&1
         # inclusive instructions of the pass over its 36 frames
-        ir=$(callgrind_annotate --inclusive=yes "$cg" 2>/dev/null |
+        ir=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg" 2>/dev/null |
              awk -v fn="silk_visibility_$m" 'index($0, ":" fn " ") { gsub(",", "", $1); print $1; exit }')
         line="$line ${m}_instructions=$(( ${ir:-0} / 36 ))"
       done

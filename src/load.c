@@ -186,8 +186,10 @@ void silk_ld_coords_init(silk_ld_coords *c, const silk_load_opts *o)
 void silk_ld_coord(silk_ld_coords *c, silk_decimal raw, const silk_fx *exact, int axis,
                    uint32_t line, uint32_t vertex, silk_fx *out)
 {
-    if (c->count < 3 || silk_ld_dec_cmp(raw, c->lo[axis]) < 0) c->lo[axis] = raw;
-    if (c->count < 3 || silk_ld_dec_cmp(raw, c->hi[axis]) > 0) c->hi[axis] = raw;
+    int first = !(c->have & (1u << axis));
+    if (first || silk_ld_dec_cmp(raw, c->lo[axis]) < 0) c->lo[axis] = raw;
+    if (first || silk_ld_dec_cmp(raw, c->hi[axis]) > 0) c->hi[axis] = raw;
+    c->have |= 1u << axis;
     c->count++;
 
     silk_decimal scaled = c->unit_scale ? raw : silk_decimal_mul(raw, c->scale);

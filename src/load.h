@@ -23,6 +23,7 @@ typedef struct silk_ld_coords {
     silk_decimal scale;
     int unit_scale;              /* scale is exactly 1: binary floats may round directly */
     uint32_t count;              /* coordinates seen */
+    unsigned have;               /* bit i: axis i has been seen */
     silk_decimal lo[3], hi[3];   /* bounding box of the raw (unscaled) coordinates */
     /* the first coordinate outside +-SILK_COORD_MAX, reported by silk_ld_coords_finish */
     int bad;

@@ -16,10 +16,17 @@
  * The paper prints l = max_i { -(V - M_i).N_i / (R^.N_i) }, V' = V + l R^;
  * taken literally that satisfies only the plane needing the least motion (and
  * moves V up when it is already below one), so the sign is turned here into
- * what the text asks for: the largest motion needed, downwards.  Two guards
- * the paper does not need in floating point: a plane nearly parallel to R^
- * (R^.N_i < 1/4) is skipped rather than divided by, and a vertex never moves
- * farther than its distance to M_i.
+ * what the text asks for: the largest motion needed, downwards.
+ *
+ * Three guards the paper does not have.  A plane nearly parallel to R^
+ * (R^.N_i < 1/4) is skipped rather than divided by.  A vertex never moves
+ * farther than its distance to M_i.  And no plane asks for more than twice
+ * the segment's rise (how far its ends lie above P_i, about the depth by
+ * which the coarse triangles stick out over it): on a coarse, strongly curved
+ * mesh the one-ring of a one-ring reaches round the surface, and the plain
+ * rule then pushed vertices of knot-480 by 0.5 units - more than the tube's
+ * radius - through the other side; capped, the largest move in that view
+ * is 0.07.
  *
  * The result is one offset per moved vertex; every corner at that vertex
  * becomes a MOVED record with it, so the vertex moves as one.
@@ -28,7 +35,7 @@
 #include "silhouette.h"
 
 #define MIN_COS ((int64_t)1 << 30)     /* 1/4 in Q32.32 */
-#define RISE_CAP (2 * SILK_FX_ONE)
+#define RISE_CAP (2 * SILK_FX_ONE)      /* times the segment's rise */
 
 int silk_perturb_alloc(silk_sil_frame *f)
 {

@@ -7,14 +7,16 @@
  * S(t) runs from A to B (Hermite over the points and their normals, eq. 5)
  * and is sampled with n intervals from eq. 8.  S cuts the triangle in two:
  *
- *   the part around L:     its samples are connected to L (Fig. 11, "in front");
- *   the part along B1-B2:  its samples are connected to the base edge
- *                          (Fig. 11, "behind"): the early samples to B1, the
- *                          late ones to B2, and the sample nearest the base
- *                          edge's bisector to both.
+ *   the part around L:     its samples are connected to L (Fig. 11, samples
+ *                          joined to the opposite vertex);
+ *   the part along B1-B2:  its samples are connected to the base edge (Fig.
+ *                          11, samples joined to the base): the early samples
+ *                          to B1, the late ones to B2, and the sample nearest
+ *                          the base edge's bisector to both.
  *
- * Both parts are always built, whichever side the viewer sees, so the output
- * is closed wherever the input is.  The base edge gets no points of its own
+ * Fig. 11 shows the two as separate cases (S behind the base edge, S in
+ * front of it); here both parts are always built, whichever the viewer
+ * sees, so the output is closed wherever the input is.  The base edge gets no points of its own
  * (its "points" are its end vertices), so the triangle across it is left
  * alone.  Points on the sides are the edge chains of silhouette.c and are
  * walked in full, so any other points there (feature samples, the other
@@ -55,8 +57,7 @@ static uint32_t side_points(const silk_sil_frame *f, uint32_t t, uint32_t k)
     return e->nchain;
 }
 
-/* The silhouette point of side k of silhouette triangle t: its parameter on
- * the edge and its index in the edge's chain. */
+/* The silhouette point side s puts on edge e: the one of its normal pair. */
 static const silk_sil_pair *side_pair(const silk_sil_frame *f, const silk_sil_edge *e,
                                       const silk_sil_side *s)
 {

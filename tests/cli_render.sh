@@ -79,6 +79,15 @@ check "eye inside the model sees the inside everywhere ($n of 1024 px)" test "$n
 run_silk render "$tmp/torus.obj" --size 48x48 --eye 1,0,0 --target 0,0,0 -o "$tmp/inside-torus.png"
 check "eye inside the torus tube" test "$rc" -eq 0
 
+# The eye as far as the options allow (28378 units away), the narrowest
+# field of view: a sphere of radius 200 subtends 0.404 of the 0.5 degree half
+# view, a disc of radius 12.9 px (523 px) in 32x32.
+run_silk render "$sphere" --scale 200 --size 32x32 --eye 16384,16384,16384 --fov 1 --bg $bg -o "$tmp/far.ppm"
+n=$(ppm_count_not "$tmp/far.ppm" $bg)
+check "eye at the far corner: exit $rc, $n px drawn (523 exact)" test "$rc" -eq 0 -a "$n" -gt 480 -a "$n" -lt 560
+run_silk render "$sphere" --size 32x32 --eye -16384,0,0 --fov 175 -o "$tmp/far2.png"
+check "far eye with the widest field of view" test "$rc" -eq 0
+
 # rgb565 widened: in every channel the low bits repeat the high bits
 bit_replicated() {
     od -An -v -tu1 -j"$(head -n 3 "$1" | wc -c)" "$1" | awk '

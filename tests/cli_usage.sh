@@ -100,6 +100,7 @@ want='unknown image format' expect_usage "unknown output extension" render "$sph
 # the camera options agree with each other only if the view exists
 want='camera' expect_usage "eye at the target" render "$sphere" -o "$o" --eye 1,1,1 --target 1,1,1
 want='camera' expect_usage "up along the view" render "$sphere" -o "$o" --eye 0,5,0 --target 0,0,0 --up 0,1,0
+want='cannot be framed' expect_usage "default camera for an extreme aspect" render "$sphere" -o "$o" --size 1x8192
 check "no output after all that" test ! -e "$o"
 
 # info takes the same options and fails the same way

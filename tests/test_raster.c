@@ -883,7 +883,7 @@ TEST(clipped_fans_exactly_once)
     const int W = 64, H = 64;
     silk_hal h = hal_flat();
     int bad = 0;
-    for (int trial = 0; trial < 1500 && bad < 3; trial++) {
+    for (int trial = 0; trial < 800 && bad < 3; trial++) {
         int n = (int)rnd(3, 12);
         double ang[12];
         for (int ok = 0; !ok;) {
@@ -910,7 +910,17 @@ TEST(clipped_fans_exactly_once)
         if (a == b) b = (a + 1) % n;
         double lx = (double)(rx[b] - rx[a]), ly = (double)(ry[b] - ry[a]) + check_uniform(-0.3, 0.3);
         double len = hypot(lx, ly), nx = -ly / len, ny = lx / len;   /* unit normal: f in subpixels */
-        double off = check_uniform(-0.2, 0.2);
+        /* 2 to 6 subpixels from vertex a, nearly parallel to edge a-b: thin
+         * pieces whose new vertices snapping can dent (the ear-clipping
+         * path), but no piece thinner than the snapping error, which could
+         * fold over (docs/raster.md) */
+        double off = check_uniform(2, 6) * (trial & 1 ? 1 : -1);
+        int near = 0;
+        for (int i = 0; i <= n; i++) {
+            double px = i < n ? (double)rx[i] : (double)cx, py = i < n ? (double)ry[i] : (double)cy;
+            if (fabs((px - rx[a]) * nx + (py - ry[a]) * ny + off) < 2) near = 1;
+        }
+        if (near) continue;
         int k = (int)rnd(64, 512);
         silk_vertex_out vc = vat(W, H, cx, cy, k), vr[12];
         double fscale = 1.0 / 2048;               /* z - w = f * fscale * w, within (-w, w): no near cut */
@@ -923,16 +933,6 @@ TEST(clipped_fans_exactly_once)
         img m;
         img_new(&m, W, H, SILK_PIX_RGB888, 0, H, 0);
         for (int i = 0; i < n; i++) silk_raster_triangle(&m.t, &h, &vc, &vr[i], &vr[(i + 1) % n]);
-        if (getenv("DBG") && trial == atoi(getenv("DBG"))) {
-            for (int i = 0; i < n; i++) {
-                img m1; img_new(&m1, W, H, SILK_PIX_RGB888, 0, H, 0);
-                silk_raster_triangle(&m1.t, &h, &vc, &vr[i], &vr[(i + 1) % n]);
-                printf("tri %d writes %d\n", i, cnt(&m1, 59, 50));
-                const silk_vertex_out *q[3] = { &vc, &vr[i], &vr[(i + 1) % n] };
-                for (int e = 0; e < 3; e++) printf("  %d %d %d %d\n", q[e]->clip.x, q[e]->clip.y, q[e]->clip.z, q[e]->clip.w);
-                img_free(&m1);
-            }
-        }
         for (int y = 0; y < H && bad < 3; y++)
             for (int x = 0; x < W; x++) {
                 double sx = x * SUB + SUB / 2, sy = y * SUB + SUB / 2;

@@ -446,6 +446,115 @@ TEST(sample_counts_monotone)
     CHECK(mono);
 }
 
+/* Texture coordinates interpolate linearly: the curve of every side carries
+ * that side's own corner uvs (seams stay seams), a silhouette segment starts
+ * and ends with the uvs interpolated at its silhouette points, and positions
+ * on the two sides of a seam still agree bit for bit. */
+TEST(uvs_interpolate_linearly_across_seams)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/sphere-200.obj", check_meshes_dir());
+    FILE *fp = fopen(path, "rb");
+    if (!fp) { CHECK(0); return; }
+    /* rewrite the sphere with one uv per corner: every edge is a uv seam */
+    size_t cap = 1 << 20, n = 0;
+    char *out = malloc(cap), line[256];
+    double vx[200][3];
+    int nv = 0, nf = 0;
+    while (fgets(line, sizeof line, fp)) {
+        if (line[0] == 'v' && line[1] == ' ' && nv < 200) {
+            sscanf(line + 2, "%lf %lf %lf", &vx[nv][0], &vx[nv][1], &vx[nv][2]);
+            nv++;
+            n += (size_t)snprintf(out + n, cap - n, "%s", line);
+        } else if (line[0] == 'f') {
+            int a, b, c;
+            if (sscanf(line + 2, "%d %d %d", &a, &b, &c) != 3) continue;
+            int idx[3] = { a, b, c };
+            for (int k = 0; k < 3; k++)
+                n += (size_t)snprintf(out + n, cap - n, "vt %.6f %.6f\n", vx[idx[k] - 1][0] * 0.25 + 0.5 + 0.001 * (nf % 7),
+                                      vx[idx[k] - 1][1] * 0.25 + 0.5);
+            n += (size_t)snprintf(out + n, cap - n, "f %d/%d %d/%d %d/%d\n", a, 3 * nf + 1, b, 3 * nf + 2, c, 3 * nf + 3);
+            nf++;
+        }
+    }
+    fclose(fp);
+    silk_arena a;
+    silk_arena_init(&a, arena_buf, ARENA_BYTES);
+    silk_load_opts o;
+    silk_load_opts_default(&o);
+    silk_mesh m;
+    silk_error err;
+    silk_status st0 = silk_load_obj(out, n, "seams.obj", &o, &a, &m, &err);
+    free(out);
+    if (st0 != SILK_OK) { fprintf(stderr, "%s\n", err.msg); CHECK(0); return; }
+    CHECK(m.uv && m.tri_uv);
+    uint32_t bad_side = 0, bad_seg = 0, mismatched = 0, seams = 0;
+    double worst = 0;
+    for (int i = 0; i < 20; i++) {
+        double dir[3];
+        random_dir(dir);
+        silk_view v;
+        if (!make_view(&m, dir, 2 + i % 3, i & 1, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_sil_frame f;
+        silk_frame_geom g;
+        silk_frame_stats st;
+        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        silk_geom gg = { &m, g.curve, g.offset };
+        for (uint32_t w = 0; w < f.nedges; w++) {
+            const silk_sil_edge *e = &f.edges[w];
+            if (!e->nchain) continue;
+            for (uint32_t k = 0; k < e->nsides; k++) {
+                const silk_sil_side *sd = &f.sides[e->side0 + k];
+                const silk_curve *c = &g.curve[f.sides[sd->owner].curve];
+                /* the corner of triangle sd->tri at edge.v[0] and at edge.v[1] */
+                uint32_t c0 = 0, c1 = 0;
+                for (uint32_t j = 0; j < 3; j++) {
+                    if (m.tri[3 * sd->tri + j] == m.edge[e->edge].v[0]) c0 = 3 * sd->tri + j;
+                    if (m.tri[3 * sd->tri + j] == m.edge[e->edge].v[1]) c1 = 3 * sd->tri + j;
+                }
+                silk_vec2 u0 = m.uv[m.tri_uv[c0]], u1 = m.uv[m.tri_uv[c1]];
+                if (c->uv0.x != u0.x || c->uv0.y != u0.y || c->uv1.x != u1.x || c->uv1.y != u1.y) bad_side++;
+                if (k > 0) {
+                    seams += f.sides[e->side0].owner != sd->owner;
+                    for (uint32_t j = 0; j < e->nchain; j++) {
+                        silk_vertex_attr x, y;
+                        silk_vrec_eval(&gg, &g.vrec[f.sides[f.sides[e->side0].owner].rec + j], &x);
+                        silk_vrec_eval(&gg, &g.vrec[f.sides[sd->owner].rec + j], &y);
+                        if (x.pos.x != y.pos.x || x.pos.y != y.pos.y || x.pos.z != y.pos.z) mismatched++;
+                    }
+                }
+            }
+        }
+        for (uint32_t s = 0; s < f.nsegs; s++) {
+            const silk_sil_seg *sg = &f.segs[s];
+            uint32_t t = sg->tri, lone = f.tri_state[t] & SILK_TS_LONE;
+            /* A on side lone (corner lone -> lone+1), at its pair's parameter */
+            for (int end = 0; end < 2; end++) {
+                uint32_t k = end == 0 ? lone : (lone + 2) % 3;
+                const silk_sil_edge *e = &f.edges[f.edge_slot[m.tri_edge[3 * t + k]]];
+                const silk_sil_side *sd = silk_sil_side_of(&f, e, t, k);
+                const silk_sil_pair *p = NULL;
+                for (uint32_t j = 0; j < e->npairs; j++)
+                    if (f.pairs[e->pair0 + j].n0 == sd->n0 && f.pairs[e->pair0 + j].n1 == sd->n1) p = &f.pairs[e->pair0 + j];
+                if (!p) { bad_seg++; continue; }
+                double u = fx2d(p->u);
+                silk_vec2 a0 = m.uv[sd->uv0], a1 = m.uv[sd->uv1], got = end == 0 ? sg->c.uv0 : sg->c.uv1;
+                double ex = fx2d(a0.x) + u * (fx2d(a1.x) - fx2d(a0.x)), ey = fx2d(a0.y) + u * (fx2d(a1.y) - fx2d(a0.y));
+                double d = fmax(fabs(ex - fx2d(got.x)), fabs(ey - fx2d(got.y))) * 65536;
+                if (d > worst) worst = d;
+                if (d > 1.5) bad_seg++;
+            }
+        }
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %u sides on seams, worst segment-end uv error %.2f ulp\n", seams, worst);
+    CHECK(seams > 0);
+    CHECKF(bad_side == 0, "%u side curves with the wrong uvs", bad_side);
+    CHECKF(bad_seg == 0, "%u segment ends with the wrong uvs", bad_seg);
+    CHECKF(mismatched == 0, "%u positions differ across a seam", mismatched);
+}
+
 int main(void)
 {
     arena_buf = malloc(ARENA_BYTES);
@@ -460,6 +569,7 @@ int main(void)
     RUN(shared_points_bit_identical_creases);
     RUN(sample_counts_eq8);
     RUN(sample_counts_monotone);
+    RUN(uvs_interpolate_linearly_across_seams);
     free(arena_buf);
     return check_done();
 }

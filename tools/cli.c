@@ -55,8 +55,8 @@ int cli_parse_double(const char *opt, const char *s, double lo, double hi, doubl
     const char *end;
     double v;
     if (!plain_decimal(s) || parse_double(s, &end, &v) != 0 || *end)
-        return cli_fail(-1, "%s: \"%s\" is not a number", opt, s), -1;
-    if (!(v >= lo && v <= hi)) return cli_fail(-1, "%s must be between %g and %g (got %s)", opt, lo, hi, s), -1;
+        return cli_fail(-1, "%s: \"%s\" is not a number", opt, s);
+    if (!(v >= lo && v <= hi)) return cli_fail(-1, "%s must be between %g and %g (got %s)", opt, lo, hi, s);
     *out = v;
     return 0;
 }
@@ -67,9 +67,9 @@ int cli_parse_long(const char *opt, const char *s, long lo, long hi, long *out)
     errno = 0;
     const char *d = (*s == '-' || *s == '+') ? s + 1 : s;
     long v = strtol(s, &end, 10);
-    if (!isdigit((unsigned char)*d) || *end) return cli_fail(-1, "%s: \"%s\" is not an integer", opt, s), -1;
+    if (!isdigit((unsigned char)*d) || *end) return cli_fail(-1, "%s: \"%s\" is not an integer", opt, s);
     if (errno == ERANGE || v < lo || v > hi)
-        return cli_fail(-1, "%s must be between %ld and %ld (got %s)", opt, lo, hi, s), -1;
+        return cli_fail(-1, "%s must be between %ld and %ld (got %s)", opt, lo, hi, s);
     *out = v;
     return 0;
 }
@@ -77,17 +77,17 @@ int cli_parse_long(const char *opt, const char *s, long lo, long hi, long *out)
 int cli_parse_vec3(const char *opt, const char *s, double lim, double out[3])
 {
     char buf[256];
-    if (strlen(s) >= sizeof buf) return cli_fail(-1, "%s must be x,y,z (three numbers)", opt), -1;
+    if (strlen(s) >= sizeof buf) return cli_fail(-1, "%s must be x,y,z (three numbers)", opt);
     strcpy(buf, s);
     char *p = buf;
     for (int k = 0; k < 3; k++) {
         char *comma = strchr(p, ',');
-        if ((k < 2) != (comma != NULL)) return cli_fail(-1, "%s must be x,y,z (three numbers), got \"%s\"", opt, s), -1;
+        if ((k < 2) != (comma != NULL)) return cli_fail(-1, "%s must be x,y,z (three numbers), got \"%s\"", opt, s);
         if (comma) *comma = 0;
         const char *end;
         if (!plain_decimal(p) || parse_double(p, &end, &out[k]) != 0 || *end)
-            return cli_fail(-1, "%s must be x,y,z (three numbers), got \"%s\"", opt, s), -1;
-        if (fabs(out[k]) > lim) return cli_fail(-1, "%s: coordinates must be within +-%g (got %s)", opt, lim, s), -1;
+            return cli_fail(-1, "%s must be x,y,z (three numbers), got \"%s\"", opt, s);
+        if (fabs(out[k]) > lim) return cli_fail(-1, "%s: coordinates must be within +-%g (got %s)", opt, lim, s);
         p = comma ? comma + 1 : p;
     }
     return 0;
@@ -103,12 +103,12 @@ int cli_parse_size(const char *opt, const char *s, int *w, int *h)
     long b = strtol(x + 1, &end, 10);
     if (*end || errno == ERANGE) goto bad;
     if (a < 1 || b < 1 || a > CLI_MAX_SIDE || b > CLI_MAX_SIDE)
-        return cli_fail(-1, "%s: width and height must be 1 to %d pixels (got %s)", opt, CLI_MAX_SIDE, s), -1;
+        return cli_fail(-1, "%s: width and height must be 1 to %d pixels (got %s)", opt, CLI_MAX_SIDE, s);
     *w = (int)a;
     *h = (int)b;
     return 0;
 bad:
-    return cli_fail(-1, "%s must be WIDTHxHEIGHT, e.g. 640x480 (got \"%s\")", opt, s), -1;
+    return cli_fail(-1, "%s must be WIDTHxHEIGHT, e.g. 640x480 (got \"%s\")", opt, s);
 }
 
 int cli_parse_rgb(const char *opt, const char *s, uint32_t *rgb)
@@ -122,7 +122,7 @@ int cli_parse_rgb(const char *opt, const char *s, uint32_t *rgb)
         int c = tolower((unsigned char)*p);
         v = v * 16 + (uint32_t)(isdigit(c) ? c - '0' : c - 'a' + 10);
     }
-    if (*p || n != 6) return cli_fail(-1, "%s must be a colour RRGGBB in hex, e.g. ffffff (got \"%s\")", opt, s), -1;
+    if (*p || n != 6) return cli_fail(-1, "%s must be a colour RRGGBB in hex, e.g. ffffff (got \"%s\")", opt, s);
     *rgb = v;
     return 0;
 }
@@ -143,11 +143,11 @@ int cli_parse_bytes(const char *opt, const char *s, size_t *out)
     if (*end || errno == ERANGE) goto bad;
     const unsigned long long lo = 4096, hi = 1ull << 32;   /* 4 KiB .. 4 GiB */
     if (v > hi / mul || v * mul < lo || v * mul > hi || v * mul > (unsigned long long)SIZE_MAX)
-        return cli_fail(-1, "%s must be between 4K and 4G bytes (got %s)", opt, s), -1;
+        return cli_fail(-1, "%s must be between 4K and 4G bytes (got %s)", opt, s);
     *out = (size_t)(v * mul);
     return 0;
 bad:
-    return cli_fail(-1, "%s must be a byte count such as 65536, 512K or 64M (got \"%s\")", opt, s), -1;
+    return cli_fail(-1, "%s must be a byte count such as 65536, 512K or 64M (got \"%s\")", opt, s);
 }
 
 /* ---- arguments ------------------------------------------------------------------ */
@@ -262,7 +262,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         silk_decimal d;
         int pr = plain_decimal(v) ? silk_decimal_parse(v, &end, &d) : -1;
         if (pr != 0 || *end || d.mant <= 0)
-            return cli_fail(-1, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v), -1;
+            return cli_fail(-1, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
         o->load.scale = d;
     } else if (cli_is(arg, "--crease")) {
         VALUE();
@@ -271,12 +271,12 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         VALUE();
         if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
         else if (strcmp(v, "file") == 0) o->load.normals = SILK_NORMALS_FILE;
-        else return cli_fail(-1, "--normals must be compute or file (got \"%s\")", v), -1;
+        else return cli_fail(-1, "--normals must be compute or file (got \"%s\")", v);
     } else if (cli_is(arg, "--visibility")) {
         VALUE();
         if (strcmp(v, "auto") == 0) o->vis_brute = 0;
         else if (strcmp(v, "brute") == 0) o->vis_brute = 1;
-        else return cli_fail(-1, "--visibility must be auto or brute (got \"%s\")", v), -1;
+        else return cli_fail(-1, "--visibility must be auto or brute (got \"%s\")", v);
     } else if (cli_is(arg, "--arena")) {
         VALUE();
         r = cli_parse_bytes(opt, v, &o->arena_bytes);
@@ -292,7 +292,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         VALUE();
         r = cli_parse_vec3(opt, v, CLI_MAX_COORD, o->up);
         if (!r && o->up[0] == 0 && o->up[1] == 0 && o->up[2] == 0)
-            return cli_fail(-1, "--up must not be the zero vector"), -1;
+            return cli_fail(-1, "--up must not be the zero vector");
         o->have_up = 1;
     } else if (cli_is(arg, "--fov")) {
         VALUE();
@@ -305,7 +305,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         if (!o->ortho_auto) {
             r = cli_parse_double(opt, v, 0, CLI_MAX_COORD, &o->ortho_half);
             if (!r && o->ortho_half < 1.0 / 256)
-                return cli_fail(-1, "--ortho must be a positive half height of at least 1/256, or auto (got %s)", v), -1;
+                return cli_fail(-1, "--ortho must be a positive half height of at least 1/256, or auto (got %s)", v);
         }
     } else if (cli_is(arg, "--size")) {
         VALUE();
@@ -314,12 +314,12 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         VALUE();
         if (strcmp(v, "rgb888") == 0) o->fmt = SILK_PIX_RGB888;
         else if (strcmp(v, "rgb565") == 0) o->fmt = SILK_PIX_RGB565;
-        else return cli_fail(-1, "--format must be rgb888 or rgb565 (got \"%s\")", v), -1;
+        else return cli_fail(-1, "--format must be rgb888 or rgb565 (got \"%s\")", v);
     } else if (cli_is(arg, "--mode")) {
         VALUE();
         if (strcmp(v, "flat") == 0) o->render.mode = SILK_MODE_FLAT;
         else if (strcmp(v, "smooth") == 0) o->render.mode = SILK_MODE_SMOOTH;
-        else return cli_fail(-1, "--mode must be flat or smooth (got \"%s\")", v), -1;
+        else return cli_fail(-1, "--mode must be flat or smooth (got \"%s\")", v);
     } else if (cli_is(arg, "--tolerance")) {
         VALUE();
         r = parse_fx(opt, v, 0.25, 4, &o->render.tolerance_px);

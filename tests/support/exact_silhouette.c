@@ -396,7 +396,13 @@ static int segs_nearest_map(segs *g)
     int gw = g->gw, gh = g->gh;
     g->near = malloc((size_t)gw * gh * sizeof *g->near);
     g->near_d = malloc((size_t)gw * gh * sizeof *g->near_d);
-    if (!g->near || !g->near_d) return -1;
+    if (!g->near || !g->near_d) {
+        free(g->near);
+        free(g->near_d);
+        g->near = NULL;
+        g->near_d = NULL;
+        return -1;
+    }
     for (int k = 0; k < gw * gh; k++) {
         g->near[k] = -1;
         g->near_d[k] = ES_FAR;
