@@ -23,7 +23,7 @@ PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 
 CORE_SRC  := $(wildcard src/*.c)
-PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c
+PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c
 TOOL_SRC  := $(wildcard tools/*.c)
 TEST_SRC  := $(wildcard tests/test_*.c)
 
@@ -105,3 +105,10 @@ clean:
 	rm -rf build build-san out
 
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d)
+
+# ---- small devices (docs/small-devices.md) ----------------------------------
+# A device board's own rules (the firmware of boards/mps2-an385).
+ifdef BOARD_RULES
+include $(BOARD_RULES)
+endif
+

@@ -40,9 +40,9 @@ if [ "${CALLGRIND:-0}" = 1 ] && command -v valgrind >/dev/null; then
         cg="$work/callgrind.$m.out"
         valgrind --tool=callgrind --callgrind-out-file="$cg" \
           "$silk" bench --visibility --only $m --projection $p --batches 1 "$f" >/dev/null 2>&1
-        # inclusive instructions of the pass over its 36 frames
+        # instructions of silk_visibility() and all it calls, over the 36 frames
         ir=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg" 2>/dev/null |
-             awk -v fn="silk_visibility_$m" 'index($0, ":" fn " ") { gsub(",", "", $1); print $1; exit }')
+             awk 'index($0, ":silk_visibility ") { gsub(",", "", $1); print $1; exit }')
         line="$line ${m}_instructions=$(( ${ir:-0} / 36 ))"
       done
       echo "$line" >> "$out/bench_visibility.txt.tmp"

@@ -156,6 +156,12 @@ int silk_file_remove_stale(const char *path)
     return unlink(path) == 0;
 }
 
+int silk_file_same(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
 silk_image_format silk_image_format_for_path(const char *path)
 {
     const char *dot = strrchr(path, '.');

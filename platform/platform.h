@@ -45,6 +45,9 @@ void silk_outfile_abort(silk_outfile *o);
  * result of this one.  Returns 1 if a file was removed. */
 int silk_file_remove_stale(const char *path);
 
+/* 1 if both paths name the same existing file (device and inode). */
+int silk_file_same(const char *a, const char *b);
+
 /* ---- images ---------------------------------------------------------------- */
 
 typedef enum silk_image_format {

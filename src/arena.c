@@ -3,8 +3,8 @@
  *
  * Persistent data grows up from the bottom, per-frame scratch grows down from
  * the top.  Nothing is freed individually: a frame releases its scratch by
- * returning the top to a mark, which also restores the per-purpose counts,
- * so the report after a frame still adds up.
+ * returning the top to a mark, which also takes the released bytes off the
+ * per-purpose counts, so the report after a frame still adds up.
  */
 #include <string.h>
 #include "silk/arena.h"
@@ -63,6 +63,7 @@ void *silk_arena_alloc_top(silk_arena *a, size_t n, silk_purpose p)
     size_t m;
     if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, &m)) return NULL;
     a->top += m;
+    a->top_used[p] += m;
     if (a->top > a->top_peak) a->top_peak = a->top;
     uint8_t *r = a->base + a->size - a->top;
     account(a, m, p);
@@ -95,7 +96,7 @@ silk_arena_mark silk_arena_top_mark(const silk_arena *a)
 {
     silk_arena_mark m;
     m.top = a->top;
-    memcpy(m.used, a->used, sizeof m.used);
+    memcpy(m.top_used, a->top_used, sizeof m.top_used);
     return m;
 }
 
@@ -103,7 +104,13 @@ void silk_arena_top_release(silk_arena *a, const silk_arena_mark *m)
 {
     if (m->top > a->top) return;  /* a stale mark: releasing would grow the top */
     a->top = m->top;
-    memcpy(a->used, m->used, sizeof a->used);
+    /* Only the top's share of each purpose goes: bottom allocations made
+     * since the mark (a mesh loaded while scratch was held) stay counted. */
+    for (int p = 0; p < SILK_MEM_COUNT; p++) {
+        size_t freed = a->top_used[p] >= m->top_used[p] ? a->top_used[p] - m->top_used[p] : 0;
+        a->top_used[p] -= freed;
+        a->used[p] -= freed;
+    }
 }
 
 size_t silk_arena_free_bytes(const silk_arena *a)

@@ -76,22 +76,55 @@ silk_vec3 silk_mat4_apply_dir(const silk_mat4 *m, silk_vec3 d)
 
 /* ---- helpers -------------------------------------------------------------- */
 
-/* Unit vector along a 64-bit vector, shifted down first so silk_v3_normalize
- * sees as many significant bits as fit.  Returns 0 for the zero vector. */
-static int unit64(int64_t x, int64_t y, int64_t z, silk_vec3 *out)
+/* Unit vector along a 64-bit vector, in Q8.24: 256 times finer than Q16.16,
+ * so the camera's rotation does not limit narrow fields of view.  Returns 0
+ * for the zero vector. */
+static int unit24(int64_t x, int64_t y, int64_t z, int32_t out[3])
 {
-    int64_t ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
-    int64_t m = ax > ay ? ax : ay;
-    if (az > m) m = az;
-    if (m == 0) { *out = silk_v3(0, 0, 0); return 0; }
-    int s = 0;
-    while ((m >> s) > (int64_t)(SILK_FX_MAX / 2)) s++;
-    if (s > 0) {
-        x = silk_shr_round64(x, s);
-        y = silk_shr_round64(y, s);
-        z = silk_shr_round64(z, s);
+    int64_t v[3] = { x, y, z }, m = 0;
+    for (int i = 0; i < 3; i++) {
+        int64_t a = v[i] < 0 ? -v[i] : v[i];
+        if (a > m) m = a;
     }
-    return silk_v3_normalize(silk_v3((silk_fx)x, (silk_fx)y, (silk_fx)z), out);
+    if (m == 0) { out[0] = out[1] = out[2] = 0; return 0; }
+    /* largest component to [2^29, 2^30]: the squares sum below 2^62 */
+    int up = 0, down = 0;
+    while ((m >> down) > ((int64_t)1 << 30)) down++;
+    while ((m << up) < ((int64_t)1 << 29)) up++;
+    uint64_t ss = 0;
+    for (int i = 0; i < 3; i++) {
+        v[i] = down ? silk_shr_round64(v[i], down) : v[i] * ((int64_t)1 << up);
+        ss += (uint64_t)(v[i] * v[i]);
+    }
+    int64_t len = silk_isqrt64(ss);
+    for (int i = 0; i < 3; i++) {
+        int64_t n = v[i] * ((int64_t)1 << 24);
+        out[i] = (int32_t)(n >= 0 ? (n + len / 2) / len : -((-n + len / 2) / len));
+    }
+    return 1;
+}
+
+static silk_vec3 q24_to_fx(const int32_t v[3])
+{
+    return silk_v3((silk_fx)silk_shr_round64(v[0], 8), (silk_fx)silk_shr_round64(v[1], 8),
+                   (silk_fx)silk_shr_round64(v[2], 8));
+}
+
+/* cot(deg / 2) in Q16.16 from a Q2.30 Taylor series: silk_fx_sincos_deg's
+ * absolute error would be a large relative error in sin of a narrow field
+ * of view. deg in [SILK_FOV_MIN, SILK_FOV_MAX]. */
+static silk_fx cot_half_deg(silk_fx deg)
+{
+    const int64_t pi30 = 3373259426LL;                       /* pi in Q2.30 */
+    int64_t x = ((int64_t)deg * pi30) / (360LL * 65536);     /* half angle, radians, Q30 (< 1.53) */
+    int64_t x2 = (x * x) >> 30, s = x, c = (int64_t)1 << 30, ts = x, tc = c;
+    for (int n = 1; n < 14; n++) {
+        ts = -((ts * x2) >> 30) / ((2 * n) * (2 * n + 1));
+        tc = -((tc * x2) >> 30) / ((2 * n - 1) * (2 * n));
+        s += ts;
+        c += tc;
+    }
+    return silk_fx_sat((c * 65536 + s / 2) / s);
 }
 
 /* n / d rounded half away from zero, saturated to silk_fx; d > 0. */
@@ -107,10 +140,10 @@ static void eye_coords(const silk_view *v, silk_vec3 p, silk_fx e[3])
     int64_t d[3] = { (int64_t)p.x - v->cam.eye.x, (int64_t)p.y - v->cam.eye.y,
                      (int64_t)p.z - v->cam.eye.z };
     for (int i = 0; i < 3; i++) {
-        /* |R| <= 2^16 and |d| < 2^32: each product < 2^48, no overflow */
-        int64_t s = (int64_t)v->view.m[i][0] * d[0] + (int64_t)v->view.m[i][1] * d[1] +
-                    (int64_t)v->view.m[i][2] * d[2];
-        e[i] = silk_fx_sat(silk_shr_round64(s, 16));
+        /* |R| <= 2^24 and |d| < 2^33: the sum stays below 2^59 */
+        int64_t s = (int64_t)v->rot24[i][0] * d[0] + (int64_t)v->rot24[i][1] * d[1] +
+                    (int64_t)v->rot24[i][2] * d[2];
+        e[i] = silk_fx_sat(silk_shr_round64(s, 24));
     }
 }
 
@@ -143,26 +176,23 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
     if (cam->znear < SILK_ZNEAR_MIN)
         return bad(err, SILK_ERR_RANGE, "znear is below 1/1024, too small for fixed point");
 
-    int64_t fx = (int64_t)cam->target.x - cam->eye.x, fy = (int64_t)cam->target.y - cam->eye.y,
-            fz = (int64_t)cam->target.z - cam->eye.z;
-    silk_vec3 fwd, up, right, upv;
-    if (!unit64(fx, fy, fz, &fwd)) return bad(err, SILK_ERR_ARG, "eye and target are the same point");
-    if (!unit64(cam->up.x, cam->up.y, cam->up.z, &up)) return bad(err, SILK_ERR_ARG, "up vector is zero");
-    /* right = fwd x up, exact in Q32: its length is sin(angle(fwd, up)) */
-    int64_t rx = (int64_t)fwd.y * up.z - (int64_t)fwd.z * up.y;
-    int64_t ry = (int64_t)fwd.z * up.x - (int64_t)fwd.x * up.z;
-    int64_t rz = (int64_t)fwd.x * up.y - (int64_t)fwd.y * up.x;
+    int32_t fwd[3], up[3], right[3], upv[3];
+    if (!unit24((int64_t)cam->target.x - cam->eye.x, (int64_t)cam->target.y - cam->eye.y,
+                (int64_t)cam->target.z - cam->eye.z, fwd))
+        return bad(err, SILK_ERR_ARG, "eye and target are the same point");
+    if (!unit24(cam->up.x, cam->up.y, cam->up.z, up)) return bad(err, SILK_ERR_ARG, "up vector is zero");
+    /* right = fwd x up, exact in Q48: its length is sin(angle(fwd, up)) */
+    int64_t rx = (int64_t)fwd[1] * up[2] - (int64_t)fwd[2] * up[1];
+    int64_t ry = (int64_t)fwd[2] * up[0] - (int64_t)fwd[0] * up[2];
+    int64_t rz = (int64_t)fwd[0] * up[1] - (int64_t)fwd[1] * up[0];
     /* sin < 1/256 (0.22 degrees): the camera's roll would be noise */
-    uint64_t ax = (uint64_t)(rx < 0 ? -rx : rx), ay = (uint64_t)(ry < 0 ? -ry : ry),
-             az = (uint64_t)(rz < 0 ? -rz : rz);
-    uint64_t r2 = ax * (ax >> 16) + ay * (ay >> 16) + az * (az >> 16);   /* sin^2 in Q48 */
-    if (r2 < ((uint64_t)1 << 32))
+    int64_t qx = rx >> 24, qy = ry >> 24, qz = rz >> 24;     /* Q24 */
+    if (qx * qx + qy * qy + qz * qz < ((int64_t)1 << 32))
         return bad(err, SILK_ERR_ARG, "up vector is parallel to the view direction");
-    unit64(rx, ry, rz, &right);
-    int64_t ux = (int64_t)right.y * fwd.z - (int64_t)right.z * fwd.y;
-    int64_t uy = (int64_t)right.z * fwd.x - (int64_t)right.x * fwd.z;
-    int64_t uz = (int64_t)right.x * fwd.y - (int64_t)right.y * fwd.x;
-    unit64(ux, uy, uz, &upv);
+    unit24(rx, ry, rz, right);
+    unit24((int64_t)right[1] * fwd[2] - (int64_t)right[2] * fwd[1],
+           (int64_t)right[2] * fwd[0] - (int64_t)right[0] * fwd[2],
+           (int64_t)right[0] * fwd[1] - (int64_t)right[1] * fwd[0], upv);
 
     silk_fx sx, sy;   /* clip x, y per eye-space unit (perspective: at depth 1) */
     if (cam->ortho) {
@@ -174,9 +204,7 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
             return bad(err, SILK_ERR_ARG, "field of view must be in (0, 180) degrees");
         if (cam->fov_deg < SILK_FOV_MIN || cam->fov_deg > SILK_FOV_MAX)
             return bad(err, SILK_ERR_RANGE, "field of view must be in [1, 175] degrees for fixed point");
-        silk_fx s, c;
-        silk_fx_sincos_deg(cam->fov_deg / 2, &s, &c);
-        sy = silk_fx_div(c, s);                      /* cot(fov/2), 0.04 .. 114.6 */
+        sy = cot_half_deg(cam->fov_deg);              /* 0.04 .. 114.6 */
     }
     int64_t sx64 = ((int64_t)sy * cam->height + cam->width / 2) / cam->width;
     if (sx64 > SILK_FX_MAX / 4 || sx64 < 1)
@@ -184,18 +212,27 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
     sx = (silk_fx)sx64;
 
     v->cam = *cam;
-    v->forward = fwd;
-    v->right = right;
-    v->upv = upv;
-    v->pixels_per_unit = silk_fx_sat(((int64_t)sy * cam->height) / 2);
+    v->forward = q24_to_fx(fwd);
+    v->right = q24_to_fx(right);
+    v->upv = q24_to_fx(upv);
+    v->pixels_per_unit = cam->ortho
+        ? div_round((int64_t)cam->height * SILK_FX_ONE * SILK_FX_ONE, 2 * (int64_t)cam->ortho_half_height)
+        : silk_fx_sat(((int64_t)sy * cam->height) / 2);
+    for (int k = 0; k < 3; k++) {
+        v->rot24[0][k] = right[k];
+        v->rot24[1][k] = upv[k];
+        v->rot24[2][k] = -fwd[k];
+    }
 
     silk_mat4 V = silk_mat4_identity();
-    silk_vec3 rows[3] = { right, upv, silk_v3_neg(fwd) };
+    silk_vec3 rows[3] = { v->right, v->upv, silk_v3_neg(v->forward) };
     for (int i = 0; i < 3; i++) {
         V.m[i][0] = rows[i].x;
         V.m[i][1] = rows[i].y;
         V.m[i][2] = rows[i].z;
-        V.m[i][3] = silk_fx_sat(-silk_shr_round64(silk_v3_dot64(rows[i], cam->eye), 16));
+        int64_t t = (int64_t)v->rot24[i][0] * cam->eye.x + (int64_t)v->rot24[i][1] * cam->eye.y +
+                    (int64_t)v->rot24[i][2] * cam->eye.z;
+        V.m[i][3] = silk_fx_sat(-silk_shr_round64(t, 24));
     }
     v->view = V;
 
@@ -217,13 +254,29 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
     return SILK_OK;
 }
 
+/* Clip x, y from eye x, y: sy * e and sy * e * H / W, or for orthographic
+ * views e / half_height and e * H / (half_height * W), divided exactly
+ * rather than through the rounded matrix entries (1 / half_height has few
+ * significant bits when the half height is large). */
+static void clip_xy(const silk_view *v, const silk_fx e[3], silk_vec4 *c)
+{
+    const silk_camera *cam = &v->cam;
+    if (cam->ortho) {
+        c->x = div_round((int64_t)e[0] * cam->height * SILK_FX_ONE, (int64_t)cam->ortho_half_height * cam->width);
+        c->y = div_round((int64_t)e[1] * SILK_FX_ONE, cam->ortho_half_height);
+    } else {
+        silk_fx sy = v->proj.m[1][1];
+        c->x = silk_fx_muldiv(silk_fx_mul(sy, e[0]), cam->height, cam->width);
+        c->y = silk_fx_mul(sy, e[1]);
+    }
+}
+
 silk_vec4 silk_view_clip(const silk_view *v, silk_vec3 p)
 {
     silk_fx e[3];
     eye_coords(v, p, e);
     silk_vec4 c;
-    c.x = silk_fx_mul(v->proj.m[0][0], e[0]);
-    c.y = silk_fx_mul(v->proj.m[1][1], e[1]);
+    clip_xy(v, e, &c);
     if (v->cam.ortho) {
         c.z = ortho_z(&v->cam, e[2]);
         c.w = SILK_FX_ONE;
@@ -234,16 +287,32 @@ silk_vec4 silk_view_clip(const silk_view *v, silk_vec3 p)
     return c;
 }
 
+/* num / (2 w) * size, rounded: num may be up to 2^55 and size 2^13, so the
+ * division is split into quotient and remainder to stay in 64 bits. */
+static silk_fx scale_div(int64_t num, int size, int64_t w2)
+{
+    int64_t q = num / w2, r = num % w2;
+    return silk_fx_sat(q * size + div_round(r * size, w2));
+}
+
 int silk_view_project(const silk_view *v, silk_vec3 p, silk_vec2 *px)
 {
+    const silk_camera *c = &v->cam;
     silk_fx e[3];
     eye_coords(v, p, e);
-    if (-(int64_t)e[2] < v->cam.znear) return 0;
-    silk_vec4 c = silk_view_clip(v, p);
-    /* pixel = (ndc + 1) / 2 * size, y flipped: row 0 at the top */
-    int64_t w2 = 2 * (int64_t)c.w;
-    px->x = div_round(((int64_t)c.x + c.w) * v->cam.width * SILK_FX_ONE, w2);
-    px->y = div_round(((int64_t)c.w - c.y) * v->cam.height * SILK_FX_ONE, w2);
+    if (-(int64_t)e[2] < c->znear) return 0;
+    /* pixel = (ndc + 1) / 2 * size, y flipped (row 0 at the top), straight
+     * from eye space so no clip-space rounding is added */
+    int64_t cx = (int64_t)c->width * SILK_FX_HALF, cy = (int64_t)c->height * SILK_FX_HALF;
+    if (c->ortho) {
+        int64_t h2 = 2 * (int64_t)c->ortho_half_height;
+        px->x = silk_fx_sat(cx + div_round((int64_t)e[0] * c->height * SILK_FX_ONE, h2));
+        px->y = silk_fx_sat(cy - div_round((int64_t)e[1] * c->height * SILK_FX_ONE, h2));
+    } else {
+        int64_t sy = v->proj.m[1][1], w2 = -2 * (int64_t)e[2];
+        px->x = silk_fx_sat(cx + scale_div(sy * e[0], c->height, w2));
+        px->y = silk_fx_sat(cy - scale_div(sy * e[1], c->height, w2));
+    }
     return 1;
 }
 

@@ -11,9 +11,11 @@
 
 /* Eq. 4: dir scaled to length 2|chord| / (1 + cos theta), theta the angle
  * between dir and chord, so that the Hermite curve over chord with this end
- * tangent approximates a circular arc.  dir need not be unit.  A zero dir,
- * a zero chord or 1+cos theta near 0 are handled (see curve.c); never
- * overflows. */
+ * tangent approximates a circular arc.  dir need not be unit.  A zero dir
+ * gives the chord itself (theta = 0: a straight line), a zero chord the zero
+ * vector, and 1 + cos theta near 0 the clamp below; never overflows.
+ * Within 1 ulp + 2^-27 of the result's length of the exact value
+ * (tests/test_curve.c). */
 silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
 
 /* The clamp of eq. 4: L <= SILK_ARC_MAX_RATIO * |chord|, reached when
@@ -29,20 +31,29 @@ silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
 /* Eqs. 2-5: the silhouette bridge over p0->p1 with unit normals n0, n1:
  * tangent directions are the chord projected onto each end's tangent plane
  * (eqs. 2, 3), lengths from eq. 4.  Fills p0, p1, t0, t1, n0, n1 of out;
- * uv0/uv1 are left as they are. */
+ * uv0/uv1 are left as they are.  The normals are renormalised inside, so a
+ * few ulps off unit length do not matter; a zero normal, or a chord along
+ * the normal, gives a straight tangent (the chord); p0 == p1 gives zero
+ * tangents.  p1 - p0 is taken in 64 bits, so any two Q16.16 points work. */
 void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_curve *out);
 
 /* Eqs. 6-7: the parameter u in [0,1] where the linearly interpolated normal
  * (1-u)n0 + u n1 is perpendicular to the linearly interpolated view
  * direction (1-u)d0 + u d1.  Parallel projection passes d0 == d1.  When the
  * signs of n0.d0 and n1.d1 differ, the result is the unique root in [0,1]
- * (quadratic solved without cancellation); otherwise the end with the
- * smaller |n.d| is returned. */
+ * (quadratic solved without cancellation, checked and corrected by the exact
+ * sign of h on a 2^-17 grid: the root rounded to nearest, measured within
+ * 0.5 ulp); otherwise the end with the smaller |n.d| is returned.  n.d
+ * exactly 0 at an end returns that end (u = 0 first).  Swapping the ends
+ * gives 1 - u within 1 ulp.  d may be long (towards a far eye): any Q16.16
+ * inputs are safe. */
 silk_fx silk_silhouette_param(silk_vec3 n0, silk_vec3 d0, silk_vec3 n1, silk_vec3 d1);
 
 /* Eq. 8: n_s = ceil( sqrt(h * r / e) / 2 ), r = sqrt((1 - cos_alpha)/2),
- * h the projected height in pixels, e the tolerance in pixels.  At least 1,
- * capped at SILK_MAX_SAMPLES. */
+ * h the projected size of the segment in pixels (silhouette.c says which
+ * size), e the tolerance in pixels.  Decided in integers as the least n with
+ * 4 n^2 e >= h r (r to 2^-24).  At least 1 (also for h <= 0 or cos_alpha
+ * >= 1), capped at SILK_MAX_SAMPLES (also for e <= 0). */
 #define SILK_MAX_SAMPLES 64
 uint32_t silk_sample_count(silk_fx h_px, silk_fx cos_alpha, silk_fx tol_px);
 

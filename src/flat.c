@@ -27,5 +27,6 @@ silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *
     g->ntri = m->ntris;
     g->curve = NULL; g->ncurve = 0;
     g->offset = NULL; g->noffset = 0;
+    g->patch = NULL; g->npatch = 0;
     return SILK_OK;
 }

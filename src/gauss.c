@@ -7,9 +7,10 @@
  * shifted to the model centre C and scaled by s so that |w| <= 1) or
  * E' = (D, 0) in parallel projection.  The sign of E'.V' does not change when
  * V' is scaled, so V' never has to be put on S^3: cells live on S^2 x [-1,1]
- * with coordinates latitude, longitude and w, halve all three per level
- * (eight corners, eight children), and their lat/long part is the
- * four-corner cell of the paper's Fig. 9.
+ * with coordinates latitude, longitude and w (eight corners), a level halves
+ * latitude and longitude and, where the normals spread enough in w, w too
+ * (eight children), and a cell's lat/long part is the four-corner cell of
+ * the paper's Fig. 9, so one tree serves both projections.
  *
  * A cell decides all its normals when its whole region lies on one side of
  * E'.X = 0.  Four corners on one side do not prove that: a latitude arc is
@@ -26,7 +27,7 @@
 #include <string.h>
 #include "silk/visibility.h"
 
-#define MAX_DEPTH     10      /* 3 bits per level in a 32-bit code */
+#define MAX_DEPTH     10      /* levels per coordinate: 3 x 10 bits fit a uint32_t */
 #define LEAF_MAX      24      /* default: cells this small are tested one by one */
 #define BYTES_PER_NORMAL 8    /* the hierarchy's memory budget */
 /* Slack on each cell radius (Q16.16 ulps) for the rounding of the corners'
@@ -82,10 +83,11 @@ static uint64_t dist_sq(silk_vec3 a, silk_vec3 b)
 }
 
 /* Ball around the centre of lat/long cell (lat, lon) of the given level, in
- * Q16.16, centre rounded to the Q2.14 that nodes store.  Along a latitude arc
- * the distance to the centre grows with the longitude difference, along a
- * meridian it is a sinusoid with its maximum inside the cell, so with a
- * longitude span of at most pi the farthest point is a corner. */
+ * Q16.16, centre rounded to the Q2.14 that nodes store.  Along a latitude
+ * the distance to the centre grows with the longitude difference, and along
+ * a boundary meridian c.X is a sinusoid without an interior minimum, so with
+ * a longitude span of at most pi the farthest point of the cell is a corner
+ * (docs/visibility.md). */
 static void cell_ball(uint32_t level, uint32_t lat, uint32_t lon, silk_vec3 *c, uint32_t *r)
 {
     if (level == 0) {                       /* the whole sphere */
@@ -173,15 +175,17 @@ static void fill_node(build_ctx *b, silk_vis_node *nd, const cell *cl, silk_vec3
 #define W_SPLIT_NUM 3
 #define W_SPLIT_DEN 8
 
-/* Emit (or count, when b->node is NULL) the subtree of cell cl holding the
- * normals order[lo..hi), in depth-first order; the range is sorted by
- * child as it goes, so that every cell is one contiguous range. */
+/* First level from `from` on at which a and b (finest-level indices) fall
+ * into different cells, at most `to`. */
 static uint32_t common_bits(uint32_t a, uint32_t b, uint32_t from, uint32_t to)
 {
     while (from < to && (a >> (MAX_DEPTH - from - 1)) == (b >> (MAX_DEPTH - from - 1))) from++;
     return from;
 }
 
+/* Emit (or count, when b->node is NULL) the subtree of cell `in` holding the
+ * normals order[lo..hi), in depth-first order; the range is sorted by
+ * child as it goes, so that every cell is one contiguous range. */
 static void build_cell(build_ctx *b, const cell *in, uint32_t lo, uint32_t hi)
 {
     /* Narrow the cell to the smallest one of the grid that still holds all
@@ -219,26 +223,22 @@ static void build_cell(build_ctx *b, const cell *in, uint32_t lo, uint32_t hi)
         split_w = !split_ll || spread * W_SPLIT_NUM > (uint64_t)r * W_SPLIT_DEN;
     }
     if (hi - lo > b->leaf_max && (split_ll || split_w)) {
-        /* stable counting sort of the range by child: (lat, lon, w) bits */
+        /* stable counting sort of the range by child, key = (lat, lon, w)
+         * bits, carried in tmp's top bits next to the normal's index */
         uint32_t count[9] = { 0 };
         int sl = (int)(MAX_DEPTH - cl->level - 1), sw = (int)(MAX_DEPTH - cl->wlevel - 1);
         for (uint32_t k = lo; k < hi; k++) {
             uint32_t f = b->fine[b->order[k]], key = 0;
             if (split_ll) key = ((FINE_LAT(f) >> sl) & 1u) << 2 | ((FINE_LON(f) >> sl) & 1u) << 1;
             if (split_w) key |= (FINE_W(f) >> sw) & 1u;
-            b->tmp[k] = key;
+            b->tmp[k] = key << 28 | b->order[k];
             count[key + 1]++;
         }
         for (int d = 0; d < 8; d++) count[d + 1] += count[d];
         uint32_t start[9];
         memcpy(start, count, sizeof start);
-        /* tmp holds keys; place indices into the upper half of a second
-         * pass: keys first, then order, both within [lo, hi) */
-        for (uint32_t k = lo; k < hi; k++) b->tmp[k] = b->tmp[k] << 28 | b->order[k];
-        for (uint32_t k = lo; k < hi; k++) {
-            uint32_t key = b->tmp[k] >> 28;
-            b->order[lo + count[key]++] = b->tmp[k] & 0x0FFFFFFFu;
-        }
+        for (uint32_t k = lo; k < hi; k++)
+            b->order[lo + count[b->tmp[k] >> 28]++] = b->tmp[k] & 0x0FFFFFFFu;
         for (uint32_t key = 0; key < 8; key++) {
             if (start[key] == start[key + 1]) continue;
             cell ch = *cl;

@@ -468,4 +468,5 @@ void silk_ld_arena_restore(silk_arena *a, const silk_arena *saved)
     a->bottom = saved->bottom;
     a->top = saved->top;
     memcpy(a->used, saved->used, sizeof a->used);
+    memcpy(a->top_used, saved->top_used, sizeof a->top_used);
 }

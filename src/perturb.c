@@ -101,6 +101,27 @@ static void visit_near(silk_sil_frame *f, const silk_sil_seg *s, uint32_t stamp,
     }
 }
 
+/* Whether a point on one of vtx's edges lies exactly at vtx (the silhouette
+ * passes through the vertex, or so close to it that the point rounds onto
+ * it).  That point is a record on its edge's curve, at the vertex's original
+ * position, so moving the vertex would stretch zero-area triangles between
+ * the two into overlapping slivers; the vertex stays. */
+static int silhouette_at(const silk_sil_frame *f, silk_index vtx)
+{
+    const silk_mesh *m = f->m;
+    silk_vec3 p = m->pos[vtx];
+    for (uint32_t i = m->vert_edge_start[vtx]; i < m->vert_edge_start[vtx + 1]; i++) {
+        silk_index e = m->vert_edge[i];
+        if (!silk_sil_chained(f, e)) continue;
+        const silk_sil_edge *w = &f->edges[f->edge_slot[e]];
+        /* the chain's point nearest vtx */
+        silk_fx t = m->edge[e].v[0] == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
+        silk_vec3 q = silk_hermite_point(&w->geom, t);
+        if (q.x == p.x && q.y == p.y && q.z == p.z) return 1;
+    }
+    return 0;
+}
+
 void silk_perturb(silk_sil_frame *f)
 {
     if (!f->near_bound) return;
@@ -118,7 +139,7 @@ void silk_perturb(silk_sil_frame *f)
     /* From here on vert_slot maps a vertex to its offset. */
     for (uint32_t sl = 0; sl < f->nslots; sl++) {
         silk_index vtx = f->slot_vert[sl];
-        if (f->lift[sl] > 0) {
+        if (f->lift[sl] > 0 && !silhouette_at(f, vtx)) {
             f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);
             f->vert_slot[vtx] = f->noffset++;
         } else {

@@ -230,7 +230,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     uint32_t si = 0;
     f->max_poly = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        const silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
+        silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
         uint32_t root = SILK_SIL_NONE;
         for (uint32_t k = 0; k < 3 && root == SILK_SIL_NONE; k++) {
             const silk_sil_edge *e = edge_at(f, t, k);
@@ -245,7 +245,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         c->curves += curves;
         if (poly > f->max_poly) f->max_poly = poly;
         if (s) {
-            ((silk_sil_seg *)s)->comp = root;
+            s->comp = root;
             if (s->concave) {
                 /* the triangle's corners and everything one edge away */
                 uint32_t near = 3;
@@ -535,13 +535,12 @@ void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *s
         }
     }
 
-    uint32_t si = 0, nsil = 0;
+    uint32_t si = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
         if (s && !f->edges[s->comp].rejected) {
             emit_silhouette(f, g, t, s);
             samples += s->n - 1;
-            nsil++;
             continue;
         }
         int chained = 0;
@@ -559,5 +558,4 @@ void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *s
         stats->tris_drawn = g->ntri;
         stats->moved_vertices = f->noffset;
     }
-    (void)nsil;
 }

@@ -16,10 +16,14 @@ void silk_render_opts_default(silk_render_opts *o)
 {
     o->mode = SILK_MODE_SMOOTH;
     o->tolerance_px = SILK_FX_HALF;
+    o->visibility = SILK_VIS_AUTO;
     o->wire = 0;
     o->wire_rgb = 0x202020;
     o->wire_new_rgb = 0xE02020;
     o->bg_rgb = 0xFFFFFF;
+    o->level = 3;
+    o->pn_normals = SILK_PN_QUADRATIC;
+    o->blend_beta = SILK_FX_C(1, 4);
 }
 
 /* A frame ready to rasterize: geometry plus the vertex stage's output. */
@@ -50,9 +54,13 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     f->hal = h;
     silk_status st;
     if (o->mode == SILK_MODE_SMOOTH)
-        st = silk_frame_smooth(a, m, v, o->tolerance_px, SILK_VIS_AUTO, &f->g, stats, err);
+        st = silk_frame_smooth(a, m, v, o->tolerance_px, o->visibility, &f->g, stats, err);
     else if (o->mode == SILK_MODE_FLAT)
         st = silk_frame_flat(a, m, &f->g, err);
+    else if (o->mode == SILK_MODE_PN)
+        st = silk_frame_pn(a, m, o->level, o->pn_normals, &f->g, stats, err);
+    else if (o->mode == SILK_MODE_BLEND)
+        st = silk_frame_blend(a, m, v, o->blend_beta, o->tolerance_px, &f->g, stats, err);
     else
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
     if (st != SILK_OK) return st;
@@ -60,6 +68,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     f->geom.mesh = m;
     f->geom.curves = f->g.curve;
     f->geom.offsets = f->g.offset;
+    f->geom.patches = f->g.patch;
     /* Without room for the cache the frame is still drawn, only slower. */
     f->cache = silk_arena_array_top(a, f->g.nvrec, sizeof *f->cache, SILK_MEM_FRAME);
     if (f->cache)

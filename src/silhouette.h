@@ -59,7 +59,9 @@ typedef struct silk_sil_edge {
     uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
     uint32_t parent;         /* union-find over edges joined by a re-meshed triangle */
     silk_index bn0, bn1;     /* normals the bridge was built from (non-feature edges) */
-    uint8_t is_feature, sampled, rejected;
+    uint8_t is_feature;
+    uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
+    uint8_t rejected;        /* on roots: this part is drawn coarse (out of memory) */
 } silk_sil_edge;
 
 /* The silhouette segment of one silhouette triangle (III-D) and its samples. */
@@ -98,7 +100,6 @@ typedef struct silk_sil_frame {
     silk_fx *chain;        uint32_t nchain;
     silk_sil_seg *segs;    uint32_t nsegs;
     silk_sil_cost *cost;     /* nedges (indexed by root) */
-    uint32_t ncentre;        /* accepted triangles re-meshed around their centre */
     uint32_t max_poly;       /* longest boundary of one re-meshed triangle */
     uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
 
@@ -116,12 +117,11 @@ typedef struct silk_sil_frame {
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs out. */
 silk_status silk_sil_find(silk_sil_frame *f);
-/* Edge e's side k of triangle t in triangle order: first record and whether
- * the chain runs forwards. */
+/* The side record of triangle t's side k on edge e, or NULL. */
 const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
                                       uint32_t tri, uint32_t k);
-/* Position and normal of point u on edge e for side s (what the HAL will
- * compute for the record). */
+/* Position, normal and uv of point u on edge e as side s sees it (what the
+ * HAL computes for the record). */
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv);
 
@@ -143,10 +143,12 @@ void silk_perturb(silk_sil_frame *f);                /* fills offset, vert_offse
 
 /* Shared helpers. */
 uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i);
+/* Whether mesh edge `edge` carries points this frame (after silk_remesh_plan:
+ * parents are roots then, and a dropped part is marked on its root). */
 static inline int silk_sil_chained(const silk_sil_frame *f, uint32_t edge)
 {
     uint32_t w = f->edge_slot[edge];
-    return w != SILK_SIL_NONE && !f->edges[w].rejected && f->edges[w].nchain > 0;
+    return w != SILK_SIL_NONE && !f->edges[f->edges[w].parent].rejected && f->edges[w].nchain > 0;
 }
 
 #endif

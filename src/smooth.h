@@ -19,6 +19,7 @@ typedef struct silk_frame_geom {
     uint8_t    *tri_added;               /* per triangle: 1 if made by re-meshing (drawn red by --wire) */
     silk_curve *curve; uint32_t ncurve;
     silk_vec3  *offset; uint32_t noffset;
+    silk_patch *patch; uint32_t npatch;  /* PN and BLEND modes */
 } silk_frame_geom;
 
 /* The coarse mesh as it is: one CORNER record per triangle corner. */
@@ -31,5 +32,21 @@ silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *
 silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view *v,
                               silk_fx tolerance_px, silk_vis_method vis,
                               silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
+
+/* PN triangles (src/pn.c): every triangle's cubic patch, its sides cut
+ * into level segments, with quadratic or linear normals.  View-independent.
+ * Same contract as silk_frame_smooth: arrays from the top of the arena, and
+ * when they do not fit the coarse mesh is emitted with stats->fell_back set. */
+silk_status silk_frame_pn(silk_arena *a, const silk_mesh *m, uint32_t level, silk_pn_normals normals,
+                          silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
+
+/* Silhouetteness blending (src/blend.c, Dyken & Reimers): triangles whose
+ * three edges have silhouetteness 0 stay as they are; the others become
+ * patches blended between flat and PN by the silhouetteness of each edge,
+ * drawn as a fan around the patch centre with each edge cut into as many
+ * segments as tolerance_px needs.  Same contract as silk_frame_smooth. */
+silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx beta,
+                             silk_fx tolerance_px, silk_frame_geom *g, silk_frame_stats *stats,
+                             silk_error *err);
 
 #endif

@@ -40,6 +40,25 @@ silk_vec3 silk_hermite_point(const silk_curve *c, silk_fx t)
                    hermite1(c->p0.z, c->p1.z, c->t0.z, c->t1.z, t));
 }
 
+/* normalize((1-t) n0 + t n1), with the blend exact in 64 bits and scaled to
+ * 30 significant bits before normalising, so that a short blend (normals
+ * far apart) keeps its direction.  Returns 0 when the blend is zero. */
+static int blend_normal(silk_vec3 n0, silk_vec3 n1, silk_fx t, silk_vec3 *out)
+{
+    int64_t s = SILK_FX_ONE - t;
+    int64_t v[3] = { (int64_t)n0.x * s + (int64_t)n1.x * t, (int64_t)n0.y * s + (int64_t)n1.y * t,
+                     (int64_t)n0.z * s + (int64_t)n1.z * t };
+    int64_t m = 0;
+    for (int k = 0; k < 3; k++) {
+        int64_t a = v[k] < 0 ? -v[k] : v[k];
+        if (a > m) m = a;
+    }
+    int sh = 0;
+    while ((m >> sh) >= ((int64_t)1 << 30)) sh++;
+    for (int k = 0; k < 3; k++) v[k] = sh ? silk_shr_round64(v[k], sh) : v[k];
+    return silk_v3_normalize(silk_v3((silk_fx)v[0], (silk_fx)v[1], (silk_fx)v[2]), out);
+}
+
 static silk_fx lerp1(silk_fx a, silk_fx b, silk_fx t)
 {
     return silk_fx_sat(a + silk_shr_round64(((int64_t)b - a) * t, 16));
@@ -77,7 +96,7 @@ void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *ou
         silk_fx t = silk_fx_clamp(r->t, 0, SILK_FX_ONE);
         out->pos = silk_hermite_point(c, t);
         /* eq. 6; opposite end normals cancel at one point: keep n0 there */
-        if (!silk_v3_normalize(silk_v3_lerp(c->n0, c->n1, t), &out->normal)) out->normal = c->n0;
+        if (!blend_normal(c->n0, c->n1, t, &out->normal)) out->normal = c->n0;
         out->uv.x = lerp1(c->uv0.x, c->uv1.x, t);
         out->uv.y = lerp1(c->uv0.y, c->uv1.y, t);
         break;
@@ -85,6 +104,9 @@ void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *ou
     case SILK_VREC_MOVED:
         corner(g->mesh, r->a, out);
         if (g->offsets) out->pos = silk_v3_add(out->pos, g->offsets[r->b]);
+        break;
+    case SILK_VREC_PATCH:   /* PN and BLEND modes (pn.c) */
+        if (g->patches) silk_patch_eval(&g->patches[r->a], r->b, out);
         break;
     default:
         break;

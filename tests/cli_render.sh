@@ -120,6 +120,9 @@ check "missing mesh removes a stale output" test ! -e "$o"
 echo stale >"$o"
 want='size' expect_usage "bad size" render "$sphere" --size 0x5 -o "$o"
 check "usage error removes a stale output" test ! -e "$o"
+cp "$tmp/o.ppm" "$tmp/input.ppm"
+expect_input "an image as the mesh" render "$tmp/input.ppm" -o "$tmp/input.ppm"
+check "a failed render never removes its input" cmp -s "$tmp/o.ppm" "$tmp/input.ppm"
 want='cannot create: No such file or directory' expect_input "missing output directory" render "$sphere" -o "$tmp/no/dir/x.png"
 want='unknown image format' expect_usage "unknown extension" render "$sphere" -o "$tmp/x.jpg"
 check "nothing written for an unknown extension" test ! -e "$tmp/x.jpg"
@@ -128,6 +131,23 @@ want='Is a directory' expect_input "output is a directory" render "$sphere" -o "
 check "the directory is kept" test -d "$tmp/dir.png"
 want='arena' expect_input "arena too small" render "$sphere" --arena 4K -o "$o"
 check "no output after a small arena" test ! -e "$o"
+
+# An arena that holds the mesh and the frame buffer but little scratch: the
+# frame is drawn unsmoothed with a one-line warning, or (when even that does
+# not fit) one error line and no image; never a crash or a partial file.
+run_silk info "$sphere" --size 64x64
+loaded=$(info_value "$out" "  after loading")
+small=$(( (loaded + 64 * 64 * 7 + 16384) / 1024 + 1 ))K
+run_silk render "$sphere" --size 64x64 --arena "$small" -o "$o"
+if { [ "$rc" -eq 0 ] && is_png "$o" && grep -q '^silk: warning: the arena ran out' "$err"; } ||
+   { [ "$rc" -eq 1 ] && one_error_line && [ ! -e "$o" ]; }; then
+    pass "scarce arena ($small): exit $rc, $(head -c 80 "$err")"
+else
+    fail "scarce arena ($small)" "exit $rc: $(cat "$err")"
+fi
+rm -f "$o"
+run_silk render "$sphere" --size 64x64 -o "$o"
+check "the automatic arena draws the frame fully (no warning)" test "$rc" -eq 0 -a ! -s "$err"
 
 # A write that fails half way (file size limit, like a full disk): exit 1,
 # no file at all, not even a temporary one.

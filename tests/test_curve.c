@@ -82,7 +82,7 @@ static double arc_bound(d3 want) { return 1.0 + maxabs(want) / ULP * 0x1p-27; }
 
 TEST(arc_tangent_random)
 {
-    double worst = 0, worst_rel = 0;
+    double worst = 0, worst_ratio = 0;
     int bad = 0;
     for (int i = 0; i < N_RANDOM; i++) {
         d3 chord = scale(rand_unit(), rand_scale());
@@ -101,8 +101,7 @@ TEST(arc_tangent_random)
          * already turned it, but the reference uses the same rounded input,
          * so the bound holds as it is. */
         if (e > worst) worst = e;
-        double rel = e / fmax(1, maxabs(want) / ULP);
-        if (rel > worst_rel) worst_rel = rel;
+        if (e / arc_bound(want) > worst_ratio) worst_ratio = e / arc_bound(want);
         if (e > arc_bound(want)) {
             if (bad++ < 5)
                 CHECKF(0, "dir (%g %g %g) chord (%g %g %g): got (%g %g %g) want (%.9g %.9g %.9g)",
@@ -111,7 +110,7 @@ TEST(arc_tangent_random)
         }
     }
     CHECKF(bad == 0, "%d of %d beyond 1 ulp + 2^-27 relative", bad, N_RANDOM);
-    printf("  arc_tangent: worst %.3f ulp, worst relative %.3g (%d inputs)\n", worst, worst_rel, N_RANDOM);
+    printf("  arc_tangent: worst %.3f ulp, at most %.2f of the bound (%d inputs)\n", worst, worst_ratio, N_RANDOM);
 }
 
 TEST(arc_tangent_special)
@@ -185,9 +184,9 @@ static void ref_bridge(d3 p0, d3 n0, d3 p1, d3 n1, d3 *t0, d3 *t1, double *cond)
 
 TEST(bridge_random)
 {
-    double worst = 0;
+    double worst = 0, worst_ratio = 0;
     int bad = 0, n = 0;
-    for (int i = 0; i < N_RANDOM; i++) {
+    for (int i = 0; n < N_RANDOM; i++) {
         d3 p0 = scale(d3v(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 1024);
         d3 c;
         int kind = i % 3;
@@ -217,6 +216,7 @@ TEST(bridge_random)
         double b1 = 1.0 + maxabs(t1) / ULP * 0x1p-27 * cond;
         n++;
         if (fmax(e0, e1) > worst) worst = fmax(e0, e1);
+        if (fmax(e0 / b0, e1 / b1) > worst_ratio) worst_ratio = fmax(e0 / b0, e1 / b1);
         int ends_ok = cv.p0.x == fp0.x && cv.p0.y == fp0.y && cv.p0.z == fp0.z && cv.p1.x == fp1.x &&
                       cv.n0.x == fn0.x && cv.n1.z == fn1.z && cv.uv0.x == 0x55555555;
         if (e0 > b0 || e1 > b1 || !ends_ok) {
@@ -226,8 +226,7 @@ TEST(bridge_random)
         }
     }
     CHECKF(bad == 0, "%d of %d bridges beyond the bound", bad, n);
-    CHECK(n > N_RANDOM * 9 / 10);
-    printf("  bridge: worst tangent error %.3f ulp over %d bridges\n", worst, n);
+    printf("  bridge: worst tangent error %.3f ulp, at most %.2f of the bound (%d bridges)\n", worst, worst_ratio, n);
 }
 
 TEST(bridge_special)

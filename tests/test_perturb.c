@@ -101,7 +101,7 @@ static int is_near(const silk_mesh *m, uint32_t t, uint32_t v)
 
 typedef struct pstats {
     uint32_t views, concave, moved, ref_moved;
-    uint32_t wrong_concave, wrong_moved, not_below, wrong_records;
+    uint32_t wrong_concave, wrong_moved, not_below, wrong_records, pinned;
     double worst_off;        /* |offset - reference| in ulps beyond 1e-3 relative, worst */
     double worst_above;      /* how far above a plane a moved, uncapped vertex stays */
 } pstats;
@@ -152,6 +152,18 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
                 double cap = fmin(sqrt(dot3(vm, vm)), 2 * fx2d(s->rise));
                 if (l > cap) { l = cap; capped = 1; }
                 if (l > lift) lift = l;
+            }
+        }
+        /* a vertex with a point of its edges' chains exactly on it stays put */
+        for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1]; i++) {
+            uint32_t e = m->vert_edge[i], w = f->edge_slot[e];
+            if (w == SILK_SIL_NONE || !f->edges[w].nchain) continue;
+            const silk_sil_edge *we = &f->edges[w];
+            silk_fx t = m->edge[e].v[0] == v ? f->chain[we->chain0] : f->chain[we->chain0 + we->nchain - 1];
+            silk_vec3 q = silk_hermite_point(&we->geom, t);
+            if (q.x == m->pos[v].x && q.y == m->pos[v].y && q.z == m->pos[v].z) {
+                lift = 0;
+                ps->pinned++;
             }
         }
         uint32_t sl = f->vert_offset ? f->vert_offset[v] : SILK_SIL_NONE;

@@ -189,6 +189,12 @@ TEST(outfile_is_atomic)
     CHECK(stat(p, &st) == 0 && (st.st_mode & 0777) == 0644);
     umask(mask);
 
+    char other[300];
+    snprintf(other, sizeof other, "%s/./out.txt", dir);
+    CHECK(silk_file_same(p, other) == 1);     /* another name, the same file */
+    CHECK(silk_file_same(p, dir) == 0);
+    CHECK(silk_file_same(p, path_in("missing")) == 0);
+
     CHECK(silk_file_remove_stale(p) == 1);
     CHECK(!exists(p));
     CHECK(silk_file_remove_stale(p) == 0);

@@ -332,7 +332,7 @@ static void box(tmesh *t, double x0, double y0, double z0, double x1, double y1,
 
 static void draw_mesh(silk_target *tg, const silk_hal *h, const silk_mesh *m)
 {
-    silk_geom g = { m, NULL, NULL };
+    silk_geom g = { .mesh = m };
     for (uint32_t i = 0; i < m->ntris; i++) {
         silk_vertex_out o[3];
         for (int k = 0; k < 3; k++) {
@@ -345,7 +345,7 @@ static void draw_mesh(silk_target *tg, const silk_hal *h, const silk_mesh *m)
 
 static void draw_wire(silk_target *tg, const silk_hal *h, const silk_mesh *m, uint32_t rgb)
 {
-    silk_geom g = { m, NULL, NULL };
+    silk_geom g = { .mesh = m };
     for (uint32_t i = 0; i < m->ntris; i++) {
         silk_vertex_out o[3];
         for (int k = 0; k < 3; k++) {

@@ -132,7 +132,7 @@ static int cmp_u64(const void *a, const void *b)
 static void check_topology(const silk_mesh *m, const silk_frame_geom *g, topo *out)
 {
     memset(out, 0, sizeof *out);
-    silk_geom gg = { m, g->curve, g->offset };
+    silk_geom gg = { .mesh = m, .curves = g->curve, .offsets = g->offset };
     silk_vertex_attr *at = malloc((g->nvrec + 1) * sizeof *at);
     wkey *k = malloc((g->nvrec + 1) * sizeof *k);
     uint32_t *id = malloc((g->nvrec + 1) * sizeof *id);

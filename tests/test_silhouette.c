@@ -305,7 +305,7 @@ static void shared_points(const char *name, int nviews, int want_split)
         silk_frame_geom g;
         silk_frame_stats st;
         if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
-        silk_geom gg = { &m, g.curve, g.offset };
+        silk_geom gg = { .mesh = &m, .curves = g.curve, .offsets = g.offset };
         for (uint32_t w = 0; w < f.nedges; w++) {
             const silk_sil_edge *e = &f.edges[w];
             if (!e->nchain) continue;
@@ -500,7 +500,7 @@ TEST(uvs_interpolate_linearly_across_seams)
         silk_frame_geom g;
         silk_frame_stats st;
         if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
-        silk_geom gg = { &m, g.curve, g.offset };
+        silk_geom gg = { .mesh = &m, .curves = g.curve, .offsets = g.offset };
         for (uint32_t w = 0; w < f.nedges; w++) {
             const silk_sil_edge *e = &f.edges[w];
             if (!e->nchain) continue;

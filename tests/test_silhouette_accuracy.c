@@ -43,6 +43,13 @@
 
 #define SMOOTH_MEAN_BOUND 0.35
 #define SMOOTH_MAX_BOUND 2.0
+/* Zoomed 8x, the reconstructed curve's own small deviation from the true
+ * surface (about 0.1 px unzoomed) is magnified 8x; what must not come back
+ * is the polygon: the max error stays under SMOOTH_MAX_BOUND because the
+ * sample count grows with the projected size, and the mean stays a small
+ * fraction of flat mode's. */
+#define ZOOM_MEAN_BOUND 1.25
+#define ZOOM_FLAT_RATIO 10.0
 #define MOVE_BOUND 1.5
 
 /* ---- harness self-tests ------------------------------------------------------- */
@@ -642,34 +649,35 @@ TEST(stable_under_small_eye_motion)
     if (!scenes_ok) return;
     int n = nviews();
     for (int s = 0; s < 2; s++)
-        for (int ortho = 0; ortho < 2; ortho++)
-            for (int mode = 0; mode < 2; mode++) {
-                double worst = 0, worst_exact = 0;
-                for (int k = 0; k < n; k += 3) {
-                    silk_camera c0, c1;
-                    es_camera e0, e1;
-                    view_camera(&scenes[s], ortho, k, n, 0, 1, 0, &c0);
-                    view_camera(&scenes[s], ortho, k, n, 0.5, 1, 0, &c1);
-                    if (render_mask(&scenes[s], &c0, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, a, NULL) ||
-                        render_mask(&scenes[s], &c1, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, b, NULL)) {
+        for (int ortho = 0; ortho < 2; ortho++) {
+            double worst[2] = { 0, 0 }, worst_exact = 0;
+            for (int k = 0; k < n; k += 3) {
+                silk_camera c0, c1;
+                es_camera e0, e1;
+                view_camera(&scenes[s], ortho, k, n, 0, 1, 0, &c0);
+                view_camera(&scenes[s], ortho, k, n, 0.5, 1, 0, &c1);
+                es_camera_from_silk(&e0, &c0);
+                es_camera_from_silk(&e1, &c1);
+                es_mask(&e0, &scenes[s].shape, ea);
+                es_mask(&e1, &scenes[s].shape, eb);
+                double he = es_boundary_hausdorff(ea, eb, W, H);
+                if (he > worst_exact) worst_exact = he;
+                for (int mode = 0; mode < 2; mode++) {
+                    silk_mode md = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+                    if (render_mask(&scenes[s], &c0, md, a, NULL) || render_mask(&scenes[s], &c1, md, b, NULL)) {
                         CHECKF(0, "render failed");
                         continue;
                     }
                     double hd = es_boundary_hausdorff(a, b, W, H);
-                    if (hd > worst) worst = hd;
-                    es_camera_from_silk(&e0, &c0);
-                    es_camera_from_silk(&e1, &c1);
-                    es_mask(&e0, &scenes[s].shape, ea);
-                    es_mask(&e1, &scenes[s].shape, eb);
-                    double he = es_boundary_hausdorff(ea, eb, W, H);
-                    if (he > worst_exact) worst_exact = he;
+                    if (hd > worst[mode]) worst[mode] = hd;
                 }
-                printf("  %-10s %-5s %-6s 0.5-degree eye move: silhouette moved <= %.2f px (true outline %.2f px)\n",
-                       scenes[s].name, ortho ? "ortho" : "persp", mode ? "smooth" : "flat", worst, worst_exact);
-                if (mode == 1)
-                    CHECKF(worst <= MOVE_BOUND, "%s %s smooth: a 0.5-degree eye move moved the silhouette %.2f px",
-                           scenes[s].name, ortho ? "ortho" : "persp", worst);
             }
+            for (int mode = 0; mode < 2; mode++)
+                printf("  %-10s %-5s %-6s 0.5-degree eye move: silhouette moved <= %.2f px (true outline %.2f px)\n",
+                       scenes[s].name, ortho ? "ortho" : "persp", mode ? "smooth" : "flat", worst[mode], worst_exact);
+            CHECKF(worst[1] <= MOVE_BOUND, "%s %s smooth: a 0.5-degree eye move moved the silhouette %.2f px",
+                   scenes[s].name, ortho ? "ortho" : "persp", worst[1]);
+        }
 }
 
 /* Zoomed in 8x on the outline (the aim point is where the middle row
@@ -686,6 +694,7 @@ TEST(accuracy_zoomed)
         for (int ortho = 0; ortho < 2; ortho++) {
             tally t[2];
             memset(t, 0, sizeof t);
+            unsigned long samples_1x = 0, samples_8x = 0;
             for (int k = 1; k < n; k += 6) {
                 silk_camera cam;
                 es_camera ec;
@@ -701,6 +710,12 @@ TEST(accuracy_zoomed)
                 long inside = mask_count(exact);
                 CHECKF(pts.n > W / 2 && inside > W * H / 8 && inside < W * H * 7 / 8,
                        "%s zoomed view %d: the outline is not across the image (%d samples)", scenes[s].name, k, pts.n);
+                silk_frame_stats fs1, fs8;
+                silk_camera cam1;
+                view_camera(&scenes[s], ortho, k, n, 0, 1, 0, &cam1);
+                if (render_mask(&scenes[s], &cam1, SILK_MODE_SMOOTH, got, &fs1) == 0 &&
+                    render_mask(&scenes[s], &cam, SILK_MODE_SMOOTH, got, &fs8) == 0)
+                    samples_1x += fs1.samples, samples_8x += fs8.samples;
                 for (int mode = 0; mode < 2; mode++) {
                     if (render_mask(&scenes[s], &cam, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, got, NULL)) {
                         CHECKF(0, "render failed");
@@ -720,9 +735,16 @@ TEST(accuracy_zoomed)
                        scenes[s].name, ortho ? "ortho" : "persp", mode ? "smooth" : "flat", t[mode].sum_mean / t[mode].views,
                        t[mode].worst_view, t[mode].worst_mean, t[mode].worst_max, t[mode].sum_offset / t[mode].views,
                        t[mode].views);
-            CHECKF(t[1].worst_mean <= SMOOTH_MEAN_BOUND && t[1].worst_max <= SMOOTH_MAX_BOUND,
+            printf("  %-10s %-5s smooth samples per frame: %lu unzoomed, %lu zoomed 8x\n", scenes[s].name,
+                   ortho ? "ortho" : "persp", samples_1x, samples_8x);
+            CHECKF(t[1].worst_mean <= ZOOM_MEAN_BOUND && t[1].worst_max <= SMOOTH_MAX_BOUND,
                    "%s %s smooth zoomed 8x: worst mean %.3f px, max %.2f px", scenes[s].name, ortho ? "ortho" : "persp",
                    t[1].worst_mean, t[1].worst_max);
+            CHECKF(t[1].sum_mean * ZOOM_FLAT_RATIO <= t[0].sum_mean,
+                   "%s %s zoomed 8x: smooth mean %.3f px is not a tenth of flat's %.3f px", scenes[s].name,
+                   ortho ? "ortho" : "persp", t[1].sum_mean / t[1].views, t[0].sum_mean / t[0].views);
+            CHECKF(samples_8x > samples_1x, "%s %s: zooming in 8x did not add samples (%lu -> %lu)", scenes[s].name,
+                   ortho ? "ortho" : "persp", samples_1x, samples_8x);
         }
     es_points_free(&pts);
 }

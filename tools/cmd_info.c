@@ -137,22 +137,31 @@ int cmd_info(int argc, char **argv)
     if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "info: no mesh given (silk info MESH)");
     if (rc) return rc;
 
-    cli_scene s;
-    rc = cli_scene_load(&s, &o);
-    if (rc) {
+    /* As `silk render` does: without --arena, an arena whose frame fell back
+     * for lack of scratch is doubled, so the report shows a full frame. */
+    for (int attempt = 0;; attempt++) {
+        cli_scene s;
+        o.arena_doublings = attempt;
+        rc = cli_scene_load(&s, &o);
+        if (rc) {
+            cli_scene_free(&s);
+            return rc;
+        }
+        silk_frame_stats st;
+        silk_error err;
+        silk_status r = silk_render(&s.arena, &s.mesh, &s.view, &s.hal, &o.render, &s.target, &st, &err);
+        if (r != SILK_OK) {
+            cli_scene_free(&s);
+            return cli_fail(CLI_EXIT_INPUT, "%s: %s", o.mesh_path, err.msg);
+        }
+        if (st.fell_back && !o.arena_bytes && attempt < 4) {
+            cli_scene_free(&s);
+            continue;
+        }
+        print_mesh(&s, &o);
+        print_memory(&s);
+        print_frame(&s, &o, &st);
         cli_scene_free(&s);
-        return rc;
+        return ferror(stdout) ? CLI_EXIT_INPUT : 0;
     }
-    silk_frame_stats st;
-    silk_error err;
-    silk_status r = silk_render(&s.arena, &s.mesh, &s.view, &s.hal, &o.render, &s.target, &st, &err);
-    if (r != SILK_OK) {
-        cli_scene_free(&s);
-        return cli_fail(CLI_EXIT_INPUT, "%s: %s", o.mesh_path, err.msg);
-    }
-    print_mesh(&s, &o);
-    print_memory(&s);
-    print_frame(&s, &o, &st);
-    cli_scene_free(&s);
-    return ferror(stdout) ? CLI_EXIT_INPUT : 0;
 }

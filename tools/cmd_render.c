@@ -131,8 +131,11 @@ int cmd_render(int argc, char **argv)
         rc = cli_fail(CLI_EXIT_USAGE, "render: %s: unknown image format (use .png or .ppm)", out);
     if (!rc) rc = render(&o, out, compare);
 
-    /* An image at OUT after a failure would be an earlier run's. */
+    /* An image at OUT after a failure would be an earlier run's (but never
+     * remove the input: "silk render x.ppm -o x.ppm" fails to load it). */
     const char *stale = out ? out : cli_find_output(argc, argv);
-    if (rc && stale && silk_image_format_for_path(stale) != SILK_IMAGE_NONE) silk_file_remove_stale(stale);
+    if (rc && stale && silk_image_format_for_path(stale) != SILK_IMAGE_NONE &&
+        !(o.mesh_path && silk_file_same(stale, o.mesh_path)))
+        silk_file_remove_stale(stale);
     return rc;
 }

@@ -45,9 +45,11 @@ render knot "$meshdir/knot-1024.obj"
 render sphere-ortho "$meshdir/sphere-200.obj" --ortho auto
 
 if [ -d "$shared" ]; then
-    for m in bunny-500 knot-480 spot-500 venus-500; do
+    for m in bunny-500 knot-480; do
         [ -f "$shared/$m.obj" ] && render "$m" "$shared/$m.obj"
     done
+    # models whose front is not +z: views chosen by eye
+    [ -f "$shared/spot-500.obj" ] && render spot-500 "$shared/spot-500.obj" --eye 3,1.2,1.5
     # fandisk's default view is edge-on to its flat sides; this one shows
     # the curved faces and the sharp feature curves between them
     [ -f "$shared/fandisk-128.obj" ] && render fandisk-128 "$shared/fandisk-128.obj" --eye 10,20,-8

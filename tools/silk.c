@@ -6,6 +6,10 @@
 #include <string.h>
 
 #include "cli.h"
+#include "measure.h"
+
+/* Small devices: tools/cmd_pack.c, cmd_profile.c, cmd_fbview.c. */
+int cmd_pack(int argc, char **argv);
 
 typedef struct command {
     const char *name;
@@ -18,6 +22,8 @@ static const command commands[] = {
     { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
     { "bench", cmd_bench, "bench --visibility MESH...", "time visibility: brute pass vs hierarchy" },
+    { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
+    { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 

@@ -33,7 +33,8 @@ typedef struct silk_arena {
     size_t top;                         /* bytes used from the top */
     size_t peak;                        /* high-water mark of bottom + top */
     size_t top_peak;                    /* high-water mark of top alone (reset by the caller per frame) */
-    size_t used[SILK_MEM_COUNT];        /* bytes held now, per purpose */
+    size_t used[SILK_MEM_COUNT];        /* bytes held now, per purpose (both ends) */
+    size_t top_used[SILK_MEM_COUNT];    /* the part of used[] held at the top */
     size_t peak_used[SILK_MEM_COUNT];   /* high-water mark per purpose */
     size_t failed_request;              /* size of the last request that did not fit */
 } silk_arena;
@@ -41,7 +42,7 @@ typedef struct silk_arena {
 /* A saved top-of-arena position; release returns the top to it. */
 typedef struct silk_arena_mark {
     size_t top;
-    size_t used[SILK_MEM_COUNT];
+    size_t top_used[SILK_MEM_COUNT];
 } silk_arena_mark;
 
 #define SILK_ARENA_ALIGN 8

@@ -31,6 +31,7 @@ typedef struct silk_view {
     silk_vec3 forward;         /* unit view direction (eye -> target) */
     silk_vec3 right, upv;      /* unit camera axes in world space */
     silk_fx pixels_per_unit;   /* screen pixels per world unit at distance 1 (persp) or anywhere (ortho) */
+    int32_t rot24[3][3];       /* rows right, upv, -forward in Q8.24: silk_view_clip's rotation */
 } silk_view;
 
 silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err);

@@ -4,7 +4,8 @@
  *
  * The per-frame silhouette work does not emit finished positions.  It emits
  * compact vertex records (paper Fig. 16): "corner k of triangle t", "point t
- * on curve c", or "vertex v moved by offset o".  The vertex stage evaluates a
+ * on curve c", "vertex v moved by offset o", or, in the PN and BLEND modes,
+ * "point (i,j,k)/n of cubic patch p".  The vertex stage evaluates a
  * record into a position, normal and texture coordinate and transforms it to
  * clip space; the fragment stage shades.  A device with a real GPU can take
  * over both stages without touching the rest of silk.
@@ -30,7 +31,8 @@ typedef struct silk_curve {
 typedef enum silk_vrec_kind {
     SILK_VREC_CORNER = 0,    /* a: triangle*3 + corner of the mesh */
     SILK_VREC_CURVE = 1,     /* a: curve index, t: parameter in [0,1] */
-    SILK_VREC_MOVED = 2      /* a: triangle*3 + corner, b: offset index */
+    SILK_VREC_MOVED = 2,     /* a: triangle*3 + corner, b: offset index */
+    SILK_VREC_PATCH = 3      /* a: patch index, b: SILK_PATCH_POINT(i, j, n) */
 } silk_vrec_kind;
 
 typedef struct silk_vrec {
@@ -39,11 +41,36 @@ typedef struct silk_vrec {
     silk_fx t;
 } silk_vrec;
 
+/* A cubic triangular Bezier patch with a quadratic normal patch and linear
+ * texture coordinates: PN triangles (Vlachos et al. 2001) and the blended
+ * patches of Dyken & Reimers.  With barycentric weights (u, v, w) on
+ * corners 0, 1, 2:
+ *   S(u,v,w) = sum_{i+j+k=3} 3!/(i!j!k!) b_ijk u^i v^j w^k
+ *   N(u,v,w) = normalize( sum_{i+j+k=2} n_ijk u^i v^j w^k )   (no multinomial
+ *              factors: Vlachos' form, n110 is a unit vector)
+ * b300, b030, b003 are the corners; b210 and b120 lie on side 0 (corner 0 ->
+ * 1) near corners 0 and 1, b021, b012 on side 1, b102, b201 on side 2. */
+enum { SILK_B300, SILK_B030, SILK_B003, SILK_B210, SILK_B120, SILK_B021, SILK_B012, SILK_B102,
+       SILK_B201, SILK_B111 };
+enum { SILK_N200, SILK_N020, SILK_N002, SILK_N110, SILK_N011, SILK_N101 };
+
+typedef struct silk_patch {
+    silk_vec3 b[10];         /* control points, SILK_B300 .. SILK_B111 */
+    silk_vec3 n[6];          /* normal coefficients, SILK_N200 .. SILK_N101 */
+    silk_vec2 uv[3];         /* at the corners */
+} silk_patch;
+
+/* The point of a patch with barycentric coordinates (i, j, n-i-j) / n, as
+ * the b field of a SILK_VREC_PATCH record; 1 <= n <= SILK_PATCH_MAX_DIV. */
+#define SILK_PATCH_MAX_DIV 255u
+#define SILK_PATCH_POINT(i, j, n) ((uint32_t)(i) | (uint32_t)(j) << 8 | (uint32_t)(n) << 16)
+
 /* What records refer to in one frame. */
 typedef struct silk_geom {
     const silk_mesh *mesh;
     const silk_curve *curves;
     const silk_vec3 *offsets;
+    const silk_patch *patches;
 } silk_geom;
 
 typedef struct silk_vertex_attr {
@@ -57,6 +84,11 @@ typedef struct silk_vertex_attr {
 void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *out);
 /* Point of a Hermite curve at t (eq. 5). */
 silk_vec3 silk_hermite_point(const silk_curve *c, silk_fx t);
+/* Point, normal and uv of a patch at a SILK_PATCH_POINT (src/pn.c).  Exact
+ * integer sums rounded once, so a point on a side depends only on that
+ * side's four control points: patches that share them meet bit for bit.  A
+ * malformed point gives zeros. */
+void silk_patch_eval(const silk_patch *p, uint32_t point, silk_vertex_attr *out);
 
 typedef struct silk_hal {
     void (*vertex)(const struct silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);

@@ -3,7 +3,8 @@
  *
  * silk_render() runs the per-frame pipeline: visibility -> silhouette
  * triangles -> bridges, points, segments -> adaptive sampling -> re-meshing
- * and perturbation (mode SMOOTH), or the coarse mesh as it is (mode FLAT);
+ * and perturbation (mode SMOOTH), or the coarse mesh as it is (mode FLAT),
+ * or one of the two reference methods (modes PN and BLEND, docs/methods.md);
  * then the HAL's vertex stage over every vertex record once, and the
  * rasterizer over every triangle for the target's band.  Per-frame memory
  * comes from the top of the arena and is released before it returns.
@@ -18,18 +19,33 @@
 #include "camera.h"
 #include "raster.h"
 #include "hal.h"
+#include "visibility.h"
 
 typedef enum silk_mode {
     SILK_MODE_FLAT = 0,      /* the coarse mesh as it is, Phong shaded */
-    SILK_MODE_SMOOTH = 1     /* silhouette smoothing (paper section III) */
+    SILK_MODE_SMOOTH = 1,    /* silhouette smoothing (paper section III) */
+    SILK_MODE_PN = 2,        /* PN triangles (Vlachos et al. 2001), uniformly tessellated */
+    SILK_MODE_BLEND = 3      /* silhouetteness blending (Dyken & Reimers), docs/methods.md */
 } silk_mode;
+
+/* The normal patch of PN mode: Vlachos' quadratic one, or the corner
+ * normals interpolated linearly (paper section V compares both). */
+typedef enum silk_pn_normals { SILK_PN_QUADRATIC = 0, SILK_PN_LINEAR = 1 } silk_pn_normals;
+
+/* PN mode's level L: every patch side is cut into L segments, so a patch
+ * becomes L*L triangles over (L+1)(L+2)/2 points; level 1 is the coarse mesh. */
+#define SILK_PN_MAX_LEVEL 32u
 
 typedef struct silk_render_opts {
     silk_mode mode;
-    silk_fx tolerance_px;    /* e of eq. 8, 0.25 .. 4 */
+    silk_fx tolerance_px;    /* e of eq. 8, 0.25 .. 4 (BLEND: the chord tolerance of its edges) */
+    silk_vis_method visibility; /* how SMOOTH finds the front-facing normals */
     int wire;                /* draw edges; triangles added by re-meshing in red */
     uint32_t wire_rgb, wire_new_rgb;
     uint32_t bg_rgb;
+    uint32_t level;          /* PN: segments per patch side, 1..SILK_PN_MAX_LEVEL */
+    silk_pn_normals pn_normals; /* PN: quadratic or linear normals */
+    silk_fx blend_beta;      /* BLEND: width of the transition of eq. 2, 0..1 (0: binary) */
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);

@@ -46,9 +46,10 @@ void silk_visibility_brute(const silk_mesh *m, const silk_view *v, uint8_t *visi
  * (C is the centre of the model, s a power of two >= every |N.(V-C)|).  A
  * view is E' = (E - C, s) in perspective and E' = (-forward, 0) in parallel
  * projection, and the normal is visible iff E'.V' >= 0, i.e. N.(E-V) >= 0.
- * Cells split latitude, longitude and w in halves: eight corners and eight
- * children; their lat/long part is the four-corner cell of the paper's
- * Gaussian sphere, so one tree serves both projections.
+ * Cells are boxes in (latitude, longitude, w) with eight corners; a level
+ * halves latitude and longitude, and w where the normals spread in it (up to
+ * eight children).  Their lat/long part is the four-corner cell of the
+ * paper's Gaussian sphere, so one tree serves both projections.
  *
  * silk_vis_build renumbers the mesh's normals (normal, normal_vertex,
  * tri_normal) so that every cell's normals are one contiguous range: a

@@ -565,7 +565,7 @@ int es_compare(const unsigned char *test, const unsigned char *exact, const es_p
     out->differing = out->extra + out->missing;
     out->mean_error = out->boundary ? (double)out->differing / out->boundary : (out->differing ? ES_FAR : 0);
 
-    segs sil, cracks;
+    segs sil;
     if (silhouette_segs(pts, w, h, &sil)) { segs_free(&sil); return -1; }
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
@@ -576,20 +576,31 @@ int es_compare(const unsigned char *test, const unsigned char *exact, const es_p
         }
     segs_free(&sil);
 
-    if (mask_cracks(test, w, h, &cracks)) { segs_free(&cracks); return -1; }
+    double *off = malloc((size_t)(pts->n ? pts->n : 1) * sizeof *off);
+    if (!off || es_offsets(test, pts, w, h, off)) { free(off); return -1; }
     double sum = 0, sum_abs = 0;
     for (int i = 0; i < pts->n; i++) {
-        double d = segs_nearest(&cracks, pts->x[i], pts->y[i]);
-        int px = clampi((int)floor(pts->x[i]), 0, w - 1), py = clampi((int)floor(pts->y[i]), 0, h - 1);
-        double sd = test[(size_t)py * w + px] ? d : -d;
-        sum += sd;
-        sum_abs += d;
-        if (d > out->max_abs_offset) out->max_abs_offset = d;
+        sum += off[i];
+        sum_abs += fabs(off[i]);
+        if (fabs(off[i]) > out->max_abs_offset) out->max_abs_offset = fabs(off[i]);
     }
+    free(off);
     out->samples = pts->n;
     if (pts->n) {
         out->mean_offset = sum / pts->n;
         out->mean_abs_offset = sum_abs / pts->n;
+    }
+    return 0;
+}
+
+int es_offsets(const unsigned char *test, const es_points *pts, int w, int h, double *out)
+{
+    segs cracks;
+    if (mask_cracks(test, w, h, &cracks)) { segs_free(&cracks); return -1; }
+    for (int i = 0; i < pts->n; i++) {
+        double d = segs_nearest(&cracks, pts->x[i], pts->y[i]);
+        int px = clampi((int)floor(pts->x[i]), 0, w - 1), py = clampi((int)floor(pts->y[i]), 0, h - 1);
+        out[i] = test[(size_t)py * w + px] ? d : -d;
     }
     segs_free(&cracks);
     return 0;

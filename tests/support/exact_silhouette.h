@@ -87,6 +87,10 @@ typedef struct es_stats {
 int es_compare(const unsigned char *test, const unsigned char *exact, const es_points *pts,
                int width, int height, es_stats *out);   /* 0, or -1 when out of memory */
 
+/* The signed offsets summarised in es_stats, one per sample:
+ * out[i] for pts->x[i], pts->y[i] (pts->n doubles). */
+int es_offsets(const unsigned char *test, const es_points *pts, int width, int height, double *out);
+
 /* How far the boundaries of two masks are apart: the largest distance from
  * the middle of a boundary pixel edge of one to the nearest boundary pixel
  * edge of the other, both ways, in px.  Equal masks give 0, a mask shifted

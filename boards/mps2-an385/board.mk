@@ -1,0 +1,47 @@
+# boards/mps2-an385/board.mk - an ARM Cortex-M3 microcontroller, run under
+# QEMU's model of the MPS2-AN385 board (`make BOARD=mps2-an385`, then
+# `make BOARD=mps2-an385 run`).
+#
+# The AN385 itself has 8 MB of SSRAM; the firmware is linked for the budget
+# of a real small part instead, an STM32F103RE-class device (Cortex-M3,
+# 512 KiB flash, 64 KiB SRAM): the linker refuses a program that does not
+# fit (platform/mps2/mps2.ld).  No frame buffer: the frame is rendered in
+# bands of BOARD_BAND_ROWS rows and each band is streamed to the host through
+# ARM semihosting, as a display driver would send it over SPI.  The model is
+# compiled into flash by `silk pack` (docs/small-devices.md).
+
+# The frame (also the defaults of the host-side tool build-mps2-an385/silk)
+BOARD_WIDTH  := 320
+BOARD_HEIGHT := 240
+BOARD_FORMAT := SILK_PIX_RGB565
+BOARD_BAND_ROWS := 8
+BOARD_SINK   := semihosting
+
+# The part: flash, RAM, and how the RAM is split.  The arena holds the band
+# buffers (RASTER) and the per-frame scratch (FRAME); the rest of .bss and
+# .data is a few hundred bytes of libc and startup state.
+BOARD_FLASH_BYTES := 524288
+BOARD_RAM_BYTES   := 65536
+BOARD_STACK_BYTES := 3072
+BOARD_ARENA_BYTES := 61440
+
+# Toolchain and flags (`make deps` installs them on Debian/Ubuntu)
+BOARD_CROSS := arm-none-eabi-
+BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
+BOARD_OPT   := -Os
+BOARD_RUN   := qemu-system-arm -M mps2-an385 -nographic -monitor none -serial none \
+               -semihosting-config enable=on,target=native -kernel
+
+# What the firmware renders: each model packed into flash, from BOARD_VIEWS
+# cameras around it (`silk pack --views`), each in flat and smooth mode.
+BOARD_MESHES ?= ../shared/meshes/bunny-500.obj ../shared/meshes/knot-480.obj
+BOARD_VIEWS  := 3
+
+BOARD_CFLAGS := -DSILK_BOARD_WIDTH=$(BOARD_WIDTH) -DSILK_BOARD_HEIGHT=$(BOARD_HEIGHT) \
+                -DSILK_BOARD_FORMAT=$(BOARD_FORMAT)
+
+# Host-side objects (the tool that packs models) go to their own directory;
+# the firmware's rules are in platform/mps2/firmware.mk.
+BUILD := build-mps2-an385
+BOARD_RULES := platform/mps2/firmware.mk
+.DEFAULT_GOAL := firmware

@@ -1,0 +1,75 @@
+# platform/mps2/firmware.mk - building the Cortex-M3 firmware, included by
+# the Makefile when boards/$(BOARD)/board.mk sets BOARD_RULES to this file.
+#
+#   make BOARD=mps2-an385              the core for Cortex-M3, then one
+#                                      firmware per model in BOARD_MESHES:
+#                                      $(BUILD)/fw/NAME/fw.elf (+ .map)
+#   make BOARD=mps2-an385 run          run each under QEMU; frames and the
+#                                      report go to $(BUILD)/fw/NAME/
+#   BOARD_MESHES="a.obj b.obj"         other models (`silk gen` meshes too)
+#
+# The model is packed at build time by the host-side tool ($(BUILD)/silk,
+# built with the host compiler from the same sources) into
+# $(BUILD)/fw/NAME/fwmodel.h; never copied into the source tree.  For the
+# bit-exactness test the same scene is also built for the host,
+# $(BUILD)/fw/NAME/fw-host, with the same arena.
+
+FW_CC    := $(BOARD_CROSS)gcc
+FW_AR    := $(BOARD_CROSS)ar
+FW_DIR   := $(BUILD)/fw
+FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
+FW_DEFS  := -DFW_BOARD='"$(BOARD)"' -DFW_BAND_ROWS=$(BOARD_BAND_ROWS) -DFW_ARENA_BYTES=$(BOARD_ARENA_BYTES) \
+            -DFW_FORMAT=$(BOARD_FORMAT)
+FW_LDFLAGS := $(BOARD_ARCH) -nostartfiles -specs=nano.specs -specs=nosys.specs -Wl,--gc-sections \
+              -T platform/mps2/mps2.ld -Wl,--defsym=__flash_size=$(BOARD_FLASH_BYTES) \
+              -Wl,--defsym=__ram_size=$(BOARD_RAM_BYTES) -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES)
+FW_PACK_ARGS := --size $(BOARD_WIDTH)x$(BOARD_HEIGHT) \
+                --format $(if $(filter SILK_PIX_RGB565,$(BOARD_FORMAT)),rgb565,rgb888) --views $(BOARD_VIEWS)
+
+FW_CORE_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/obj/%.o)
+FW_PLAT_OBJ := $(FW_DIR)/obj/platform/mps2/startup.o $(FW_DIR)/obj/platform/mps2/semihost.o
+FW_NAMES    := $(basename $(notdir $(BOARD_MESHES)))
+FW_ELF      := $(FW_NAMES:%=$(FW_DIR)/%/fw.elf)
+FW_HOST     := $(FW_NAMES:%=$(FW_DIR)/%/fw-host)
+
+.PHONY: firmware firmware-host run FORCE
+firmware: $(FW_ELF)
+firmware-host: $(FW_HOST)
+
+$(FW_DIR)/obj/%.o: %.c boards/$(BOARD)/board.mk
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(FW_CFLAGS) -MMD -MP -c $< -o $@
+
+$(FW_DIR)/libsilk.a: $(FW_CORE_OBJ)
+	rm -f $@ && $(FW_AR) rcs $@ $^
+
+# The pack options are remembered, so that changing them repacks.
+$(FW_DIR)/%/pack.args: FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(FW_PACK_ARGS)' | cmp -s - $@ || echo '$(FW_PACK_ARGS)' > $@
+
+# One firmware per model: $(1) the name, $(2) the mesh file.
+define fw_model
+$(FW_DIR)/$(1)/fwmodel.h: $(2) $(BUILD)/silk $(FW_DIR)/$(1)/pack.args
+	$(BUILD)/silk pack $(2) -o $$@ --name fwmodel $(FW_PACK_ARGS)
+
+$(FW_DIR)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h $(FW_DIR)/$(1)/fwmodel.h boards/$(BOARD)/board.mk
+	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_DIR)/$(1) -c $$< -o $$@
+
+$(FW_DIR)/$(1)/fw.elf: $(FW_DIR)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld
+	$(FW_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_DIR)/$(1)/fw.map -o $$@ $(FW_DIR)/$(1)/fw_main.o $(FW_PLAT_OBJ) \
+	    $(FW_DIR)/libsilk.a
+
+$(FW_DIR)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
+                        $(FW_DIR)/$(1)/fwmodel.h $(BUILD)/libsilk.a
+	$(CC) $(ALL_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_DIR)/$(1) -o $$@ \
+	    platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(BUILD)/libsilk.a
+
+run-$(1): $(FW_DIR)/$(1)/fw.elf
+	timeout 120 $(BOARD_RUN) $(FW_DIR)/$(1)/fw.elf -append $(FW_DIR)/$(1)/frame | tee $(FW_DIR)/$(1)/report.txt
+endef
+$(foreach m,$(BOARD_MESHES),$(eval $(call fw_model,$(basename $(notdir $(m))),$(m))))
+
+run: $(FW_NAMES:%=run-%)
+
+-include $(wildcard $(FW_DIR)/obj/*/*.d $(FW_DIR)/obj/*/*/*.d)

@@ -1,0 +1,215 @@
+/*
+ * fw_main.c - the firmware's scene: a model packed into flash by
+ * `silk pack --name fwmodel` (no loading, nothing of the mesh in RAM),
+ * rendered from every packed camera in FLAT and SMOOTH mode by
+ * silk_render_bands() into one band of FW_BAND_ROWS rows.  Each finished
+ * band goes to the host as PPM rows, as a display driver would send it over
+ * SPI; then the program reports what memory it used.
+ *
+ * Everything comes from one static arena (band buffers at the bottom,
+ * per-frame scratch from the top), so the RAM a frame takes is the arena's
+ * high-water mark plus static data plus the measured stack.
+ *
+ * fw_scene() is the program: the startup code (startup.c) calls it on the
+ * board, fw_io_host.c's main() on the host.
+ *
+ * Command line: PROGRAM [PREFIX]; with PREFIX, frame k of camera c is written
+ * to PREFIX-cC-flat.ppm / PREFIX-cC-smooth.ppm.  Report lines are
+ * "fw NAME key=value ..." on the console (docs/small-devices.md).
+ *
+ * Built by the board's firmware rules (platform/mps2/firmware.mk) with
+ * -DFW_BOARD, -DFW_BAND_ROWS, -DFW_ARENA_BYTES, -DFW_FORMAT and
+ * -I<dir of fwmodel.h>.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include "silk/silk.h"
+#include "fw_io.h"
+#include "fwmodel.h"
+
+#ifndef FW_BOARD
+#define FW_BOARD "unknown"
+#endif
+#ifndef FW_MODEL_NAME
+#define FW_MODEL_NAME "fwmodel"
+#endif
+#ifndef FW_FORMAT
+#define FW_FORMAT SILK_PIX_RGB565
+#endif
+#ifndef FW_BAND_ROWS
+#define FW_BAND_ROWS 8
+#endif
+#ifndef FW_ARENA_BYTES
+#define FW_ARENA_BYTES 49152
+#endif
+
+#define CHUNK_PIXELS 32          /* pixels converted per host write */
+
+static uint8_t arena_mem[FW_ARENA_BYTES] __attribute__((aligned(SILK_ARENA_ALIGN)));
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 1, 2)))
+#endif
+static void say(const char *fmt, ...)
+{
+    char line[160];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line - 1, fmt, ap);
+    va_end(ap);
+    strcat(line, "\n");
+    fw_print(line);
+}
+
+/* Where the bands go: a host file (or nowhere) and a checksum. */
+typedef struct band_out {
+    int handle;                  /* -1: no file */
+    int failed;
+    uint32_t crc;                /* FNV-1a over the frame's pixels as rendered */
+} band_out;
+
+static void put(band_out *o, const void *p, size_t n)
+{
+    if (o->handle >= 0 && !o->failed && fw_write(o->handle, p, n) != 0) o->failed = 1;
+}
+
+/* RGB565 widened by bit replication, exactly as the host's PPM writer
+ * (platform/ppm_sink.c) does, so the files compare byte for byte. */
+static void widen(const uint8_t *src, silk_pixfmt fmt, int n, uint8_t *out)
+{
+    if (fmt == SILK_PIX_RGB888) {
+        memcpy(out, src, (size_t)n * 3);
+        return;
+    }
+    for (int x = 0; x < n; x++, src += 2, out += 3) {
+        unsigned v = (unsigned)src[0] | (unsigned)src[1] << 8;
+        unsigned r = v >> 11, g = (v >> 5) & 63u, b = v & 31u;
+        out[0] = (uint8_t)(r << 3 | r >> 2);
+        out[1] = (uint8_t)(g << 2 | g >> 4);
+        out[2] = (uint8_t)(b << 3 | b >> 2);
+    }
+}
+
+static int send_band(void *user, const silk_target *t)
+{
+    band_out *o = user;
+    size_t bpp = silk_pixfmt_bytes(t->fmt);
+    uint8_t rgb[CHUNK_PIXELS * 3];
+    for (int y = 0; y < t->rows; y++) {
+        const uint8_t *row = t->color + (size_t)y * t->stride;
+        for (size_t i = 0; i < (size_t)t->width * bpp; i++) o->crc = (o->crc ^ row[i]) * 16777619u;
+        for (int x = 0; x < t->width; x += CHUNK_PIXELS) {
+            int n = t->width - x < CHUNK_PIXELS ? t->width - x : CHUNK_PIXELS;
+            widen(row + (size_t)x * bpp, t->fmt, n, rgb);
+            put(o, rgb, (size_t)n * 3);
+        }
+    }
+    return o->failed;
+}
+
+/* PREFIX from "PROGRAM PREFIX", or NULL. */
+static const char *out_prefix(char *cmd, size_t size)
+{
+    fw_cmdline(cmd, size);
+    char *p = strchr(cmd, ' ');
+    if (!p) return NULL;
+    while (*p == ' ') p++;
+    char *end = strchr(p, ' ');
+    if (end) *end = 0;
+    return *p ? p : NULL;
+}
+
+static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
+                      const char *prefix, int frame)
+{
+    const silk_camera *cam = fwmodel_camera(k);
+    silk_view view;
+    silk_error err;
+    if (silk_view_init(&view, cam, &err) != SILK_OK) {
+        say("fw error camera=%d %s", k, err.msg);
+        return 1;
+    }
+    silk_phong phong;
+    silk_hal hal;
+    silk_phong_default(&phong, &view);
+    silk_hal_phong(&hal, &phong);
+    silk_render_opts ro;
+    silk_render_opts_default(&ro);
+    ro.mode = mode;
+    const char *mname = mode == SILK_MODE_FLAT ? "flat" : "smooth";
+
+    band_out o = { -1, 0, 2166136261u };
+    char path[128];
+    if (prefix) {
+        snprintf(path, sizeof path, "%s-c%d-%s.ppm", prefix, k, mname);
+        if ((o.handle = fw_open_write(path)) < 0) {
+            say("fw error cannot open %s on the host", path);
+            return 1;
+        }
+        char hdr[32];
+        int n = snprintf(hdr, sizeof hdr, "P6\n%d %d\n255\n", cam->width, cam->height);
+        put(&o, hdr, (size_t)n);
+    }
+    silk_sink sink = { send_band, &o };
+    silk_frame_stats st;
+    silk_status s = silk_render_bands(a, m, &view, &hal, &ro, band, &sink, &st, &err);
+    if (o.handle >= 0 && fw_close(o.handle) != 0) o.failed = 1;
+    if (s != SILK_OK || o.failed) {
+        say("fw error frame=%d %s", frame, s != SILK_OK ? err.msg : "writing to the host failed");
+        return 1;
+    }
+    say("fw frame=%d camera=%d mode=%s tris=%lu silhouette_tris=%lu samples=%lu frame_bytes=%lu fell_back=%d "
+        "crc=%08lx",
+        frame, k, mname, (unsigned long)st.tris_drawn, (unsigned long)st.silhouette_tris,
+        (unsigned long)st.samples, (unsigned long)st.frame_bytes, st.fell_back, (unsigned long)o.crc);
+    return 0;
+}
+
+int fw_scene(void)
+{
+    char cmd[160];
+    const char *prefix = out_prefix(cmd, sizeof cmd);
+    silk_mesh mesh;
+    fwmodel_mesh(&mesh);
+    const silk_camera *c0 = fwmodel_camera(0);
+    say("fw board=%s model=%s size=%dx%d format=%s band_rows=%d cameras=%d", FW_BOARD, FW_MODEL_NAME, c0->width,
+        c0->height, FW_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", FW_BAND_ROWS, fwmodel_NCAMERAS);
+
+    silk_arena arena;
+    silk_arena_init(&arena, arena_mem, sizeof arena_mem);
+    int rows = FW_BAND_ROWS < c0->height ? FW_BAND_ROWS : c0->height;
+    uint8_t *color = silk_arena_array(&arena, (size_t)rows * (size_t)c0->width, silk_pixfmt_bytes(FW_FORMAT),
+                                      SILK_MEM_RASTER);
+    uint32_t *depth = silk_arena_array(&arena, (size_t)rows * (size_t)c0->width, sizeof *depth, SILK_MEM_RASTER);
+    if (!color || !depth) {
+        say("fw error the arena (%lu bytes) cannot hold a band of %d rows", (unsigned long)sizeof arena_mem, rows);
+        return 1;
+    }
+    size_t band_bytes = arena.bottom;
+    silk_target band;
+    silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
+
+    int rc = 0, frame = 0;
+    for (int k = 0; k < fwmodel_NCAMERAS && !rc; k++)
+        for (int mode = 0; mode < 2 && !rc; mode++)
+            rc = render_one(&arena, &mesh, k, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, &band, prefix, frame++);
+
+    fw_mem mem;
+    fw_memory(&mem);
+    say("fw arena size=%lu peak=%lu band_buffers=%lu", (unsigned long)arena.size, (unsigned long)arena.peak,
+        (unsigned long)band_bytes);
+    for (int p = 0; p < SILK_MEM_COUNT; p++)
+        say("fw arena_purpose name=%s peak=%lu", silk_purpose_name((silk_purpose)p),
+            (unsigned long)arena.peak_used[p]);
+    /* the arena is part of .bss; the host has no such figures */
+    size_t other_static = mem.data + mem.bss > sizeof arena_mem ? mem.data + mem.bss - sizeof arena_mem : 0;
+    say("fw stack size=%lu used=%lu", (unsigned long)mem.stack_size, (unsigned long)mem.stack_used);
+    say("fw static data=%lu bss=%lu arena_reserved=%lu other=%lu", (unsigned long)mem.data, (unsigned long)mem.bss,
+        (unsigned long)sizeof arena_mem, (unsigned long)other_static);
+    say("fw ram static=%lu arena_peak=%lu stack_used=%lu total=%lu budget=%lu", (unsigned long)other_static,
+        (unsigned long)arena.peak, (unsigned long)mem.stack_used,
+        (unsigned long)(other_static + arena.peak + mem.stack_used), (unsigned long)mem.ram_size);
+    say("fw result=%s", rc ? "error" : "ok");
+    return rc;
+}
