@@ -102,11 +102,15 @@ static int band_rows(const silk_target *t, int *lo, int *hi)
     return *lo < *hi;
 }
 
+/* x / 255 for x < 65535, without a division (stores run once per pixel) */
+static uint32_t div255(uint32_t x) { return (x + 1 + (x >> 8)) >> 8; }
+
 static void store(const silk_target *t, uint8_t *p, uint32_t rgb)
 {
     uint32_t r = (rgb >> 16) & 255, g = (rgb >> 8) & 255, b = rgb & 255;
     if (t->fmt == SILK_PIX_RGB565) {
-        uint32_t v = ((r * 31 + 127) / 255) << 11 | ((g * 63 + 127) / 255) << 5 | ((b * 31 + 127) / 255);
+        /* rounded to 5/6/5 bits; load()'s bit replication is its inverse */
+        uint32_t v = div255(r * 31 + 127) << 11 | div255(g * 63 + 127) << 5 | div255(b * 31 + 127);
         p[0] = (uint8_t)v;
         p[1] = (uint8_t)(v >> 8);
     } else {

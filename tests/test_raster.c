@@ -1210,6 +1210,53 @@ TEST(frame_sizes)
     img_free(&m);
 }
 
+/* ---- pixel formats and targets ------------------------------------------------------- */
+
+TEST(pixel_formats)
+{
+    img m;
+    img_new(&m, 4, 6, SILK_PIX_RGB565, 2, 3, 1);
+    CHECK(m.t.stride == 8 && silk_pixfmt_bytes(SILK_PIX_RGB565) == 2 && silk_pixfmt_bytes(SILK_PIX_RGB888) == 3);
+    /* every RGB565 value survives get -> put, stored little-endian */
+    int bad = 0;
+    for (uint32_t v = 0; v < 65536; v++) {
+        m.color[0] = (uint8_t)v;
+        m.color[1] = (uint8_t)(v >> 8);
+        uint32_t c = silk_target_get(&m.t, 0, 2);
+        silk_target_put(&m.t, 1, 2, c);
+        if ((uint32_t)(m.color[2] | m.color[3] << 8) != v) bad++;
+    }
+    CHECKF(bad == 0, "%d RGB565 values do not round-trip", bad);
+    /* 8-bit channels go to the nearest 5/6-bit level */
+    for (int trial = 0; trial < 20000; trial++) {
+        uint32_t c = (uint32_t)(check_rand64() & 0xFFFFFF);
+        silk_target_put(&m.t, 3, 4, c);
+        uint32_t g = silk_target_get(&m.t, 3, 4);
+        for (int sh = 0; sh < 24; sh += 8) {
+            int bits = sh == 8 ? 6 : 5, a = (int)(c >> sh & 255), b = (int)(g >> sh & 255);
+            double step = 255.0 / ((1 << bits) - 1);
+            if (abs(a - b) > step / 2 + 1) bad++;
+        }
+    }
+    CHECKF(bad == 0, "%d channels off by more than half a step", bad);
+    /* outside the band: ignored, reads 0 */
+    silk_target_clear(&m.t, 0x123456);
+    silk_target_put(&m.t, 0, 1, 0xFFFFFF);
+    silk_target_put(&m.t, 0, 5, 0xFFFFFF);
+    silk_target_put(&m.t, -1, 3, 0xFFFFFF);
+    silk_target_put(&m.t, 4, 3, 0xFFFFFF);
+    CHECK(silk_target_get(&m.t, 0, 1) == 0 && silk_target_get(&m.t, 0, 5) == 0);
+    uint32_t want = silk_target_get(&m.t, 0, 2);
+    for (int y = 2; y < 5; y++)
+        for (int x = 0; x < 4; x++) CHECK(silk_target_get(&m.t, x, y) == want && m.depth[(y - 2) * 4 + x] == 0);
+    img_free(&m);
+    img_new(&m, 5, 2, SILK_PIX_RGB888, 0, 2, 0);
+    silk_target_put(&m.t, 4, 1, 0xA1B2C3);
+    CHECK(m.color[15 + 12] == 0xA1 && m.color[15 + 13] == 0xB2 && m.color[15 + 14] == 0xC3);
+    CHECK(silk_target_get(&m.t, 4, 1) == 0xA1B2C3);
+    img_free(&m);
+}
+
 int main(void)
 {
     RUN(fan_rectangle_exactly_once);
@@ -1227,5 +1274,6 @@ int main(void)
     RUN(lines);
     RUN(line_depth);
     RUN(frame_sizes);
+    RUN(pixel_formats);
     return check_done();
 }

@@ -218,8 +218,10 @@ void cli_print_scene_help(FILE *f)
             "  --crease DEG         dihedral angle above which an edge is a sharp feature\n"
             "                       (0..180, default %g)\n"
             "  --normals compute|file  shading normals computed (default) or the file's\n"
-            "  --visibility auto|brute  visibility of normals: auto builds the Gaussian-\n"
-            "                       sphere hierarchy at load (default), brute skips it\n"
+            "  --visibility auto|brute|gauss  visibility of normals: auto builds the\n"
+            "                       Gaussian-sphere hierarchy at load and uses it where it\n"
+            "                       pays (default); brute tests every normal; gauss always\n"
+            "                       uses the hierarchy\n"
             "  --arena BYTES        the one memory block silk may use (e.g. 512K, 64M);\n"
             "                       default: sized from the file and the image, grown if short\n"
             "Camera (default: the whole model, seen from front-right-above):\n"
@@ -274,9 +276,10 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         else return cli_fail(-1, "--normals must be compute or file (got \"%s\")", v);
     } else if (cli_is(arg, "--visibility")) {
         VALUE();
-        if (strcmp(v, "auto") == 0) o->vis_brute = 0;
-        else if (strcmp(v, "brute") == 0) o->vis_brute = 1;
-        else return cli_fail(-1, "--visibility must be auto or brute (got \"%s\")", v);
+        if (strcmp(v, "auto") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_AUTO;
+        else if (strcmp(v, "brute") == 0) o->vis_brute = 1, o->render.visibility = SILK_VIS_BRUTE;
+        else if (strcmp(v, "gauss") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_GAUSS;
+        else return cli_fail(-1, "--visibility must be auto, brute or gauss (got \"%s\")", v);
     } else if (cli_is(arg, "--arena")) {
         VALUE();
         r = cli_parse_bytes(opt, v, &o->arena_bytes);
