@@ -23,7 +23,7 @@ PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 
 CORE_SRC  := $(wildcard src/*.c)
-PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c
+PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/fb_sink.c
 TOOL_SRC  := $(wildcard tools/*.c)
 TEST_SRC  := $(wildcard tests/test_*.c)
 
@@ -110,5 +110,35 @@ clean:
 # A device board's own rules (the firmware of boards/mps2-an385).
 ifdef BOARD_RULES
 include $(BOARD_RULES)
+else
+# From the host: the firmware targets run in the device board's build.
+FW_BOARD ?= mps2-an385
+.PHONY: firmware firmware-host firmware-big-ram run
+firmware firmware-host firmware-big-ram run:
+	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= $@
+endif
+
+# The ARM toolchain and QEMU for the firmware (Debian, Ubuntu).
+DEPS_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+.PHONY: deps profile
+deps:
+	$(if $(filter 0,$(shell id -u)),,sudo) apt-get install -y --no-install-recommends $(DEPS_PACKAGES)
+
+# Where every byte goes on a board: `make profile [PROFILE_BOARD=..] [PROFILE_MESH=..]`.
+PROFILE_BOARD ?= $(if $(BOARD_RULES),$(BOARD),mps2-an385)
+PROFILE_MESH  ?= $(or $(SILK_MESHES),../shared/meshes)/bunny-500.obj
+profile: $(BUILD)/silk
+	$(BUILD)/silk profile $(PROFILE_MESH) --board $(PROFILE_BOARD)
+
+# `make test` runs the firmware under QEMU (tests/cli_qemu.sh) when the ARM
+# toolchain is installed; in CI it must be.
+HAVE_ARM := $(shell command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1 && echo 1)
+ifeq ($(BOARD)$(HAVE_ARM),host1)
+ifneq ($(SAN),1)
+tests: firmware-for-tests
+.PHONY: firmware-for-tests
+firmware-for-tests:
+	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-big-ram
+endif
 endif
 

@@ -49,20 +49,44 @@ static int v3_equal(silk_vec3 a, silk_vec3 b)
     return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
+/* v / |v| in Q2.30 (components within +-2^30), for v of any scale: v is
+ * first shifted so its largest component has 30 bits, then the length is
+ * an exact integer square root, good to 2^-29.  0 for the zero vector. */
+static int unit30(const int64_t v[3], int64_t out[3])
+{
+    int64_t w[3], big = 0;
+    for (int k = 0; k < 3; k++) {
+        int64_t a = v[k] < 0 ? -v[k] : v[k];
+        if (a > big) big = a;
+    }
+    if (big == 0) return 0;
+    int down = 0, up = 0;
+    while ((big >> down) >= ((int64_t)1 << 30)) down++;
+    while ((big << up) < ((int64_t)1 << 29)) up++;
+    for (int k = 0; k < 3; k++) w[k] = down ? silk_shr_round64(v[k], down) : v[k] * ((int64_t)1 << up);
+    int64_t len = (int64_t)silk_isqrt64((uint64_t)(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+    for (int k = 0; k < 3; k++) out[k] = div_round(w[k] * ((int64_t)1 << 30), len);
+    return 1;
+}
+
 silk_vec3 silk_patch_edge_ctrl(silk_vec3 pi, silk_vec3 pj, silk_vec3 ns, silk_vec3 nt)
 {
-    silk_vec3 e = silk_v3_sub(pj, pi), m;
+    silk_vec3 e = silk_v3_sub(pj, pi);
+    int64_t m[3];
     if (!v3_equal(ns, nt)) {
-        /* eq. 8: m along nt x ns (exact in 64 bits, so nearly parallel
-         * normals still give a clean direction); c = p_i + (e.m / 3) m.
-         * The sign of m cancels. */
+        /* eq. 8: m along nt x ns, exact in 64 bits (so nearly parallel
+         * normals still give a clean direction) and made unit in Q2.30, as
+         * a Q16.16 unit vector would cost |e| 2^-17 here.  c = p_i +
+         * (e.m / 3) m with e.m rounded to Q16.16; the sign of m cancels. */
         int64_t x[3] = { (int64_t)nt.y * ns.z - (int64_t)nt.z * ns.y,
                          (int64_t)nt.z * ns.x - (int64_t)nt.x * ns.z,
                          (int64_t)nt.x * ns.y - (int64_t)nt.y * ns.x };
-        if (silk_v3_normalize64(x, &m)) {
-            int64_t w = silk_v3_dot64(e, m);
-            return silk_v3(third_of(3 * (int64_t)pi.x, w, m.x), third_of(3 * (int64_t)pi.y, w, m.y),
-                           third_of(3 * (int64_t)pi.z, w, m.z));
+        if (unit30(x, m)) {
+            int64_t w = silk_shr_round64(e.x * m[0] + e.y * m[1] + e.z * m[2], 30);  /* < 2^59 before */
+            const int64_t q30 = (int64_t)1 << 30;
+            return silk_v3(silk_fx_sat(div_round(3 * (int64_t)pi.x * q30 + w * m[0], 3 * q30)),
+                           silk_fx_sat(div_round(3 * (int64_t)pi.y * q30 + w * m[1], 3 * q30)),
+                           silk_fx_sat(div_round(3 * (int64_t)pi.z * q30 + w * m[2], 3 * q30)));
         }
     }
     /* eq. 7: c = (2 p_i + p_j - (e.n) n) / 3 */

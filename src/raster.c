@@ -13,7 +13,7 @@
  * (quotient + remainder) steppers, depth is an exact rational plane, and the
  * perspective weights come from integer edge functions, so every pixel's
  * coverage and values are a function of that pixel and the triangle alone:
- * shared edges have no gaps and no double hits, and rendering in bands gives
+ * shared edges have no gaps and no pixel drawn twice, and rendering in bands gives
  * the same bytes as rendering the whole frame.
  */
 #include <string.h>
@@ -97,8 +97,9 @@ static int band_rows(const silk_target *t, int *lo, int *hi)
     if (t->width < 1 || t->height < 1 || t->width > SILK_MAX_DIM || t->height > SILK_MAX_DIM ||
         t->rows < 1)
         return 0;
+    int64_t end = (int64_t)t->y0 + t->rows;
     *lo = t->y0 > 0 ? t->y0 : 0;
-    *hi = t->y0 + t->rows < t->height ? t->y0 + t->rows : t->height;
+    *hi = end < t->height ? (int)end : t->height;
     return *lo < *hi;
 }
 
@@ -277,7 +278,7 @@ static void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
 }
 
 typedef struct tri_setup {
-    const svert *v[3];     /* counter-clockwise on screen (positive area) */
+    const svert *v[3];     /* ordered so that the area below is positive */
     int64_t area;          /* twice the area in subpixels^2, > 0 */
     int64_t ea[3], eb[3];  /* edge function i: ea*(X - Xj) + eb*(Y - Yj), j = i+1 */
     int64_t qn[3];

@@ -155,7 +155,7 @@ TEST(fan_star_random)
 {
     const int W = 64, H = 64;
     silk_hal h = hal_flat();
-    int bad = 0;
+    int bad = 0, used = 0;
     for (int trial = 0; trial < 300 && !bad; trial++) {
         int n = (int)rnd(3, 24);
         double ang[24];
@@ -181,6 +181,7 @@ TEST(fan_star_random)
             if ((rx[i] - cx) * (ry[j] - cy) - (ry[i] - cy) * (rx[j] - cx) <= 0) folded = 1;
         }
         if (folded) continue;
+        used++;
         img m;
         img_new(&m, W, H, SILK_PIX_RGB888, 0, H, 0);
         int kc = (int)rnd(64, 1024);
@@ -225,6 +226,7 @@ TEST(fan_star_random)
             }
         img_free(&m);
     }
+    CHECKF(used > 200, "only %d of 300 polygons usable", used);
 }
 
 /* ---- meshes built in the test ------------------------------------------------------- */
@@ -882,7 +884,7 @@ TEST(clipped_fans_exactly_once)
 {
     const int W = 64, H = 64;
     silk_hal h = hal_flat();
-    int bad = 0;
+    int bad = 0, used = 0;
     for (int trial = 0; trial < 800 && bad < 3; trial++) {
         int n = (int)rnd(3, 12);
         double ang[12];
@@ -921,6 +923,7 @@ TEST(clipped_fans_exactly_once)
             if (fabs((px - rx[a]) * nx + (py - ry[a]) * ny + off) < 2) near = 1;
         }
         if (near) continue;
+        used++;
         int k = (int)rnd(64, 512);
         silk_vertex_out vc = vat(W, H, cx, cy, k), vr[12];
         double fscale = 1.0 / 2048;               /* z - w = f * fscale * w, within (-w, w): no near cut */
@@ -960,6 +963,7 @@ TEST(clipped_fans_exactly_once)
 #undef FOF
         img_free(&m);
     }
+    CHECKF(used > 200, "only %d of 800 fans usable", used);
 }
 
 /* Zero-area triangles, a triangle behind the eye, coincident vertices, and

@@ -20,6 +20,7 @@
 #include <time.h>
 
 #include "cli.h"
+#include "measure.h"
 #include "../platform/platform.h"
 
 #define BENCH_VIEWS 36
@@ -212,6 +213,11 @@ done:
 
 int cmd_bench(int argc, char **argv)
 {
+    /* Without --visibility: the render-mode benchmark (tools/cmd_bench_modes.c). */
+    int vis_bench = 0;
+    for (int i = 1; i < argc; i++) vis_bench |= cli_is(argv[i], "--visibility");
+    if (!vis_bench) return cmd_bench_modes(argc, argv);
+
     bench_opts o;
     memset(&o, 0, sizeof o);
     o.batches = 5;

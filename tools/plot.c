@@ -61,7 +61,10 @@ static layout measure(const plot_chart *c)
 {
     layout L;
     L.left = MARGIN + FONT_LINE * SCALE + 8 + 7 * FONT_ADVANCE * SCALE;   /* unit, tick labels */
-    L.group_w = c->nseries * BAR_W + GROUP_GAP;
+    L.group_w = c->nseries * BAR_W;
+    for (int g = 0; g < c->ngroups; g++)
+        if (font_text_width(c->group[g], SCALE) > L.group_w) L.group_w = font_text_width(c->group[g], SCALE);
+    L.group_w += GROUP_GAP;
     int legend_w = 0;
     for (int s = 0; s < c->nseries; s++) legend_w += 14 + 6 + font_text_width(c->series[s], SCALE) + 20;
     int w = L.left + c->ngroups * L.group_w + MARGIN;
@@ -69,6 +72,10 @@ static layout measure(const plot_chart *c)
     if (c->note && MARGIN * 2 + font_text_width(c->note, 1) > tw) tw = MARGIN * 2 + font_text_width(c->note, 1);
     if (tw > w) w = tw;
     if (MARGIN * 2 + legend_w > w) w = MARGIN * 2 + legend_w;
+    for (int p = 0; p < c->npanels; p++) {
+        int pw = L.left + font_text_width(c->panel[p].title ? c->panel[p].title : "", SCALE) + MARGIN;
+        if (pw > w) w = pw;
+    }
     L.width = w;
     L.header_h = MARGIN + FONT_LINE * SCALE + (c->note ? FONT_LINE + 4 : 0) + 8 + FONT_LINE * SCALE + 12;
     L.panel_h = FONT_LINE * SCALE + 8 + PLOT_H + 8 + FONT_LINE * SCALE + 16;
@@ -106,7 +113,7 @@ static void draw_panel(silk_target *t, const plot_chart *c, const plot_panel *p,
     }
 
     for (int g = 0; g < c->ngroups; g++) {
-        int gx = x0 + g * L->group_w + GROUP_GAP / 2;
+        int gx = x0 + g * L->group_w + (L->group_w - c->nseries * BAR_W) / 2;   /* bars centred */
         for (int s = 0; s < c->nseries; s++) {
             double v = p->value[g * c->nseries + s];
             int bx = gx + s * BAR_W, h = isfinite(v) && v > 0 ? (int)lround(v * scale_px) : 0;
@@ -117,10 +124,8 @@ static void draw_panel(silk_target *t, const plot_chart *c, const plot_panel *p,
             if (tw <= BAR_W) font_draw(t, bx + (BAR_W - tw) / 2, y1 - h - FONT_LINE, buf, RGB_TEXT, 1);
             else font_draw_up(t, bx + (BAR_W - FONT_H) / 2, y1 - h - 3, buf, RGB_TEXT, 1);
         }
-        const char *name = c->group[g];
-        int sc = font_text_width(name, SCALE) <= L->group_w - 4 ? SCALE : 1;
-        int nw = font_text_width(name, sc);
-        font_draw(t, gx + (c->nseries * BAR_W - nw) / 2, y1 + 8, name, RGB_TEXT, sc);
+        int nw = font_text_width(c->group[g], SCALE);
+        font_draw(t, gx + (c->nseries * BAR_W - nw) / 2, y1 + 8, c->group[g], RGB_TEXT, SCALE);
     }
 }
 

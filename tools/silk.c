@@ -21,7 +21,7 @@ static const command commands[] = {
     { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY) to PNG or PPM" },
     { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
-    { "bench", cmd_bench, "bench --visibility MESH...", "time visibility: brute pass vs hierarchy" },
+    { "bench", cmd_bench, "bench [--visibility] MESH...", "time and silhouette error per render mode (or visibility)" },
     { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
     { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },
 };

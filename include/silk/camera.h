@@ -4,6 +4,8 @@
  * OpenGL conventions: the camera looks down its -z axis, clip space is
  * x,y,z in [-w, w], pixel (0,0) is the top-left pixel and is sampled at its
  * centre (0.5, 0.5).  Matrices are row-major Q16.16 and act on column vectors.
+ * The perspective frustum's far plane is at infinity (clip z = w - 2 znear),
+ * so zfar bounds orthographic views only; docs/raster.md gives the ranges.
  */
 #ifndef SILK_CAMERA_H
 #define SILK_CAMERA_H

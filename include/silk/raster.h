@@ -27,7 +27,8 @@ typedef struct silk_target {
     silk_pixfmt fmt;
     uint8_t *color;          /* rows * stride bytes */
     size_t stride;           /* bytes per row */
-    uint32_t *depth;         /* rows * width; larger is nearer (it stores 1/w) */
+    uint32_t *depth;         /* rows * width; larger is nearer: (w - z) / w in Q1.31, which is
+                                2 znear / w in perspective (docs/raster.md); NULL: no depth test */
     uint16_t *writes;        /* optional (tests): rows * width counters of fragment writes */
 } silk_target;
 
@@ -49,7 +50,9 @@ uint32_t silk_target_get(const silk_target *t, int x, int y);    /* as 0xRRGGBB 
 
 /* Rasterize one triangle: near-plane clipping, subpixel precision, top-left
  * fill rule, perspective-correct varyings, depth test, then the HAL's
- * fragment stage.  Both windings are drawn. */
+ * fragment stage.  Both windings are drawn.  h == NULL (or no fragment
+ * stage) draws depth only.  Frames up to SILK_MAX_DIM (silk/camera.h) on a
+ * side; docs/raster.md has every convention. */
 void silk_raster_triangle(silk_target *t, const struct silk_hal *h,
                           const silk_vertex_out *a, const silk_vertex_out *b, const silk_vertex_out *c);
 

@@ -7,6 +7,11 @@
 #   make BOARD=mps2-an385 run          run each under QEMU; frames and the
 #                                      report go to $(BUILD)/fw/NAME/
 #   BOARD_MESHES="a.obj b.obj"         other models (`silk gen` meshes too)
+#   make BOARD=mps2-an385 firmware-big-ram
+#                                      the same with 1 MiB of RAM (the AN385
+#                                      has 4 MB) in $(BUILD)/fw/big-ram/NAME:
+#                                      the bit-exactness test of frames the
+#                                      board's budget cannot hold
 #
 # The model is packed at build time by the host-side tool ($(BUILD)/silk,
 # built with the host compiler from the same sources) into
@@ -17,6 +22,9 @@
 FW_CC    := $(BOARD_CROSS)gcc
 FW_AR    := $(BOARD_CROSS)ar
 FW_DIR   := $(BUILD)/fw
+# Per-model outputs; a variant (FW_VARIANT=big-ram) gets its own directory.
+FW_VARIANT ?=
+FW_OUT   := $(FW_DIR)$(if $(FW_VARIANT),/$(FW_VARIANT))
 FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
 FW_DEFS  := -DFW_BOARD='"$(BOARD)"' -DFW_BAND_ROWS=$(BOARD_BAND_ROWS) -DFW_ARENA_BYTES=$(BOARD_ARENA_BYTES) \
             -DFW_FORMAT=$(BOARD_FORMAT)
@@ -29,12 +37,14 @@ FW_PACK_ARGS := --size $(BOARD_WIDTH)x$(BOARD_HEIGHT) \
 FW_CORE_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/obj/%.o)
 FW_PLAT_OBJ := $(FW_DIR)/obj/platform/mps2/startup.o $(FW_DIR)/obj/platform/mps2/semihost.o
 FW_NAMES    := $(basename $(notdir $(BOARD_MESHES)))
-FW_ELF      := $(FW_NAMES:%=$(FW_DIR)/%/fw.elf)
-FW_HOST     := $(FW_NAMES:%=$(FW_DIR)/%/fw-host)
+FW_ELF      := $(FW_NAMES:%=$(FW_OUT)/%/fw.elf)
+FW_HOST     := $(FW_NAMES:%=$(FW_OUT)/%/fw-host)
 
-.PHONY: firmware firmware-host run FORCE
+.PHONY: firmware firmware-host firmware-big-ram run FORCE
 firmware: $(FW_ELF)
 firmware-host: $(FW_HOST)
+firmware-big-ram: $(FW_DIR)/libsilk.a $(FW_PLAT_OBJ) $(BUILD)/silk
+	$(MAKE) FW_VARIANT=big-ram BOARD_RAM_BYTES=1048576 BOARD_ARENA_BYTES=1032192 firmware
 
 $(FW_DIR)/obj/%.o: %.c boards/$(BOARD)/board.mk
 	@mkdir -p $(dir $@)
@@ -44,29 +54,37 @@ $(FW_DIR)/libsilk.a: $(FW_CORE_OBJ)
 	rm -f $@ && $(FW_AR) rcs $@ $^
 
 # The pack options are remembered, so that changing them repacks.
-$(FW_DIR)/%/pack.args: FORCE
+$(FW_OUT)/%/pack.args: FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(FW_PACK_ARGS)' | cmp -s - $@ || echo '$(FW_PACK_ARGS)' > $@
 
+# The sizes are compiled and linked in: remembered like the pack options.
+FW_SIZES := $(BOARD_FLASH_BYTES) $(BOARD_RAM_BYTES) $(BOARD_STACK_BYTES) $(BOARD_ARENA_BYTES) \
+            $(BOARD_BAND_ROWS) $(BOARD_FORMAT)
+$(FW_OUT)/defs.args: FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(FW_SIZES)' | cmp -s - $@ || echo '$(FW_SIZES)' > $@
+
 # One firmware per model: $(1) the name, $(2) the mesh file.
 define fw_model
-$(FW_DIR)/$(1)/fwmodel.h: $(2) $(BUILD)/silk $(FW_DIR)/$(1)/pack.args
+$(FW_OUT)/$(1)/fwmodel.h: $(2) $(BUILD)/silk $(FW_OUT)/$(1)/pack.args
 	$(BUILD)/silk pack $(2) -o $$@ --name fwmodel $(FW_PACK_ARGS)
 
-$(FW_DIR)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h $(FW_DIR)/$(1)/fwmodel.h boards/$(BOARD)/board.mk
-	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_DIR)/$(1) -c $$< -o $$@
+$(FW_OUT)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args
+	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) -c $$< -o $$@
 
-$(FW_DIR)/$(1)/fw.elf: $(FW_DIR)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld
-	$(FW_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_DIR)/$(1)/fw.map -o $$@ $(FW_DIR)/$(1)/fw_main.o $(FW_PLAT_OBJ) \
+$(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld \
+                      $(FW_OUT)/defs.args
+	$(FW_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_OUT)/$(1)/fw.map -o $$@ $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) \
 	    $(FW_DIR)/libsilk.a
 
-$(FW_DIR)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
-                        $(FW_DIR)/$(1)/fwmodel.h $(BUILD)/libsilk.a
-	$(CC) $(ALL_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_DIR)/$(1) -o $$@ \
+$(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
+                        $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args $(BUILD)/libsilk.a
+	$(CC) $(ALL_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) -o $$@ \
 	    platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(BUILD)/libsilk.a
 
-run-$(1): $(FW_DIR)/$(1)/fw.elf
-	timeout 120 $(BOARD_RUN) $(FW_DIR)/$(1)/fw.elf -append $(FW_DIR)/$(1)/frame | tee $(FW_DIR)/$(1)/report.txt
+run-$(1): $(FW_OUT)/$(1)/fw.elf
+	timeout 120 $(BOARD_RUN) $(FW_OUT)/$(1)/fw.elf -append $(FW_OUT)/$(1)/frame 2>&1 | tee $(FW_OUT)/$(1)/report.txt
 endef
 $(foreach m,$(BOARD_MESHES),$(eval $(call fw_model,$(basename $(notdir $(m))),$(m))))
 

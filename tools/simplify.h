@@ -1,0 +1,62 @@
+/*
+ * simplify.h - mesh simplification by quadric-error edge collapse
+ * (Garland & Heckbert 1997) for `silk simplify`: make the coarse meshes the
+ * renderer is meant for from fine ones.  Host-side, double precision.
+ *
+ * Feature edges (boundary edges, and creases whose dihedral angle exceeds
+ * crease_deg) add constraint planes through the edge, perpendicular to its
+ * faces, to their end points' quadrics, so collapses keep them in place
+ * where they can.  A collapse is refused when it would break the surface:
+ * the link condition, vertex degrees of at least 3, no triangle turned
+ * over or squashed to a sliver, and a closed edge never pinching two
+ * boundary vertices together.  A closed manifold input stays closed and
+ * manifold; every collapse then removes exactly two triangles.
+ */
+#ifndef SILK_TOOLS_SIMPLIFY_H
+#define SILK_TOOLS_SIMPLIFY_H
+
+#include <stdint.h>
+
+typedef struct simp_mesh {
+    uint32_t nverts, ntris;
+    double *pos;             /* 3 * nverts, malloc'd */
+    uint32_t *tri;           /* 3 * ntris, malloc'd, counter-clockwise from outside */
+} simp_mesh;
+
+typedef struct simp_opts {
+    uint32_t target_tris;    /* stop at this many triangles or fewer */
+    double crease_deg;       /* dihedral angle above which an edge is a feature */
+    double feature_weight;   /* constraint planes' weight against the faces' (area-weighted) */
+} simp_opts;
+
+/* crease 60 degrees (as silk's loader), feature weight 100. */
+void simp_opts_default(simp_opts *o, uint32_t target_tris);
+
+typedef struct simp_stats {
+    uint32_t tris_in, tris_out, verts_in, verts_out;
+    uint32_t feature_edges;  /* boundary and crease edges of the input */
+    uint32_t collapses;
+    uint32_t refused_topology, refused_shape;   /* link/degree, flip/sliver (counted per attempt) */
+} simp_stats;
+
+/* Simplify m in place: pos and tri are replaced by compacted arrays.
+ * Returns 0, or -1 when out of memory (m is then unchanged).  Fewer
+ * collapses than asked for happen only when every remaining one would
+ * break the surface; stats tell how far it got. */
+int simp_run(simp_mesh *m, const simp_opts *o, simp_stats *st);
+
+/* Topology of a triangle mesh, for the checks: edges with one face
+ * (boundary), with three or more (non-manifold), pairs of faces using an
+ * edge in the same direction (inconsistent orientation), vertices whose
+ * faces do not form one fan (non-manifold vertices), and faces with a
+ * repeated vertex.  Returns 0, or -1 when out of memory. */
+typedef struct simp_topology {
+    uint32_t edges, boundary_edges, nonmanifold_edges, misoriented_edges;
+    uint32_t nonmanifold_verts, degenerate_tris, unused_verts;
+    int euler;               /* V - E + F */
+} simp_topology;
+int simp_topology_check(const simp_mesh *m, simp_topology *t);
+
+void simp_free(simp_mesh *m);
+
+#endif
