@@ -16,6 +16,12 @@
 #include <string.h>
 #include "silk/silk.h"
 
+/* The entry point: libFuzzer's, unless tests/test_regress.c, which runs
+ * every harness in one program, names each one itself. */
+#ifndef FUZZ_ENTRY
+#define FUZZ_ENTRY LLVMFuzzerTestOneInput
+#endif
+
 #define fuzz_expect(cond, ...)                                                    \
     do {                                                                          \
         if (!(cond)) {                                                            \

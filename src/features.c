@@ -4,7 +4,10 @@
  *
  * Feature edges are chained into maximal feature polylines V0..Vk, which
  * end where a vertex has other than two feature edges (or close on
- * themselves).  At an inner vertex the tangent direction is that of the
+ * themselves), and also where the polyline turns by more than
+ * SILK_FEATURE_TURN_DEG: such a vertex is a corner of the feature curve
+ * (fandisk's concave arc meeting a straight edge, a zig-zag of creases on a
+ * coarse scan), and a circle through a corner overshoots into a loop.  At an inner vertex the tangent direction is that of the
  * circle through Vi-1, Vi, Vi+1 (eq. 1, with W0 = Vi - Vi-1, W1 = Vi+1 - Vi
  * taken as unit directions, see inner_dir); at an end it is the tangent of
  * the circle through the first (last) three vertices.  Lengths follow eq. 4
@@ -29,6 +32,29 @@ static int is_feature(const silk_edge *e)
 static silk_index other_end(const silk_edge *e, silk_index v)
 {
     return e->v[0] == v ? e->v[1] : e->v[0];
+}
+
+/* 45 degrees keeps an octagon's rim (45 per vertex) one smooth loop and
+ * breaks every sharp turn measured on the shared models (docs/formats.md). */
+#define SILK_FEATURE_TURN_DEG 45
+
+/* 1 if a feature polyline may not pass through v: other than two feature
+ * edges, or two that turn by more than SILK_FEATURE_TURN_DEG. */
+static int polyline_stops_at(const silk_mesh *m, const uint32_t *fdeg, silk_index v, int64_t cos_turn)
+{
+    if (fdeg[v] != 2) return 1;
+    silk_index nb[2];
+    int n = 0;
+    for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1] && n < 2; i++) {
+        const silk_edge *e = &m->edge[m->vert_edge[i]];
+        if (is_feature(e)) nb[n++] = other_end(e, v);
+    }
+    if (n < 2) return 1;
+    silk_vec3 in, out;
+    if (!silk_v3_normalize(silk_v3_sub(m->pos[v], m->pos[nb[0]]), &in) ||
+        !silk_v3_normalize(silk_v3_sub(m->pos[nb[1]], m->pos[v]), &out))
+        return 1;
+    return silk_v3_dot64(in, out) < cos_turn;
 }
 
 /* The tangent at p of the circle through prev, p, next.  Eq. 1 as printed,
@@ -72,10 +98,10 @@ static silk_vec3 end_dir(silk_vec3 chord, silk_vec3 d)
     return u;
 }
 
-/* Follows feature edges from vertex start along edge e until a vertex with
- * other than two feature edges, or back to start.  Fills vert[0..k] and
- * edges[0..k-1]; returns k. */
-static uint32_t walk(const silk_mesh *m, const uint32_t *fdeg, uint8_t *used, silk_index start, uint32_t e,
+/* Follows feature edges from vertex start along edge e until a vertex where
+ * polylines stop, or back to start.  Fills vert[0..k] and edges[0..k-1];
+ * returns k. */
+static uint32_t walk(const silk_mesh *m, const uint8_t *stop, uint8_t *used, silk_index start, uint32_t e,
                      silk_index *vert, uint32_t *edges)
 {
     uint32_t k = 0;
@@ -86,7 +112,7 @@ static uint32_t walk(const silk_mesh *m, const uint32_t *fdeg, uint8_t *used, si
         edges[k] = e;
         v = other_end(&m->edge[e], v);
         vert[++k] = v;
-        if (fdeg[v] != 2 || v == start) return k;
+        if (stop[v] || v == start) return k;
         uint32_t next = e;
         for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1]; i++) {
             uint32_t f = m->vert_edge[i];
@@ -149,11 +175,12 @@ silk_status silk_build_features(const char *name, silk_arena *a, silk_mesh *m, s
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     uint32_t *fdeg = silk_arena_array_top(a, m->nverts, sizeof *fdeg, SILK_MEM_LOAD);
+    uint8_t *stop = silk_arena_array_top(a, m->nverts, sizeof *stop, SILK_MEM_LOAD);
     uint8_t *used = silk_arena_array_top(a, m->nedges, sizeof *used, SILK_MEM_LOAD);
     silk_index *vert = silk_arena_array_top(a, (size_t)nfe + 1, sizeof *vert, SILK_MEM_LOAD);
     uint32_t *edges = silk_arena_array_top(a, nfe, sizeof *edges, SILK_MEM_LOAD);
     silk_vec3 *dir = silk_arena_array_top(a, (size_t)nfe + 1, sizeof *dir, SILK_MEM_LOAD);
-    if (!fdeg || !used || !vert || !edges || !dir) {
+    if (!fdeg || !stop || !used || !vert || !edges || !dir) {
         silk_status st = nomem(err, name, a);
         silk_arena_top_release(a, &mark);
         return st;
@@ -164,20 +191,25 @@ silk_status silk_build_features(const char *name, silk_arena *a, silk_mesh *m, s
             fdeg[m->edge[e].v[1]]++;
         }
 
-    /* Open polylines start at their ends (and at junctions) ... */
+    silk_fx sin_turn, cos_turn;
+    silk_fx_sincos_deg(SILK_FX_C(SILK_FEATURE_TURN_DEG, 1), &sin_turn, &cos_turn);
+    for (silk_index v = 0; v < m->nverts; v++)
+        stop[v] = fdeg[v] != 0 && (uint8_t)polyline_stops_at(m, fdeg, v, (int64_t)cos_turn * SILK_FX_ONE);
+
+    /* Open polylines start at their ends (junctions, corners) ... */
     for (silk_index v = 0; v < m->nverts; v++) {
-        if (fdeg[v] == 0 || fdeg[v] == 2) continue;
+        if (!stop[v]) continue;
         for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1]; i++) {
             uint32_t e = m->vert_edge[i];
             if (!is_feature(&m->edge[e]) || used[e]) continue;
-            uint32_t k = walk(m, fdeg, used, v, e, vert, edges);
+            uint32_t k = walk(m, stop, used, v, e, vert, edges);
             polyline_segments(m, vert, edges, k, 0, dir);
         }
     }
     /* ... what is left are closed loops through vertices of two feature edges. */
     for (uint32_t e = 0; e < m->nedges; e++) {
         if (!is_feature(&m->edge[e]) || used[e]) continue;
-        uint32_t k = walk(m, fdeg, used, m->edge[e].v[0], e, vert, edges);
+        uint32_t k = walk(m, stop, used, m->edge[e].v[0], e, vert, edges);
         polyline_segments(m, vert, edges, k, k >= 3 && vert[k] == vert[0], dir);
     }
     silk_arena_top_release(a, &mark);

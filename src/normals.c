@@ -147,6 +147,61 @@ static int64_t corner_dot(const silk_mesh *m, uint32_t t, uint32_t k)
            ((int64_t)a.z - p.z) * ((int64_t)b.z - p.z);
 }
 
+/* A cone apex (the tip of `silk gen cone`, a spike) has no tangent plane:
+ * its averaged normal points along the axis, far from every face around it,
+ * so the whole fan becomes silhouette triangles and the bridges bulge the
+ * tip into a dome.  A group whose angle-weighted normal is more than
+ * SILK_APEX_DEG from every one of its faces is treated as such a point: its
+ * corners are split apart, and each triangle keeps its own face normal
+ * there.  On the shared coarse models this catches the cone's apex and one
+ * spike of armadillo-500 and nothing else (docs/formats.md). */
+#define SILK_APEX_DEG 50
+
+static void split_apex_groups(const silk_mesh *m, const silk_vec3 *fn, const uint32_t *vc_start,
+                              const uint32_t *vc, uint32_t *parent)
+{
+    silk_fx s, c;
+    silk_fx_sincos_deg(SILK_FX_C(SILK_APEX_DEG, 1), &s, &c);
+    const int64_t limit = (int64_t)c * SILK_FX_ONE;   /* Q32.32, like silk_v3_dot64 */
+    for (uint32_t v = 0; v < m->nverts; v++) {
+        for (uint32_t i = vc_start[v]; i < vc_start[v + 1]; i++) {
+            uint32_t root = uf_find(parent, vc[i]);
+            if (root != vc[i]) continue;   /* each group once, at its root */
+            int64_t acc[3] = { 0, 0, 0 };
+            uint32_t members = 0;
+            for (uint32_t j = vc_start[v]; j < vc_start[v + 1]; j++) {
+                uint32_t cj = vc[j], t = cj / 3;
+                if (uf_find(parent, cj) != root) continue;
+                members++;
+                silk_vec3 n = fn[t];
+                int64_t cr[3];
+                silk_tri_cross64(m, t, cr);
+                int64_t w = corner_angle(cr, corner_dot(m, t, cj % 3));
+                acc[0] += w * n.x;
+                acc[1] += w * n.y;
+                acc[2] += w * n.z;
+            }
+            silk_vec3 u;
+            if (members < 2 || !silk_v3_normalize64(acc, &u)) continue;
+            int apex = 1;
+            for (uint32_t j = vc_start[v]; j < vc_start[v + 1] && apex; j++) {
+                uint32_t cj = vc[j];
+                silk_vec3 n = fn[cj / 3];
+                if (uf_find(parent, cj) != root || (n.x == 0 && n.y == 0 && n.z == 0)) continue;
+                if (silk_v3_dot64(n, u) >= limit) apex = 0;
+            }
+            if (!apex) continue;
+            /* Unions never cross vertices, so cutting this group's corners
+             * loose splits exactly this group.  Point every member straight
+             * at the root first, so that cutting one does not hide another. */
+            for (uint32_t j = vc_start[v]; j < vc_start[v + 1]; j++)
+                if (uf_find(parent, vc[j]) == root) parent[vc[j]] = root;
+            for (uint32_t j = vc_start[v]; j < vc_start[v + 1]; j++)
+                if (parent[vc[j]] == root) parent[vc[j]] = vc[j];
+        }
+    }
+}
+
 /* Sum angle * face normal per group in Q32.32 (exact), then normalise once.
  * A group whose sum vanishes (only degenerate triangles, or faces that
  * cancel) takes the first face normal it has, else +z. */
@@ -239,6 +294,7 @@ silk_status silk_build_normals(const silk_mesh_input *in, const silk_load_opts *
         group_by_file_normals(m, in, vc_start, vc, stamp, first, parent);
     } else {
         group_by_features(m, parent);
+        split_apex_groups(m, fn, vc_start, vc, parent);
     }
 
     /* One normal per group, numbered in vertex order. */

@@ -209,11 +209,14 @@ void silk_patch_eval(const silk_patch *p, uint32_t point, silk_vertex_attr *out)
     int64_t n3 = n * n * n;
     out->pos = silk_v3(silk_fx_sat(div_round(s[0], n3)), silk_fx_sat(div_round(s[1], n3)),
                        silk_fx_sat(div_round(s[2], n3)));
-    /* Normals that cancel (opposite corner normals): take the nearest corner's. */
-    if (!silk_v3_normalize64(ns, &out->normal)) {
-        int c = i >= j && i >= k ? 0 : (j >= k ? 1 : 2);
+    /* At a corner the corner's own normal, bit for bit as a CORNER record
+     * has it (BLEND mode mixes the two); where the normals cancel (opposite
+     * corner normals), the nearest corner's. */
+    int c = i >= j && i >= k ? 0 : (j >= k ? 1 : 2);
+    if (i == n || j == n || k == n)
+        out->normal = p->n[SILK_N200 + c];
+    else if (!silk_v3_normalize64(ns, &out->normal))
         silk_v3_normalize(p->n[SILK_N200 + c], &out->normal);
-    }
     out->uv.x = silk_fx_sat(div_round(i * p->uv[0].x + j * p->uv[1].x + k * p->uv[2].x, n));
     out->uv.y = silk_fx_sat(div_round(i * p->uv[0].y + j * p->uv[1].y + k * p->uv[2].y, n));
 }

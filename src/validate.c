@@ -6,8 +6,9 @@
  * normals of III-B, the feature segments of III-A and the visibility
  * hierarchy - when it comes from a `silk pack` header or any other source
  * than silk's own loaders.  One pass over each array, no memory of its own:
- * every check is local to one element, plus two counts (edge ends against
- * list entries) that make the local checks add up to a whole.
+ * every check is local to one element, plus one count (edge ends against
+ * list entries) that makes the local checks of the vertex->edge lists add
+ * up to a whole.  Messages number elements from 0, as the arrays do.
  */
 #include "silk/validate.h"
 #include "silk/visibility.h"
@@ -15,10 +16,9 @@
 /* Triangles silk_mesh_build accepts (mesh_build.c's MAX_TRIS): per-frame
  * counts of 3 * ntris and more stay far inside uint32. */
 #define VALID_MAX_TRIS (1u << 28)
-/* |n|^2 within 1 +- 1/64 (Q32.32) */
+/* |n|^2 within 1 +- 1/64, in Q32.32 like silk_v3_dot64 */
 #define UNIT_SLACK ((int64_t)1 << 26)
 
-/* Every check reports through this, with the mesh's name and no line. */
 #define BAD(...) silk_fail(err, SILK_ERR_PARSE, name, 0, __VA_ARGS__)
 #define UL(x) ((unsigned long)(x))
 
@@ -46,25 +46,23 @@ static int tri_has_edge(const silk_mesh *m, silk_index t, uint32_t e)
 static silk_status check_counts(const silk_mesh *m, const char *name, silk_error *err)
 {
     if (!m->ntris || !m->nverts || !m->nnormals || !m->nedges)
-        return BAD("empty mesh (%lu triangles, %lu vertices, %lu normals)", m->ntris, m->nverts,
-                   m->nnormals);
+        return BAD("empty mesh (%lu triangles, %lu vertices, %lu normals, %lu edges)", UL(m->ntris),
+                   UL(m->nverts), UL(m->nnormals), UL(m->nedges));
     if (m->ntris > VALID_MAX_TRIS)
-        return BAD("%lu triangles is more than the %lu supported", m->ntris, VALID_MAX_TRIS, 0);
+        return BAD("%lu triangles is more than the %lu supported", UL(m->ntris), UL(VALID_MAX_TRIS));
     if ((uint64_t)m->nverts >= SILK_NO_INDEX || (uint64_t)m->nnormals >= SILK_NO_INDEX ||
         (uint64_t)m->nedges >= SILK_NO_INDEX || (uint64_t)m->nuvs >= SILK_NO_INDEX)
-        return BAD("%lu vertices, %lu normals or %lu edges do not fit silk_index", m->nverts,
-                   m->nnormals, m->nedges);
+        return BAD("%lu vertices, %lu normals, %lu edges or %lu uvs do not fit silk_index", UL(m->nverts),
+                   UL(m->nnormals), UL(m->nedges), UL(m->nuvs));
     if (!m->pos || !m->tri || !m->normal || !m->normal_vertex || !m->tri_normal || !m->tri_edge || !m->edge ||
         !m->vert_edge_start || !m->vert_edge)
-        return BAD("missing array (positions, triangles, normals, edges or vertex edges)",
-                   0, 0, 0);
+        return BAD("an array is missing (positions, triangles, normals, edges or vertex edges)");
     if ((m->uv != NULL) != (m->tri_uv != NULL) || (m->uv && !m->nuvs))
-        return BAD("texture coordinates without their indices, or none of them (%lu)",
-                   m->nuvs, 0, 0);
-    if (m->nfeature_edges && (!m->feature || !m->edge_feature))
-        return BAD("%lu feature edges but no feature segments", m->nfeature_edges, 0, 0);
+        return BAD("texture coordinates (%lu) without their indices, or indices without them", UL(m->nuvs));
     if (m->nfeature_edges > m->nedges)
-        return BAD("%lu feature edges of %lu edges", m->nfeature_edges, m->nedges, 0);
+        return BAD("%lu feature edges of %lu edges", UL(m->nfeature_edges), UL(m->nedges));
+    if (m->nfeature_edges && (!m->feature || !m->edge_feature))
+        return BAD("%lu feature edges but no feature segments", UL(m->nfeature_edges));
     return SILK_OK;
 }
 
@@ -72,14 +70,13 @@ static silk_status check_vertices(const silk_mesh *m, const char *name, silk_err
 {
     for (uint32_t v = 0; v < m->nverts; v++)
         if (!in_coord_range(m->pos[v]))
-            return BAD("vertex %lu is outside +-%lu", v, (unsigned long)(SILK_COORD_MAX >> 16), 0);
+            return BAD("vertex %lu is outside +-%lu", UL(v), UL(SILK_COORD_MAX >> SILK_FX_SHIFT));
     for (uint32_t i = 0; i < m->nnormals; i++) {
         int64_t q = silk_v3_dot64(m->normal[i], m->normal[i]) - ((int64_t)1 << 32);
-        if (q > UNIT_SLACK || q < -UNIT_SLACK)
-            return BAD("normal %lu is not of unit length", i, 0, 0);
+        if (q > UNIT_SLACK || q < -UNIT_SLACK) return BAD("normal %lu is not of unit length", UL(i));
         if (m->normal_vertex[i] >= m->nverts)
-            return BAD("normal %lu belongs to vertex %lu (%lu vertices)", i, m->normal_vertex[i],
-                       m->nverts);
+            return BAD("normal %lu belongs to vertex %lu (%lu vertices)", UL(i), UL(m->normal_vertex[i]),
+                       UL(m->nverts));
     }
     return SILK_OK;
 }
@@ -88,21 +85,25 @@ static silk_status check_triangles(const silk_mesh *m, const char *name, silk_er
 {
     for (uint32_t t = 0; t < m->ntris; t++) {
         for (uint32_t k = 0; k < 3; k++) {
-            size_t c = 3 * (size_t)t + k, c1 = 3 * (size_t)t + (k + 1) % 3;
+            size_t c = 3 * (size_t)t + k;
             silk_index v = m->tri[c], n = m->tri_normal[c], e = m->tri_edge[c];
-            if (v >= m->nverts || m->tri[c1] >= m->nverts)
-                return BAD("triangle %lu uses vertex %lu (%lu vertices)", t, v, m->nverts);
+            if (v >= m->nverts)
+                return BAD("triangle %lu uses vertex %lu (%lu vertices)", UL(t), UL(v), UL(m->nverts));
             if (n >= m->nnormals)
-                return BAD("triangle %lu uses normal %lu (%lu normals)", t, n, m->nnormals);
+                return BAD("triangle %lu uses normal %lu (%lu normals)", UL(t), UL(n), UL(m->nnormals));
             if (m->normal_vertex[n] != v)
-                return BAD("triangle %lu: normal %lu belongs to another vertex than %lu", t, n, v);
+                return BAD("triangle %lu: normal %lu belongs to vertex %lu, not %lu", UL(t), UL(n),
+                           UL(m->normal_vertex[n]), UL(v));
             if (m->tri_uv && m->tri_uv[c] >= m->nuvs)
-                return BAD("triangle %lu uses texture coordinate %lu (%lu given)", t, m->tri_uv[c],
-                           m->nuvs);
-            if (e >= m->nedges)
-                return BAD("triangle %lu uses edge %lu (%lu edges)", t, e, m->nedges);
-            if (!edge_joins(&m->edge[e], v, m->tri[c1]))
-                return BAD("triangle %lu: side %lu is not edge %lu", t, k, e);
+                return BAD("triangle %lu uses texture coordinate %lu (%lu given)", UL(t), UL(m->tri_uv[c]),
+                           UL(m->nuvs));
+            if (e >= m->nedges) return BAD("triangle %lu uses edge %lu (%lu edges)", UL(t), UL(e), UL(m->nedges));
+        }
+        /* all three corners are in range now */
+        for (uint32_t k = 0; k < 3; k++) {
+            size_t c = 3 * (size_t)t + k, c1 = 3 * (size_t)t + (k + 1) % 3;
+            if (!edge_joins(&m->edge[m->tri_edge[c]], m->tri[c], m->tri[c1]))
+                return BAD("triangle %lu: side %lu is not its edge %lu", UL(t), UL(k), UL(m->tri_edge[c]));
         }
     }
     return SILK_OK;
@@ -114,57 +115,58 @@ static silk_status check_edges(const silk_mesh *m, const char *name, silk_error 
     for (uint32_t e = 0; e < m->nedges; e++) {
         const silk_edge *ed = &m->edge[e];
         if (ed->v[0] > ed->v[1] || ed->v[1] >= m->nverts)
-            return BAD("edge %lu joins vertices %lu and %lu (out of order or range)", e, ed->v[0],
-                       ed->v[1]);
+            return BAD("edge %lu joins vertices %lu and %lu (out of order or range)", UL(e), UL(ed->v[0]),
+                       UL(ed->v[1]));
         ends += ed->v[0] == ed->v[1] ? 1 : 2;
-        if (ed->t[0] >= m->ntris || !tri_has_edge(m, ed->t[0], e))
-            return BAD("edge %lu: its triangle %lu does not use it", e, ed->t[0], 0);
-        if (ed->t[1] != SILK_NO_INDEX && (ed->t[1] >= m->ntris || !tri_has_edge(m, ed->t[1], e)))
-            return BAD("edge %lu: its triangle %lu does not use it", e, ed->t[1], 0);
+        for (int s = 0; s < 2; s++) {
+            silk_index t = ed->t[s];
+            if (s == 1 && t == SILK_NO_INDEX) continue;
+            if (t >= m->ntris || !tri_has_edge(m, t, e))
+                return BAD("edge %lu: its triangle %lu does not use it", UL(e), UL(t));
+        }
         if (m->edge_feature && m->edge_feature[e] != SILK_NO_INDEX && m->edge_feature[e] >= m->nfeature_edges)
-            return BAD("edge %lu has feature segment %lu (%lu segments)", e, m->edge_feature[e],
-                       m->nfeature_edges);
+            return BAD("edge %lu has feature segment %lu (%lu segments)", UL(e), UL(m->edge_feature[e]),
+                       UL(m->nfeature_edges));
     }
 
     const uint32_t *start = m->vert_edge_start;
-    if (start[0] != 0) return BAD("vertex-edge list starts at %lu, not 0", start[0], 0, 0);
-    if (start[m->nverts] != ends)
-        return BAD("vertex-edge lists hold %lu entries for %lu edge ends", start[m->nverts],
-                   (unsigned long)ends, 0);
+    if (start[0] != 0) return BAD("the vertex-edge lists start at %lu, not 0", UL(start[0]));
     for (uint32_t v = 0; v < m->nverts; v++) {
-        if (start[v + 1] < start[v])
-            return BAD("vertex-edge list of vertex %lu ends before it starts", v, 0, 0);
+        if (start[v + 1] < start[v] || start[v + 1] > ends)
+            return BAD("the vertex-edge list of vertex %lu runs from %lu to %lu", UL(v), UL(start[v]),
+                       UL(start[v + 1]));
         for (uint32_t i = start[v]; i < start[v + 1]; i++) {
             silk_index e = m->vert_edge[i];
             if (e >= m->nedges || (m->edge[e].v[0] != v && m->edge[e].v[1] != v))
-                return BAD("vertex %lu lists edge %lu, which does not end there", v, e, 0);
+                return BAD("vertex %lu lists edge %lu, which does not end there", UL(v), UL(e));
         }
     }
+    if (start[m->nverts] != ends)
+        return BAD("the vertex-edge lists hold %lu entries for %lu edge ends", UL(start[m->nverts]), UL(ends));
     return SILK_OK;
 }
 
 static silk_status check_vis(const silk_mesh *m, const char *name, silk_error *err)
 {
     const silk_vis *vis = m->vis;
-    if (!vis) return SILK_OK;
-    /* A hierarchy built for other normals is ignored by the renderer (it
-     * falls back to the brute pass), so only a matching one must be sound. */
-    if (vis->nnormals != m->nnormals) return SILK_OK;
+    /* A hierarchy built for other normals is not used (the renderer takes
+     * the brute pass instead), so only a matching one must be sound. */
+    if (!vis || vis->nnormals != m->nnormals) return SILK_OK;
     uint32_t nn = vis->nnodes, n = vis->nnormals;
-    if (nn && !vis->node) return BAD("visibility hierarchy of %lu nodes has none", nn, 0, 0);
+    if (nn && !vis->node) return BAD("the visibility hierarchy's %lu nodes are missing", UL(nn));
     if (vis->scale_log2 < 0 || vis->scale_log2 > 46)
-        return BAD("visibility scale 2^%lu is out of range", (unsigned long)vis->scale_log2, 0,
-                   0);
+        return BAD("visibility scale 2^%ld is out of range", (long)vis->scale_log2);
     for (uint32_t i = 0; i < nn; i++) {
         const silk_vis_node *c = &vis->node[i];
-        uint32_t end = c->skip < nn ? vis->node[c->skip].first : n;
         if (c->skip <= i || c->skip > nn)
-            return BAD("visibility node %lu skips to %lu (%lu nodes)", i, c->skip, nn);
+            return BAD("visibility node %lu skips to %lu (%lu nodes)", UL(i), UL(c->skip), UL(nn));
+        uint32_t end = c->skip < nn ? vis->node[c->skip].first : n;
         if (c->first > end || end > n)
-            return BAD("visibility node %lu holds normals %lu..%lu", i, c->first, end);
-        /* a child's range lies inside its parent's */
+            return BAD("visibility node %lu holds normals %lu to %lu (%lu normals)", UL(i), UL(c->first), UL(end),
+                       UL(n));
+        /* a child's normals lie inside its parent's */
         if (c->skip > i + 1 && vis->node[i + 1].first < c->first)
-            return BAD("visibility node %lu starts before its parent %lu", i + 1, i, 0);
+            return BAD("visibility node %lu starts before its parent %lu", UL(i + 1), UL(i));
     }
     return SILK_OK;
 }

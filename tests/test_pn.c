@@ -271,6 +271,27 @@ static uint32_t crack_check(const silk_mesh *m, const silk_frame_geom *g, uint32
     return bad;
 }
 
+/* Records at the same position must carry the same normal where the mesh
+ * has one normal per vertex (no split normals): smooth shading across the
+ * patches, bit for bit.  Returns the number of positions where they differ. */
+static uint32_t normal_seams(const silk_mesh *m, const silk_frame_geom *g)
+{
+    silk_geom geom = { .mesh = m, .curves = g->curve, .offsets = g->offset, .patches = g->patch };
+    dedge *pn = malloc(sizeof *pn * (g->nvrec ? g->nvrec : 1));
+    for (uint32_t i = 0; i < g->nvrec; i++) {
+        silk_vertex_attr at;
+        silk_vrec_eval(&geom, &g->vrec[i], &at);
+        dedge x = { { at.pos.x, at.pos.y, at.pos.z, at.normal.x, at.normal.y, at.normal.z } };
+        pn[i] = x;
+    }
+    qsort(pn, g->nvrec, sizeof *pn, cmp_dedge);
+    uint32_t seams = 0;
+    for (uint32_t i = 1; i < g->nvrec; i++)
+        if (memcmp(pn[i].k, pn[i - 1].k, 3 * sizeof(int32_t)) == 0 && cmp_dedge(&pn[i], &pn[i - 1]) != 0) seams++;
+    free(pn);
+    return seams;
+}
+
 /* ---- tests ------------------------------------------------------------------------ */
 
 /* Eqs. 7 and 8 on random edges and normals at several scales.  Eq. 7 is
@@ -559,7 +580,8 @@ TEST(sphere_closer_than_facets)
 /* The shared meshes at several levels, both normal modes: every directed
  * edge of the output meets its reverse exactly once.  fandisk-128's split
  * normals would crack with Vlachos' per-triangle b210; this checks that they
- * do differ there, and that the patches still close. */
+ * do differ there, and that the patches still close.  On the two meshes
+ * without split normals the normals meet bit for bit too. */
 TEST(crack_free_shared_meshes)
 {
     static const char *names[] = { "sphere-200.obj", "fandisk-128.obj", "torus-576.obj" };
@@ -588,6 +610,10 @@ TEST(crack_free_shared_meshes)
                 uint32_t checked, bad = crack_check(&m, &g, &checked);
                 CHECKF(bad == 0 && checked == 3 * m.ntris * levels[l] * levels[l], "%s level %u: %u of %u edges unpaired",
                        names[f], levels[l], bad, checked);
+                if (f != 1) {
+                    uint32_t seams = normal_seams(&m, &g);
+                    CHECKF(seams == 0, "%s level %u: %u normal seams", names[f], levels[l], seams);
+                }
                 silk_arena_top_release(&a, &mk);
             }
     }

@@ -234,14 +234,19 @@ void cli_print_scene_help(FILE *f)
             "Frame:\n"
             "  --size WxH           image size in pixels, 1..%d each (default %dx%d)\n"
             "  --format rgb888|rgb565  pixel format silk renders in (default %s)\n"
-            "  --mode flat|smooth   coarse mesh as it is, or smoothed silhouettes (default)\n"
+            "  --mode flat|smooth|pn|blend  coarse mesh as it is, smoothed silhouettes\n"
+            "                       (default), PN triangles, or silhouetteness blending\n"
+            "                       (Dyken & Reimers); docs/methods.md\n"
             "  --tolerance PX       silhouette sampling tolerance in pixels, 0.25..4 (%g)\n"
+            "  --level L            pn: segments per triangle side, 1..%u (default %u)\n"
+            "  --pn-normals quadratic|linear  pn: normal patch (default quadratic)\n"
+            "  --beta B             blend: silhouetteness transition, 0..1 (default %g)\n"
             "  --bg RRGGBB          background colour in hex (default %06x)\n"
             "  --wire               draw the edges; triangles added by smoothing in red\n",
             cli_fx_to_double(SILK_DEFAULT_CREASE_DEG), cli_fx_to_double(SILK_FOV_MIN),
             cli_fx_to_double(SILK_FOV_MAX), CLI_DEFAULT_FOV, CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT,
             SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", cli_fx_to_double(ro.tolerance_px),
-            (unsigned)ro.bg_rgb);
+            SILK_PN_MAX_LEVEL, (unsigned)ro.level, cli_fx_to_double(ro.blend_beta), (unsigned)ro.bg_rgb);
 }
 
 static int parse_fx(const char *opt, const char *s, double lo, double hi, silk_fx *out)
@@ -322,7 +327,22 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         VALUE();
         if (strcmp(v, "flat") == 0) o->render.mode = SILK_MODE_FLAT;
         else if (strcmp(v, "smooth") == 0) o->render.mode = SILK_MODE_SMOOTH;
-        else return cli_fail(-1, "--mode must be flat or smooth (got \"%s\")", v);
+        else if (strcmp(v, "pn") == 0) o->render.mode = SILK_MODE_PN;
+        else if (strcmp(v, "blend") == 0) o->render.mode = SILK_MODE_BLEND;
+        else return cli_fail(-1, "--mode must be flat, smooth, pn or blend (got \"%s\")", v);
+    } else if (cli_is(arg, "--level")) {
+        VALUE();
+        long l;
+        r = cli_parse_long(opt, v, 1, SILK_PN_MAX_LEVEL, &l);
+        if (!r) o->render.level = (uint32_t)l;
+    } else if (cli_is(arg, "--pn-normals")) {
+        VALUE();
+        if (strcmp(v, "quadratic") == 0) o->render.pn_normals = SILK_PN_QUADRATIC;
+        else if (strcmp(v, "linear") == 0) o->render.pn_normals = SILK_PN_LINEAR;
+        else return cli_fail(-1, "--pn-normals must be quadratic or linear (got \"%s\")", v);
+    } else if (cli_is(arg, "--beta")) {
+        VALUE();
+        r = parse_fx(opt, v, 0, 1, &o->render.blend_beta);
     } else if (cli_is(arg, "--tolerance")) {
         VALUE();
         r = parse_fx(opt, v, 0.25, 4, &o->render.tolerance_px);

@@ -1,17 +1,35 @@
 /*
  * cmd_render.c - `silk render MESH -o OUT.png`: load a mesh, render one frame
  * with silk_render() through the default Phong stages, write PNG or PPM.
+ * Series of frames: --turntable N views around the model (one numbered file
+ * each, or one contact sheet with --sheet), --modes to compare render modes
+ * side by side, --zoom for a close-up of the silhouette.
  *
  * The output is written atomically, and when the command fails a file left
  * at OUT by an earlier run is removed, so OUT exists afterwards only if this
  * run produced it.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "sheet.h"
 #include "../platform/platform.h"
+
+/* Frame series: --turntable, --modes, --sheet, --zoom. */
+#define SERIES_MAX_VIEWS 360
+#define SERIES_MAX_MODES 8
+
+typedef struct series {
+    int views;                       /* --turntable N; 1 without */
+    int nmodes;                      /* 0: the one --mode of the scene options */
+    silk_mode mode[SERIES_MAX_MODES];
+    uint32_t level[SERIES_MAX_MODES];
+    int sheet;
+    double zoom;                     /* --zoom Z; 0 without */
+} series;
 
 static void help(FILE *f)
 {
@@ -21,14 +39,28 @@ static void help(FILE *f)
             "Render MESH (OBJ or PLY) to an image; the format follows OUT's extension.\n"
             "\n"
             "  -o, --output OUT     the image to write (.png or .ppm); written atomically\n"
-            "  --compare            flat and smooth side by side (an image twice as wide)\n");
+            "  --compare            flat and smooth side by side (an image twice as wide)\n"
+            "Series (docs/viewer.md):\n"
+            "  --turntable N        N views around the model (1..%d), turning about the up\n"
+            "                       axis from the first view; OUT holds the frame number,\n"
+            "                       e.g. -o out/turn_%%03d.png, unless --sheet\n"
+            "  --modes LIST         render modes to compare, e.g. flat,smooth,blend,pn\n"
+            "                       (pnL: PN triangles at level L); needs --sheet for more\n"
+            "                       than one\n"
+            "  --sheet              one contact sheet at OUT: the modes side by side, the\n"
+            "                       views in rows, each labelled with mode and triangles drawn\n"
+            "  --zoom Z             close-up, Z times (1..64) magnified around the model's\n"
+            "                       rightmost point on screen (a point of its silhouette)\n",
+            SERIES_MAX_VIEWS);
     cli_print_scene_help(f);
     fprintf(f,
             "\n"
             "examples:\n"
             "  silk render sphere.obj -o sphere.png\n"
             "  silk render bunny.obj -o bunny.png --size 1024x768 --mode flat --wire\n"
-            "  silk render torus.obj -o t.ppm --eye 0,3,3 --ortho 1.6 --format rgb565\n");
+            "  silk render torus.obj -o t.ppm --eye 0,3,3 --ortho 1.6 --format rgb565\n"
+            "  silk render bunny.obj --turntable 36 -o out/turn_%%03d.png\n"
+            "  silk render bunny.obj --modes flat,smooth,blend,pn --sheet -o modes.png --size 320x240\n");
 }
 
 /* Copy a w x h frame into columns [x0, x0+w) of a wider image. */
@@ -98,12 +130,245 @@ static int render(cli_scene_opts *o, const char *out, int compare)
     }
 }
 
+/* ---- frame series ----------------------------------------------------------------- */
+
+static void v3_to_double(silk_vec3 v, double d[3])
+{
+    d[0] = cli_fx_to_double(v.x);
+    d[1] = cli_fx_to_double(v.y);
+    d[2] = cli_fx_to_double(v.z);
+}
+
+/* The close-up: the same eye, looking at the vertex that lies farthest
+ * right on screen (on the outline of the coarse mesh, so on a silhouette),
+ * with the view zoom times narrower. */
+static int zoom_camera(const cli_scene *s, double zoom, silk_camera *cam)
+{
+    silk_view v;
+    silk_error err;
+    if (silk_view_init(&v, cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
+    silk_fx best = SILK_FX_MIN;
+    for (uint32_t i = 0; i < s->mesh.nverts; i++) {
+        silk_vec2 px;
+        if (silk_view_project(&v, s->mesh.pos[i], &px) && px.x > best) {
+            best = px.x;
+            cam->target = s->mesh.pos[i];
+        }
+    }
+    if (cam->ortho) {
+        cam->ortho_half_height = (silk_fx)lround(cli_fx_to_double(cam->ortho_half_height) / zoom * 65536);
+        if (cam->ortho_half_height < SILK_ZNEAR_MIN)
+            return cli_fail(CLI_EXIT_USAGE, "--zoom %g: the view would be smaller than 1/1024 model units", zoom);
+    } else {
+        const double deg = 3.14159265358979323846 / 180;
+        double fov = 2 * atan(tan(cli_fx_to_double(cam->fov_deg) * deg / 2) / zoom) / deg;
+        if (fov < cli_fx_to_double(SILK_FOV_MIN))
+            return cli_fail(CLI_EXIT_USAGE, "--zoom %g: the field of view would be %.2f degrees (at least %g)", zoom, fov,
+                            cli_fx_to_double(SILK_FOV_MIN));
+        cam->fov_deg = (silk_fx)lround(fov * 65536);
+    }
+    return 0;
+}
+
+/* View k of the series: the scene's camera turned k/views of a full turn
+ * about its up axis through the target (Rodrigues' rotation), with near and
+ * far planes placed again by cli_camera. */
+static int series_view(const cli_scene_opts *o, const cli_scene *s, const series *se, int k, silk_view *v)
+{
+    silk_camera cam = s->cam;
+    if (k > 0) {
+        double e[3], t[3], u[3], d[3], r[3];
+        v3_to_double(cam.eye, e);
+        v3_to_double(cam.target, t);
+        v3_to_double(cam.up, u);
+        double ul = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        for (int i = 0; i < 3; i++) {
+            u[i] /= ul;
+            d[i] = e[i] - t[i];
+        }
+        double a = 2 * 3.14159265358979323846 * k / se->views, c = cos(a), sn = sin(a);
+        double ud = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
+        double x[3] = { u[1] * d[2] - u[2] * d[1], u[2] * d[0] - u[0] * d[2], u[0] * d[1] - u[1] * d[0] };
+        for (int i = 0; i < 3; i++) r[i] = d[i] * c + x[i] * sn + u[i] * ud * (1 - c);
+        cli_scene_opts turned = *o;
+        turned.have_eye = turned.have_target = turned.have_up = 1;
+        for (int i = 0; i < 3; i++) {
+            turned.eye[i] = t[i] + r[i];
+            turned.target[i] = t[i];
+            turned.up[i] = u[i];
+        }
+        int rc = cli_camera(&turned, &s->mesh, &cam);
+        if (rc) return rc;
+    }
+    if (se->zoom > 1) {
+        int rc = zoom_camera(s, se->zoom, &cam);
+        if (rc) return rc;
+    }
+    silk_error err;
+    if (silk_view_init(v, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
+    return 0;
+}
+
+/* The label under a cell: mode and triangles drawn, then what else tells
+ * the frames apart. */
+static void cell_label(const series *se, const silk_render_opts *ro, const silk_frame_stats *st, int k,
+                       char *buf, size_t n)
+{
+    char mode[16], more[64];
+    if (ro->mode == SILK_MODE_PN) snprintf(mode, sizeof mode, "pn%u", (unsigned)ro->level);
+    else snprintf(mode, sizeof mode, "%s", sheet_mode_name(ro->mode));
+    if (se->views > 1)
+        snprintf(more, sizeof more, "view %d/%d, +%g deg", k + 1, se->views, 360.0 * k / se->views);
+    else if (ro->mode == SILK_MODE_SMOOTH)
+        snprintf(more, sizeof more, "%u silhouette, tol %g", (unsigned)st->silhouette_tris,
+                 cli_fx_to_double(ro->tolerance_px));
+    else if (ro->mode == SILK_MODE_BLEND)
+        snprintf(more, sizeof more, "beta %g, tol %g", cli_fx_to_double(ro->blend_beta),
+                 cli_fx_to_double(ro->tolerance_px));
+    else if (ro->mode == SILK_MODE_PN)
+        snprintf(more, sizeof more, "level %u, %s normals", (unsigned)ro->level,
+                 ro->pn_normals == SILK_PN_LINEAR ? "linear" : "quadratic");
+    else
+        snprintf(more, sizeof more, "the coarse mesh");
+    snprintf(buf, n, "%s  %u tris\n%s", mode, (unsigned)st->tris_drawn, more);
+}
+
+static void sheet_title(const cli_scene_opts *o, const series *se, char *buf, size_t n)
+{
+    const char *base = strrchr(o->mesh_path, '/');
+    base = base ? base + 1 : o->mesh_path;
+    snprintf(buf, n, "%s  %dx%d %s%s%s", base, o->width, o->height, o->ortho ? "orthographic" : "perspective",
+             o->render.wire ? ", wireframe" : "", se->zoom > 1 ? ", close-up" : "");
+    if (se->zoom > 1) snprintf(buf + strlen(buf), n - strlen(buf), " x%g", se->zoom);
+}
+
+/* Render every view and mode of the series from the loaded scene s: into
+ * one sheet, or each frame into its own file (*written counts them). */
+static int series_frames(const cli_scene_opts *o, const char *out, const series *se, cli_scene *s, int *fell_back,
+                         int *written)
+{
+    int nmodes = se->nmodes ? se->nmodes : 1, cols, rows, rc = 0;
+    if (nmodes > 1) {
+        cols = nmodes;
+        rows = se->views;
+    } else {
+        for (cols = 1; cols * cols < se->views; cols++) {}
+        rows = (se->views + cols - 1) / cols;
+    }
+    sheet sh;
+    memset(&sh, 0, sizeof sh);
+    if (se->sheet) {
+        char title[200];
+        sheet_title(o, se, title, sizeof title);
+        if (sheet_init(&sh, cols, rows, o->width, o->height, title)) {
+            sheet_free(&sh);
+            return CLI_EXIT_INPUT;
+        }
+    }
+    for (int k = 0; k < se->views && !rc; k++) {
+        silk_view view;
+        if ((rc = series_view(o, s, se, k, &view)) != 0) break;
+        silk_phong phong;
+        silk_hal hal;
+        silk_phong_default(&phong, &view);
+        silk_hal_phong(&hal, &phong);
+        for (int m = 0; m < nmodes && !rc; m++) {
+            silk_render_opts ro = o->render;
+            if (se->nmodes) {
+                ro.mode = se->mode[m];
+                if (se->level[m]) ro.level = se->level[m];
+            }
+            silk_error err;
+            silk_frame_stats st;
+            if (silk_render(&s->arena, &s->mesh, &view, &hal, &ro, &s->target, &st, &err) != SILK_OK) {
+                rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", o->mesh_path, err.msg);
+                break;
+            }
+            *fell_back |= st.fell_back;
+            if (se->sheet) {
+                char label[160];
+                cell_label(se, &ro, &st, k, label, sizeof label);
+                int c = nmodes > 1 ? m : k % cols, r = nmodes > 1 ? k : k / cols;
+                sheet_put(&sh, c, r, &s->target, label);
+                continue;
+            }
+            char path[4096];
+            if (se->views > 1 ? pattern_path(out, k, path, sizeof path) : (int)strlen(out) >= (int)sizeof path) {
+                rc = cli_fail(CLI_EXIT_USAGE, "render: output name too long: %s", out);
+                break;
+            }
+            if (se->views == 1) strcpy(path, out);
+            if (silk_image_write(&s->target, path, &err) != SILK_OK) {
+                rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+                break;
+            }
+            ++*written;
+        }
+    }
+    if (se->sheet && !rc) {
+        silk_error err;
+        if (sheet_write(&sh, out, &err) != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    }
+    sheet_free(&sh);
+    return rc;
+}
+
+static int render_series(cli_scene_opts *o, const char *out, const series *se)
+{
+    for (int attempt = 0;; attempt++) {
+        cli_scene s;
+        o->arena_doublings = attempt;
+        int rc = cli_scene_load(&s, o);
+        int fell_back = 0, written = 0;
+        if (!rc) rc = series_frames(o, out, se, &s, &fell_back, &written);
+        cli_scene_free(&s);
+        /* As in render(): a frame that ran out of scratch means a larger
+         * arena and the whole series again. */
+        if (!rc && fell_back && !o->arena_bytes && attempt < 4) continue;
+        if (rc && se->views > 1 && !se->sheet) {
+            char path[4096];
+            for (int k = 0; k < written; k++)
+                if (pattern_path(out, k, path, sizeof path) == 0) silk_file_remove_stale(path);
+        }
+        if (!rc && fell_back)
+            fprintf(stderr, "silk: warning: the arena ran out during a frame; part of it is not smoothed\n");
+        return rc;
+    }
+}
+
+/* --modes LIST: comma-separated mode names (sheet.h). */
+static int parse_modes(const char *list, series *se)
+{
+    const char *p = list;
+    se->nmodes = 0;
+    for (;;) {
+        size_t len = strcspn(p, ",");
+        char name[16];
+        if (len == 0 || len >= sizeof name) goto bad;
+        memcpy(name, p, len);
+        name[len] = 0;
+        if (se->nmodes == SERIES_MAX_MODES)
+            return cli_fail(-1, "--modes: at most %d modes (got \"%s\")", SERIES_MAX_MODES, list);
+        se->level[se->nmodes] = 0;
+        if (sheet_parse_mode(name, &se->mode[se->nmodes], &se->level[se->nmodes])) goto bad;
+        se->nmodes++;
+        if (!p[len]) return 0;
+        p += len + 1;
+    }
+bad:
+    return cli_fail(-1, "--modes must list flat, smooth, blend, pn or pnL (L 1..%u) separated by commas (got \"%s\")",
+                    SILK_PN_MAX_LEVEL, list);
+}
+
 int cmd_render(int argc, char **argv)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);
     const char *out = NULL;
-    int compare = 0, rc = 0;
+    int compare = 0, rc = 0, use_series = 0;
+    series se;
+    memset(&se, 0, sizeof se);
+    se.views = 1;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -117,6 +382,22 @@ int cmd_render(int argc, char **argv)
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--compare") == 0) {
             compare = 1;
+        } else if (cli_is(a, "--turntable")) {
+            const char *v = cli_value(argc, argv, &i);
+            long n;
+            if (!v || cli_parse_long("--turntable", v, 1, SERIES_MAX_VIEWS, &n)) rc = CLI_EXIT_USAGE;
+            else se.views = (int)n;
+            use_series = 1;
+        } else if (cli_is(a, "--modes")) {
+            const char *v = cli_value(argc, argv, &i);
+            if (!v || parse_modes(v, &se)) rc = CLI_EXIT_USAGE;
+            use_series = 1;
+        } else if (strcmp(a, "--sheet") == 0) {
+            se.sheet = use_series = 1;
+        } else if (cli_is(a, "--zoom")) {
+            const char *v = cli_value(argc, argv, &i);
+            if (!v || cli_parse_double("--zoom", v, 1, 64, &se.zoom)) rc = CLI_EXIT_USAGE;
+            use_series = 1;
         } else if (a[0] == '-' && a[1]) {
             rc = cli_fail(CLI_EXIT_USAGE, "render: unknown option %s (try silk render --help)", a);
         } else if (o.mesh_path) {
@@ -129,7 +410,16 @@ int cmd_render(int argc, char **argv)
     if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "render: no output given (-o OUT.png or OUT.ppm)");
     if (!rc && silk_image_format_for_path(out) == SILK_IMAGE_NONE)
         rc = cli_fail(CLI_EXIT_USAGE, "render: %s: unknown image format (use .png or .ppm)", out);
-    if (!rc) rc = render(&o, out, compare);
+    if (!rc && use_series) {
+        if (compare)
+            rc = cli_fail(CLI_EXIT_USAGE, "render: --compare is flat|smooth in one image; for a series use --modes flat,smooth --sheet");
+        else if (se.nmodes > 1 && !se.sheet)
+            rc = cli_fail(CLI_EXIT_USAGE, "render: --modes with %d modes needs --sheet (they go side by side into one image)", se.nmodes);
+        else if (se.views > 1 && !se.sheet && pattern_check(out) != 1)
+            rc = cli_fail(CLI_EXIT_USAGE, "render: --turntable %d writes %d images: -o needs one frame number such as "
+                          "turn_%%03d.png (or use --sheet for one image)", se.views, se.views);
+    }
+    if (!rc) rc = use_series ? render_series(&o, out, &se) : render(&o, out, compare);
 
     /* An image at OUT after a failure would be an earlier run's (but never
      * remove the input: "silk render x.ppm -o x.ppm" fails to load it). */

@@ -9,8 +9,10 @@
 #define SILK_TOOLS_SHEET_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "silk/error.h"
 #include "silk/raster.h"
+#include "silk/render.h"
 
 #define SHEET_GAP 6            /* pixels between cells and around the grid */
 #define SHEET_LABEL_LINES 2    /* lines of text under each cell */
@@ -49,5 +51,15 @@ void sheet_free(sheet *s);
  * does not fit n bytes (or the pattern is bad). */
 int pattern_check(const char *pattern);
 int pattern_path(const char *pattern, long k, char *buf, size_t n);
+
+/* ---- render modes by name ------------------------------------------------------
+ *
+ * "flat", "smooth", "blend", "pn" (PN triangles at the default level) and
+ * "pnL" (level L, 1..SILK_PN_MAX_LEVEL), as in `--modes flat,smooth,blend,pn3`.
+ * sheet_parse_mode returns 0, or -1 for an unknown name; *level is left
+ * alone unless the name gives one. */
+int sheet_parse_mode(const char *name, silk_mode *mode, uint32_t *level);
+/* "flat", "smooth", "blend" or "pn". */
+const char *sheet_mode_name(silk_mode mode);
 
 #endif

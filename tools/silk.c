@@ -10,6 +10,7 @@
 
 /* Small devices: tools/cmd_pack.c, cmd_profile.c, cmd_fbview.c. */
 int cmd_pack(int argc, char **argv);
+int cmd_view(int argc, char **argv);
 
 typedef struct command {
     const char *name;
@@ -21,9 +22,11 @@ static const command commands[] = {
     { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY) to PNG or PPM" },
     { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
-    { "bench", cmd_bench, "bench [--visibility] MESH...", "time and silhouette error per render mode (or visibility)" },
+    { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility" },
+    { "simplify", cmd_simplify, "simplify IN OUT --triangles N", "fewer triangles, by quadric edge collapse" },
     { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
     { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },
+    { "view", cmd_view, "view MESH --fb /dev/fb0", "the model turning on a framebuffer" },
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 

@@ -1,0 +1,78 @@
+#!/bin/sh
+# seeds.sh SILK MKSEED OUT - the seed corpora of the fuzz harnesses, written
+# into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_render and OUT/fuzz_pack from:
+#   - the malformed-input corpus tests/bad/ (each file one error path),
+#   - the regression inputs tests/regress/HARNESS/ (every finding so far),
+#   - small meshes from `silk gen` (every shape, few triangles) and a few
+#     of the smallest shared meshes, as OBJ and as PLY in all three
+#     encodings (mkseed), and a handful of hand-written hard cases,
+#   - for fuzz_render and fuzz_pack, those meshes behind a scene header or
+#     edit list (the formats are described at the top of each harness).
+# Run from the repository root (make fuzz does).
+set -eu
+silk=$1
+mkseed=$2
+out=$3
+meshes=${SILK_MESHES:-../shared/meshes}
+
+rm -rf "$out"
+mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_render" "$out/fuzz_pack" "$out/shapes"
+
+# small generated shapes
+"$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
+"$silk" gen torus --segments 8 --bands 6 -o "$out/shapes/torus.obj" >/dev/null
+"$silk" gen cone --segments 8 -o "$out/shapes/cone.obj" >/dev/null
+"$silk" gen cylinder --segments 8 -o "$out/shapes/cylinder.obj" >/dev/null
+"$silk" gen knot --segments 24 --bands 4 -o "$out/shapes/knot.obj" >/dev/null
+for m in cone-70 fandisk-128 sphere-200; do
+    [ -f "$meshes/$m.obj" ] && cp "$meshes/$m.obj" "$out/shapes/$m.obj"
+done
+# hard cases: one triangle, an open strip, a non-manifold fin, smoothing
+# groups with uvs and normals, a zero-area triangle, a duplicate, a quad
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$out/shapes/one.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.2\nv 2 0 0\nf 1 2 3\nf 2 4 3\nf 2 5 4\n' >"$out/shapes/strip.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n' >"$out/shapes/fin.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\nvn 1 1 1\ns 1\nf 1/1/1 3/3/1 2/2/1\ns 2\nf 1/1/2 2/2/2 4/3/2\ns off\nf 1//1 4//1 3//1\nf -3/-1/-1 -2/-2/-2 -1/-3/-1\n' >"$out/shapes/groups.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\nf 1 2 4\nf 1 1 4\n' >"$out/shapes/degenerate.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\nf 1 2 3 4\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n' >"$out/shapes/pyramid.obj"
+
+cp tests/bad/*.obj "$out/fuzz_obj/"
+cp tests/bad/*.ply "$out/fuzz_ply/"
+cp "$out/shapes/"*.obj "$out/fuzz_obj/"
+for f in "$out/shapes/"*.obj; do
+    b=$(basename "$f" .obj)
+    for enc in ascii le be; do
+        "$mkseed" "ply-$enc" "$f" "$out/fuzz_ply/$b-$enc.ply"
+    done
+done
+for h in obj ply render pack; do
+    if [ -d "tests/regress/$h" ]; then
+        for f in tests/regress/"$h"/*; do
+            [ -f "$f" ] && [ "${f%.expected}" = "$f" ] && cp "$f" "$out/fuzz_$h/"
+        done
+    fi
+done
+
+# fuzz_render: 32-byte scene headers (see fuzz/fuzz_render.c) in front of meshes
+camera=090000002000400000000000000040000000000a14101f160240ff033c0000
+i=0
+for flags in 411f17 0c1f17 221f17 831f17 152010 010101; do
+    for f in "$out/shapes/"*.obj "$out/fuzz_ply/sphere-le.ply"; do
+        i=$((i + 1))
+        # every header gets two shapes; the mode cycles over all of them
+        [ $((i % 3)) -eq 0 ] || continue
+        "$mkseed" prefix "$flags$camera" "$f" "$out/fuzz_render/scene-$i"
+    done
+done
+# the same scene with 4 KB of frame memory, and seen from inside the model
+"$mkseed" prefix "411f17${camera%??????????}04033c0000" "$out/shapes/torus.obj" "$out/fuzz_render/small-arena"
+"$mkseed" prefix 411f1701000000000e0000000000000200040000000a14101f160240ff033c0000 \
+    "$out/shapes/sphere.obj" "$out/fuzz_render/eye-inside"
+
+# fuzz_pack: no edits or one edit, then the view byte, then a mesh
+for f in "$out/shapes/"*.obj; do
+    b=$(basename "$f" .obj)
+    "$mkseed" prefix 0001 "$f" "$out/fuzz_pack/$b"
+    "$mkseed" prefix 01040500070000"09" "$f" "$out/fuzz_pack/$b-edit"
+done
+rm -rf "$out/shapes"

@@ -1,0 +1,176 @@
+/*
+ * cmd_simplify.c - `silk simplify IN OUT --triangles N`: a coarse mesh from
+ * a fine one by quadric-error edge collapse (tools/simplify.c), written as
+ * OBJ.  The input is read by silk's own loader (so every format and every
+ * error message is the renderer's), its Q16.16 positions widened to double.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "measure.h"
+#include "simplify.h"
+#include "../platform/platform.h"
+
+static void help(FILE *f)
+{
+    fprintf(f,
+            "usage: silk simplify IN OUT.obj --triangles N [options]\n"
+            "\n"
+            "Simplify the mesh IN (OBJ or PLY) to N triangles by quadric-error edge\n"
+            "collapse (Garland-Heckbert) and write OUT as OBJ (atomically; - for stdout).\n"
+            "Boundary and crease edges are kept where possible; a closed manifold input\n"
+            "gives a closed manifold output (no collapse that breaks the surface or turns\n"
+            "a triangle over).  Prints one line:\n"
+            "  simplify IN OUT triangles=N vertices=N target=N collapses=N feature_edges=N\n"
+            "\n"
+            "options:\n"
+            "  --triangles N       the triangle count to reach (at least 4)\n"
+            "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
+            "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
+            "  --scale S           multiply coordinates by S while reading (as silk render)\n"
+            "\n"
+            "example:\n"
+            "  silk simplify bunny-fine.obj bunny-500.obj --triangles 500\n");
+}
+
+/* The mesh as silk loads it, positions widened to double. */
+static int load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
+{
+    uint8_t *data;
+    size_t len;
+    silk_error err;
+    memset(out, 0, sizeof *out);
+    if (silk_file_read(path, &data, &len, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    silk_load_opts lo;
+    silk_load_opts_default(&lo);
+    lo.scale = scale;
+    size_t size = len * 16 + ((size_t)4 << 20);
+    void *buf = NULL;
+    silk_arena a;
+    silk_mesh m;
+    silk_status st = SILK_ERR_NOMEM;
+    for (int attempt = 0; attempt < 5 && st == SILK_ERR_NOMEM; attempt++, size *= 2) {
+        free(buf);
+        if (!(buf = malloc(size))) break;
+        silk_arena_init(&a, buf, size);
+        st = silk_load_mesh(data, len, path, &lo, &a, &m, &err);
+    }
+    free(data);
+    int rc = 0;
+    if (!buf) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", path);
+    else if (st != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    else {
+        out->nverts = m.nverts;
+        out->ntris = m.ntris;
+        out->pos = malloc(3 * (size_t)(m.nverts ? m.nverts : 1) * sizeof *out->pos);
+        out->tri = malloc(3 * (size_t)(m.ntris ? m.ntris : 1) * sizeof *out->tri);
+        if (!out->pos || !out->tri) {
+            rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", path);
+        } else {
+            for (uint32_t i = 0; i < m.nverts; i++) {
+                out->pos[3 * i] = cli_fx_to_double(m.pos[i].x);
+                out->pos[3 * i + 1] = cli_fx_to_double(m.pos[i].y);
+                out->pos[3 * i + 2] = cli_fx_to_double(m.pos[i].z);
+            }
+            for (size_t i = 0; i < 3 * (size_t)m.ntris; i++) out->tri[i] = (uint32_t)m.tri[i];
+            *closed_manifold = m.nboundary_edges == 0 && m.nnonmanifold_edges == 0;
+        }
+    }
+    free(buf);
+    return rc;
+}
+
+static int write_obj(const simp_mesh *m, const char *in, const char *path, uint32_t target)
+{
+    silk_outfile o;
+    silk_error err;
+    FILE *f = stdout;
+    int to_stdout = strcmp(path, "-") == 0;
+    if (!to_stdout) {
+        if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+        f = o.fp;
+    }
+    fprintf(f, "# silk simplify %s --triangles %u: %u triangles, %u vertices\n", in, target, m->ntris, m->nverts);
+    for (uint32_t i = 0; i < m->nverts; i++)
+        fprintf(f, "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
+    for (uint32_t i = 0; i < m->ntris; i++)
+        fprintf(f, "f %u %u %u\n", m->tri[3 * i] + 1, m->tri[3 * i + 1] + 1, m->tri[3 * i + 2] + 1);
+    if (to_stdout) return fflush(stdout) == 0 ? 0 : cli_fail(CLI_EXIT_INPUT, "cannot write to stdout");
+    if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    return 0;
+}
+
+int cmd_simplify(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    long target = -1;
+    simp_opts so;
+    simp_opts_default(&so, 0);
+    silk_decimal scale = { 1, 0 };
+    int rc = 0;
+    for (int i = 1; i < argc && !rc; i++) {
+        const char *a = argv[i], *v;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            help(stdout);
+            return 0;
+        } else if (cli_is(a, "--triangles")) {
+            if (!(v = cli_value(argc, argv, &i)) || cli_parse_long("--triangles", v, 4, 100000000, &target))
+                rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--crease")) {
+            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--crease", v, 0, 180, &so.crease_deg))
+                rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--feature-weight")) {
+            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
+                rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--scale")) {
+            const char *end;
+            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+            else if (silk_decimal_parse(v, &end, &scale) != 0 || *end || scale.mant <= 0)
+                rc = cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
+        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
+            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+        } else if (a[0] == '-' && a[1]) {
+            rc = cli_fail(CLI_EXIT_USAGE, "simplify: unknown option %s (try silk simplify --help)", a);
+        } else if (!in) {
+            in = a;
+        } else if (!out) {
+            out = a;
+        } else {
+            rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", a);
+        }
+    }
+    if (!rc && (!in || !out)) rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
+    if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
+    if (rc) return rc;
+    so.target_tris = (uint32_t)target;
+
+    simp_mesh m;
+    int closed = 0;
+    if ((rc = load(in, scale, &m, &closed)) != 0) {
+        simp_free(&m);
+        return rc;
+    }
+    simp_stats st;
+    simp_topology topo;
+    if (simp_run(&m, &so, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
+    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
+        /* the checks in simplify.c should make this impossible */
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
+                      "%u non-manifold vertices, %u misoriented edges); not written",
+                      in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
+    else if ((rc = write_obj(&m, in, out, so.target_tris)) == 0) {
+        if (strcmp(out, "-") != 0)
+            printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
+                   m.ntris, m.nverts, so.target_tris, st.collapses, st.feature_edges);
+        if (m.ntris > so.target_tris + so.target_tris / 50)
+            fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
+                            "surface\n", in, m.ntris);
+    }
+    simp_free(&m);
+    if (rc && strcmp(out, "-") != 0) silk_file_remove_stale(out);
+    return rc;
+}
