@@ -25,6 +25,16 @@ PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 CORE_SRC  := $(wildcard src/*.c)
 PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/fb_sink.c
 TOOL_SRC  := $(wildcard tools/*.c)
+# The window of `silk view` needs SDL2 (docs/viewer.md); without it the rest
+# builds, and `silk view` offers only --fb, --benchmark and --events.
+SDL2_OK   := $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
+ifeq ($(SDL2_OK),1)
+  SDL2_CFLAGS := $(shell pkg-config --cflags sdl2)
+  SDL2_LIBS   := $(shell pkg-config --libs sdl2)
+else
+  TOOL_SRC  := $(filter-out tools/viewer_sdl.c,$(TOOL_SRC))
+  $(info silk: SDL2 not found (pkg-config sdl2): building without the viewer window)
+endif
 TEST_SRC  := $(wildcard tests/test_*.c)
 
 CORE_OBJ  := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
@@ -34,7 +44,7 @@ TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TEST_SUPPORT := $(wildcard tests/support/*.c)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o)
 
-.PHONY: all lib test test-fast check-nofloat demo install clean tests bench
+.PHONY: all lib test test-fast check-nofloat demo install clean tests bench fuzz fuzz-build
 all: $(BUILD)/libsilk.a $(BUILD)/silk
 
 lib: $(BUILD)/libsilk.a
@@ -46,6 +56,10 @@ $(BUILD)/obj/%.o: %.c
 # The tool takes its defaults (image size, pixel format) from the board.
 $(TOOL_OBJ): ALL_CFLAGS += $(BOARD_CFLAGS)
 $(TOOL_OBJ): boards/$(BOARD)/board.mk
+ifeq ($(SDL2_OK),1)
+$(BUILD)/obj/tools/cmd_view.o: ALL_CFLAGS += -DSILK_HAVE_SDL2
+$(BUILD)/obj/tools/viewer_sdl.o: ALL_CFLAGS += $(SDL2_CFLAGS) -DSILK_HAVE_SDL2
+endif
 
 $(BUILD)/libsilk.a: $(CORE_OBJ)
 	@mkdir -p $(dir $@)
@@ -55,7 +69,7 @@ $(BUILD)/libsilk_platform.a: $(PLAT_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm
 
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
@@ -87,9 +101,11 @@ test-fast: check-nofloat tests
 	SILK=$(BUILD)/silk sh tests/run.sh $(BUILD)
 
 # Per-frame visibility, brute pass against the hierarchy: out/bench_visibility.txt
-# (CALLGRIND=1 adds instruction counts).
+# (CALLGRIND=1 adds instruction counts).  Then the render modes side by side
+# (bench/modes.sh, docs/measurements.md): out/bench.md, bench.csv, bench.png.
 bench: $(BUILD)/silk
 	sh bench/visibility.sh $(BUILD)/silk out
+	sh bench/modes.sh $(BUILD)/silk out
 
 demo: $(BUILD)/silk
 	sh tools/demo.sh $(BUILD)/silk out
@@ -106,6 +122,42 @@ clean:
 
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d)
 
+# ---- fuzzing (docs/overflow.md, fuzz/run.sh) --------------------------------
+# `make fuzz FUZZ_SECONDS=N` builds every fuzz/fuzz_*.c harness with clang's
+# libFuzzer, ASan and UBSan (the core instrumented for coverage) and runs
+# each for N seconds from the seeds of fuzz/seeds.sh; a finding fails it.
+FUZZ_CC      ?= clang
+FUZZ_SECONDS ?= 60
+FUZZ_BUILD   := build-fuzz
+FUZZ_CFLAGS  := -std=c11 $(WARN) -O1 -g -Iinclude -fsanitize=address,undefined \
+                -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_SRC     := $(wildcard fuzz/fuzz_*.c)
+FUZZ_BIN     := $(FUZZ_SRC:fuzz/%.c=$(FUZZ_BUILD)/%)
+FUZZ_CORE_OBJ := $(CORE_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
+.SECONDARY: $(FUZZ_CORE_OBJ)
+
+$(FUZZ_BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
+
+$(FUZZ_BUILD)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz.h $(FUZZ_CORE_OBJ)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_CORE_OBJ)
+
+$(FUZZ_BUILD)/mkseed: fuzz/mkseed.c
+	@mkdir -p $(dir $@)
+	$(CC) -std=c11 $(WARN) -O2 -o $@ $<
+
+fuzz-build: $(FUZZ_BIN) $(FUZZ_BUILD)/mkseed
+
+fuzz: fuzz-build $(BUILD)/silk
+	sh fuzz/seeds.sh $(BUILD)/silk $(FUZZ_BUILD)/mkseed $(FUZZ_BUILD)/seeds
+	sh fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
+# The regression test runs the harnesses' code on tests/regress/.
+$(BUILD)/tests/test_regress: $(FUZZ_SRC) fuzz/fuzz.h
+
+-include $(wildcard $(FUZZ_BUILD)/obj/*/*.d)
+
 # ---- small devices (docs/small-devices.md) ----------------------------------
 # A device board's own rules (the firmware of boards/mps2-an385).
 ifdef BOARD_RULES
@@ -113,10 +165,15 @@ include $(BOARD_RULES)
 else
 # From the host: the firmware targets run in the device board's build.
 FW_BOARD ?= mps2-an385
-.PHONY: firmware firmware-host firmware-big-ram run
-firmware firmware-host firmware-big-ram run:
+.PHONY: firmware firmware-host firmware-256k run
+firmware firmware-host firmware-256k run:
 	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= $@
 endif
+
+# `make clean` leaves the boards' build directories; this removes them.
+.PHONY: clean-boards
+clean-boards:
+	rm -rf build-mps2-an385 build-linux-fb
 
 # The ARM toolchain and QEMU for the firmware (Debian, Ubuntu).
 DEPS_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
@@ -138,7 +195,7 @@ ifneq ($(SAN),1)
 tests: firmware-for-tests
 .PHONY: firmware-for-tests
 firmware-for-tests:
-	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-big-ram
+	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k
 endif
 endif
 

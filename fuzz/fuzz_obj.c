@@ -17,10 +17,11 @@
 
 #define OBJ_NAME "fuzz.obj"
 
-static void obj_load(const uint8_t *data, size_t size, const silk_load_opts *o, size_t arena_size)
+/* Loads into mem, or into a heap block of arena_size when mem is NULL. */
+static void obj_load(const uint8_t *data, size_t size, const silk_load_opts *o, uint8_t *mem, size_t arena_size)
 {
-    uint8_t *mem = malloc(arena_size);
-    if (!mem) return;
+    uint8_t *own = mem ? NULL : malloc(arena_size);
+    if (!mem && !(mem = own)) return;
     silk_arena a;
     silk_mesh m;
     silk_error err;
@@ -44,20 +45,23 @@ static void obj_load(const uint8_t *data, size_t size, const silk_load_opts *o, 
             fuzz_expect(v == SILK_OK, "the mesh is inconsistent after the hierarchy: %s", err.msg);
         }
     }
-    free(mem);
+    free(own);
 }
 
 int FUZZ_ENTRY(const uint8_t *data, size_t size)
 {
     silk_load_opts o;
     silk_load_opts_default(&o);
-    obj_load(data, size, &o, 64 * size + 4096);
+    obj_load(data, size, &o, NULL, 64 * size + 4096);
 
     /* The other options, chosen by the length so that one input covers both. */
     o.normals = SILK_NORMALS_FILE;
     o.crease_deg = SILK_FX_C((int64_t)(size % 181), 1);
     o.scale.mant = (int64_t)(size % 7) + 1;
     o.scale.exp10 = (int32_t)(size % 5) - 2;
-    obj_load(data, size, &o, (size_t)1 << 22);
+    /* the roomy arena is kept between runs: a fresh 4 MB block per run costs
+     * more than the load */
+    static uint8_t roomy[(size_t)1 << 22];
+    obj_load(data, size, &o, roomy, sizeof roomy);
     return 0;
 }

@@ -164,22 +164,18 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     uint32_t nedits = fuzz_u8(&in) % 16;
     size_t head = 1 + 6 * (size_t)nedits + 1;
     if (size < head) return 0;
-    uint8_t *mem = malloc((size_t)4 << 20);
-    if (!mem) return 0;
+    static uint8_t mem[(size_t)4 << 20];     /* kept between runs */
     silk_arena a;
     silk_mesh src;
     silk_error err;
-    silk_arena_init(&a, mem, (size_t)4 << 20);
+    silk_arena_init(&a, mem, sizeof mem);
     if (silk_load_mesh(data + head, size - head, PACK_NAME, NULL, &a, &src, &err) != SILK_OK ||
-        silk_vis_build(&src, NULL, &a, &err) != SILK_OK) {
-        free(mem);
+        silk_vis_build(&src, NULL, &a, &err) != SILK_OK)
         return 0;
-    }
     fuzz_expect(silk_mesh_validate(&src, PACK_NAME, &err) == SILK_OK, "silk's own mesh rejected: %s", err.msg);
 
     packed p;
-    pack(&p, &src);
-    free(mem);                       /* from here on only the packed arrays exist */
+    pack(&p, &src);                  /* from here on only the packed arrays are used */
     for (uint32_t i = 0; i < nedits; i++) {
         uint32_t sel = fuzz_u8(&in);
         uint32_t idx = fuzz_u8(&in);

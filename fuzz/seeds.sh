@@ -54,7 +54,10 @@ for h in obj ply render pack; do
 done
 
 # fuzz_render: 32-byte scene headers (see fuzz/fuzz_render.c) in front of meshes
-camera=090000002000400000000000000040000000000a14101f160240ff033c0000
+# place (relative to the model, s = 4), eye 0,0.5,1 units away, target the
+# centre, up +y, fov 40, znear 0.1, zfar 19, tolerance 0.5 px, ortho half
+# height 2, level 3, beta 0.25, all the memory, bands of 4 rows, crease 60
+camera=09""000000200040""000000000000""004000""000a""14101f160240ff033c0000
 i=0
 for flags in 411f17 0c1f17 221f17 831f17 152010 010101; do
     for f in "$out/shapes/"*.obj "$out/fuzz_ply/sphere-le.ply"; do
@@ -66,7 +69,7 @@ for flags in 411f17 0c1f17 221f17 831f17 152010 010101; do
 done
 # the same scene with 4 KB of frame memory, and seen from inside the model
 "$mkseed" prefix "411f17${camera%??????????}04033c0000" "$out/shapes/torus.obj" "$out/fuzz_render/small-arena"
-"$mkseed" prefix 411f1701000000000e0000000000000200040000000a14101f160240ff033c0000 \
+"$mkseed" prefix 411f17010000000000e0000000000020004000000a14101f160240ff033c0000 \
     "$out/shapes/sphere.obj" "$out/fuzz_render/eye-inside"
 
 # fuzz_pack: no edits or one edit, then the view byte, then a mesh

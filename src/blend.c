@@ -111,6 +111,8 @@ silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view 
     }
     if (tolerance_px <= 0)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_blend: tolerance must be positive");
+    silk_status st = silk_patch_check_mesh(m, "silk_frame_blend", err);
+    if (st != SILK_OK) return st;
     memset(g, 0, sizeof *g);
     if (stats) stats->fell_back = 0;
 

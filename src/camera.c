@@ -116,7 +116,7 @@ static silk_vec3 q24_to_fx(const int32_t v[3])
 static silk_fx cot_half_deg(silk_fx deg)
 {
     const int64_t pi30 = 3373259426LL;                       /* pi in Q2.30 */
-    int64_t x = ((int64_t)deg * pi30) / (360LL * 65536);     /* half angle, radians, Q30 (< 1.53) */
+    int64_t x = ((int64_t)deg * pi30) / (360LL * 65536);     /* half angle, radians, Q30 (< 1.57) */
     int64_t x2 = (x * x) >> 30, s = x, c = (int64_t)1 << 30, ts = x, tc = c;
     for (int n = 1; n < 14; n++) {
         ts = -((ts * x2) >> 30) / ((2 * n) * (2 * n + 1));
@@ -127,12 +127,14 @@ static silk_fx cot_half_deg(silk_fx deg)
     return silk_fx_sat((c * 65536 + s / 2) / s);
 }
 
-/* n / d rounded half away from zero, saturated to silk_fx; d > 0. */
-static silk_fx div_round(int64_t n, int64_t d)
+/* n / d rounded half away from zero; d > 0. */
+static int64_t div_round64(int64_t n, int64_t d)
 {
-    int64_t q = n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
-    return silk_fx_sat(q);
+    return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
 }
+
+/* The same, saturated to silk_fx. */
+static silk_fx div_round(int64_t n, int64_t d) { return silk_fx_sat(div_round64(n, d)); }
 
 /* Eye-space coordinates of p: R * (p - eye), 64-bit, rounded once. */
 static void eye_coords(const silk_view *v, silk_vec3 p, silk_fx e[3])
@@ -203,8 +205,8 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
         if (cam->fov_deg <= 0 || cam->fov_deg >= SILK_FX_C(180, 1))
             return bad(err, SILK_ERR_ARG, "field of view must be in (0, 180) degrees");
         if (cam->fov_deg < SILK_FOV_MIN || cam->fov_deg > SILK_FOV_MAX)
-            return bad(err, SILK_ERR_RANGE, "field of view must be in [1, 175] degrees for fixed point");
-        sy = cot_half_deg(cam->fov_deg);              /* 0.04 .. 114.6 */
+            return bad(err, SILK_ERR_RANGE, "field of view must be in [1, 179] degrees for fixed point");
+        sy = cot_half_deg(cam->fov_deg);              /* 0.0087 .. 114.6 */
     }
     int64_t sx64 = ((int64_t)sy * cam->height + cam->width / 2) / cam->width;
     if (sx64 > SILK_FX_MAX / 4 || sx64 < 1)
@@ -288,11 +290,13 @@ silk_vec4 silk_view_clip(const silk_view *v, silk_vec3 p)
 }
 
 /* num / (2 w) * size, rounded: num may be up to 2^55 and size 2^13, so the
- * division is split into quotient and remainder to stay in 64 bits. */
-static silk_fx scale_div(int64_t num, int size, int64_t w2)
+ * division is split into quotient and remainder to stay in 64 bits.  Not
+ * saturated here: the caller adds the image centre first and saturates the
+ * sum once, so that both sides clamp at the same distance (< 2^61 here). */
+static int64_t scale_div(int64_t num, int size, int64_t w2)
 {
     int64_t q = num / w2, r = num % w2;
-    return silk_fx_sat(q * size + div_round(r * size, w2));
+    return q * size + div_round(r * size, w2);
 }
 
 int silk_view_project(const silk_view *v, silk_vec3 p, silk_vec2 *px)
@@ -306,8 +310,8 @@ int silk_view_project(const silk_view *v, silk_vec3 p, silk_vec2 *px)
     int64_t cx = (int64_t)c->width * SILK_FX_HALF, cy = (int64_t)c->height * SILK_FX_HALF;
     if (c->ortho) {
         int64_t h2 = 2 * (int64_t)c->ortho_half_height;
-        px->x = silk_fx_sat(cx + div_round((int64_t)e[0] * c->height * SILK_FX_ONE, h2));
-        px->y = silk_fx_sat(cy - div_round((int64_t)e[1] * c->height * SILK_FX_ONE, h2));
+        px->x = silk_fx_sat(cx + div_round64((int64_t)e[0] * c->height * SILK_FX_ONE, h2));
+        px->y = silk_fx_sat(cy - div_round64((int64_t)e[1] * c->height * SILK_FX_ONE, h2));
     } else {
         int64_t sy = v->proj.m[1][1], w2 = -2 * (int64_t)e[2];
         px->x = silk_fx_sat(cx + scale_div(sy * e[0], c->height, w2));

@@ -35,8 +35,13 @@ static silk_index other_end(const silk_edge *e, silk_index v)
 }
 
 /* 45 degrees keeps an octagon's rim (45 per vertex) one smooth loop and
- * breaks every sharp turn measured on the shared models (docs/formats.md). */
+ * breaks every sharp turn measured on the shared models (docs/formats.md).
+ * A turn of exactly 45 must pass, but the two unit vectors carry up to 0.87
+ * ulp of rounding each and the cosine 0.5 ulp (it rounds to cos 44.9995):
+ * the limit is lowered by SILK_FEATURE_TURN_SLACK ulp, about 0.005 degrees,
+ * so that rounding cannot make a corner of an octagon's vertex. */
 #define SILK_FEATURE_TURN_DEG 45
+#define SILK_FEATURE_TURN_SLACK 4
 
 /* 1 if a feature polyline may not pass through v: other than two feature
  * edges, or two that turn by more than SILK_FEATURE_TURN_DEG. */
@@ -193,8 +198,9 @@ silk_status silk_build_features(const char *name, silk_arena *a, silk_mesh *m, s
 
     silk_fx sin_turn, cos_turn;
     silk_fx_sincos_deg(SILK_FX_C(SILK_FEATURE_TURN_DEG, 1), &sin_turn, &cos_turn);
+    const int64_t turn_limit = (int64_t)(cos_turn - SILK_FEATURE_TURN_SLACK) * SILK_FX_ONE;   /* Q32.32 */
     for (silk_index v = 0; v < m->nverts; v++)
-        stop[v] = fdeg[v] != 0 && (uint8_t)polyline_stops_at(m, fdeg, v, (int64_t)cos_turn * SILK_FX_ONE);
+        stop[v] = fdeg[v] != 0 && (uint8_t)polyline_stops_at(m, fdeg, v, turn_limit);
 
     /* Open polylines start at their ends (junctions, corners) ... */
     for (silk_index v = 0; v < m->nverts; v++) {

@@ -256,7 +256,10 @@ silk_status silk_ld_coords_finish(const silk_ld_coords *c, const char *name, sil
         int64_t k = 4 - dec_order(maxabs);
         silk_decimal t = { maxabs.mant, (int32_t)(maxabs.exp10 + k) };
         if (silk_ld_dec_cmp(t, coord_max) > 0) k--;
-        silk_ld_dec_format(c->bad_value, 6, vbuf, sizeof vbuf);
+        /* Six digits would round a value just past the limit onto it
+         * ("1024.0" for 1024.00002): such a value is shown in full. */
+        const silk_decimal near_limit = { (SILK_COORD_MAX >> SILK_FX_SHIFT) * 10 + 5, -1 };
+        silk_ld_dec_format(c->bad_value, dec_cmp_mag(c->bad_value, near_limit) < 0 ? 18 : 6, vbuf, sizeof vbuf);
         format_pow10(k, sbuf, sizeof sbuf);
         if (c->bad_line)
             return silk_fail(err, SILK_ERR_RANGE, name, c->bad_line,

@@ -48,6 +48,10 @@ silk_vec3 silk_patch_mid_normal(silk_vec3 pa, silk_vec3 pb, silk_vec3 na, silk_v
 void silk_patch_build(const silk_mesh *m, uint32_t t, const silk_fx *alpha, silk_pn_normals normals,
                       silk_patch *p);
 
+/* SILK_ERR_ARG unless m has what the patches read: positions, triangles,
+ * shading normals and edges (every mesh silk_mesh_build made has). */
+silk_status silk_patch_check_mesh(const silk_mesh *m, const char *who, silk_error *err);
+
 /* The coarse mesh in place of a frame that did not fit: releases the top of
  * the arena to mark, emits silk_frame_flat and sets stats->fell_back. */
 silk_status silk_patch_fall_back(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,

@@ -221,6 +221,14 @@ void silk_patch_eval(const silk_patch *p, uint32_t point, silk_vertex_attr *out)
     out->uv.y = silk_fx_sat(div_round(i * p->uv[0].y + j * p->uv[1].y + k * p->uv[2].y, n));
 }
 
+silk_status silk_patch_check_mesh(const silk_mesh *m, const char *who, silk_error *err)
+{
+    if (m->ntris > 0 && (!m->pos || !m->tri || !m->normal || !m->tri_normal || !m->tri_edge || !m->edge))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                         "%s: the mesh has no shading normals or edges (build it with silk_mesh_build)", who);
+    return SILK_OK;
+}
+
 silk_status silk_patch_fall_back(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
                                  silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
 {
@@ -247,6 +255,8 @@ silk_status silk_frame_pn(silk_arena *a, const silk_mesh *m, uint32_t level, sil
                          SILK_PN_MAX_LEVEL);
     if (normals != SILK_PN_QUADRATIC && normals != SILK_PN_LINEAR)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "unknown PN normals %d", (int)normals);
+    silk_status st = silk_patch_check_mesh(m, "silk_frame_pn", err);
+    if (st != SILK_OK) return st;
     memset(g, 0, sizeof *g);
     if (stats) stats->fell_back = 0;
 

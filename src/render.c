@@ -100,6 +100,17 @@ static void frame_draw(const frame *f, const silk_render_opts *o, silk_target *t
         }
 }
 
+/* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its
+ * subpixel products are sized for it, docs/overflow.md); say so instead of
+ * returning a blank image. */
+static silk_status check_frame_size(const silk_target *t, silk_error *err)
+{
+    if (t->width < 1 || t->height < 1 || t->width > SILK_MAX_DIM || t->height > SILK_MAX_DIM)
+        return silk_fail(err, SILK_ERR_RANGE, "target", 0, "image size %dx%d is outside 1x1 .. %dx%d", t->width,
+                         t->height, SILK_MAX_DIM, SILK_MAX_DIM);
+    return SILK_OK;
+}
+
 silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
                         const silk_render_opts *o, silk_target *t, silk_frame_stats *stats,
                         silk_error *err)
@@ -108,6 +119,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     if (!stats) stats = &local;
     memset(stats, 0, sizeof *stats);
     if (!a || !t) return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
+    if (check_frame_size(t, err) != SILK_OK) return SILK_ERR_RANGE;
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;
@@ -128,6 +140,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     memset(stats, 0, sizeof *stats);
     if (!a || !band || !sink || !sink->band || band->rows < 1 || band->height < 1)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: missing argument");
+    if (check_frame_size(band, err) != SILK_OK) return SILK_ERR_RANGE;
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;

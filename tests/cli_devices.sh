@@ -119,7 +119,6 @@ status=$?
 check "view: SIGINT ends it with status 0 ($status)" [ "$status" -eq 0 ]
 check "view: ... after some frames" grep -qE '^silk view: [1-9][0-9]* frames' "$tmp/int.out"
 
-want='no display' expect_usage "view: no display" view "$mesh"
 want='fb-geometry' expect_usage "view: --fb-file without geometry" view "$mesh" --fb-file "$tmp/g.raw"
 want='16, 24 or 32' expect_usage "view: 8 bpp" view "$mesh" --fb-file "$tmp/g.raw" --fb-geometry 10x10x8
 want='WIDTHxHEIGHTxBPP' expect_usage "view: bad geometry" view "$mesh" --fb-file "$tmp/g.raw" --fb-geometry 10x10

@@ -6,13 +6,13 @@
 # into flash by `silk pack --views 3`):
 #   fw/NAME/fw.elf          linked for the board's RAM budget (64 KiB)
 #   fw/NAME/fw-host         the same scene and arena, compiled for the host
-#   fw/big-ram/NAME/fw.elf  the same with 1 MiB of RAM
+#   fw/ram256k/NAME/fw.elf  the same linked for a 256 KiB part
 # Each firmware renders 3 views x (flat, smooth) in bands and writes the
 # frames to the host through semihosting.  Checks:
 #   - it runs to "fw result=ok" and exits 0 (semihosting SYS_EXIT);
 #   - every frame equals `silk render` of the same mesh, view and settings
 #     (the --eye is the exact one the header records), unless the frame
-#     fell back for lack of RAM; the big-RAM build must never fall back;
+#     fell back for lack of RAM; the 256 KiB build must never fall back;
 #   - the board build's frames and per-frame report (triangles, arena bytes,
 #     fall-back, checksum) equal fw-host's, so a fall-back frame is
 #     bit-exact too;
@@ -56,8 +56,8 @@ report_value() {
 }
 
 compared=0
-for variant in board big-ram; do
-    if [ "$variant" = board ]; then dir=$fwroot; else dir=$fwroot/big-ram; fi
+for variant in board ram256k; do
+    if [ "$variant" = board ]; then dir=$fwroot; else dir=$fwroot/ram256k; fi
     models=0
     for elf in "$dir"/*/fw.elf; do
         [ -e "$elf" ] || continue
@@ -124,8 +124,8 @@ for variant in board big-ram; do
                 line=$(grep -E "^fw frame=[0-9]+ camera=$k mode=$mode " "$report")
                 fell=$(echo "$line" | tr ' ' '\n' | sed -n 's/^fell_back=//p')
                 if [ "$fell" = 1 ]; then
-                    if [ "$variant" = big-ram ]; then
-                        fail "$tag camera $k $mode" "fell back with 1 MiB of RAM"
+                    if [ "$variant" = ram256k ]; then
+                        fail "$tag camera $k $mode" "fell back with 256 KiB of RAM"
                     else
                         echo "note: $tag camera $k $mode fell back (the RAM budget cannot hold the frame);" \
                             "checked against the host build only"
@@ -147,7 +147,7 @@ for variant in board big-ram; do
     if [ "$models" -ge 2 ]; then
         pass "$variant: $models models built"
     else
-        fail "$variant: two models built" "$models firmware images in $dir (make firmware firmware-host firmware-big-ram)"
+        fail "$variant: two models built" "$models firmware images in $dir (make firmware firmware-host firmware-256k)"
     fi
 done
 # Three views of two models, flat and smooth, at least once each.

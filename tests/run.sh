@@ -10,10 +10,12 @@ for t in "$build"/tests/test_* tests/cli_*.sh; do
   name=$(basename "$t")
   log="$build/tests/$name.log"
   mkdir -p "$build/tests"
+  start=$(date +%s)
   case "$t" in
     *.sh) sh "$t" "$build" >"$log" 2>&1; rc=$? ;;
     *) "$t" >"$log" 2>&1; rc=$? ;;
   esac
+  secs=$(( $(date +%s) - start ))
   line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1)
   if [ -z "$line" ]; then
     echo "$name: no result line (exit $rc)"; tail -n 20 "$log"
@@ -22,7 +24,7 @@ for t in "$build"/tests/test_* tests/cli_*.sh; do
   p=${line%% passed*}; f=${line#*passed, }; f=${f%% failed*}
   passed=$((passed + p)); failed=$((failed + f))
   if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then failed=$((failed + 1)); broken="$broken $name"; fi
-  echo "$name: $line"
+  echo "$name: $line (${secs}s)"
   if [ "$f" -ne 0 ] || [ "$rc" -ne 0 ]; then grep -E '^(FAIL|not ok)' "$log" | head -n 20; broken="$broken $name"; fi
 done
 [ -n "$broken" ] && echo "failing:$broken"

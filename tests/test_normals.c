@@ -1,9 +1,12 @@
 /*
  * test_normals.c - crease and smoothing-group flags, and the split,
  * angle-weighted shading normals (paper III-B, Fig. 8), against a double
- * reference; file normals; and the measurement behind the default crease
- * angle (dihedral angles of the shared meshes, docs/formats.md).
+ * reference; file normals; cone apexes split into face normals (cone-70,
+ * armadillo-500's spike, `silk gen cone`, pyramids either side of 50
+ * degrees); and the measurements behind the default crease angle and the
+ * apex threshold (docs/formats.md).
  */
+#define _POSIX_C_SOURCE 200809L   /* popen, for `silk gen` */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -58,20 +61,10 @@ static int fx_input(fixture *f, const double *pos, uint32_t nv, const uint32_t *
 
 static silk_status fx_build(fixture *f) { return silk_mesh_build(&f->in, "test", &f->opts, &f->a, &f->m, &f->err); }
 
-/* Minimal reader for the shared meshes (only `v` and `f` lines). */
-static int read_obj(const char *name, fixture *f)
+/* Minimal OBJ parser for the shared meshes and `silk gen` (only `v` and
+ * `f` lines of triangles). */
+static int parse_obj(char *text, fixture *f)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s.obj", check_meshes_dir(), name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return 0;
-    fseek(fp, 0, SEEK_END);
-    long len = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *text = malloc((size_t)len + 1);
-    size_t got = fread(text, 1, (size_t)len, fp);
-    fclose(fp);
-    text[got] = 0;
     uint32_t nv = 0, nt = 0;
     for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
         if (l[0] == 'v' && l[1] == ' ') nv++;
@@ -90,10 +83,53 @@ static int read_obj(const char *name, fixture *f)
             it++;
         }
     }
-    int ok = fx_input(f, pos, nv, tri, nt);
-    free(text);
+    int ok = nv > 0 && nt > 0 && fx_input(f, pos, nv, tri, nt);
     free(pos);
     free(tri);
+    return ok;
+}
+
+static char *read_all(FILE *fp)
+{
+    size_t n = 0, cap = 1 << 16;
+    char *text = malloc(cap);
+    for (;;) {
+        n += fread(text + n, 1, cap - 1 - n, fp);
+        if (n < cap - 1) break;
+        text = realloc(text, cap *= 2);
+    }
+    text[n] = 0;
+    return text;
+}
+
+static int read_obj(const char *name, fixture *f)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s.obj", check_meshes_dir(), name);
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return 0;
+    char *text = read_all(fp);
+    fclose(fp);
+    int ok = parse_obj(text, f);
+    free(text);
+    return ok;
+}
+
+/* The silk program next to this test (BUILD/tests/test_normals ->
+ * BUILD/silk), for `silk gen`. */
+static char silk_path[512] = "build/silk";
+
+/* Runs `silk gen ARGS -o -` and parses what it writes. */
+static int gen_obj(const char *args, fixture *f)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "%s gen %s -o -", silk_path, args);
+    FILE *fp = popen(cmd, "r");
+    if (!fp) return 0;
+    char *text = read_all(fp);
+    int rc = pclose(fp);
+    int ok = rc == 0 && parse_obj(text, f);
+    free(text);
     return ok;
 }
 
@@ -158,28 +194,16 @@ static void unite(uint32_t *p, uint32_t a, uint32_t b)
     if (a != b) p[a > b ? a : b] = a < b ? a : b;
 }
 
-typedef struct normal_report {
-    double max_err_ulp;      /* worst component error of a shading normal */
-    double max_err_kappa;    /* its conditioning (sum of weights / length of the weighted sum) */
-    uint32_t groups, checked;
-} normal_report;
+/* normals.c's SILK_APEX_DEG.  Groups within APEX_MARGIN of it may go either
+ * way: the core compares rounded unit vectors (about 0.002 degrees there). */
+#define APEX_DEG 50.0
+#define APEX_MARGIN 0.01
 
-/* Checks the crease flags against the double dihedral angle (edges within
- * margin_deg of the threshold may go either way), then the grouping and the
- * normals against a double angle-weighted average over groups formed from
- * m's feature flags. */
-static void check_normals(const silk_mesh *m, double crease_deg, double margin_deg, normal_report *r)
+/* Corners of one vertex connected through non-feature edges (and the
+ * corners of a triangle that repeats a vertex) share a root in p. */
+static void ref_groups(const silk_mesh *m, uint32_t *p)
 {
-    memset(r, 0, sizeof *r);
-    for (uint32_t e = 0; e < m->nedges; e++) {
-        double d = ref_dihedral(m, e);
-        int crease = (m->edge[e].flags & SILK_EDGE_CREASE) != 0;
-        if (d < 0) CHECKF(!crease, "edge %u has no dihedral angle but is a crease", e);
-        else if (fabs(d - crease_deg) > margin_deg)
-            CHECKF(crease == (d > crease_deg), "edge %u dihedral %.4f crease %d", e, d, crease);
-    }
     uint32_t nc = 3 * m->ntris;
-    uint32_t *p = malloc(sizeof *p * nc);
     for (uint32_t c = 0; c < nc; c++) p[c] = c;
     for (uint32_t t = 0; t < m->ntris; t++)
         for (int k = 0; k < 3; k++)
@@ -194,6 +218,94 @@ static void check_normals(const silk_mesh *m, double crease_deg, double margin_d
                     if (m->tri[3 * ed->t[0] + k] == ed->v[end] && m->tri[3 * ed->t[1] + j] == ed->v[end])
                         unite(p, 3 * ed->t[0] + k, 3 * ed->t[1] + j);
     }
+}
+
+/* Per group (at its root corner): the angle in degrees between its
+ * angle-weighted normal and the nearest of its (non-degenerate) faces, the
+ * measure of the apex rule; -1 for a group of one corner or one whose
+ * weighted normal vanishes. */
+static void apex_angles(const silk_mesh *m, uint32_t *p, double *apex)
+{
+    uint32_t nc = 3 * m->ntris;
+    double *sum = calloc(nc, 3 * sizeof(double));
+    uint32_t *members = calloc(nc, sizeof *members);
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        double n[3], ang[3];
+        ref_face(m, t, n, ang);
+        for (int k = 0; k < 3; k++) {
+            uint32_t r = find(p, 3 * t + k);
+            for (int i = 0; i < 3; i++) sum[3 * r + i] += ang[k] * n[i];
+            members[r]++;
+        }
+    }
+    for (uint32_t c = 0; c < nc; c++) apex[c] = -1;
+    for (uint32_t c = 0; c < nc; c++) {
+        uint32_t r = find(p, c);
+        double n[3], ang[3], l = len3(&sum[3 * r]);
+        ref_face(m, c / 3, n, ang);
+        if (members[r] < 2 || l < 1e-12 || len3(n) == 0) continue;
+        double d = dot3(n, &sum[3 * r]) / l;
+        double a = acos(d > 1 ? 1 : (d < -1 ? -1 : d)) * 180 / PI;
+        if (apex[r] < 0 || a < apex[r]) apex[r] = a;
+    }
+    free(sum);
+    free(members);
+}
+
+/* The apex rule: a group whose weighted normal is more than APEX_DEG from
+ * every one of its faces falls apart into single corners.  Within
+ * APEX_MARGIN of the limit, m's own choice is taken (its corners have one
+ * normal or several).  Returns the number of groups split. */
+static uint32_t ref_split_apexes(const silk_mesh *m, uint32_t *p)
+{
+    uint32_t nc = 3 * m->ntris, split = 0;
+    double *apex = malloc(sizeof *apex * (nc + 1));
+    uint8_t *cut = calloc(nc + 1, 1);
+    apex_angles(m, p, apex);
+    for (uint32_t c = 0; c < nc; c++) {
+        uint32_t r = find(p, c);
+        if (r != c || apex[r] < 0) continue;
+        if (fabs(apex[r] - APEX_DEG) <= APEX_MARGIN) {
+            for (uint32_t d = 0; d < nc; d++)
+                if (find(p, d) == r && m->tri_normal[d] != m->tri_normal[r]) cut[r] = 1;
+        } else {
+            cut[r] = apex[r] > APEX_DEG;
+        }
+        split += cut[r];
+    }
+    uint32_t *root = malloc(sizeof *root * (nc + 1));
+    for (uint32_t c = 0; c < nc; c++) root[c] = find(p, c);
+    for (uint32_t c = 0; c < nc; c++) p[c] = cut[root[c]] ? c : root[c];
+    free(root);
+    free(cut);
+    free(apex);
+    return split;
+}
+
+typedef struct normal_report {
+    double max_err_ulp;      /* worst component error of a shading normal */
+    double max_err_kappa;    /* its conditioning (sum of weights / length of the weighted sum) */
+    uint32_t groups, checked, apexes;
+} normal_report;
+
+/* Checks the crease flags against the double dihedral angle (edges within
+ * margin_deg of the threshold may go either way), then the grouping and the
+ * normals against a double angle-weighted average over groups formed from
+ * m's feature flags and split at apexes. */
+static void check_normals(const silk_mesh *m, double crease_deg, double margin_deg, normal_report *r)
+{
+    memset(r, 0, sizeof *r);
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        double d = ref_dihedral(m, e);
+        int crease = (m->edge[e].flags & SILK_EDGE_CREASE) != 0;
+        if (d < 0) CHECKF(!crease, "edge %u has no dihedral angle but is a crease", e);
+        else if (fabs(d - crease_deg) > margin_deg)
+            CHECKF(crease == (d > crease_deg), "edge %u dihedral %.4f crease %d", e, d, crease);
+    }
+    uint32_t nc = 3 * m->ntris;
+    uint32_t *p = malloc(sizeof *p * (nc + 1));
+    ref_groups(m, p);
+    r->apexes = ref_split_apexes(m, p);
     double *sum = calloc(nc, 3 * sizeof(double)), *wsum = calloc(nc, sizeof(double));
     uint32_t *silk_of = malloc(sizeof *silk_of * nc), *ref_of = malloc(sizeof *ref_of * (m->nnormals + 1));
     for (uint32_t c = 0; c < nc; c++) silk_of[c] = SILK_NO_INDEX;
@@ -488,14 +600,15 @@ TEST(crease_default_on_shared_meshes)
                 CHECKF(on_rim == ((m->edge[e].flags & SILK_EDGE_CREASE) != 0), "cone edge %u", e);
             }
             CHECK(rim == 35 && creases == 35);
-            /* two normals at each rim vertex, one at the apex and the base centre */
+            /* two normals at each rim vertex, one at the base centre, and
+             * one per triangle at the apex (split, test apex_split) */
             uint32_t *count = calloc(m->nverts, sizeof *count);
             for (uint32_t g = 0; g < m->nnormals; g++) count[m->normal_vertex[g]]++;
             for (uint32_t v = 0; v < m->nverts; v++) {
-                int on_rim = m->pos[v].y == 0 && (m->pos[v].x || m->pos[v].z);
-                CHECKF(count[v] == (on_rim ? 2u : 1u), "cone vertex %u has %u normals", v, count[v]);
+                int on_rim = m->pos[v].y == 0 && (m->pos[v].x || m->pos[v].z), apex = m->pos[v].y > 0;
+                CHECKF(count[v] == (apex ? 35u : on_rim ? 2u : 1u), "cone vertex %u has %u normals", v, count[v]);
             }
-            CHECK(m->nnormals == 72);
+            CHECK(m->nnormals == 35 * 2 + 1 + 35);
             free(count);
         }
         if (!strcmp(names[i], "fandisk-128")) {
@@ -556,13 +669,255 @@ TEST(crease_default_on_shared_meshes)
     free(f.buf);
 }
 
-int main(void)
+/* ---- cone apexes (normals.c split_apex_groups) ------------------------------------------- */
+
+/* Checks that every corner at v has a normal of its own, equal to its
+ * triangle's face normal (the core's, to 1 ulp per component, and the double
+ * one, to 1.5 ulp).  Returns the number of corners. */
+static uint32_t check_split_vertex(const silk_mesh *m, uint32_t v, double *worst_ulp)
 {
+    uint32_t n = 0;
+    for (uint32_t c = 0; c < 3 * m->ntris; c++) {
+        if (m->tri[c] != v) continue;
+        n++;
+        uint32_t t = c / 3, g = m->tri_normal[c];
+        for (uint32_t d = 0; d < c; d++)
+            if (m->tri[d] == v) CHECKF(m->tri_normal[d] != g, "vertex %u: corners %u and %u share normal %u", v, d, c, g);
+        silk_vec3 got = m->normal[g], fn = silk_mesh_face_normal(m, t);
+        double dn[3], ang[3], err = 0, ferr = 0;
+        ref_face(m, t, dn, ang);
+        for (int i = 0; i < 3; i++) {
+            ferr = fmax(ferr, fabs(fx_d((&got.x)[i]) - fx_d((&fn.x)[i])) * 65536);
+            err = fmax(err, fabs(fx_d((&got.x)[i]) - dn[i]) * 65536);
+        }
+        CHECKF(ferr <= 1 && err <= 1.5, "vertex %u corner %u: normal %.2f ulp from the core's face normal, %.2f from "
+               "the exact one", v, c, ferr, err);
+        *worst_ulp = fmax(*worst_ulp, err);
+    }
+    return n;
+}
+
+/* The vertices the core split at apexes: some group of corners connected
+ * through non-feature edges holds more than one normal.  Fills at most max
+ * of them into vs (in vertex order); returns how many there are. */
+static uint32_t split_vertices(const silk_mesh *m, uint32_t *vs, uint32_t max)
+{
+    uint32_t nc = 3 * m->ntris, n = 0;
+    uint32_t *p = malloc(sizeof *p * (nc + 1));
+    uint8_t *hit = calloc(m->nverts + 1, 1);
+    ref_groups(m, p);
+    for (uint32_t c = 0; c < nc; c++) {
+        uint32_t r = find(p, c);
+        if (m->tri_normal[c] != m->tri_normal[r]) hit[m->tri[c]] = 1;
+    }
+    for (uint32_t v = 0; v < m->nverts; v++)
+        if (hit[v]) {
+            if (n < max) vs[n] = v;
+            n++;
+        }
+    free(hit);
+    free(p);
+    return n;
+}
+
+/* The apex angle of vertex v's groups (the largest, as apex_angles measures
+ * it), -1 when none has one. */
+static double vertex_apex_angle(const silk_mesh *m, uint32_t v)
+{
+    uint32_t nc = 3 * m->ntris;
+    uint32_t *p = malloc(sizeof *p * (nc + 1));
+    double *apex = malloc(sizeof *apex * (nc + 1)), worst = -1;
+    ref_groups(m, p);
+    apex_angles(m, p, apex);
+    for (uint32_t c = 0; c < nc; c++)
+        if (m->tri[c] == v) worst = fmax(worst, apex[find(p, c)]);
+    free(p);
+    free(apex);
+    return worst;
+}
+
+/* cone-70's apex: its averaged normal points up the axis, 56 degrees from
+ * every face, so its 35 corners are split and each keeps its face normal;
+ * armadillo-500's one spike the same; nothing else on either. */
+TEST(apex_split_cone_and_spike)
+{
+    static const char *const names[] = { "cone-70", "armadillo-500" };
+    fixture f;
+    fx_init(&f, ARENA_BYTES);
+    for (int i = 0; i < 2; i++) {
+        fx_reset(&f, ARENA_BYTES);
+        CHECKF(read_obj(names[i], &f), "cannot read %s", names[i]);
+        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
+        const silk_mesh *m = &f.m;
+        uint32_t vs[4], n = split_vertices(m, vs, 4);
+        CHECKF(n == 1, "%s: %u vertices split", names[i], n);
+        if (n != 1) continue;
+        if (i == 0) CHECKF(m->pos[vs[0]].y == SILK_FX_C(3, 2) && m->pos[vs[0]].x == 0 && m->pos[vs[0]].z == 0,
+                           "cone-70: split vertex %u is not the apex", vs[0]);
+        double worst = 0, apex = vertex_apex_angle(m, vs[0]);
+        uint32_t corners = check_split_vertex(m, vs[0], &worst);
+        CHECKF(corners >= 3 && apex > APEX_DEG, "%s: vertex %u, %u corners, %.2f deg", names[i], vs[0], corners, apex);
+        printf("  %-14s vertex %u at (%.3f %.3f %.3f): %u corners, group normal %.2f deg from the nearest face; "
+               "split, normals within %.2f ulp of the faces'\n", names[i], vs[0], fx_d(m->pos[vs[0]].x),
+               fx_d(m->pos[vs[0]].y), fx_d(m->pos[vs[0]].z), corners, apex, worst);
+    }
+    free(f.buf);
+}
+
+/* `silk gen cone`: the apex is split when the faces are more than 50
+ * degrees from the axis (atan(height / (radius cos(pi/segments)))), not
+ * below: the default cone (56.4), one of 64 segments 1.25 high (51.4) and a
+ * banded one of 8 segments 2 high (65.2) are split; 1.15 high (49.0) and 1
+ * high (45.1) are not. */
+TEST(apex_split_gen_cone)
+{
+    static const struct { const char *args; int split; } cases[] = {
+        { "cone", 1 },
+        { "cone --segments 64 --height 1.25", 1 },
+        { "cone --segments 8 --height 2 --bands 3", 1 },
+        { "cone --segments 64 --height 1.15", 0 },
+        { "cone --height 1", 0 },
+    };
+    fixture f;
+    fx_init(&f, ARENA_BYTES);
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        fx_reset(&f, ARENA_BYTES);
+        if (!gen_obj(cases[i].args, &f)) { CHECKF(0, "`%s gen %s` failed (make tests builds it)", silk_path, cases[i].args); continue; }
+        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", cases[i].args, f.err.msg); continue; }
+        const silk_mesh *m = &f.m;
+        uint32_t apex = 0;
+        for (uint32_t v = 1; v < m->nverts; v++)
+            if (m->pos[v].y > m->pos[apex].y) apex = v;
+        double angle = vertex_apex_angle(m, apex), worst = 0;
+        uint32_t vs[2], n = split_vertices(m, vs, 2), fan = 0;
+        for (uint32_t c = 0; c < 3 * m->ntris; c++) fan += m->tri[c] == apex;
+        CHECKF((angle > APEX_DEG) == cases[i].split, "%s: apex angle %.2f deg", cases[i].args, angle);
+        CHECKF(n == (uint32_t)cases[i].split && (n == 0 || vs[0] == apex), "%s: %u vertices split", cases[i].args, n);
+        if (cases[i].split) {
+            check_split_vertex(m, apex, &worst);
+        } else {
+            uint32_t g = SILK_NO_INDEX;
+            for (uint32_t c = 0; c < 3 * m->ntris; c++)
+                if (m->tri[c] == apex) {
+                    if (g == SILK_NO_INDEX) g = m->tri_normal[c];
+                    CHECKF(m->tri_normal[c] == g, "%s: apex corner %u has its own normal", cases[i].args, c);
+                }
+            CHECKF(g != SILK_NO_INDEX && m->normal[g].y == SILK_FX_ONE, "%s: the apex normal is not +y", cases[i].args);
+        }
+        printf("  silk gen %-40s apex: %2u triangles, %.2f deg from the nearest face: %s\n", cases[i].args, fan, angle,
+               n ? "split" : "one normal");
+    }
+    free(f.buf);
+}
+
+/* Pyramids with n sides in random orientations, their faces 49 or 51
+ * degrees from the axis: split exactly above 50 (the rule does not depend
+ * on the axis), and when split each corner keeps its face normal. */
+TEST(apex_split_threshold_any_axis)
+{
+    uint32_t split_count = 0, whole = 0;
+    double worst = 0;
+    for (int round = 0; round < 24; round++) {
+        int sides = 5 + round % 7;
+        double want = round & 1 ? 51 : 49, r = 1.3;
+        double h = r * cos(PI / sides) * tan(want * PI / 180);
+        double a[3] = { check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1) }, b[3] = { 0.3, -0.8, 0.5 };
+        double u[3], w[3], ax[3];
+        double la = len3(a);
+        for (int i = 0; i < 3; i++) ax[i] = a[i] / la;
+        cross3(ax, b, u);
+        double lu = len3(u);
+        for (int i = 0; i < 3; i++) u[i] /= lu;
+        cross3(ax, u, w);
+        /* apex 0, base centre 1, rim 2.. */
+        double pos[3 * 16], o[3] = { check_uniform(-2, 2), check_uniform(-2, 2), check_uniform(-2, 2) };
+        uint32_t tri[3 * 2 * 14], nt = 0;
+        for (int i = 0; i < 3; i++) pos[i] = o[i] + h * ax[i], pos[3 + i] = o[i];
+        for (int k = 0; k < sides; k++) {
+            double t = 2 * PI * k / sides + 0.3;
+            for (int i = 0; i < 3; i++) pos[3 * (2 + k) + i] = o[i] + r * (cos(t) * u[i] + sin(t) * w[i]);
+            uint32_t p0 = 2 + (uint32_t)k, p1 = 2 + (uint32_t)((k + 1) % sides);
+            tri[3 * nt] = 0, tri[3 * nt + 1] = p0, tri[3 * nt + 2] = p1, nt++;
+            tri[3 * nt] = 1, tri[3 * nt + 1] = p1, tri[3 * nt + 2] = p0, nt++;
+        }
+        fixture f;
+        fx_init(&f, 1 << 18);
+        CHECK(fx_input(&f, pos, 2 + (uint32_t)sides, tri, nt) && fx_build(&f) == SILK_OK);
+        double angle = vertex_apex_angle(&f.m, 0);
+        CHECKF(fabs(angle - want) < 0.01, "pyramid %d: apex angle %.3f, built for %.0f", round, angle, want);
+        uint32_t vs[2], n = split_vertices(&f.m, vs, 2);
+        if (want > APEX_DEG) {
+            CHECKF(n == 1 && vs[0] == 0, "pyramid %d (%d sides, %.1f deg): %u vertices split", round, sides, angle, n);
+            CHECK(check_split_vertex(&f.m, 0, &worst) == (uint32_t)sides);
+            split_count++;
+        } else {
+            CHECKF(n == 0, "pyramid %d (%d sides, %.1f deg): %u vertices split", round, sides, angle, n);
+            whole++;
+        }
+        normal_report rep;
+        check_normals(&f.m, fx_d(f.opts.crease_deg), 1e-3, &rep);
+        free(f.buf);
+    }
+    printf("  24 pyramids, 5..11 sides, random axes: %u split at 51 deg, %u whole at 49; split normals within %.2f ulp "
+           "of their faces\n", split_count, whole, worst);
+}
+
+/* The measurement behind SILK_APEX_DEG (docs/formats.md): per mesh, how
+ * many groups of corners have their angle-weighted normal more than 40, 45,
+ * 50, 55 degrees from every face of the group, the largest such angle, and
+ * how many vertices the core split (those above 50). */
+TEST(apex_angles_on_shared_meshes)
+{
+    static const double th[] = { 40, 45, 50, 55 };
+    fixture f;
+    fx_init(&f, ARENA_BYTES);
+    printf("  %-15s %5s %5s %5s %5s  %7s  %5s\n", "mesh", ">40", ">45", ">50", ">55", "largest", "split");
+    uint32_t coarse_split = 0;
+    for (size_t i = 0; i < sizeof all_meshes / sizeof *all_meshes; i++) {
+        fx_reset(&f, ARENA_BYTES);
+        CHECKF(read_obj(all_meshes[i], &f), "cannot read %s", all_meshes[i]);
+        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", all_meshes[i], f.err.msg); continue; }
+        const silk_mesh *m = &f.m;
+        uint32_t nc = 3 * m->ntris, above[4] = { 0 };
+        uint32_t *p = malloc(sizeof *p * (nc + 1));
+        double *apex = malloc(sizeof *apex * (nc + 1)), largest = 0;
+        ref_groups(m, p);
+        apex_angles(m, p, apex);
+        for (uint32_t c = 0; c < nc; c++) {
+            if (find(p, c) != c || apex[c] < 0) continue;
+            for (int k = 0; k < 4; k++) above[k] += apex[c] > th[k];
+            largest = fmax(largest, apex[c]);
+        }
+        uint32_t vs[1], split = split_vertices(m, vs, 1);
+        CHECKF(split == above[2], "%s: %u vertices split, %u groups above %.0f deg", all_meshes[i], split, above[2],
+               th[2]);
+        if (!strstr(all_meshes[i], "-fine") && !strstr(all_meshes[i], "-2k") && !strstr(all_meshes[i], "-5k") &&
+            !strstr(all_meshes[i], "-1000"))
+            coarse_split += split;
+        printf("  %-15s %5u %5u %5u %5u  %7.1f  %5u\n", all_meshes[i], above[0], above[1], above[2], above[3],
+               largest, split);
+        free(p);
+        free(apex);
+    }
+    printf("  coarse meshes: %u vertices split\n", coarse_split);
+    free(f.buf);
+}
+
+int main(int argc, char **argv)
+{
+    /* BUILD/tests/test_normals -> BUILD/silk */
+    const char *slash = argc > 0 ? strrchr(argv[0], '/') : NULL;
+    if (slash && slash - argv[0] >= 6 && !strncmp(slash - 6, "/tests", 6))
+        snprintf(silk_path, sizeof silk_path, "%.*s/silk", (int)(slash - 6 - argv[0]), argv[0]);
     RUN(cube_split_normals);
     RUN(crease_threshold);
     RUN(smoothing_groups);
     RUN(file_normals);
     RUN(shared_meshes_normals_vs_reference);
     RUN(crease_default_on_shared_meshes);
+    RUN(apex_split_cone_and_spike);
+    RUN(apex_split_gen_cone);
+    RUN(apex_split_threshold_any_axis);
+    RUN(apex_angles_on_shared_meshes);
     return check_done();
 }

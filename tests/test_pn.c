@@ -522,8 +522,8 @@ TEST(plane_reproduced)
 }
 
 /* A UV sphere with exact radial normals: at level 4 the PN surface stays
- * much closer to the sphere than the facets do (a cubic through the
- * vertices with the right tangent planes against a chord). */
+ * more than five times closer to the sphere than the facets' edges do (a
+ * cubic with the right tangent planes at the vertices against a chord). */
 TEST(sphere_closer_than_facets)
 {
     enum { SEG = 10, BANDS = 7 };
@@ -687,6 +687,10 @@ TEST(bad_arguments_and_small_arenas)
     CHECK(silk_frame_pn(&a, &m, SILK_PN_MAX_LEVEL + 1, SILK_PN_QUADRATIC, &g, &st, &err) == SILK_ERR_ARG);
     CHECK(silk_frame_pn(&a, &m, 3, (silk_pn_normals)7, &g, &st, &err) == SILK_ERR_ARG);
     CHECK(silk_frame_pn(NULL, &m, 3, SILK_PN_QUADRATIC, &g, &st, &err) == SILK_ERR_ARG);
+    silk_mesh bare = m;
+    bare.tri_normal = NULL;
+    CHECK(silk_frame_pn(&a, &bare, 3, SILK_PN_QUADRATIC, &g, &st, &err) == SILK_ERR_ARG);
+    CHECKF(strstr(err.msg, "no shading normals") != NULL, "%s", err.msg);
     CHECK(strchr(err.msg, '\n') == NULL);
 
     /* Room for the coarse mesh but not the patches: the coarse mesh, flagged. */

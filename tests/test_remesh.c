@@ -582,13 +582,32 @@ TEST(boundary_and_nonmanifold_edges)
         int a0 = 2 * i + 1, a1 = 2 * i + 2, b0 = 2 * ((i + 1) % 12) + 1, b1 = b0 + 1;
         n += (size_t)snprintf(open_obj + n, sizeof open_obj - n, "f %d %d %d\nf %d %d %d\n", a0, a1, b1, a0, b1, b0);
     }
-    static const char book_obj[] =   /* three pages on one spine, plus a closed tetrahedron */
-        "v 0 -1 0\nv 0 1 0\nv 1 0 0.2\nv -1 0 0.3\nv 0.1 0 -1\n"
-        "v 3 0 0\nv 4 0 0\nv 3 1 0\nv 3 0 1\n"
-        "f 1 2 3\nf 2 1 4\nf 1 2 5\n"
-        "f 6 8 7\nf 6 7 9\nf 7 8 9\nf 6 9 8\n";
+    /* a book: three half-disc pages on one spine (the non-manifold edge
+     * 1-2), each a fan of five triangles from vertex 1 whose free edge is a
+     * half circle turning 30 degrees at each vertex, so a curved boundary
+     * polyline from spine end to spine end; plus a closed tetrahedron.
+     * (Pages of one triangle have straight sides since polylines stop at
+     * sharp turns: nothing of theirs would be re-meshed.) */
+    char book_obj[2048];
+    size_t nb = (size_t)snprintf(book_obj, sizeof book_obj, "v 0 -1 0\nv 0 1 0\n");
+    static const double page_dir[3][3] = { { 1, 0, 0.2 }, { -1, 0, 0.3 }, { 0.1, 0, -1 } };
+    for (int p = 0; p < 3; p++) {
+        double l = sqrt(page_dir[p][0] * page_dir[p][0] + page_dir[p][2] * page_dir[p][2]);
+        for (int i = 1; i <= 5; i++) {
+            double th = i * 3.14159265358979 / 6;
+            nb += (size_t)snprintf(book_obj + nb, sizeof book_obj - nb, "v %.6f %.6f %.6f\n",
+                                   sin(th) * page_dir[p][0] / l, -cos(th), sin(th) * page_dir[p][2] / l);
+        }
+    }
+    for (int p = 0; p < 3; p++) {
+        int v0 = 3 + 5 * p;   /* the page's first rim vertex */
+        for (int i = 0; i < 5; i++)
+            nb += (size_t)snprintf(book_obj + nb, sizeof book_obj - nb, "f 1 %d %d\n", v0 + i, i < 4 ? v0 + i + 1 : 2);
+    }
+    nb += (size_t)snprintf(book_obj + nb, sizeof book_obj - nb,
+                           "v 3 0 0\nv 4 0 0\nv 3 1 0\nv 3 0 1\nf 18 20 19\nf 18 19 21\nf 19 20 21\nf 18 21 20\n");
     const char *texts[] = { open_obj, book_obj };
-    size_t lens[] = { n, sizeof book_obj - 1 };
+    size_t lens[] = { n, nb };
     for (int k = 0; k < 2; k++) {
         silk_arena a;
         silk_mesh m;
@@ -612,6 +631,8 @@ TEST(boundary_and_nonmanifold_edges)
             silk_arena_top_release(&a, &mk);
         }
         CHECKF(remeshed > 0, "%s: never re-meshed", k ? "book" : "open");
+        printf("  %s: %u triangles, %u boundary and %u non-manifold edges, re-meshed in %u of 24 views\n",
+               k ? "book" : "open tube", m.ntris, m.nboundary_edges, m.nnonmanifold_edges, remeshed);
     }
 }
 

@@ -472,6 +472,31 @@ static size_t raster_bytes(const cli_scene_opts *o)
     return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + 64;
 }
 
+/* The arena the model needs to load (with its visibility hierarchy): the
+ * peak of a load into a larger arena, which is the exact minimum (both
+ * ends of the arena are counted together).  0 if no arena up to 64 times
+ * the given one loads it. */
+static size_t load_bytes_needed(const cli_scene *s, const cli_scene_opts *o, size_t given)
+{
+    size_t size = auto_arena_bytes(s->file_len, 0);
+    if (size < 2 * given) size = 2 * given;
+    for (int attempt = 0; attempt < 6 && size < SIZE_MAX / 4; attempt++, size *= 2) {
+        void *buf = malloc(size);
+        if (!buf) return 0;
+        silk_arena a;
+        silk_mesh m;
+        silk_error err;
+        silk_arena_init(&a, buf, size);
+        silk_status st = silk_load_mesh(s->file, s->file_len, o->mesh_path, &o->load, &a, &m, &err);
+        if (st == SILK_OK && !o->vis_brute) st = silk_vis_build(&m, NULL, &a, &err);
+        size_t peak = a.peak;
+        free(buf);
+        if (st == SILK_OK) return peak;
+        if (st != SILK_ERR_NOMEM) return 0;
+    }
+    return 0;
+}
+
 int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
 {
     memset(s, 0, sizeof *s);
@@ -499,8 +524,13 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
         s->arena_buf = NULL;
         size *= 2;
     }
-    if (st == SILK_ERR_NOMEM && o->arena_bytes)
+    if (st == SILK_ERR_NOMEM && o->arena_bytes) {
+        size_t need = load_bytes_needed(s, o, size);
+        if (need)
+            return cli_fail(CLI_EXIT_INPUT, "%s: arena too small: loading needs %zu bytes, --arena gives %zu",
+                            o->mesh_path, need, size);
         return cli_fail(CLI_EXIT_INPUT, "%s (the arena has %zu bytes; raise --arena)", err.msg, size);
+    }
     if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     s->load_bytes = s->arena.bottom;
 

@@ -66,6 +66,7 @@ typedef struct row {
     double err_max;            /* largest Hausdorff distance of any view */
     double err_worst_mean;     /* largest mean_px of any view */
     double hausdorff_mean;     /* mean over the views of the Hausdorff distance */
+    double outside, inside;    /* err_mean split: pixels only in the mode's / only in the reference's mask */
     size_t arena_peak;         /* arena high-water mark over the views */
 } row;
 
@@ -276,7 +277,7 @@ typedef struct frame_buf {
 /* One mode (or the fine mesh) in one projection, summed over the views. */
 typedef struct acc {
     double ms[MAX_VIEWS];
-    double drawn, err_mean, err_max, err_worst_mean, hausdorff;
+    double drawn, err_mean, err_max, err_worst_mean, hausdorff, outside, inside;
     size_t peak;
     int views, fell_back, failed;
 } acc;
@@ -331,6 +332,10 @@ static void add_error(acc *a, const mask_stats *ms)
 {
     a->err_mean += ms->mean_px;
     a->hausdorff += ms->hausdorff_px;
+    if (ms->length_a > 0) {
+        a->outside += (double)ms->only_b / ms->length_a;
+        a->inside += (double)ms->only_a / ms->length_a;
+    }
     if (ms->hausdorff_px > a->err_max) a->err_max = ms->hausdorff_px;
     if (ms->mean_px > a->err_worst_mean) a->err_worst_mean = ms->mean_px;
 }
@@ -360,6 +365,8 @@ static int push_row(row_list *L, const loaded *l, const char *mode, uint32_t lev
     r->err_max = has_error ? a->err_max : NAN;
     r->err_worst_mean = has_error ? a->err_worst_mean : NAN;
     r->hausdorff_mean = has_error ? a->hausdorff / n : NAN;
+    r->outside = has_error ? a->outside / n : NAN;
+    r->inside = has_error ? a->inside / n : NAN;
     r->arena_peak = a->peak;
     return 0;
 }
@@ -427,6 +434,7 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ro
     for (int grow = 0;; grow += 2) {
         loaded coarse, fine;
         memset(&fine, 0, sizeof fine);
+        rc = 0;
         if ((rc = load_mesh(&coarse, coarse_path, 1, grow)) != 0) {
             unload(&coarse);
             return rc;
@@ -437,10 +445,15 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ro
             return rc;
         }
         int first = rows->n, fell_back = 0;
+        acc *mode_acc = malloc(MAX_MODES * sizeof *mode_acc), fine_acc;
+        if (!mode_acc) {
+            unload(&coarse);
+            unload(&fine);
+            return cli_fail(CLI_EXIT_INPUT, "out of memory");
+        }
         for (int proj = 0; proj < 2 && rc != CLI_EXIT_USAGE; proj++) {
             if (!(c->proj_mask >> proj & 1)) continue;
-            static acc mode_acc[MAX_MODES], fine_acc;
-            memset(mode_acc, 0, sizeof mode_acc);
+            memset(mode_acc, 0, MAX_MODES * sizeof *mode_acc);
             memset(&fine_acc, 0, sizeof fine_acc);
             int r = bench_proj(x, &coarse, fine_path ? &fine : NULL, proj, mode_acc, &fine_acc);
             if (r) rc = r;
@@ -449,15 +462,17 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ro
                 if (mode_acc[m].failed || mode_acc[m].views < c->views) continue;
                 fell_back |= mode_acc[m].fell_back;
                 if (push_row(rows, &coarse, c->mode[m].name, c->mode[m].level, proj, fine_path != NULL, &mode_acc[m]))
-                    return CLI_EXIT_INPUT;
+                    rc = CLI_EXIT_INPUT;
             }
             if (fine_path && fine_acc.views == c->views) {
                 /* the reference itself: error 0 by definition */
                 fine_acc.err_mean = fine_acc.err_max = fine_acc.err_worst_mean = fine_acc.hausdorff = 0;
-                if (push_row(rows, &fine, "fine", 0, proj, 1, &fine_acc)) return CLI_EXIT_INPUT;
-                snprintf(rows->r[rows->n - 1].mesh, sizeof rows->r[0].mesh, "%s", coarse.name);
+                fine_acc.outside = fine_acc.inside = 0;
+                if (push_row(rows, &fine, "fine", 0, proj, 1, &fine_acc)) rc = CLI_EXIT_INPUT;
+                else snprintf(rows->r[rows->n - 1].mesh, sizeof rows->r[0].mesh, "%s", coarse.name);
             }
         }
+        free(mode_acc);
         unload(&coarse);
         unload(&fine);
         /* Numbers from frames that ran short of arena are not the mode's:
@@ -492,7 +507,8 @@ static int write_csv(const char *path, const row_list *L, const bench_cfg *c)
     if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     FILE *f = o.fp;
     fprintf(f, "mesh,mode,level,projection,triangles_in,triangles_drawn,ms_per_frame,error_mean_px,error_max_px,"
-               "arena_peak_bytes,fps,views,width,height,error_worst_view_mean_px,hausdorff_mean_px,fell_back\n");
+               "arena_peak_bytes,fps,views,width,height,error_worst_view_mean_px,hausdorff_mean_px,error_outside_px,"
+               "error_inside_px,fell_back\n");
     for (int i = 0; i < L->n; i++) {
         const row *r = &L->r[i];
         fprintf(f, "%s,%s,", r->mesh, r->mode);
@@ -507,6 +523,8 @@ static int write_csv(const char *path, const row_list *L, const bench_cfg *c)
         fprintf(f, ",%d,%d,%d", c->views, c->width, c->height);
         csv_num(f, r->err_worst_mean, "%.4f");
         csv_num(f, r->hausdorff_mean, "%.4f");
+        csv_num(f, r->outside, "%.4f");
+        csv_num(f, r->inside, "%.4f");
         fprintf(f, ",%d\n", r->fell_back);
     }
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
@@ -534,6 +552,7 @@ static double get_ms(const row *r) { return r->ms; }
 static double get_fps(const row *r) { return 1000 / r->ms; }
 static double get_err_mean(const row *r) { return r->err_mean; }
 static double get_err_max(const row *r) { return r->err_max; }
+static double get_outside(const row *r) { return r->outside; }
 
 /* The mean over the projections measured of a row's value. */
 static double both(const row_list *L, const char *mesh, const char *mode, double (*get)(const row *))
@@ -601,9 +620,11 @@ static int write_md(const char *path, const row_list *L, const bench_cfg *c)
             "max = the largest Hausdorff distance between the outlines in any view.\n"
             "Pairs are orthographic / perspective.  Arena = high-water mark of the mesh, its\n"
             "visibility hierarchy and the frame's scratch (the frame buffer is not in it).\n"
+            "Outside = the share of the differing pixels that the mode covers and the fine mesh\n"
+            "does not (the rest is fine mesh the mode misses).\n"
             "Mode `fine` is the reference mesh itself, drawn flat.\n\n"
-            "| mesh | triangles | mode | drawn | ms | fps | error mean px | error max px | arena KiB |\n"
-            "|---|---:|---|---:|---:|---:|---:|---:|---:|\n",
+            "| mesh | triangles | mode | drawn | ms | fps | error mean px | outside | error max px | arena KiB |\n"
+            "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n",
             c->width, c->height, c->views, c->reps);
     for (int i = 0; i < L->n; i++) {
         const row *r = &L->r[i];
@@ -621,10 +642,13 @@ static int write_md(const char *path, const row_list *L, const bench_cfg *c)
         md_pair(f, ro, rp, get_ms, "%.2f");
         md_pair(f, ro, rp, get_fps, "%.0f");
         if (r->has_error) {
+            double out = both(L, r->mesh, r->mode, get_outside), all = both(L, r->mesh, r->mode, get_err_mean);
             md_pair(f, ro, rp, get_err_mean, "%.2f");
+            if (all > 0) fprintf(f, " %.0f%% |", 100 * out / all);
+            else fprintf(f, " - |");
             md_pair(f, ro, rp, get_err_max, "%.1f");
         } else {
-            fprintf(f, " - | - |");
+            fprintf(f, " - | - | - |");
         }
         fprintf(f, " %.0f |\n", peak / 1024.0);
     }

@@ -35,9 +35,10 @@ static void help(FILE *f)
             "  -o, --output DIFF.png picture of the differences: both grey, only A red,\n"
             "                        only B blue, neither white (written atomically)\n"
             "\n"
-            "example:\n"
-            "  silk render bunny-fine.obj -o fine.png --mode flat\n"
-            "  silk render bunny-500.obj -o smooth.png\n"
+            "example (the same camera for both: the default one frames each mesh by\n"
+            "its own bounding box):\n"
+            "  silk render bunny-fine.obj -o fine.png --mode flat --eye 1.5,1.2,3.5 --target 0,0,0\n"
+            "  silk render bunny-500.obj -o smooth.png --eye 1.5,1.2,3.5 --target 0,0,0\n"
             "  silk diff fine.png smooth.png -o diff.png\n");
 }
 

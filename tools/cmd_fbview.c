@@ -20,6 +20,7 @@
 #include <time.h>
 
 #include "cli.h"
+#include "viewer.h"
 #include "../platform/fb.h"
 
 /* Board defaults (boards/linux-fb/board.mk): the device and the band height. */
@@ -198,6 +199,9 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
 
 int cmd_view(int argc, char **argv)
 {
+    /* Without --fb / --fb-file: the window (tools/cmd_view.c). */
+    int desktop = cmd_view_desktop(argc, argv);
+    if (desktop >= 0) return desktop;
     cli_scene_opts o;
     cli_scene_opts_default(&o);
     view_opts v;

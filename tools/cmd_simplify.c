@@ -4,10 +4,12 @@
  * OBJ.  The input is read by silk's own loader (so every format and every
  * error message is the renderer's), its Q16.16 positions widened to double.
  */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli.h"
 #include "measure.h"
@@ -103,6 +105,35 @@ static int write_obj(const simp_mesh *m, const char *in, const char *path, uint3
     return 0;
 }
 
+static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale)
+{
+    simp_mesh m;
+    int closed = 0, rc;
+    if ((rc = load(in, scale, &m, &closed)) != 0) {
+        simp_free(&m);
+        return rc;
+    }
+    simp_stats st;
+    simp_topology topo;
+    if (simp_run(&m, so, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
+    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
+        /* the checks in simplify.c should make this impossible */
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
+                      "%u non-manifold vertices, %u misoriented edges); not written",
+                      in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
+    else if ((rc = write_obj(&m, in, out, so->target_tris)) == 0) {
+        if (strcmp(out, "-") != 0)
+            printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
+                   m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);
+        if (m.ntris > so->target_tris + so->target_tris / 50)
+            fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
+                            "surface\n", in, m.ntris);
+    }
+    simp_free(&m);
+    return rc;
+}
+
 int cmd_simplify(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
@@ -144,33 +175,13 @@ int cmd_simplify(int argc, char **argv)
     }
     if (!rc && (!in || !out)) rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
     if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
-    if (rc) return rc;
     so.target_tris = (uint32_t)target;
-
-    simp_mesh m;
-    int closed = 0;
-    if ((rc = load(in, scale, &m, &closed)) != 0) {
-        simp_free(&m);
-        return rc;
-    }
-    simp_stats st;
-    simp_topology topo;
-    if (simp_run(&m, &so, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
-    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
-    else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
-        /* the checks in simplify.c should make this impossible */
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
-                      "%u non-manifold vertices, %u misoriented edges); not written",
-                      in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
-    else if ((rc = write_obj(&m, in, out, so.target_tris)) == 0) {
-        if (strcmp(out, "-") != 0)
-            printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
-                   m.ntris, m.nverts, so.target_tris, st.collapses, st.feature_edges);
-        if (m.ntris > so.target_tris + so.target_tris / 50)
-            fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
-                            "surface\n", in, m.ntris);
-    }
-    simp_free(&m);
-    if (rc && strcmp(out, "-") != 0) silk_file_remove_stale(out);
+    if (rc) return rc;
+    rc = simplify(in, out, &so, scale);
+    /* A file at OUT after a failure would be an earlier run's - unless it
+     * is the input itself. */
+    struct stat si, so_;
+    int same = stat(in, &si) == 0 && stat(out, &so_) == 0 && si.st_dev == so_.st_dev && si.st_ino == so_.st_ino;
+    if (rc && strcmp(out, "-") != 0 && !same) silk_file_remove_stale(out);
     return rc;
 }

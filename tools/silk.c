@@ -11,6 +11,7 @@
 /* Small devices: tools/cmd_pack.c, cmd_profile.c, cmd_fbview.c. */
 int cmd_pack(int argc, char **argv);
 int cmd_view(int argc, char **argv);
+int cmd_profile(int argc, char **argv);
 
 typedef struct command {
     const char *name;
@@ -27,6 +28,7 @@ static const command commands[] = {
     { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
     { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },
     { "view", cmd_view, "view MESH --fb /dev/fb0", "the model turning on a framebuffer" },
+    { "profile", cmd_profile, "profile MESH --board NAME", "where every byte of RAM and flash goes on a board" },
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 

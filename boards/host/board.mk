@@ -10,6 +10,10 @@
 BOARD_WIDTH  := 640
 BOARD_HEIGHT := 480
 BOARD_FORMAT := SILK_PIX_RGB888
+# The whole frame in one band, written as PNG (what `silk profile --board
+# host` measures; device boards set a smaller band and their own sink).
+BOARD_BAND_ROWS := $(BOARD_HEIGHT)
+BOARD_SINK   := png
 
 BOARD_CFLAGS := -DSILK_BOARD_WIDTH=$(BOARD_WIDTH) -DSILK_BOARD_HEIGHT=$(BOARD_HEIGHT) \
                 -DSILK_BOARD_FORMAT=$(BOARD_FORMAT)

@@ -34,7 +34,8 @@ BOARD_RUN   := qemu-system-arm -M mps2-an385 -nographic -monitor none -serial no
 
 # What the firmware renders: each model packed into flash, from BOARD_VIEWS
 # cameras around it (`silk pack --views`), each in flat and smooth mode.
-BOARD_MESHES ?= ../shared/meshes/bunny-500.obj ../shared/meshes/knot-480.obj
+MESHES_DIR   := $(or $(SILK_MESHES),../shared/meshes)
+BOARD_MESHES ?= $(MESHES_DIR)/bunny-500.obj $(MESHES_DIR)/knot-480.obj
 BOARD_VIEWS  := 3
 
 BOARD_CFLAGS := -DSILK_BOARD_WIDTH=$(BOARD_WIDTH) -DSILK_BOARD_HEIGHT=$(BOARD_HEIGHT) \

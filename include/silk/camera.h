@@ -48,7 +48,7 @@ silk_vec4 silk_view_clip(const silk_view *v, silk_vec3 p);
  * degrees, znear >= SILK_ZNEAR_MIN, ortho_half_height >= SILK_ZNEAR_MIN,
  * width and height in [1, SILK_MAX_DIM], |P - eye| < 32768 for drawn points. */
 #define SILK_FOV_MIN    SILK_FX_C(1, 1)
-#define SILK_FOV_MAX    SILK_FX_C(175, 1)
+#define SILK_FOV_MAX    SILK_FX_C(179, 1)
 #define SILK_ZNEAR_MIN  SILK_FX_C(1, 1024)
 #define SILK_MAX_DIM    8192
 

@@ -6,7 +6,8 @@
  * band goes to the host as PPM rows, as a display driver would send it over
  * SPI; then the program reports what memory it used.
  *
- * Everything comes from one static arena (band buffers at the bottom,
+ * The packed mesh is validated once (silk_mesh_validate) before the first
+ * frame.  Everything comes from one static arena (band buffers at the bottom,
  * per-frame scratch from the top), so the RAM a frame takes is the arena's
  * high-water mark plus static data plus the measured stack.
  *
@@ -25,6 +26,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "silk/silk.h"
+#include "silk/validate.h"
 #include "fw_io.h"
 #include "fwmodel.h"
 
@@ -173,6 +175,13 @@ int fw_scene(void)
     silk_mesh mesh;
     fwmodel_mesh(&mesh);
     const silk_camera *c0 = fwmodel_camera(0);
+    /* The arrays in flash were not loaded by silk: check them once, so a
+     * damaged or hand-edited header is an error, not a wild read. */
+    silk_error err;
+    if (silk_mesh_validate(&mesh, FW_MODEL_NAME, &err) != SILK_OK || !c0) {
+        say("fw error %s", c0 ? err.msg : "the model has no camera");
+        return 1;
+    }
     say("fw board=%s model=%s size=%dx%d format=%s band_rows=%d cameras=%d", FW_BOARD, FW_MODEL_NAME, c0->width,
         c0->height, FW_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", FW_BAND_ROWS, fwmodel_NCAMERAS);
 

@@ -1,0 +1,674 @@
+/*
+ * cmd_view.c - `silk view MESH`: the desktop viewer (viewer.h) without its
+ * window: the orbit camera, what the keys do, the frame with its overlays
+ * and status line, screenshots, and the two modes that need no window at
+ * all: `--benchmark N` (time N frames turning about the model) and
+ * `--events "..."` (apply a list of key and mouse events, for scripts).
+ *
+ * Overlays (key l): the silhouette as drawn, found in the depth buffer
+ * (covered pixels next to background or to something much farther), and the
+ * feature curves of paper III-A (the Hermite segments the mesh precomputes
+ * for its feature edges), depth-tested.  Key w is the core's own --wire:
+ * every edge, the triangles re-meshing added in red.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "viewer.h"
+#include "font.h"
+#include "sheet.h"
+#include "../platform/platform.h"
+
+#define PI 3.14159265358979323846
+#define DEG (PI / 180)
+
+#define HUD_BG    0x202020u
+#define HUD_TEXT  0xF0F0F0u
+#define LINE_SIL  0x1060FFu     /* the silhouette as drawn */
+#define LINE_FEAT 0x10A040u     /* feature curves */
+#define FEATURE_STEPS 8         /* line segments per feature curve */
+#define MAX_DOUBLINGS 4
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
+}
+
+static double clampd(double x, double lo, double hi) { return x < lo ? lo : x > hi ? hi : x; }
+
+/* ---- the scene and the camera ------------------------------------------------------ */
+
+/* (Re)load the mesh; the arena is the tool's default size doubled
+ * v->doublings times (a frame that fell back asks for more). */
+static int load_scene(viewer *v)
+{
+    cli_scene_free(&v->s);
+    cli_scene_opts o = v->o;
+    /* The frame lives outside the arena (it changes size with the window):
+     * the scene gets a 1x1 target and no raster bytes to speak of. */
+    o.width = o.height = 1;
+    o.arena_doublings = v->doublings;
+    return cli_scene_load(&v->s, &o);
+}
+
+/* The camera of the orbit state, for a w x h frame. */
+static int update_camera(viewer *v)
+{
+    cli_scene_opts o = v->o;
+    o.width = v->w;
+    o.height = v->h;
+    double d[3] = { cos(v->el * DEG) * sin(v->az * DEG), sin(v->el * DEG), cos(v->el * DEG) * cos(v->az * DEG) };
+    /* Orthographic: the view is as high as the perspective view at the
+     * target, and the eye steps back out of the model. */
+    double half = v->dist * tan(o.fov * DEG / 2), back = v->dist;
+    if (v->ortho) {
+        double off = 0;
+        for (int k = 0; k < 3; k++) off += (v->target[k] - v->centre[k]) * (v->target[k] - v->centre[k]);
+        double need = 2.2 * v->radius + sqrt(off);
+        if (back < need) back = need;
+    }
+    o.have_eye = o.have_target = o.have_up = 1;
+    for (int k = 0; k < 3; k++) {
+        o.target[k] = v->target[k];
+        o.eye[k] = v->target[k] + d[k] * back;
+        o.up[k] = k == 1;
+    }
+    o.ortho = v->ortho;
+    o.ortho_auto = 0;
+    o.ortho_half = half < 1.0 / 256 ? 1.0 / 256 : half;
+    silk_camera cam;
+    int rc = cli_camera(&o, &v->s.mesh, &cam);
+    if (rc) return rc;
+    silk_error err;
+    if (silk_view_init(&v->view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "view: %s", err.msg);
+    silk_phong_default(&v->phong, &v->view);
+    silk_hal_phong(&v->hal, &v->phong);
+    return 0;
+}
+
+/* Keep the orbit where the camera stays valid: the eye within the tool's
+ * coordinate limit, the target near the model, never straight up or down
+ * (the up vector would be along the view). */
+static void clamp_orbit(viewer *v)
+{
+    v->el = clampd(v->el, -89, 89);
+    v->az = fmod(v->az, 360);
+    double far = CLI_MAX_COORD / 4;
+    if (far > 200 * v->radius) far = 200 * v->radius;
+    v->dist = clampd(v->dist, 0.02 * v->radius, far);
+    for (int k = 0; k < 3; k++) v->target[k] = clampd(v->target[k], v->centre[k] - 2 * v->radius, v->centre[k] + 2 * v->radius);
+}
+
+/* ---- frame buffers ------------------------------------------------------------------- */
+
+int viewer_resize(viewer *v, int w, int h)
+{
+    if (w < 1) w = 1;
+    if (h < 1) h = 1;
+    if (w > CLI_MAX_SIDE) w = CLI_MAX_SIDE;
+    if (h > CLI_MAX_SIDE) h = CLI_MAX_SIDE;
+    size_t px = (size_t)w * (size_t)h;
+    uint8_t *color = malloc(px * silk_pixfmt_bytes(v->o.fmt)), *mark = malloc(px);
+    uint32_t *depth = malloc(px * sizeof *depth);
+    if (!color || !mark || !depth) {
+        free(color);
+        free(mark);
+        free(depth);
+        return cli_fail(CLI_EXIT_INPUT, "view: out of memory for a %dx%d frame", w, h);
+    }
+    free(v->color);
+    free(v->mark);
+    free(v->depth);
+    v->color = color;
+    v->mark = mark;
+    v->depth = depth;
+    v->w = w;
+    v->h = h;
+    silk_target_init(&v->t, w, h, 0, h, v->o.fmt, color, depth);
+    v->dirty = 1;
+    return update_camera(v);
+}
+
+int viewer_open(viewer *v, const cli_scene_opts *o, const char *shot_pattern)
+{
+    memset(v, 0, sizeof *v);
+    v->o = *o;
+    v->ro = o->render;
+    v->ortho = o->ortho;
+    v->hud = 1;
+    v->shot_pattern = shot_pattern;
+    int rc = load_scene(v);
+    if (rc) return rc;
+
+    /* Start where `silk render` looks from: its camera for this size. */
+    silk_camera cam;
+    if ((rc = cli_camera(o, &v->s.mesh, &cam)) != 0) return rc;
+    const silk_mesh *m = &v->s.mesh;
+    double lo[3] = { cli_fx_to_double(m->bbox_min.x), cli_fx_to_double(m->bbox_min.y), cli_fx_to_double(m->bbox_min.z) };
+    double hi[3] = { cli_fx_to_double(m->bbox_max.x), cli_fx_to_double(m->bbox_max.y), cli_fx_to_double(m->bbox_max.z) };
+    double r2 = 0;
+    for (int k = 0; k < 3; k++) v->centre[k] = (lo[k] + hi[k]) / 2;
+    for (uint32_t i = 0; i < m->nverts; i++) {
+        double dx = cli_fx_to_double(m->pos[i].x) - v->centre[0], dy = cli_fx_to_double(m->pos[i].y) - v->centre[1],
+               dz = cli_fx_to_double(m->pos[i].z) - v->centre[2];
+        if (dx * dx + dy * dy + dz * dz > r2) r2 = dx * dx + dy * dy + dz * dz;
+    }
+    v->radius = r2 > 0 ? sqrt(r2) : 1;
+    double e[3] = { cli_fx_to_double(cam.eye.x), cli_fx_to_double(cam.eye.y), cli_fx_to_double(cam.eye.z) };
+    double t[3] = { cli_fx_to_double(cam.target.x), cli_fx_to_double(cam.target.y), cli_fx_to_double(cam.target.z) };
+    double d[3] = { e[0] - t[0], e[1] - t[1], e[2] - t[2] };
+    memcpy(v->target, t, sizeof t);
+    v->dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(v->dist > 0)) v->dist = 3 * v->radius;
+    v->el = asin(clampd(d[1] / v->dist, -1, 1)) / DEG;
+    v->az = atan2(d[0], d[2]) / DEG;
+    if (o->ortho) v->dist = cli_fx_to_double(cam.ortho_half_height) / tan(o->fov * DEG / 2);
+    clamp_orbit(v);
+    memcpy(v->home, v->target, sizeof v->target);
+    v->home[3] = v->az;
+    v->home[4] = v->el;
+    v->home[5] = v->dist;
+    return viewer_resize(v, o->width, o->height);
+}
+
+void viewer_close(viewer *v)
+{
+    cli_scene_free(&v->s);
+    free(v->color);
+    free(v->mark);
+    free(v->depth);
+    memset(v, 0, sizeof *v);
+}
+
+/* ---- input ------------------------------------------------------------------------- */
+
+void viewer_orbit(viewer *v, double dx_px, double dy_px)
+{
+    v->az -= dx_px * VIEWER_ORBIT_DEG_PER_PX;
+    v->el += dy_px * VIEWER_ORBIT_DEG_PER_PX;
+    clamp_orbit(v);
+    v->dirty = 1;
+}
+
+/* Move the target in the view plane so that the model follows the mouse. */
+void viewer_pan(viewer *v, double dx_px, double dy_px)
+{
+    double per_px = 2 * v->dist * tan(v->o.fov * DEG / 2) / v->h;
+    double r[3] = { cli_fx_to_double(v->view.right.x), cli_fx_to_double(v->view.right.y), cli_fx_to_double(v->view.right.z) };
+    double u[3] = { cli_fx_to_double(v->view.upv.x), cli_fx_to_double(v->view.upv.y), cli_fx_to_double(v->view.upv.z) };
+    for (int k = 0; k < 3; k++) v->target[k] += (-dx_px * r[k] + dy_px * u[k]) * per_px;
+    clamp_orbit(v);
+    v->dirty = 1;
+}
+
+void viewer_zoom(viewer *v, double notches)
+{
+    v->dist /= pow(VIEWER_ZOOM_STEP, notches);
+    clamp_orbit(v);
+    v->dirty = 1;
+}
+
+int viewer_key(viewer *v, int key)
+{
+    static const silk_mode cycle[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN };
+    v->dirty = 1;
+    switch (key) {
+    case '1': case '2': case '3': case '4':
+        v->ro.mode = cycle[key - '1'];
+        break;
+    case 'm':
+        for (int i = 0; i < 4; i++)
+            if (cycle[i] == v->ro.mode) {
+                v->ro.mode = cycle[(i + 1) % 4];
+                break;
+            }
+        break;
+    case 'w': v->ro.wire = !v->ro.wire; break;
+    case 'l': v->lines = !v->lines; break;
+    case 'h': v->hud = !v->hud; break;
+    case ' ': v->spin = !v->spin; break;
+    case 'o': v->ortho = !v->ortho; break;
+    /* Tolerance in steps of two over the range silk_render supports. */
+    case '+': case '=':
+        if (v->ro.tolerance_px < SILK_FX_C(4, 1)) v->ro.tolerance_px = silk_fx_min(2 * v->ro.tolerance_px, SILK_FX_C(4, 1));
+        break;
+    case '-':
+        if (v->ro.tolerance_px > SILK_FX_C(1, 4)) v->ro.tolerance_px = silk_fx_max(v->ro.tolerance_px / 2, SILK_FX_C(1, 4));
+        break;
+    case ']': if (v->ro.level < SILK_PN_MAX_LEVEL) v->ro.level++; break;
+    case '[': if (v->ro.level > 1) v->ro.level--; break;
+    case 'r':
+        memcpy(v->target, v->home, sizeof v->target);
+        v->az = v->home[3];
+        v->el = v->home[4];
+        v->dist = v->home[5];
+        break;
+    case VIEWER_KEY_LEFT: viewer_orbit(v, 15 / VIEWER_ORBIT_DEG_PER_PX, 0); break;
+    case VIEWER_KEY_RIGHT: viewer_orbit(v, -15 / VIEWER_ORBIT_DEG_PER_PX, 0); break;
+    case VIEWER_KEY_UP: viewer_orbit(v, 0, 15 / VIEWER_ORBIT_DEG_PER_PX); break;
+    case VIEWER_KEY_DOWN: viewer_orbit(v, 0, -15 / VIEWER_ORBIT_DEG_PER_PX); break;
+    case 's': return viewer_screenshot(v, NULL);
+    case 'q': v->quit = 1; break;
+    default: v->dirty = 0; break;
+    }
+    return 0;
+}
+
+/* ---- overlays ------------------------------------------------------------------------- */
+
+static silk_vertex_out clip_of(const silk_view *view, silk_vec3 p)
+{
+    silk_vertex_out o;
+    memset(&o, 0, sizeof o);
+    o.clip = silk_view_clip(view, p);
+    return o;
+}
+
+/* The silhouette as drawn: a covered pixel whose 4-neighbour is background
+ * or lies more than 1/16 farther (depth holds 1/w: larger is nearer).  Only
+ * the nearer side is marked, so the line sits on the object. */
+static void draw_outline(viewer *v)
+{
+    const uint32_t *z = v->depth;
+    int w = v->w, h = v->h;
+    memset(v->mark, 0, (size_t)w * (size_t)h);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            uint32_t d = z[(size_t)y * w + x];
+            if (!d) continue;
+            uint32_t lim = d - d / 16;
+            int edge = (x > 0 && z[(size_t)y * w + x - 1] < lim) || (x + 1 < w && z[(size_t)y * w + x + 1] < lim) ||
+                       (y > 0 && z[(size_t)(y - 1) * w + x] < lim) || (y + 1 < h && z[(size_t)(y + 1) * w + x] < lim);
+            v->mark[(size_t)y * w + x] = (uint8_t)edge;
+        }
+    /* Two pixels wide, the second one inside the object, so that the line
+     * shows at a glance. */
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            if (!v->mark[(size_t)y * w + x]) continue;
+            silk_target_put(&v->t, x, y, LINE_SIL);
+            for (int k = 0; k < 4; k++) {
+                int nx = x + (k == 0) - (k == 1), ny = y + (k == 2) - (k == 3);
+                if (nx >= 0 && nx < w && ny >= 0 && ny < h && z[(size_t)ny * w + nx] >= z[(size_t)y * w + x])
+                    silk_target_put(&v->t, nx, ny, LINE_SIL);
+            }
+        }
+}
+
+/* Feature edges: their Hermite curves (eq. 5 with the precomputed tangents)
+ * in the modes that bend them, straight in flat mode. */
+static void draw_features(viewer *v)
+{
+    const silk_mesh *m = &v->s.mesh;
+    int steps = v->ro.mode == SILK_MODE_FLAT ? 1 : FEATURE_STEPS;
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        silk_index f = m->edge_feature ? m->edge_feature[e] : SILK_NO_INDEX;
+        if (f == SILK_NO_INDEX) continue;
+        silk_curve c;
+        memset(&c, 0, sizeof c);
+        c.p0 = m->pos[m->edge[e].v[0]];
+        c.p1 = m->pos[m->edge[e].v[1]];
+        c.t0 = m->feature[f].t0;
+        c.t1 = m->feature[f].t1;
+        silk_vertex_out a = clip_of(&v->view, c.p0), b;
+        for (int i = 1; i <= steps; i++) {
+            b = clip_of(&v->view, silk_hermite_point(&c, (silk_fx)((int64_t)SILK_FX_ONE * i / steps)));
+            silk_raster_line(&v->t, &a, &b, LINE_FEAT);
+            a = b;
+        }
+    }
+}
+
+static void mode_text(const silk_render_opts *ro, char *buf, size_t n)
+{
+    if (ro->mode == SILK_MODE_PN) snprintf(buf, n, "pn level %u", (unsigned)ro->level);
+    else if (ro->mode == SILK_MODE_FLAT) snprintf(buf, n, "flat");
+    else snprintf(buf, n, "%s tol %g", sheet_mode_name(ro->mode), cli_fx_to_double(ro->tolerance_px));
+}
+
+void viewer_status(const viewer *v, char *buf, size_t n)
+{
+    char mode[40];
+    mode_text(&v->ro, mode, sizeof mode);
+    double ms = v->frame_ms + v->present_ms;
+    size_t used = v->s.load_bytes + v->stats.frame_bytes;
+    snprintf(buf, n, "%s | %s | %.1f ms %.0f fps | %u tris, %u silhouette | arena %zuK of %zuK%s%s%s", mode,
+             v->ortho ? "ortho" : "persp", ms, ms > 0 ? 1000 / ms : 0.0, (unsigned)v->stats.tris_drawn,
+             (unsigned)v->stats.silhouette_tris, (used + 1023) / 1024, (v->s.arena.size + 1023) / 1024,
+             v->ro.wire ? " | wire" : "", v->lines ? " | lines" : "", v->stats.fell_back ? " | FELL BACK" : "");
+}
+
+/* The status line in a dark band at the bottom of the frame. */
+static void draw_hud(viewer *v)
+{
+    int scale = v->w >= 1280 ? 2 : 1, band = (FONT_LINE + 4) * scale;
+    for (int y = v->h - band; y < v->h; y++)
+        for (int x = 0; x < v->w; x++) silk_target_put(&v->t, x, y, HUD_BG);
+    char text[256];
+    viewer_status(v, text, sizeof text);
+    font_draw(&v->t, 4 * scale, v->h - band + 3 * scale, text, HUD_TEXT, scale);
+}
+
+/* ---- frames ------------------------------------------------------------------------------ */
+
+int viewer_frame(viewer *v)
+{
+    if (!v->dirty && !v->spin) return 0;
+    if (v->spin) {
+        v->az += VIEWER_SPIN_DEG;
+        clamp_orbit(v);
+    }
+    for (;;) {
+        int rc = update_camera(v);
+        if (rc) return rc;
+        silk_error err;
+        double t0 = now_ms();
+        if (silk_render(&v->s.arena, &v->s.mesh, &v->view, &v->hal, &v->ro, &v->t, &v->stats, &err) != SILK_OK)
+            return cli_fail(CLI_EXIT_INPUT, "%s: %s", v->o.mesh_path, err.msg);
+        double t1 = now_ms();
+        /* As `silk render` does: a frame that ran out of scratch gets a
+         * larger arena (unless --arena fixed it) and is drawn again. */
+        if (v->stats.fell_back && !v->o.arena_bytes && v->doublings < MAX_DOUBLINGS) {
+            v->doublings++;
+            if ((rc = load_scene(v)) != 0) return rc;
+            continue;
+        }
+        if (v->lines) {
+            draw_outline(v);
+            draw_features(v);
+        }
+        v->render_ms = t1 - t0;
+        v->frame_ms = now_ms() - t0;
+        if (v->hud) draw_hud(v);
+        break;
+    }
+    v->frames++;
+    v->dirty = 0;
+    return 0;
+}
+
+int viewer_screenshot(viewer *v, const char *path)
+{
+    int rc = viewer_frame(v);
+    if (rc) return rc;
+    char name[4096];
+    int numbered = !path;
+    if (numbered) {
+        if (pattern_path(v->shot_pattern, v->shots + 1, name, sizeof name) != 0)
+            return cli_fail(CLI_EXIT_USAGE, "view: screenshot name too long: %s", v->shot_pattern);
+        path = name;
+    }
+    silk_error err;
+    if (silk_image_write(&v->t, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    v->shots += numbered;
+    char mode[40];
+    mode_text(&v->ro, mode, sizeof mode);
+    printf("silk view: saved %s (%dx%d, %s, %s, %u triangles drawn, %u silhouette)\n", path, v->w, v->h, mode,
+           v->ortho ? "orthographic" : "perspective", (unsigned)v->stats.tris_drawn,
+           (unsigned)v->stats.silhouette_tris);
+    fflush(stdout);
+    return 0;
+}
+
+/* ---- headless: --benchmark and --events ---------------------------------------------------- */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* N frames, each turned 360/N degrees further: the time silk_render takes
+ * and the time of the whole frame with overlays, as medians. */
+static int run_benchmark(viewer *v, long n)
+{
+    double *render = malloc((size_t)n * sizeof *render), *frame = malloc((size_t)n * sizeof *frame);
+    if (!render || !frame) {
+        free(render);
+        free(frame);
+        return cli_fail(CLI_EXIT_INPUT, "view: out of memory");
+    }
+    double tris = 0, sil = 0;
+    size_t peak = 0;
+    int rc = 0;
+    for (long i = 0; i < n && !rc; i++) {
+        v->az += 360.0 / n;
+        clamp_orbit(v);
+        v->dirty = 1;
+        rc = viewer_frame(v);
+        render[i] = v->render_ms;
+        frame[i] = v->frame_ms;
+        tris += v->stats.tris_drawn;
+        sil += v->stats.silhouette_tris;
+        if (v->stats.frame_bytes > peak) peak = v->stats.frame_bytes;
+    }
+    if (!rc) {
+        qsort(render, (size_t)n, sizeof *render, cmp_double);
+        qsort(frame, (size_t)n, sizeof *frame, cmp_double);
+        double rm = render[n / 2], fm = frame[n / 2];
+        printf("view-benchmark %s mode=%s level=%u tolerance=%g size=%dx%d frames=%ld render_ms=%.3f frame_ms=%.3f "
+               "fps=%.1f tris_drawn=%.0f silhouette_tris=%.0f arena_bytes=%zu frame_bytes=%zu\n",
+               v->o.mesh_path, sheet_mode_name(v->ro.mode), (unsigned)v->ro.level, cli_fx_to_double(v->ro.tolerance_px),
+               v->w, v->h, n, rm, fm, fm > 0 ? 1000 / fm : 0.0, tris / n, sil / n, v->s.arena.size, peak);
+    }
+    free(render);
+    free(frame);
+    return rc;
+}
+
+/* --events: words separated by blanks, applied in order:
+ *   a key as itself (1 w l + - [ ] o s h r m), "space", "left" "right" "up"
+ *   "down", "drag:DX,DY" (orbit), "pan:DX,DY", "wheel:N", "size:WxH",
+ *   "shot:PATH" (a screenshot to PATH). */
+static int run_events(viewer *v, const char *script)
+{
+    static const struct { const char *name; int key; } named[] = {
+        { "space", ' ' }, { "left", VIEWER_KEY_LEFT }, { "right", VIEWER_KEY_RIGHT },
+        { "up", VIEWER_KEY_UP }, { "down", VIEWER_KEY_DOWN }, { "plus", '+' }, { "minus", '-' },
+    };
+    const char *p = script;
+    int rc = 0;
+    while (!rc && !v->quit) {
+        p += strspn(p, " \t\n");
+        if (!*p) break;
+        size_t len = strcspn(p, " \t\n");
+        char word[512];
+        if (len >= sizeof word) return cli_fail(CLI_EXIT_USAGE, "--events: word too long at \"%.20s...\"", p);
+        memcpy(word, p, len);
+        word[len] = 0;
+        p += len;
+        double a, b;
+        int w, h, key = -1;
+        char extra;
+        for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
+            if (strcmp(word, named[i].name) == 0) key = named[i].key;
+        if (key < 0 && len == 1 && strchr("1234mwlhor+-=[]sq", word[0])) key = word[0];
+        if (key >= 0) rc = viewer_key(v, key);
+        else if (sscanf(word, "drag:%lf,%lf%c", &a, &b, &extra) == 2) viewer_orbit(v, a, b);
+        else if (sscanf(word, "pan:%lf,%lf%c", &a, &b, &extra) == 2) viewer_pan(v, a, b);
+        else if (sscanf(word, "wheel:%lf%c", &a, &extra) == 1) viewer_zoom(v, a);
+        else if (sscanf(word, "size:%dx%d%c", &w, &h, &extra) == 2 && w > 0 && h > 0 && w <= CLI_MAX_SIDE &&
+                 h <= CLI_MAX_SIDE)
+            rc = viewer_resize(v, w, h);
+        else if (strncmp(word, "shot:", 5) == 0 && word[5]) rc = viewer_screenshot(v, word + 5);
+        else
+            return cli_fail(CLI_EXIT_USAGE, "--events: unknown event \"%s\" (see silk view --help)", word);
+        if (!rc) rc = viewer_frame(v);
+    }
+    return rc;
+}
+
+/* ---- the command ------------------------------------------------------------------------ */
+
+static void help(FILE *f)
+{
+    fprintf(f,
+            "usage: silk view MESH [options]            a window (SDL2)%s\n"
+            "       silk view MESH --benchmark N        no window: time N frames\n"
+            "       silk view MESH --events \"KEYS...\"   no window: apply events, save screenshots\n"
+            "       silk view MESH --fb DEVICE          a Linux framebuffer (silk view --fb DEV --help)\n"
+            "\n"
+            "Show MESH in a window and turn it with the mouse.  The status line at the\n"
+            "bottom shows the mode, the frame time, the triangles drawn and on the\n"
+            "silhouette, and the arena in use (mesh + this frame's scratch).\n"
+            "\n"
+            "mouse:\n"
+            "  left drag            orbit around the target\n"
+            "  right or middle drag pan\n"
+            "  wheel                zoom\n"
+            "keys:\n"
+            "  1 2 3 4              mode: flat, smooth, blend, pn     m  next mode\n"
+            "  w                    wireframe; triangles added by re-meshing in red\n"
+            "  l                    lines: the silhouette as drawn (blue), feature curves (green)\n"
+            "  + -                  silhouette tolerance up / down (0.25 .. 4 px)\n"
+            "  [ ]                  PN level down / up\n"
+            "  o                    perspective / orthographic\n"
+            "  s  F12               screenshot (PNG) to the -o pattern\n"
+            "  h                    status line on / off\n"
+            "  space                spin the model\n"
+            "  arrows               orbit by 15 degrees\n"
+            "  r                    back to the first view\n"
+            "  q  Esc               quit\n"
+            "\n"
+            "options:\n"
+            "  -o, --output PATTERN  screenshot names; a %%d in it counts them\n"
+            "                       (default silk-view-%%03d.png)\n"
+            "  --mode flat|smooth|blend|pn|pnL  the first mode (pnL: PN level L)\n"
+            "  --level L            PN level (1..%u)\n"
+            "  --spin               start spinning\n"
+            "  --frames N           quit after N frames, saving the last as a screenshot\n"
+            "  --benchmark N        no window: render N frames, each turned 360/N degrees,\n"
+            "                       and print the median time per frame:\n"
+            "    view-benchmark MESH mode=M size=WxH frames=N render_ms=X frame_ms=X fps=X ...\n"
+            "  --events \"...\"       no window: apply these events in order, then quit:\n"
+            "                       keys as above (space left right up down plus minus by\n"
+            "                       name), drag:DX,DY  pan:DX,DY  wheel:N  size:WxH  shot:PATH\n",
+#ifdef SILK_HAVE_SDL2
+            "",
+#else
+            " - not in this build (no SDL2)",
+#endif
+            SILK_PN_MAX_LEVEL);
+    cli_print_scene_help(f);
+    fprintf(f,
+            "\n"
+            "examples:\n"
+            "  silk view bunny.obj\n"
+            "  silk view bunny.obj --size 1024x768 --mode pn -o shots/bunny-%%02d.png\n"
+            "  silk view bunny.obj --benchmark 100 --size 640x480\n"
+            "  silk view sphere.obj --events \"1 shot:flat.png 2 w shot:smooth.png\"\n"
+            "docs/viewer.md has more.\n");
+}
+
+/* Does the command line ask for a framebuffer (tools/cmd_fbview.c)? */
+static int wants_framebuffer(int argc, char **argv)
+{
+    int headless = 0;
+    for (int i = 1; i < argc; i++) {
+        if (cli_is(argv[i], "--fb") || cli_is(argv[i], "--fb-file")) return 1;
+        if (cli_is(argv[i], "--benchmark") || cli_is(argv[i], "--events")) headless = 1;
+    }
+#ifdef SILK_BOARD_FB
+    /* A framebuffer board shows `silk view` on its screen. */
+    return !headless;
+#else
+    (void)headless;
+    return 0;
+#endif
+}
+
+int cmd_view_desktop(int argc, char **argv)
+{
+    if (wants_framebuffer(argc, argv)) return -1;
+    cli_scene_opts o;
+    cli_scene_opts_default(&o);
+    const char *pattern = "silk-view-%03d.png", *events = NULL;
+    long frames = 0, bench = 0, level = 0;
+    int rc = 0, spin = 0, have_mode = 0;
+    silk_mode mode = SILK_MODE_SMOOTH;
+    uint32_t mode_level = 0;
+    for (int i = 1; i < argc && !rc; i++) {
+        const char *a = argv[i], *val;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            help(stdout);
+            return 0;
+        }
+        /* --mode before the scene options: the viewer knows every mode. */
+        if (cli_is(a, "--mode")) {
+            if (!(val = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+            else if (sheet_parse_mode(val, &mode, &mode_level))
+                rc = cli_fail(CLI_EXIT_USAGE, "--mode must be flat, smooth, blend, pn or pnL (got \"%s\")", val);
+            have_mode = 1;
+            continue;
+        }
+        int r = cli_scene_option(&o, argc, argv, &i);
+        if (r < 0) rc = CLI_EXIT_USAGE;
+        if (r != 0) continue;
+        if (cli_is(a, "-o") || cli_is(a, "--output")) {
+            if (!(pattern = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+            else if (pattern_check(pattern) < 0)
+                rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: at most one %%d (and %%%% for a percent sign)", pattern);
+            else if (silk_image_format_for_path(pattern) == SILK_IMAGE_NONE)
+                rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: unknown image format (use .png or .ppm)", pattern);
+        } else if (cli_is(a, "--level")) {
+            if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--level", val, 1, SILK_PN_MAX_LEVEL, &level))
+                rc = CLI_EXIT_USAGE;
+        } else if (strcmp(a, "--spin") == 0) {
+            spin = 1;
+        } else if (cli_is(a, "--frames")) {
+            if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--frames", val, 1, 100000000, &frames))
+                rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--benchmark")) {
+            if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--benchmark", val, 1, 100000, &bench))
+                rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--events")) {
+            if (!(events = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+        } else if (a[0] == '-' && a[1]) {
+            rc = cli_fail(CLI_EXIT_USAGE, "view: unknown option %s (try silk view --help)", a);
+        } else if (o.mesh_path) {
+            rc = cli_fail(CLI_EXIT_USAGE, "view: one mesh at a time (got %s and %s)", o.mesh_path, a);
+        } else {
+            o.mesh_path = a;
+        }
+    }
+    if (rc) return rc;
+    if (!o.mesh_path) return cli_fail(CLI_EXIT_USAGE, "view: no mesh given (silk view MESH)");
+    if (bench && events) return cli_fail(CLI_EXIT_USAGE, "view: --benchmark or --events, not both");
+#ifndef SILK_HAVE_SDL2
+    if (!bench && !events)
+        return cli_fail(CLI_EXIT_USAGE, "view: this silk was built without SDL2, so it has no window; use --fb DEVICE, "
+                        "--benchmark N or --events (install libsdl2-dev and rebuild for the window)");
+#endif
+    if (have_mode) o.render.mode = mode;
+    if (mode_level) o.render.level = mode_level;
+    if (level) o.render.level = (uint32_t)level;
+
+    viewer *v = malloc(sizeof *v);
+    if (!v) return cli_fail(CLI_EXIT_INPUT, "view: out of memory");
+    rc = viewer_open(v, &o, pattern);
+    v->spin = spin;
+    if (!rc) {
+        if (bench) rc = run_benchmark(v, bench);
+        else if (events) rc = run_events(v, events);
+        else rc = viewer_run_sdl(v, frames);
+    }
+    viewer_close(v);
+    free(v);
+    return rc;
+}
+
+#ifndef SILK_HAVE_SDL2
+/* Without SDL2 there is no window; cmd_view_desktop never gets here. */
+int viewer_run_sdl(viewer *v, long frames)
+{
+    (void)v;
+    (void)frames;
+    return cli_fail(CLI_EXIT_USAGE, "view: this silk was built without SDL2");
+}
+#endif
