@@ -22,8 +22,8 @@ BOARD_SINK   := semihosting
 # .data is a few hundred bytes of libc and startup state.
 BOARD_FLASH_BYTES := 524288
 BOARD_RAM_BYTES   := 65536
-BOARD_STACK_BYTES := 5120
-BOARD_ARENA_BYTES := 60160
+BOARD_STACK_BYTES := 6144
+BOARD_ARENA_BYTES := 59136
 
 # Toolchain and flags (`make deps` installs them on Debian/Ubuntu)
 BOARD_CROSS := arm-none-eabi-

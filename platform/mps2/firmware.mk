@@ -45,7 +45,7 @@ FW_HOST     := $(FW_NAMES:%=$(FW_OUT)/%/fw-host)
 firmware: $(FW_ELF)
 firmware-host: $(FW_HOST)
 firmware-256k: $(FW_DIR)/libsilk.a $(FW_PLAT_OBJ) $(BUILD)/silk
-	$(MAKE) FW_VARIANT=ram256k BOARD_RAM_BYTES=262144 BOARD_ARENA_BYTES=256512 firmware
+	$(MAKE) FW_VARIANT=ram256k BOARD_RAM_BYTES=262144 BOARD_ARENA_BYTES=255488 firmware
 
 $(FW_DIR)/obj/%.o: %.c boards/$(BOARD)/board.mk
 	@mkdir -p $(dir $@)
