@@ -17,6 +17,7 @@
  *
  * Input: one selector byte, then the operands (see each case).
  */
+#include <math.h>
 #include "fuzz.h"
 #include "../src/curve.h"
 
@@ -37,8 +38,8 @@ static silk_fx fx_scaled(fuzz_bytes *b)
     switch (sel & 7) {
     case 0: return m;                                   /* a few ulps */
     case 1: return m * 2;                               /* near zero */
-    case 2: return silk_fx_sat((int64_t)m << 8);        /* around 1 */
-    case 3: return silk_fx_sat((int64_t)m << 16);       /* the integers */
+    case 2: return silk_fx_sat((int64_t)m * 256);        /* around 1 */
+    case 3: return silk_fx_sat((int64_t)m * 65536);      /* the integers */
     case 4: return m < 0 ? SILK_FX_MIN - m : SILK_FX_MAX - m;   /* near the limits */
     default: return fx_in(b);
     }
@@ -46,9 +47,9 @@ static silk_fx fx_scaled(fuzz_bytes *b)
 
 static silk_vec3 v3_in(fuzz_bytes *b) { return silk_v3(fx_scaled(b), fx_scaled(b), fx_scaled(b)); }
 
-static double d(silk_fx v) { return v / 65536.0; }
+static double dbl(silk_fx v) { return v / 65536.0; }
 
-static double len3(silk_vec3 v) { return sqrt(d(v.x) * d(v.x) + d(v.y) * d(v.y) + d(v.z) * d(v.z)); }
+static double len3(silk_vec3 v) { return sqrt(dbl(v.x) * dbl(v.x) + dbl(v.y) * dbl(v.y) + dbl(v.z) * dbl(v.z)); }
 
 /* |got - exact| <= 1 ulp, or both at the same saturation limit. */
 static void near_exact(silk_fx got, double exact, const char *what)
@@ -56,34 +57,34 @@ static void near_exact(silk_fx got, double exact, const char *what)
     double lim = SILK_FX_MAX / 65536.0;
     if (exact >= lim) fuzz_expect(got == SILK_FX_MAX, "%s: %d, want saturation at +max", what, got);
     else if (exact <= -lim) fuzz_expect(got == SILK_FX_MIN, "%s: %d, want saturation at -max", what, got);
-    else fuzz_expect(fabs(d(got) - exact) <= 1.0001 / 65536, "%s: %.8f, want %.8f", what, d(got), exact);
+    else fuzz_expect(fabs(dbl(got) - exact) <= 1.0001 / 65536, "%s: %.8f, want %.8f", what, dbl(got), exact);
 }
 
 static void scalars(fuzz_bytes *b)
 {
     silk_fx x = fx_scaled(b), y = fx_scaled(b), z = fx_scaled(b);
-    near_exact(silk_fx_mul(x, y), d(x) * d(y), "mul");
-    near_exact(silk_fx_add(x, y), d(x) + d(y), "add");
-    near_exact(silk_fx_sub(x, y), d(x) - d(y), "sub");
-    if (y) near_exact(silk_fx_div(x, y), d(x) / d(y), "div");
+    near_exact(silk_fx_mul(x, y), dbl(x) * dbl(y), "mul");
+    near_exact(silk_fx_add(x, y), dbl(x) + dbl(y), "add");
+    near_exact(silk_fx_sub(x, y), dbl(x) - dbl(y), "sub");
+    if (y) near_exact(silk_fx_div(x, y), dbl(x) / dbl(y), "div");
     else fuzz_expect(silk_fx_div(x, 0) == (x > 0 ? SILK_FX_MAX : x < 0 ? SILK_FX_MIN : 0), "div by 0");
     if (z) near_exact(silk_fx_muldiv(x, y, z), (double)x * y / z / 65536.0, "muldiv");
-    if (x) near_exact(silk_fx_recip(x), 1 / d(x), "recip");
+    if (x) near_exact(silk_fx_recip(x), 1 / dbl(x), "recip");
     silk_fx ax = silk_fx_abs(x);
-    near_exact(silk_fx_sqrt(ax), sqrt(d(ax)), "sqrt");
+    near_exact(silk_fx_sqrt(ax), sqrt(dbl(ax)), "sqrt");
     if (ax > 0) {
         silk_fx r = silk_fx_rsqrt(ax);
-        double want = 1 / sqrt(d(ax));
-        fuzz_expect(want >= 32767.99 ? r == SILK_FX_MAX : fabs(d(r) - want) <= 2.0 / 65536 + want * 1e-9,
+        double want = 1 / sqrt(dbl(ax));
+        fuzz_expect(want >= 32767.99 ? r == SILK_FX_MAX : fabs(dbl(r) - want) <= 2.0 / 65536 + want * 1e-9,
                     "rsqrt(%d) = %d", ax, r);
     }
     fuzz_expect(silk_isqrt64((uint64_t)fuzz_u32(b) << 32 | fuzz_u32(b)) <= 0xFFFFFFFFu, "isqrt64");
     silk_fx s, c;
     silk_fx_sincos(x, &s, &c);
-    double n = d(s) * d(s) + d(c) * d(c);
+    double n = dbl(s) * dbl(s) + dbl(c) * dbl(c);
     fuzz_expect(fabs(n - 1) < 1e-3, "sin^2 + cos^2 = %.6f for %d", n, x);
     silk_fx_sincos_deg(y, &s, &c);
-    fuzz_expect(fabs(d(s) * d(s) + d(c) * d(c) - 1) < 1e-3, "sincos_deg(%d)", y);
+    fuzz_expect(fabs(dbl(s) * dbl(s) + dbl(c) * dbl(c) - 1) < 1e-3, "sincos_deg(%d)", y);
     silk_fx a = silk_fx_atan2(x, y);
     fuzz_expect(a >= -SILK_FX_PI - 1 && a <= SILK_FX_PI + 1, "atan2 = %d", a);
     a = silk_fx_acos(z);
@@ -97,7 +98,7 @@ static void scalars(fuzz_bytes *b)
     fuzz_expect(back - x <= 1 && x - back <= 1, "format %d -> %s -> %d", x, buf, back);
 }
 
-static void text(fuzz_bytes *b)
+static void math_text(fuzz_bytes *b)
 {
     char s[64];
     size_t n = 0;
@@ -132,8 +133,9 @@ static void vectors(fuzz_bytes *b)
     /* dot products: exact while one side is within +-16384 (fixed.h) */
     silk_vec3 small = silk_v3(p.x / 2, p.y / 2, p.z / 2);
     int64_t d64 = silk_v3_dot64(small, q);
-    double want = ((double)small.x * q.x + (double)small.y * q.y + (double)small.z * q.z);
-    fuzz_expect(fabs((double)d64 - want) <= fabs(want) * 1e-15 + 1, "dot64");
+    /* long double holds each product and the sum exactly (64-bit mantissa) */
+    long double want = (long double)small.x * q.x + (long double)small.y * q.y + (long double)small.z * q.z;
+    fuzz_expect((long double)d64 == want, "dot64 not exact");
     (void)silk_v3_dot(small, q);
 }
 
@@ -145,7 +147,7 @@ static void curves(fuzz_bytes *b)
     /* clamped at SILK_ARC_MAX_RATIO |chord| (or shortened to fit Q16.16) */
     fuzz_expect(lt <= SILK_ARC_MAX_RATIO * lc * (1 + 1e-6) + 2e-4, "arc tangent %.4f for a chord of %.4f", lt, lc);
     if (lt > 1e-2 && len3(n0) > 1e-2) {
-        double cosang = (d(t.x) * d(n0.x) + d(t.y) * d(n0.y) + d(t.z) * d(n0.z)) / (lt * len3(n0));
+        double cosang = (dbl(t.x) * dbl(n0.x) + dbl(t.y) * dbl(n0.y) + dbl(t.z) * dbl(n0.z)) / (lt * len3(n0));
         fuzz_expect(cosang > 0.999, "arc tangent turned away from its direction (cos %.6f)", cosang);
     }
     silk_curve cv;
@@ -169,7 +171,7 @@ static void curves(fuzz_bytes *b)
     silk_patch_eval(&pt, SILK_PATCH_POINT(i, j, n), &at);
 }
 
-static void camera(fuzz_bytes *b)
+static void math_camera(fuzz_bytes *b)
 {
     silk_camera cam;
     memset(&cam, 0, sizeof cam);
@@ -200,13 +202,16 @@ static void camera(fuzz_bytes *b)
     }
 }
 
-static uint32_t count_fragment(const silk_hal *h, const silk_fx *var)
+/* The varyings are interpolated whether or not a stage reads them (and
+ * with nvaryings <= 0 there are none to read). */
+static uint32_t math_fragment(const silk_hal *h, const silk_fx *var)
 {
     (void)h;
-    return (uint32_t)var[0] & 0xFFFFFF;
+    (void)var;
+    return 0x808080;
 }
 
-static void raster(fuzz_bytes *b)
+static void math_raster(fuzz_bytes *b)
 {
     int width = 1 + (int)(fuzz_u32(b) % SILK_MAX_DIM), height = 1 + (int)(fuzz_u32(b) % SILK_MAX_DIM);
     int rows = 1 + (int)(fuzz_u8(b) % 4), y0 = (int)(fuzz_u32(b) % (uint32_t)height);
@@ -221,7 +226,7 @@ static void raster(fuzz_bytes *b)
     silk_target_clear(&t, fuzz_u32(b));
     silk_hal h;
     memset(&h, 0, sizeof h);
-    h.fragment = count_fragment;
+    h.fragment = math_fragment;
     h.nvaryings = (int)(fuzz_u8(b) % (SILK_MAX_VARYINGS + 2)) - 1;
     silk_vertex_out v[3];
     for (int k = 0; k < 3; k++) {
@@ -245,11 +250,11 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     fuzz_bytes b = { data, size, 0 };
     switch (fuzz_u8(&b) % 6) {
     case 0: scalars(&b); break;
-    case 1: text(&b); break;
+    case 1: math_text(&b); break;
     case 2: vectors(&b); break;
     case 3: curves(&b); break;
-    case 4: camera(&b); break;
-    default: raster(&b); break;
+    case 4: math_camera(&b); break;
+    default: math_raster(&b); break;
     }
     return 0;
 }

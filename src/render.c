@@ -26,6 +26,17 @@ void silk_render_opts_default(silk_render_opts *o)
     o->blend_beta = SILK_FX_C(1, 4);
 }
 
+const char *silk_mode_name(silk_mode mode)
+{
+    switch (mode) {
+    case SILK_MODE_FLAT: return "flat";
+    case SILK_MODE_SMOOTH: return "smooth";
+    case SILK_MODE_PN: return "pn";
+    case SILK_MODE_BLEND: return "blend";
+    }
+    return "?";
+}
+
 /* A frame ready to rasterize: geometry plus the vertex stage's output. */
 typedef struct frame {
     const silk_hal *hal;

@@ -101,7 +101,7 @@ static void print_frame(const cli_scene *s, const cli_scene_opts *o, const silk_
     const silk_camera *c = &s->cam;
     printf("\nframe\n");
     line("  size", "%dx%d %s", o->width, o->height, o->fmt == SILK_PIX_RGB565 ? "rgb565" : "rgb888");
-    line("  mode", "%s", o->render.mode == SILK_MODE_FLAT ? "flat" : "smooth");
+    line("  mode", "%s", silk_mode_name(o->render.mode));
     print_vec("  eye", c->eye);
     print_vec("  target", c->target);
     print_vec("  up", c->up);

@@ -49,6 +49,8 @@ typedef struct silk_render_opts {
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);
+/* "flat", "smooth", "pn", "blend"; "?" for anything else. */
+const char *silk_mode_name(silk_mode mode);
 
 typedef struct silk_frame_stats {
     uint32_t silhouette_tris, bridges, samples, tris_drawn, moved_vertices;
