@@ -178,8 +178,10 @@ clean-boards:
 # The ARM toolchain and QEMU for the firmware (Debian, Ubuntu).
 DEPS_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 .PHONY: deps profile
+SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 deps:
-	$(if $(filter 0,$(shell id -u)),,sudo) apt-get install -y --no-install-recommends $(DEPS_PACKAGES)
+	$(SUDO) apt-get update
+	$(SUDO) apt-get install -y --no-install-recommends $(DEPS_PACKAGES)
 
 # Where every byte goes on a board: `make profile [PROFILE_BOARD=..] [PROFILE_MESH=..]`.
 PROFILE_BOARD ?= $(if $(BOARD_RULES),$(BOARD),mps2-an385)

@@ -217,9 +217,10 @@ static void math_raster(fuzz_bytes *b)
     int rows = 1 + (int)(fuzz_u8(b) % 4), y0 = (int)(fuzz_u32(b) % (uint32_t)height);
     silk_pixfmt fmt = fuzz_u8(b) & 1 ? SILK_PIX_RGB565 : SILK_PIX_RGB888;
     size_t px = (size_t)width * rows;
-    uint8_t *color = malloc(px * 3);
-    uint32_t *depth = malloc(px * sizeof *depth);
-    uint16_t *writes = malloc(px * sizeof *writes);
+    /* zeroed: rows of the band past the frame's last row are never touched */
+    uint8_t *color = calloc(px, 3);
+    uint32_t *depth = calloc(px, sizeof *depth);
+    uint16_t *writes = calloc(px, sizeof *writes);
     silk_target t;
     silk_target_init(&t, width, height, y0, rows, fmt, color, depth);
     t.writes = writes;

@@ -1,13 +1,15 @@
 #!/bin/sh
 # seeds.sh SILK MKSEED OUT - the seed corpora of the fuzz harnesses, written
-# into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_render and OUT/fuzz_pack from:
+# into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_render, OUT/fuzz_pack and
+# OUT/fuzz_math from:
 #   - the malformed-input corpus tests/bad/ (each file one error path),
 #   - the regression inputs tests/regress/HARNESS/ (every finding so far),
 #   - small meshes from `silk gen` (every shape, few triangles) and a few
 #     of the smallest shared meshes, as OBJ and as PLY in all three
 #     encodings (mkseed), and a handful of hand-written hard cases,
 #   - for fuzz_render and fuzz_pack, those meshes behind a scene header or
-#     edit list (the formats are described at the top of each harness).
+#     edit list (the formats are described at the top of each harness),
+#   - for fuzz_math, each of its six cases with fixed operand bytes.
 # Run from the repository root (make fuzz does).
 set -eu
 silk=$1
@@ -16,7 +18,7 @@ out=$3
 meshes=${SILK_MESHES:-../shared/meshes}
 
 rm -rf "$out"
-mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_render" "$out/fuzz_pack" "$out/shapes"
+mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" "$out/shapes"
 
 # small generated shapes
 "$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
@@ -45,7 +47,7 @@ for f in "$out/shapes/"*.obj; do
         "$mkseed" "ply-$enc" "$f" "$out/fuzz_ply/$b-$enc.ply"
     done
 done
-for h in obj ply render pack; do
+for h in obj ply render pack math; do
     if [ -d "tests/regress/$h" ]; then
         for f in tests/regress/"$h"/*; do
             [ -f "$f" ] && [ "${f%.expected}" = "$f" ] && cp "$f" "$out/fuzz_$h/"
@@ -78,4 +80,10 @@ for f in "$out/shapes/"*.obj; do
     "$mkseed" prefix 0001 "$f" "$out/fuzz_pack/$b"
     "$mkseed" prefix 01040500070000"09" "$f" "$out/fuzz_pack/$b-edit"
 done
+# fuzz_math: a selector byte, then operand bytes (any bytes will do)
+for sel in 0 1 2 3 4 5; do
+    { printf "\\00$sel"; head -c 400 tests/bad/binary-garbage.obj; } >"$out/fuzz_math/case-$sel"
+    { printf "\\00$sel"; tail -c 400 "$out/fuzz_ply/knot-le.ply"; } >"$out/fuzz_math/case-$sel-mesh"
+done
+printf '\001-1024.00002e0 3E+2 .5e-3 18446744073709551616' >"$out/fuzz_math/text"
 rm -rf "$out/shapes"

@@ -177,6 +177,8 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
         return bad(err, SILK_ERR_ARG, "need 0 < znear < zfar");
     if (cam->znear < SILK_ZNEAR_MIN)
         return bad(err, SILK_ERR_RANGE, "znear is below 1/1024, too small for fixed point");
+    if (cam->znear > SILK_ZNEAR_MAX)
+        return bad(err, SILK_ERR_RANGE, "znear is above 16383, too large for fixed point (2 znear must fit)");
 
     int32_t fwd[3], up[3], right[3], upv[3];
     if (!unit24((int64_t)cam->target.x - cam->eye.x, (int64_t)cam->target.y - cam->eye.y,

@@ -415,6 +415,8 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, s
     g->curve[s->curve] = s->c;
     s->rec = g->nvrec;
     for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, s->curve, sample_t(i, s->n));
+    s->rec_a = cyc[l.iA];
+    s->rec_b = cyc[l.iB];
 #define SAMPLE(i) ((i) == 0 ? cyc[l.iA] : (i) == s->n ? cyc[l.iB] : s->rec + (i) - 1)
 
     /* around L: L, side L up to A, the samples, B and side L+2 back to L */

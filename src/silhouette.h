@@ -75,6 +75,7 @@ typedef struct silk_sil_seg {
     silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E */
     silk_fx rise;            /* how far the segment's ends rise above P_i */
     uint32_t curve, rec;     /* output: segment curve and its first interior sample */
+    uint32_t rec_a, rec_b;   /* output: the records of A and B (points of the edge chains) */
 } silk_sil_seg;
 
 /* Per union-find root: what accepting that part of the frame costs. */
@@ -136,6 +137,11 @@ int  silk_remesh_reject_last(silk_sil_frame *f);     /* drop one more component;
 uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
 int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g);   /* 0 when it does not fit */
 void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats);
+
+/* lines.c: after silk_remesh_emit, the lines of the frame into g (the
+ * silhouette segments and visible feature curves drawn); SILK_ERR_NOMEM
+ * when they do not fit, with no lines in g. */
+silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g);
 
 /* perturb.c */
 int  silk_perturb_alloc(silk_sil_frame *f);          /* 0 when it does not fit */

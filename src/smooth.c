@@ -31,6 +31,21 @@ silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view
                               silk_fx tolerance_px, silk_vis_method vis,
                               silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
 {
+    return silk_frame_smooth_lines(a, m, v, tolerance_px, vis, 0, g, stats, err);
+}
+
+/* Lines that do not fit are left out, and the frame counts as fallen back,
+ * so a caller that retries with a larger arena gets them. */
+static void lines_fell_back(silk_frame_geom *g, silk_frame_stats *stats)
+{
+    g->nlines = g->nline_vrec = 0;
+    if (stats) stats->fell_back = 1;
+}
+
+silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                    silk_fx tolerance_px, silk_vis_method vis, int lines,
+                                    silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
+{
     if (!a || !m || !v || !g)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_smooth: missing argument");
     if (tolerance_px <= 0)
@@ -47,18 +62,23 @@ silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view
     f.tol = tolerance_px;
     f.vis = vis;
 
-    if (silk_sil_find(&f) != SILK_OK || silk_remesh_plan(&f) != SILK_OK)
-        return fall_back_flat(a, m, &mark, g, stats, err);
-
-    for (;;) {
+    silk_status st = SILK_OK;
+    int flat = silk_sil_find(&f) != SILK_OK || silk_remesh_plan(&f) != SILK_OK;
+    while (!flat) {
         silk_arena_mark try_mark = silk_arena_top_mark(a);
         if (silk_perturb_alloc(&f) && silk_remesh_alloc(&f, g)) break;
         silk_arena_top_release(a, &try_mark);
         f.fell_back = 1;
-        if (!silk_remesh_reject_last(&f)) return fall_back_flat(a, m, &mark, g, stats, err);
+        flat = !silk_remesh_reject_last(&f);
+    }
+    if (flat) {
+        st = fall_back_flat(a, m, &mark, g, stats, err);
+        if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, g) != SILK_OK) lines_fell_back(g, stats);
+        return st;
     }
     silk_perturb(&f);
     silk_remesh_emit(&f, g, stats);
     if (stats) stats->fell_back = f.fell_back;
+    if (lines && silk_lines_smooth(&f, g) != SILK_OK) lines_fell_back(g, stats);
     return SILK_OK;
 }

@@ -20,6 +20,14 @@ typedef struct silk_frame_geom {
     silk_curve *curve; uint32_t ncurve;
     silk_vec3  *offset; uint32_t noffset;
     silk_patch *patch; uint32_t npatch;  /* PN and BLEND modes */
+    /* Pen-and-ink lines (lines.c), when asked for: line i is the polyline
+     * through line_vrec[line_start[i] .. line_start[i+1]-1], a silhouette
+     * line or a feature line (line_feature[i]).  Records of their own,
+     * copies of the triangles' where a line runs along them. */
+    silk_vrec  *line_vrec; uint32_t nline_vrec;
+    uint32_t   *line_start;              /* nlines + 1 */
+    uint8_t    *line_feature;            /* nlines */
+    uint32_t    nlines;
 } silk_frame_geom;
 
 /* The coarse mesh as it is: one CORNER record per triangle corner. */
@@ -32,6 +40,20 @@ silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *
 silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view *v,
                               silk_fx tolerance_px, silk_vis_method vis,
                               silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
+
+/* silk_frame_smooth, and with lines non-zero also the lines of the frame
+ * (lines.c): the sampled silhouette segments and visible feature curves
+ * through the very records the triangles use.  When the frame falls back to
+ * the coarse mesh, its polygonal lines instead. */
+silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                    silk_fx tolerance_px, silk_vis_method vis, int lines,
+                                    silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
+
+/* The coarse mesh's outline for lines (lines.c): every edge between a
+ * front- and a back-facing triangle, and every feature edge next to a
+ * front-facing triangle, as two CORNER records.  Fills g's line arrays
+ * (from the top of the arena); SILK_ERR_NOMEM when they do not fit. */
+silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_frame_geom *g);
 
 /* PN triangles (src/pn.c): every triangle's cubic patch, its sides cut
  * into level segments, with quadratic or linear normals.  View-independent.

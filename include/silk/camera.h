@@ -45,11 +45,13 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
 silk_vec4 silk_view_clip(const silk_view *v, silk_vec3 p);
 
 /* Supported input ranges (docs/raster.md): fov in [SILK_FOV_MIN, SILK_FOV_MAX]
- * degrees, znear >= SILK_ZNEAR_MIN, ortho_half_height >= SILK_ZNEAR_MIN,
- * width and height in [1, SILK_MAX_DIM], |P - eye| < 32768 for drawn points. */
+ * degrees, znear in [SILK_ZNEAR_MIN, SILK_ZNEAR_MAX] (clip z = w - 2 znear
+ * must fit Q16.16), ortho_half_height >= SILK_ZNEAR_MIN, width and height
+ * in [1, SILK_MAX_DIM], |P - eye| < 32768 for drawn points. */
 #define SILK_FOV_MIN    SILK_FX_C(1, 1)
 #define SILK_FOV_MAX    SILK_FX_C(179, 1)
 #define SILK_ZNEAR_MIN  SILK_FX_C(1, 1024)
+#define SILK_ZNEAR_MAX  SILK_FX_C(16383, 1)
 #define SILK_MAX_DIM    8192
 
 /* Transform a point (w = 1) to clip space. */

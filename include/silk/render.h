@@ -36,6 +36,18 @@ typedef enum silk_pn_normals { SILK_PN_QUADRATIC = 0, SILK_PN_LINEAR = 1 } silk_
  * becomes L*L triangles over (L+1)(L+2)/2 points; level 1 is the coarse mesh. */
 #define SILK_PN_MAX_LEVEL 32u
 
+/* Pen-and-ink lines (src/lines.c): in SMOOTH mode the sampled silhouette
+ * segments and the visible feature curves, exactly as the re-meshed surface
+ * runs along them; in the other modes, or with lines_polygonal, the coarse
+ * mesh's silhouette edges (between a front- and a back-facing triangle)
+ * and its feature edges next to a front-facing triangle.  Lines are
+ * depth-tested against the drawn surface, so hidden parts stay hidden. */
+typedef enum silk_lines {
+    SILK_LINES_NONE = 0,
+    SILK_LINES_OVER = 1,     /* over the shaded surface */
+    SILK_LINES_ONLY = 2      /* the surface only hides lines: lines on the background */
+} silk_lines;
+
 typedef struct silk_render_opts {
     silk_mode mode;
     silk_fx tolerance_px;    /* e of eq. 8, 0.25 .. 4 (BLEND: the chord tolerance of its edges) */
@@ -46,6 +58,10 @@ typedef struct silk_render_opts {
     uint32_t level;          /* PN: segments per patch side, 1..SILK_PN_MAX_LEVEL */
     silk_pn_normals pn_normals; /* PN: quadratic or linear normals */
     silk_fx blend_beta;      /* BLEND: width of the transition of eq. 2, 0..1 (0: binary) */
+    silk_lines lines;        /* outlines: none (default), over the shading, or alone */
+    int lines_polygonal;     /* the coarse mesh's polygonal outline even in SMOOTH mode */
+    uint32_t line_rgb;       /* silhouette lines */
+    uint32_t line_feature_rgb; /* feature lines */
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);

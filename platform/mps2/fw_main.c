@@ -14,8 +14,8 @@
  * fw_scene() is the program: the startup code (startup.c) calls it on the
  * board, fw_io_host.c's main() on the host.
  *
- * Command line: PROGRAM [PREFIX]; with PREFIX, frame k of camera c is written
- * to PREFIX-cC-flat.ppm / PREFIX-cC-smooth.ppm.  Report lines are
+ * Command line: PROGRAM [PREFIX]; with PREFIX, camera C's two frames are
+ * written to PREFIX-cC-flat.ppm and PREFIX-cC-smooth.ppm.  Report lines are
  * "fw NAME key=value ..." on the console (docs/small-devices.md).
  *
  * Built by the board's firmware rules (platform/mps2/firmware.mk) with
