@@ -14,8 +14,14 @@
  * triangle (the face-based silhouette) and every feature edge next to a
  * front-facing triangle, corner to corner.
  *
- * Lines only say where the outline runs; which parts show is left to the
- * depth test of silk_raster_line against the drawn surface.
+ * Which parts show is left to the depth test of silk_raster_line against
+ * the drawn surface.  Its own bias is not enough here: next to a
+ * silhouette the surface is seen edge-on, so a triangle that ends on the
+ * line can be much nearer than the line half a pixel away from it, and
+ * the line would break up.  So each line vertex is lifted towards the eye
+ * by what the triangles through it rise over one pixel (their depth slope,
+ * at most their depth extent): a polygon offset scaled by slope, as
+ * glPolygonOffset does, but only by the triangles the line lies on.
  */
 #include <string.h>
 #include "silhouette.h"
@@ -26,14 +32,22 @@ static int lines_alloc(silk_arena *a, silk_frame_geom *g, uint32_t nlines, uint6
     g->nlines = g->nline_vrec = 0;
     if (nrec > UINT32_MAX || nlines == UINT32_MAX) return 0;
     g->line_vrec = silk_arena_array_top(a, (size_t)nrec, sizeof *g->line_vrec, SILK_MEM_FRAME);
+    g->line_src = silk_arena_array_top(a, (size_t)nrec, sizeof *g->line_src, SILK_MEM_FRAME);
     g->line_start = silk_arena_array_top(a, (size_t)nlines + 1, sizeof *g->line_start, SILK_MEM_FRAME);
     g->line_feature = silk_arena_array_top(a, nlines, 1, SILK_MEM_FRAME);
-    if (!g->line_vrec || !g->line_start || !g->line_feature) return 0;
+    if (!g->line_vrec || !g->line_src || !g->line_start || !g->line_feature) return 0;
     g->line_start[0] = 0;
     return 1;
 }
 
-static void line_point(silk_frame_geom *g, const silk_vrec *r) { g->line_vrec[g->nline_vrec++] = *r; }
+static void line_point(silk_frame_geom *g, const silk_vrec *r, uint32_t src)
+{
+    g->line_src[g->nline_vrec] = src;
+    g->line_vrec[g->nline_vrec++] = *r;
+}
+
+/* Record i of the frame, as a line point. */
+static void line_rec(silk_frame_geom *g, uint32_t i) { line_point(g, &g->vrec[i], i); }
 
 static void line_end(silk_frame_geom *g, int feature)
 {
@@ -80,9 +94,9 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
     for (uint32_t i = 0; i < f->nsegs; i++) {
         const silk_sil_seg *s = &f->segs[i];
         if (!seg_drawn(f, s)) continue;
-        line_point(g, &g->vrec[s->rec_a]);
-        for (uint32_t j = 1; j < s->n; j++) line_point(g, &g->vrec[s->rec + j - 1]);
-        line_point(g, &g->vrec[s->rec_b]);
+        line_rec(g, s->rec_a);
+        for (uint32_t j = 1; j < s->n; j++) line_rec(g, s->rec + j - 1);
+        line_rec(g, s->rec_b);
         line_end(g, 0);
     }
     /* A feature edge whose part was dropped, or that needed no samples, is
@@ -91,12 +105,12 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;
         const silk_sil_side *s = &f->sides[e->side0];
-        line_point(g, &g->vrec[side_corner(f, e, s, 0)]);
+        line_rec(g, side_corner(f, e, s, 0));
         if (silk_sil_chained(f, e->edge)) {
             uint32_t rec = f->sides[s->owner].rec;
-            for (uint32_t j = 0; j < e->nchain; j++) line_point(g, &g->vrec[rec + j]);
+            for (uint32_t j = 0; j < e->nchain; j++) line_rec(g, rec + j);
         }
-        line_point(g, &g->vrec[side_corner(f, e, s, 1)]);
+        line_rec(g, side_corner(f, e, s, 1));
         line_end(g, 1);
     }
     return SILK_OK;
@@ -114,31 +128,29 @@ static int tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
     return silk_v3_dot64(fn, silk_view_to_eye(v, m->pos[m->tri[3 * t]])) > 0;
 }
 
-/* What edge e is in the outline: 0 nothing, 1 silhouette, 2 feature. */
+/* What edge e is in the outline: 0 nothing, 1 silhouette, 2 feature.  A
+ * feature edge is a feature line even where it is also the silhouette, as
+ * in SMOOTH mode, where it is drawn on its feature curve. */
 static int edge_kind(const silk_mesh *m, const uint8_t *front, uint32_t e)
 {
     const silk_edge *ed = &m->edge[e];
     uint32_t t0 = ed->t[0], t1 = ed->t[1];
     int f0 = t0 < m->ntris && front[t0], f1 = t1 < m->ntris && front[t1];
-    if (t0 < m->ntris && t1 < m->ntris && f0 != f1) return 1;
     if ((ed->flags & SILK_EDGE_FEATURE) && (f0 || f1)) return 2;
+    if (t0 < m->ntris && t1 < m->ntris && f0 != f1) return 1;
     return 0;
 }
 
-/* A CORNER record at mesh vertex vtx of triangle t, if t has it. */
-static int corner_rec(const silk_mesh *m, uint32_t t, silk_index vtx, silk_vrec *r)
+/* The CORNER record at mesh vertex vtx of triangle t: 3t+k, or NO_SRC. */
+static uint32_t corner_of(const silk_mesh *m, uint32_t t, silk_index vtx)
 {
     for (uint32_t k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] == vtx) {
-            memset(r, 0, sizeof *r);
-            r->kind = SILK_VREC_CORNER;
-            r->a = 3 * t + k;
-            return 1;
-        }
-    return 0;
+        if (m->tri[3 * t + k] == vtx) return 3 * t + k;
+    return SILK_LINE_NO_SRC;
 }
 
-silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_frame_geom *g)
+silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_view *v, int on_mesh,
+                                 silk_frame_geom *g)
 {
     g->nlines = g->nline_vrec = 0;
     if (!m->edge || !m->tri) return SILK_OK;
@@ -155,11 +167,118 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
         /* the corners of a front-facing triangle where there is one */
         uint32_t t = ed->t[0] < m->ntris && front[ed->t[0]] ? ed->t[0] : ed->t[1];
         if (t >= m->ntris) t = ed->t[0];
-        silk_vrec r0, r1;
-        if (!corner_rec(m, t, ed->v[0], &r0) || !corner_rec(m, t, ed->v[1], &r1)) continue;
-        line_point(g, &r0);
-        line_point(g, &r1);
+        uint32_t c0 = corner_of(m, t, ed->v[0]), c1 = corner_of(m, t, ed->v[1]);
+        if (c0 == SILK_LINE_NO_SRC || c1 == SILK_LINE_NO_SRC) continue;
+        silk_vrec r;
+        memset(&r, 0, sizeof r);
+        r.kind = SILK_VREC_CORNER;
+        r.a = c0;
+        line_point(g, &r, on_mesh ? c0 : SILK_LINE_NO_SRC);
+        r.a = c1;
+        line_point(g, &r, on_mesh ? c1 : SILK_LINE_NO_SRC);
         line_end(g, kind == 2);
     }
     return SILK_OK;
+}
+
+/* ---- lifting lines off the surface they lie on ------------------------------------ */
+
+/* Screen position in 1/256 px and depth (w - z) / w in 2^-24, or 0 when
+ * the point is behind the eye or so far off screen that its triangle can be
+ * skipped (it is clipped away wherever it matters). */
+typedef struct spt { int64_t x, y, d; } spt;
+
+#define GUARD 64   /* clip x, y within +-GUARD w */
+
+static int screen_point(const silk_vertex_out *o, int width, int height, spt *p)
+{
+    int64_t w = o->clip.w, x = o->clip.x, y = o->clip.y, z = o->clip.z;
+    if (w <= 0 || x > GUARD * w || -x > GUARD * w || y > GUARD * w || -y > GUARD * w) return 0;
+    p->x = (x * width * 128) / w + (int64_t)width * 128;
+    p->y = (int64_t)height * 128 - (y * height * 128) / w;
+    p->d = ((w - z) << 24) / w;   /* [0, 2^25] inside the clip volume */
+    if (p->d > (1 << 26)) p->d = 1 << 26;
+    if (p->d < -(1 << 26)) p->d = -(1 << 26);
+    return 1;
+}
+
+static int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+
+/* What triangle abc rises over one pixel in depth (2^-24): the size of its
+ * depth gradient, over-estimated by |gx| + |gy|; a triangle seen exactly
+ * edge-on gives INT64_MAX. */
+static int64_t depth_slope(const spt *a, const spt *b, const spt *c)
+{
+    int64_t bx = b->x - a->x, by = b->y - a->y, cx = c->x - a->x, cy = c->y - a->y;
+    int64_t bd = b->d - a->d, cd = c->d - a->d;
+    /* |coordinates| < 2^28 (1/256 px, within the guard band), |depth| <
+     * 2^27: every product below 2^56 */
+    int64_t area2 = abs64(bx * cy - cx * by);
+    int64_t gx = abs64(bd * cy - cd * by), gy = abs64(cd * bx - bd * cx);
+    /* per 1/256 px: (gx + gy) / area2; per pixel 256 times that.  A sliver
+     * below 1/256 px^2 counts as edge-on. */
+    if (area2 < 256) return INT64_MAX;
+    return (gx + gy) / (area2 >> 8);
+}
+
+/* Which point record r is: records at a mesh vertex (its corners, moved
+ * as one) are one point, keyed by the vertex; any other record is its own. */
+static uint32_t point_key(const silk_mesh *m, const silk_frame_geom *g, uint32_t r)
+{
+    const silk_vrec *v = &g->vrec[r];
+    if ((v->kind == SILK_VREC_CORNER || v->kind == SILK_VREC_MOVED) && v->a / 3 < m->ntris && m->tri[v->a] < m->nverts)
+        return m->tri[v->a];
+    return m->nverts + r;
+}
+
+uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_geom *g, const silk_vertex_out *out,
+                          int width, int height)
+{
+    if (!g->nline_vrec || !out || !g->line_src || g->nvrec > UINT32_MAX - m->nverts) return NULL;
+    uint32_t nkeys = m->nverts + g->nvrec;
+    uint32_t *lift = silk_arena_array_top(a, g->nline_vrec, sizeof *lift, SILK_MEM_FRAME);
+    /* the line vertices at each point: first[key], then same[i] */
+    uint32_t *first = silk_arena_array_top(a, nkeys, sizeof *first, SILK_MEM_FRAME);
+    uint32_t *same = silk_arena_array_top(a, g->nline_vrec, sizeof *same, SILK_MEM_FRAME);
+    if (!lift || !first || !same) return NULL;
+    memset(first, 0xFF, (size_t)nkeys * sizeof *first);
+    for (uint32_t i = 0; i < g->nline_vrec; i++) {
+        uint32_t r = g->line_src[i];
+        same[i] = SILK_LINE_NO_SRC;
+        if (r >= g->nvrec) continue;
+        uint32_t key = point_key(m, g, r);
+        same[i] = first[key];
+        first[key] = i;
+    }
+    for (uint32_t k = 0; k < g->ntri; k++) {
+        const uint32_t *t = &g->tri[3 * k];
+        if (t[0] >= g->nvrec || t[1] >= g->nvrec || t[2] >= g->nvrec) continue;
+        uint32_t c[3] = { point_key(m, g, t[0]), point_key(m, g, t[1]), point_key(m, g, t[2]) };
+        if (first[c[0]] == SILK_LINE_NO_SRC && first[c[1]] == SILK_LINE_NO_SRC && first[c[2]] == SILK_LINE_NO_SRC)
+            continue;
+        spt p[3];
+        if (!screen_point(&out[t[0]], width, height, &p[0]) || !screen_point(&out[t[1]], width, height, &p[1]) ||
+            !screen_point(&out[t[2]], width, height, &p[2]))
+            continue;
+        int64_t slope = depth_slope(&p[0], &p[1], &p[2]);
+        for (int j = 0; j < 3; j++) {
+            if (first[c[j]] == SILK_LINE_NO_SRC) continue;
+            /* one pixel of slope, but never more than the triangle rises */
+            int64_t rise = 0;
+            for (int i = 0; i < 3; i++)
+                if (p[i].d - p[j].d > rise) rise = p[i].d - p[j].d;
+            int64_t l = slope < rise ? slope : rise;
+            if (l > UINT32_MAX) l = UINT32_MAX;
+            for (uint32_t i = first[c[j]]; i != SILK_LINE_NO_SRC; i = same[i])
+                if ((uint32_t)l > lift[i]) lift[i] = (uint32_t)l;
+        }
+    }
+    return lift;
+}
+
+void silk_lines_apply_lift(silk_vertex_out *o, uint32_t lift)
+{
+    /* depth (w - z) / w grows by lift / 2^24: z falls by lift w / 2^24 */
+    int64_t dz = silk_shr_round64((int64_t)lift * o->clip.w, 24);
+    o->clip.z = silk_fx_sat((int64_t)o->clip.z - dz);
 }

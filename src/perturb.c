@@ -116,7 +116,9 @@ static int silhouette_at(const silk_sil_frame *f, silk_index vtx)
         const silk_sil_edge *w = &f->edges[f->edge_slot[e]];
         /* the chain's point nearest vtx */
         silk_fx t = m->edge[e].v[0] == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
-        silk_vec3 q = silk_hermite_point(&w->geom, t);
+        silk_curve c;
+        silk_sil_edge_curve(f, w, &c);
+        silk_vec3 q = silk_hermite_point(&c, t);
         if (q.x == p.x && q.y == p.y && q.z == p.z) return 1;
     }
     return 0;
@@ -127,10 +129,15 @@ void silk_perturb(silk_sil_frame *f)
     if (!f->near_bound) return;
     uint32_t ns = f->nsegs;
     for (int pass = 0; pass < 2; pass++) {
-        for (uint32_t i = 0; i < ns; i++) {
-            const silk_sil_seg *s = &f->segs[i];
-            if (!s->concave || f->edges[s->comp].rejected) continue;
-            visit_near(f, s, pass * ns + i + 1, pass);
+        /* the segments in triangle order: stored (STORED mode) or rebuilt */
+        uint32_t i = 0;
+        for (uint32_t t = 0; t < f->m->ntris && i < ns; t++) {
+            if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
+            silk_sil_seg tmp;
+            const silk_sil_seg *s = f->segs ? &f->segs[i] : (silk_remesh_seg(f, t, &tmp) ? &tmp : NULL);
+            i++;
+            if (!s || !s->concave || f->edges[s->comp].rejected) continue;
+            visit_near(f, s, pass * ns + i, pass);
         }
         if (pass == 0)
             for (uint32_t sl = 0; sl < f->nslots; sl++)

@@ -109,12 +109,19 @@ typedef struct sil_layout {
     int centre1, centre2;    /* the part around L / along the base needs a centre */
 } sil_layout;
 
+/* The silhouette point side k of t puts on its edge e. */
+static const silk_sil_pair *tri_pair(const silk_sil_frame *f, const silk_sil_edge *e, uint32_t t, uint32_t k)
+{
+    silk_sil_side s;
+    silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+    return side_pair(f, e, &s);
+}
+
 /* Index, in triangle direction, of the silhouette point of side k. */
 static uint32_t pair_pos(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
-    const silk_sil_side *s = silk_sil_side_of(f, e, t, k);
-    const silk_sil_pair *p = side_pair(f, e, s);
+    const silk_sil_pair *p = tri_pair(f, e, t, k);
     int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
     return fwd ? p->chain : e->nchain - 1 - p->chain;
 }
@@ -134,10 +141,15 @@ static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
     l->centre2 = l->iA != l->iB1 - 1 || l->iB != l->iB2 + 1;
 }
 
-/* Output of one re-meshed triangle: triangles, extra records, extra curves,
- * boundary length. */
-static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg,
-                     uint32_t *tris, uint32_t *recs, uint32_t *curves, uint32_t *poly)
+/* What one input triangle becomes: output triangles, records and curves
+ * beyond its corners and side points (STORED mode's costs), its boundary
+ * length, and all the records and curves of its own copy (STREAM mode). */
+typedef struct tri_count {
+    uint32_t tris, recs, curves, poly;
+    uint32_t local_recs, local_curves;
+} tri_count;
+
+static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, tri_count *c)
 {
     uint32_t np[3], sum = 0, nchained = 0;
     for (uint32_t k = 0; k < 3; k++) {
@@ -145,34 +157,71 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
         sum += np[k];
         nchained += np[k] > 0;
     }
-    *poly = 3 + sum;
+    c->poly = 3 + sum;
     if (seg) {
         sil_layout l;
         layout(f, t, &l);
         uint32_t n = seg->n;
-        *recs = n - 1;
-        *curves = 1;
-        if (l.centre1) { *tris = n + l.iA + l.len - l.iB; (*recs)++; (*curves)++; }
-        else *tris = n;
-        if (l.centre2) { *tris += n + l.iB - l.iA; (*recs)++; (*curves)++; }
-        else *tris += n + 1 + (l.iB2 - l.iB1 - 1);
-        *poly += n + 2;
+        c->recs = n - 1;
+        c->curves = 1;
+        if (l.centre1) { c->tris = n + l.iA + l.len - l.iB; c->recs++; c->curves++; }
+        else c->tris = n;
+        if (l.centre2) { c->tris += n + l.iB - l.iA; c->recs++; c->curves++; }
+        else c->tris += n + 1 + (l.iB2 - l.iB1 - 1);
+        c->poly += n + 2;
     } else if (nchained == 1) {
-        *tris = sum + 1; *recs = 0; *curves = 0;
+        c->tris = sum + 1; c->recs = 0; c->curves = 0;
     } else if (nchained >= 2) {
-        *tris = sum + 3; *recs = 1; *curves = 1;
+        c->tris = sum + 3; c->recs = 1; c->curves = 1;
     } else {
-        *tris = 1; *recs = 0; *curves = 0;
+        c->tris = 1; c->recs = 0; c->curves = 0;
     }
+    c->local_recs = 3 + sum + c->recs;
+    c->local_curves = nchained + c->curves;
+}
+
+int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
+{
+    const silk_mesh *m = f->m;
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE, kb = (lone + 2) % 3;
+    const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, kb);
+    if (!ea || !eb) return 0;
+    silk_sil_side sa, sb;
+    silk_sil_side_attrs(m, t, lone, &m->edge[ea->edge], &sa);
+    silk_sil_side_attrs(m, t, kb, &m->edge[eb->edge], &sb);
+    const silk_sil_pair *pa = side_pair(f, ea, &sa), *pb = side_pair(f, eb, &sb);
+    if (!pa || !pb) return 0;   /* cannot happen for a sane mesh */
+    memset(s, 0, sizeof *s);
+    s->tri = t;
+    silk_vec3 A, B, nA, nB;
+    silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0);
+    silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1);
+    silk_bridge(A, nA, B, nB, &s->c);
+    s->c.p0 = A;
+    s->c.p1 = B;
+    s->n = silk_sil_intervals(f->v, &s->c, silk_v3_dot(nA, nB), f->tol);
+    if (s->n < 1) s->n = 1;
+    s->split = split_sample(s, m->pos[m->tri[3 * t + (lone + 1) % 3]], m->pos[m->tri[3 * t + kb]]);
+    /* III-E: concave when N_A.F > 0 and N_B.F < 0, F = B - A */
+    silk_vec3 F = silk_v3_sub(B, A);
+    s->concave = silk_v3_dot64(nA, F) > 0 && silk_v3_dot64(nB, F) < 0;
+    s->m = silk_hermite_point(&s->c, SILK_FX_HALF);
+    if (!silk_v3_normalize(silk_v3_lerp(nA, nB, SILK_FX_HALF), &s->nm)) s->concave = 0;
+    s->rise = silk_fx_max(silk_fx_max(silk_v3_dot(silk_v3_sub(A, s->m), s->nm),
+                                      silk_v3_dot(silk_v3_sub(B, s->m), s->nm)), 0);
+    s->comp = ea->parent;
+    return 1;
 }
 
 silk_status silk_remesh_plan(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
     silk_arena *a = f->a;
-    f->segs = silk_arena_array_top(a, f->nsil, sizeof *f->segs, SILK_MEM_FRAME);
-    f->cost = silk_arena_array_top(a, f->nedges, sizeof *f->cost, SILK_MEM_FRAME);
-    if (!f->segs || !f->cost) return SILK_ERR_NOMEM;
+    if (!f->stream) {
+        f->segs = silk_arena_array_top(a, f->nsil, sizeof *f->segs, SILK_MEM_FRAME);
+        f->cost = silk_arena_array_top(a, f->nedges, sizeof *f->cost, SILK_MEM_FRAME);
+        if (!f->segs || !f->cost) return SILK_ERR_NOMEM;
+    }
 
     /* Segments (III-D) and the parts of the frame. */
     f->nsegs = 0;
@@ -183,30 +232,9 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         if (st & SILK_TS_SIL) {
             uint32_t lone = st & SILK_TS_LONE, kb = (lone + 2) % 3;
             silk_sil_edge *ea = e3[lone], *eb = e3[kb];
-            const silk_sil_side *sa = silk_sil_side_of(f, ea, t, lone);
-            const silk_sil_side *sb = silk_sil_side_of(f, eb, t, kb);
-            const silk_sil_pair *pa = sa ? side_pair(f, ea, sa) : NULL;
-            const silk_sil_pair *pb = sb ? side_pair(f, eb, sb) : NULL;
-            if (!pa || !pb) { f->tri_state[t] = 0; continue; }   /* cannot happen for a sane mesh */
-            silk_sil_seg *s = &f->segs[f->nsegs++];
-            memset(s, 0, sizeof *s);
-            s->tri = t;
-            silk_vec3 A, B, nA, nB;
-            silk_sil_edge_point(f, ea, sa, pa->u, &A, &nA, &s->c.uv0);
-            silk_sil_edge_point(f, eb, sb, pb->u, &B, &nB, &s->c.uv1);
-            silk_bridge(A, nA, B, nB, &s->c);
-            s->c.p0 = A;
-            s->c.p1 = B;
-            s->n = silk_sil_intervals(f->v, &s->c, silk_v3_dot(nA, nB), f->tol);
-            if (s->n < 1) s->n = 1;
-            s->split = split_sample(s, m->pos[m->tri[3 * t + (lone + 1) % 3]], m->pos[m->tri[3 * t + kb]]);
-            /* III-E: concave when N_A.F > 0 and N_B.F < 0, F = B - A */
-            silk_vec3 F = silk_v3_sub(B, A);
-            s->concave = silk_v3_dot64(nA, F) > 0 && silk_v3_dot64(nB, F) < 0;
-            s->m = silk_hermite_point(&s->c, SILK_FX_HALF);
-            if (!silk_v3_normalize(silk_v3_lerp(nA, nB, SILK_FX_HALF), &s->nm)) s->concave = 0;
-            s->rise = silk_fx_max(silk_fx_max(silk_v3_dot(silk_v3_sub(A, s->m), s->nm),
-                                              silk_v3_dot(silk_v3_sub(B, s->m), s->nm)), 0);
+            silk_sil_seg tmp, *s = f->segs ? &f->segs[f->nsegs] : &tmp;
+            if (!silk_remesh_seg(f, t, s)) { f->tri_state[t] = 0; continue; }
+            f->nsegs++;
             unite(f, ea, eb);
             if (e3[(lone + 1) % 3] && e3[(lone + 1) % 3]->nchain) unite(f, ea, e3[(lone + 1) % 3]);
         } else {
@@ -219,8 +247,8 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     }
     for (uint32_t w = 0; w < f->nedges; w++) f->edges[w].parent = silk_sil_find_root(f->edges, w);
 
-    /* What each part costs. */
-    for (uint32_t w = 0; w < f->nedges; w++) {
+    /* What each part costs (STORED mode: the sides share records). */
+    for (uint32_t w = 0; f->cost && w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];
         if (!e->nchain) continue;
         silk_sil_cost *c = &f->cost[e->parent];
@@ -229,23 +257,39 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     }
     uint32_t si = 0;
     f->max_poly = 0;
+    f->max_recs = 3;
+    f->max_tris = 1;
+    f->max_curves = 0;
+    f->near_total = f->seg_samples = 0;
+    f->out_tris = m->ntris;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
+        silk_sil_seg tmp, *s = NULL;
+        if (f->tri_state[t] & SILK_TS_SIL) {
+            if (f->segs) s = &f->segs[si++];
+            else if (silk_remesh_seg(f, t, &tmp)) s = &tmp;
+        }
         uint32_t root = SILK_SIL_NONE;
         for (uint32_t k = 0; k < 3 && root == SILK_SIL_NONE; k++) {
             const silk_sil_edge *e = edge_at(f, t, k);
             if (e && e->nchain) root = e->parent;
         }
         if (root == SILK_SIL_NONE) continue;
-        uint32_t tris, recs, curves, poly;
-        tri_cost(f, t, s, &tris, &recs, &curves, &poly);
-        silk_sil_cost *c = &f->cost[root];
-        c->tris += tris - 1;
-        c->recs += recs;
-        c->curves += curves;
-        if (poly > f->max_poly) f->max_poly = poly;
+        tri_count tc;
+        tri_cost(f, t, s, &tc);
+        silk_sil_cost *c = f->cost ? &f->cost[root] : NULL;
+        if (c) {
+            c->tris += tc.tris - 1;
+            c->recs += tc.recs;
+            c->curves += tc.curves;
+        }
+        f->out_tris += tc.tris - 1;
+        if (tc.poly > f->max_poly) f->max_poly = tc.poly;
+        if (tc.local_recs > f->max_recs) f->max_recs = tc.local_recs;
+        if (tc.tris > f->max_tris) f->max_tris = tc.tris;
+        if (tc.local_curves > f->max_curves) f->max_curves = tc.local_curves;
         if (s) {
             s->comp = root;
+            f->seg_samples += s->n - 1;
             if (s->concave) {
                 /* the triangle's corners and everything one edge away */
                 uint32_t near = 3;
@@ -253,7 +297,8 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
                     silk_index vtx = m->tri[3 * t + k];
                     near += m->vert_edge_start[vtx + 1] - m->vert_edge_start[vtx];
                 }
-                c->near += near;
+                if (c) c->near += near;
+                f->near_total = f->near_total > UINT32_MAX - near ? UINT32_MAX : f->near_total + near;
             }
         }
     }
@@ -293,8 +338,8 @@ static void totals(const silk_sil_frame *f, uint64_t *recs, uint64_t *tris, uint
 
 uint32_t silk_remesh_near_bound(const silk_sil_frame *f)
 {
-    uint64_t r, t, c, n;
-    totals(f, &r, &t, &c, &n);
+    uint64_t r, t, c, n = f->near_total;
+    if (f->cost) totals(f, &r, &t, &c, &n);
     return n > f->m->nverts ? f->m->nverts : (uint32_t)n;
 }
 
@@ -337,14 +382,58 @@ static uint32_t put_curve_rec(silk_frame_geom *g, uint32_t curve, silk_fx t)
     return g->nvrec++;
 }
 
-/* Append side k of t (its chain, in the triangle's direction) to out. */
-static uint32_t walk_side(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t *out)
+/* The record of corner c: CORNER, or MOVED when perturbation moved its
+ * vertex (every corner at the vertex gets the same offset, so the vertex
+ * moves as one). */
+static uint32_t put_corner(const silk_sil_frame *f, silk_frame_geom *g, uint32_t c)
+{
+    silk_vrec *r = &g->vrec[g->nvrec];
+    uint32_t off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_SIL_NONE;
+    r->kind = off == SILK_SIL_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+    r->a = c;
+    r->b = off == SILK_SIL_NONE ? 0 : off;
+    r->t = 0;
+    return g->nvrec++;
+}
+
+/* Corner k of t: STORED mode made every corner's record up front, at 3t+k. */
+static uint32_t corner_rec(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t, uint32_t k)
+{
+    return f->stream ? put_corner(f, g, 3 * t + k) : 3 * t + k;
+}
+
+/* The curve of side s's points: the edge's, with the side's normals and uvs. */
+static void side_curve(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s, silk_curve *c)
+{
+    const silk_mesh *m = f->m;
+    silk_sil_edge_curve(f, e, c);
+    c->n0 = m->normal[s->n0];
+    c->n1 = m->normal[s->n1];
+    if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
+        c->uv0 = m->uv[s->uv0];
+        c->uv1 = m->uv[s->uv1];
+    }
+}
+
+/* Append side k of t (its chain, in the triangle's direction) to out: the
+ * run of records its owner side made (STORED), or this triangle's own copy
+ * of the side's curve and records (STREAM), which evaluate the same. */
+static uint32_t walk_side(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t, uint32_t k, uint32_t *out)
 {
     uint32_t n = side_points(f, t, k);
     if (!n) return 0;
     const silk_sil_edge *e = edge_at(f, t, k);
-    const silk_sil_side *s = silk_sil_side_of(f, e, t, k);
-    uint32_t rec = f->sides[s->owner].rec;
+    uint32_t rec;
+    if (f->stream) {
+        silk_sil_side s;
+        silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+        side_curve(f, e, &s, &g->curve[g->ncurve]);
+        rec = g->nvrec;
+        for (uint32_t j = 0; j < n; j++) put_curve_rec(g, g->ncurve, f->chain[e->chain0 + j]);
+        g->ncurve++;
+    } else {
+        rec = f->sides[silk_sil_side_of(f, e, t, k)->owner].rec;
+    }
     int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
     for (uint32_t j = 0; j < n; j++) out[j] = fwd ? rec + j : rec + n - 1 - j;
     return n;
@@ -406,8 +495,8 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, s
     uint32_t len = 0;
     for (uint32_t i = 0; i < 3; i++) {
         uint32_t k = (lone + i) % 3;
-        cyc[len++] = 3 * t + k;
-        len += walk_side(f, t, k, &cyc[len]);
+        cyc[len++] = corner_rec(f, g, t, k);
+        len += walk_side(f, g, t, k, &cyc[len]);
     }
 
     /* the segment: interior samples as records on its own curve */
@@ -477,15 +566,15 @@ static void emit_fanned(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         uint32_t o = (only + 2) % 3;
         for (uint32_t i = 0; i < 3; i++) {
             uint32_t k = (o + i) % 3;
-            cyc[len++] = 3 * t + k;
-            len += walk_side(f, t, k, &cyc[len]);
+            cyc[len++] = corner_rec(f, g, t, k);
+            len += walk_side(f, g, t, k, &cyc[len]);
         }
         fan(g, cyc[0], cyc + 1, len - 1);
         return;
     }
     for (uint32_t k = 0; k < 3; k++) {
-        cyc[len++] = 3 * t + k;
-        len += walk_side(f, t, k, &cyc[len]);
+        cyc[len++] = corner_rec(f, g, t, k);
+        len += walk_side(f, g, t, k, &cyc[len]);
     }
     /* the centre: two thirds along from corner 0 to the midpoint of the
      * opposite side, so position, normal and uv are the corners' average */
@@ -496,22 +585,30 @@ static void emit_fanned(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
                              mid2(uv[1], uv[2]), T_TWO_THIRDS), cyc, len);
 }
 
+/* Input triangle t's share of the frame: re-meshed by its silhouette
+ * segment s (Fig. 11), fanned over the points on its sides (Fig. 12), or
+ * as it is. */
+static void emit_one(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, silk_sil_seg *s)
+{
+    if (s && !f->edges[s->comp].rejected) {
+        emit_silhouette(f, g, t, s);
+        return;
+    }
+    int chained = 0;
+    for (uint32_t k = 0; k < 3; k++) chained |= side_points(f, t, k) > 0;
+    if (chained) {
+        emit_fanned(f, g, t);
+        return;
+    }
+    uint32_t r0 = corner_rec(f, g, t, 0), r1 = corner_rec(f, g, t, 1), r2 = corner_rec(f, g, t, 2);
+    put_tri(g, r0, r1, r2, 0);
+}
+
 void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats)
 {
     const silk_mesh *m = f->m;
     g->nvrec = g->ntri = g->ncurve = 0;
-
-    /* Every corner keeps its record; corners at a perturbed vertex all use the
-     * same offset, so the vertex moves as one. */
-    for (uint32_t i = 0; i < 3 * m->ntris; i++) {
-        silk_vrec *r = &g->vrec[i];
-        uint32_t off = f->vert_offset ? f->vert_offset[m->tri[i]] : SILK_SIL_NONE;
-        r->kind = off == SILK_SIL_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
-        r->a = i;
-        r->b = off == SILK_SIL_NONE ? 0 : off;
-        r->t = 0;
-    }
-    g->nvrec = 3 * m->ntris;
+    for (uint32_t i = 0; i < 3 * m->ntris; i++) put_corner(f, g, i);
 
     /* Edge chains: one curve and one run of records per distinct side. */
     uint32_t samples = 0, bridges = 0;
@@ -523,15 +620,8 @@ void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *s
         for (uint32_t i = 0; i < e->nsides; i++) {
             silk_sil_side *s = &f->sides[e->side0 + i];
             if (s->owner != e->side0 + i) continue;
-            silk_curve c = e->geom;
-            c.n0 = m->normal[s->n0];
-            c.n1 = m->normal[s->n1];
-            if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
-                c.uv0 = m->uv[s->uv0];
-                c.uv1 = m->uv[s->uv1];
-            }
             s->curve = g->ncurve++;
-            g->curve[s->curve] = c;
+            side_curve(f, e, s, &g->curve[s->curve]);
             s->rec = g->nvrec;
             for (uint32_t j = 0; j < e->nchain; j++) put_curve_rec(g, s->curve, f->chain[e->chain0 + j]);
         }
@@ -540,15 +630,8 @@ void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *s
     uint32_t si = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
-        if (s && !f->edges[s->comp].rejected) {
-            emit_silhouette(f, g, t, s);
-            samples += s->n - 1;
-            continue;
-        }
-        int chained = 0;
-        for (uint32_t k = 0; k < 3; k++) chained |= side_points(f, t, k) > 0;
-        if (chained) emit_fanned(f, g, t);
-        else put_tri(g, 3 * t, 3 * t + 1, 3 * t + 2, 0);
+        if (s && !f->edges[s->comp].rejected) samples += s->n - 1;
+        emit_one(f, g, t, s);
     }
 
     g->offset = f->offset;
@@ -560,4 +643,44 @@ void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *s
         stats->tris_drawn = g->ntri;
         stats->moved_vertices = f->noffset;
     }
+}
+
+/* ---- STREAM mode ----------------------------------------------------------------- */
+
+int silk_remesh_stream_alloc(silk_sil_frame *f, silk_frame_geom *local)
+{
+    silk_arena *a = f->a;
+    memset(local, 0, sizeof *local);
+    local->vrec = silk_arena_array_top(a, f->max_recs, sizeof *local->vrec, SILK_MEM_FRAME);
+    local->tri = silk_arena_array_top(a, 3 * (size_t)f->max_tris, sizeof *local->tri, SILK_MEM_FRAME);
+    local->tri_added = silk_arena_array_top(a, f->max_tris, 1, SILK_MEM_FRAME);
+    local->curve = silk_arena_array_top(a, f->max_curves, sizeof *local->curve, SILK_MEM_FRAME);
+    f->poly = silk_arena_array_top(a, 2 * (size_t)f->max_poly, sizeof *f->poly, SILK_MEM_FRAME);
+    return local->vrec && local->tri && local->tri_added && local->curve && f->poly;
+}
+
+void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *local, uint32_t t)
+{
+    silk_sil_seg seg, *s = NULL;
+    local->nvrec = local->ntri = local->ncurve = 0;
+    local->offset = f->offset;
+    local->noffset = f->noffset;
+    if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &seg)) s = &seg;
+    emit_one(f, local, t, s);
+}
+
+void silk_remesh_stream_stats(const silk_sil_frame *f, silk_frame_stats *stats)
+{
+    uint32_t bridges = 0, samples = f->seg_samples;
+    for (uint32_t w = 0; w < f->nedges; w++) {
+        const silk_sil_edge *e = &f->edges[w];
+        if (!e->nchain) continue;
+        bridges += e->npairs;
+        samples += e->nchain;
+    }
+    stats->silhouette_tris = f->nsil;
+    stats->bridges = bridges;
+    stats->samples = samples;
+    stats->tris_drawn = f->out_tris;
+    stats->moved_vertices = f->noffset;
 }

@@ -8,9 +8,13 @@
  * triangle is rasterized into the target's band, and --wire draws the edges on
  * top, then the pen-and-ink lines (lines.c) if asked for.  All per-frame memory is taken from the top of the arena and released
  * before returning, so frames can be rendered forever from one arena.
+ *
+ * FLAT and SMOOTH frames without lines are streamed instead (see "Streamed
+ * frames" below): nothing but the silhouette plan is kept, and each input
+ * triangle's share of the frame is rebuilt whenever a band needs it.
  */
 #include <string.h>
-#include "smooth.h"
+#include "silhouette.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -48,6 +52,13 @@ typedef struct frame {
     silk_frame_geom g;
     silk_vertex_out *cache;   /* NULL when the arena could not hold it */
     silk_vertex_out *line_cache;   /* the same for the lines' records */
+    uint32_t *line_lift;      /* per line record (lines.c), or NULL */
+    /* streamed frames */
+    int stream, smooth;
+    silk_sil_frame sil;       /* SMOOTH: the plan */
+    silk_frame_geom part;     /* one input triangle's share of the frame */
+    silk_vertex_out *part_out;/* its records through the vertex stage */
+    uint16_t *rows;           /* per input triangle: first and last row it can reach, or NULL */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -60,11 +71,148 @@ static const silk_vertex_out *vertex_out(const frame *f, uint32_t i, silk_vertex
     return tmp;
 }
 
-static const silk_vertex_out *line_out(const frame *f, uint32_t i, silk_vertex_out *tmp)
+/* Vertex i of the lines, lifted off the triangles it lies on. */
+static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 {
-    if (f->line_cache) return &f->line_cache[i];
-    f->hal->vertex(f->hal, &f->geom, &f->g.line_vrec[i], tmp);
-    return tmp;
+    if (f->line_cache) *out = f->line_cache[i];
+    else f->hal->vertex(f->hal, &f->geom, &f->g.line_vrec[i], out);
+    if (f->line_lift) silk_lines_apply_lift(out, f->line_lift[i]);
+}
+
+/* ---- Streamed frames ------------------------------------------------------------
+ *
+ * A FLAT or SMOOTH frame without lines is never stored.  The silhouette plan
+ * (silhouette.h: carrying edges, their points, the perturbation) is made once
+ * per frame; an input triangle's share of the frame - its records, curves
+ * and triangles, what a stored frame holds for it, in the same order - is
+ * rebuilt and put through the vertex stage whenever a band needs it, so the
+ * pixels are the stored frame's.  The memory is the plan's, a few dozen
+ * bytes per carrying edge, instead of some 200 bytes of records, indices and
+ * vertex cache per input triangle: what lets a 64 KiB part draw smooth
+ * frames (docs/small-devices.md).  With several bands, a first pass notes
+ * the rows each input triangle can reach, and a band rebuilds only the
+ * triangles that reach into it. */
+
+static int streamed(const silk_render_opts *o)
+{
+    return o->lines == SILK_LINES_NONE && (o->mode == SILK_MODE_FLAT || o->mode == SILK_MODE_SMOOTH);
+}
+
+static size_t aligned(size_t n) { return (n + SILK_ARENA_ALIGN - 1) & ~(size_t)(SILK_ARENA_ALIGN - 1); }
+
+static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                  const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
+                                  silk_error *err)
+{
+    f->stream = 1;
+    f->hal = h;
+    f->geom.mesh = m;
+    if (o->mode == SILK_MODE_SMOOTH) {
+        if (o->tolerance_px <= 0)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_smooth: tolerance must be positive");
+        silk_arena_mark mark = silk_arena_top_mark(a);
+        f->smooth = silk_frame_smooth_stream(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->part) &&
+                    (f->part_out = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->part_out, SILK_MEM_FRAME));
+        if (f->smooth) {
+            silk_remesh_stream_stats(&f->sil, stats);
+            f->geom.curves = f->part.curve;
+            f->geom.offsets = f->sil.offset;
+            return SILK_OK;
+        }
+        /* the plan does not fit: the coarse mesh, as a stored frame falls back */
+        silk_arena_top_release(a, &mark);
+        stats->fell_back = 1;
+    }
+    /* the coarse mesh: three CORNER records (zero-filled: kind CORNER) and one triangle at a time */
+    size_t free_bytes = silk_arena_free_bytes(a);
+    f->part.vrec = silk_arena_array_top(a, 3, sizeof *f->part.vrec, SILK_MEM_FRAME);
+    f->part.tri = silk_arena_array_top(a, 3, sizeof *f->part.tri, SILK_MEM_FRAME);
+    f->part.tri_added = silk_arena_array_top(a, 1, 1, SILK_MEM_FRAME);
+    f->part_out = silk_arena_array_top(a, 3, sizeof *f->part_out, SILK_MEM_FRAME);
+    if (!f->part.vrec || !f->part.tri || !f->part.tri_added || !f->part_out) {
+        size_t need = aligned(3 * sizeof *f->part.vrec) + aligned(3 * sizeof *f->part.tri) + aligned(1) +
+                      aligned(3 * sizeof *f->part_out);
+        return silk_fail(err, SILK_ERR_NOMEM, "frame", 0,
+                         "arena too small for the frame: even the unsmoothed frame needs %lu bytes, %lu are free",
+                         (unsigned long)need, (unsigned long)free_bytes);
+    }
+    for (uint32_t k = 0; k < 3; k++) f->part.tri[k] = k;
+    f->part.nvrec = 3;
+    f->part.ntri = 1;
+    stats->tris_drawn = m->ntris;
+    return SILK_OK;
+}
+
+/* Input triangle t's share, through the vertex stage into part_out. */
+static void stream_part(frame *f, uint32_t t)
+{
+    silk_frame_geom *p = &f->part;
+    if (f->smooth) {
+        silk_remesh_emit_tri(&f->sil, p, t);
+    } else {
+        for (uint32_t k = 0; k < 3; k++) p->vrec[k].a = 3 * t + k;
+    }
+    for (uint32_t i = 0; i < p->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &p->vrec[i], &f->part_out[i]);
+}
+
+/* The row of a frame `height` rows high where the rasterizer puts clip
+ * point c, y' = (1 - y/w) height/2, floored (w > 0). */
+static int64_t clip_row(const silk_vec4 *c, int height)
+{
+    int64_t n = ((int64_t)c->w - c->y) * height, d = 2 * (int64_t)c->w;
+    return n >= 0 ? n / d : -((-n + d - 1) / d);
+}
+
+/* The rows each input triangle can reach.  Everything drawn for it lies in
+ * the screen triangles of its share's records, so between their highest and
+ * lowest row; one row more on each side covers the rasterizer's rounding to
+ * subpixels.  A record behind the eye plane (w <= 0) may reach anywhere.
+ * Without room for the rows every band rebuilds every triangle: slower,
+ * the same pixels. */
+static void stream_rows(frame *f, silk_arena *a, int height)
+{
+    uint32_t n = f->geom.mesh->ntris;
+    f->rows = silk_arena_array_top(a, 2 * (size_t)n, sizeof *f->rows, SILK_MEM_FRAME);
+    for (uint32_t t = 0; f->rows && t < n; t++) {
+        stream_part(f, t);
+        int64_t lo = height, hi = -1;
+        for (uint32_t i = 0; i < f->part.nvrec; i++) {
+            const silk_vec4 *c = &f->part_out[i].clip;
+            int64_t y = c->w > 0 ? clip_row(c, height) : 0;
+            if (c->w <= 0 || y - 1 < lo) lo = c->w > 0 ? y - 1 : 0;
+            if (c->w <= 0 || y + 1 > hi) hi = c->w > 0 ? y + 1 : height - 1;
+            if (c->w <= 0) break;
+        }
+        if (lo < 0) lo = 0;
+        if (hi > height - 1) hi = height - 1;
+        f->rows[2 * t] = lo <= hi ? (uint16_t)lo : UINT16_MAX;   /* never reached: no band takes it */
+        f->rows[2 * t + 1] = lo <= hi ? (uint16_t)hi : 0;
+    }
+}
+
+/* The band's part of the frame; --wire draws the original triangles' edges,
+ * then the added ones', over the surface, as frame_draw does. */
+static void stream_draw(frame *f, const silk_render_opts *o, silk_target *t)
+{
+    const silk_frame_geom *p = &f->part;
+    const silk_vertex_out *out = f->part_out;
+    int last = t->y0 + t->rows - 1;
+    silk_target_clear(t, o->bg_rgb);
+    for (int pass = 0; pass < (o->wire ? 3 : 1); pass++)
+        for (uint32_t k = 0; k < f->geom.mesh->ntris; k++) {
+            if (f->rows && (f->rows[2 * k] > last || f->rows[2 * k + 1] < t->y0)) continue;
+            stream_part(f, k);
+            for (uint32_t i = 0; i < p->ntri; i++) {
+                const uint32_t *c = &p->tri[3 * i];
+                if (pass == 0) {
+                    silk_raster_triangle(t, f->hal, &out[c[0]], &out[c[1]], &out[c[2]]);
+                } else if (p->tri_added[i] == pass - 1) {
+                    for (int e = 0; e < 3; e++)
+                        silk_raster_line(t, &out[c[e]], &out[c[(e + 1) % 3]],
+                                         p->tri_added[i] ? o->wire_new_rgb : o->wire_rgb);
+                }
+            }
+        }
 }
 
 static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
@@ -76,6 +224,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     if ((unsigned)o->lines > SILK_LINES_ONLY)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown lines setting %d", (int)o->lines);
     memset(f, 0, sizeof *f);
+    if (streamed(o)) return stream_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
     silk_status st;
     /* The smooth curves exist only in SMOOTH mode; the others outline the coarse mesh. */
@@ -91,7 +240,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     else
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
     if (st != SILK_OK) return st;
-    if (o->lines && !smooth_lines && silk_lines_polygonal(a, m, v, &f->g) != SILK_OK) {
+    if (o->lines && !smooth_lines && silk_lines_polygonal(a, m, v, o->mode == SILK_MODE_FLAT, &f->g) != SILK_OK) {
         f->g.nlines = f->g.nline_vrec = 0;
         stats->fell_back = 1;
     }
@@ -108,6 +257,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     if (f->line_cache)
         for (uint32_t i = 0; i < f->g.nline_vrec; i++)
             h->vertex(h, &f->geom, &f->g.line_vrec[i], &f->line_cache[i]);
+    f->line_lift = silk_lines_lift(a, m, &f->g, f->cache, v->cam.width, v->cam.height);
     stats->tris_drawn = f->g.ntri;
     return SILK_OK;
 }
@@ -143,8 +293,14 @@ static void frame_draw(const frame *f, const silk_render_opts *o, silk_target *t
     if (o->wire) draw_wire(f, o, t);
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
-        for (uint32_t j = g->line_start[i]; j + 1 < g->line_start[i + 1]; j++)
-            silk_raster_line(t, line_out(f, j, &tmp[0]), line_out(f, j + 1, &tmp[1]), rgb);
+        uint32_t j = g->line_start[i], end = g->line_start[i + 1];
+        if (j == end) continue;
+        line_out(f, j, &tmp[0]);
+        for (; j + 1 < end; j++) {
+            line_out(f, j + 1, &tmp[1]);
+            silk_raster_line(t, &tmp[0], &tmp[1], rgb);
+            tmp[0] = tmp[1];
+        }
     }
 }
 
@@ -173,7 +329,8 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     a->top_peak = a->top;
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
-    if (st == SILK_OK) frame_draw(&f, o, t);
+    if (st == SILK_OK && f.stream) stream_draw(&f, o, t);
+    else if (st == SILK_OK) frame_draw(&f, o, t);
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;
@@ -195,10 +352,12 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
     const int rows = band->rows;
+    if (st == SILK_OK && f.stream && rows < band->height) stream_rows(&f, a, band->height);
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
-        frame_draw(&f, o, band);
+        if (f.stream) stream_draw(&f, o, band);
+        else frame_draw(&f, o, band);
         if (sink->band(sink->user, band))
             st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }

@@ -29,15 +29,16 @@ static int side_forward(const silk_mesh *m, uint32_t t, uint32_t k, const silk_e
 }
 
 /* The normals (and uvs) at edge.v[0], edge.v[1] as side k of t sees them. */
-static void side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e,
-                       silk_index *n0, silk_index *n1, silk_index *uv0, silk_index *uv1)
+void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s)
 {
     uint32_t ca = 3 * t + k, cb = 3 * t + (k + 1) % 3;
-    if (!side_forward(m, t, k, e)) { uint32_t s = ca; ca = cb; cb = s; }
-    *n0 = m->tri_normal[ca];
-    *n1 = m->tri_normal[cb];
-    if (m->tri_uv && m->uv) { *uv0 = m->tri_uv[ca]; *uv1 = m->tri_uv[cb]; }
-    else { *uv0 = SILK_NO_INDEX; *uv1 = SILK_NO_INDEX; }
+    if (!side_forward(m, t, k, e)) { uint32_t x = ca; ca = cb; cb = x; }
+    s->tri = t;
+    s->k = k;
+    s->n0 = m->tri_normal[ca];
+    s->n1 = m->tri_normal[cb];
+    if (m->tri_uv && m->uv) { s->uv0 = m->tri_uv[ca]; s->uv1 = m->tri_uv[cb]; }
+    else { s->uv0 = SILK_NO_INDEX; s->uv1 = SILK_NO_INDEX; }
 }
 
 static int is_front(const silk_mesh *m, const silk_view *v, uint32_t t)
@@ -76,11 +77,23 @@ const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_ed
     return NULL;
 }
 
+void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c)
+{
+    const silk_edge *me = &f->m->edge[e->edge];
+    memset(c, 0, sizeof *c);
+    c->p0 = f->m->pos[me->v[0]];
+    c->p1 = f->m->pos[me->v[1]];
+    c->t0 = e->t0;
+    c->t1 = e->t1;
+}
+
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv)
 {
     const silk_mesh *m = f->m;
-    *p = silk_hermite_point(&e->geom, u);
+    silk_curve c;
+    silk_sil_edge_curve(f, e, &c);
+    *p = silk_hermite_point(&c, u);
     /* eq. 6: the normal along a bridge is interpolated linearly */
     if (!silk_v3_normalize(silk_v3_lerp(m->normal[s->n0], m->normal[s->n1], u), n))
         *n = m->normal[s->n0];
@@ -97,27 +110,27 @@ void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
 
 /* The curve every point on edge w lies on: the feature segment of a feature
  * edge (a straight one if it has none), else the silhouette bridge built from
- * the normals of the first silhouette side found on it. */
+ * the normals of the first silhouette point found on it.  Either way it ends
+ * exactly on the vertices (silk_sil_edge_curve). */
 static void edge_geometry(const silk_sil_frame *f, silk_sil_edge *w)
 {
     const silk_mesh *m = f->m;
     const silk_edge *e = &m->edge[w->edge];
     silk_vec3 p0 = m->pos[e->v[0]], p1 = m->pos[e->v[1]];
-    memset(&w->geom, 0, sizeof w->geom);
     if (w->is_feature || w->npairs == 0) {
         silk_index fi = m->edge_feature ? m->edge_feature[w->edge] : SILK_NO_INDEX;
         if (fi != SILK_NO_INDEX && fi < m->nfeature_edges && m->feature) {
-            w->geom.t0 = m->feature[fi].t0;
-            w->geom.t1 = m->feature[fi].t1;
+            w->t0 = m->feature[fi].t0;
+            w->t1 = m->feature[fi].t1;
         } else {
-            w->geom.t0 = w->geom.t1 = silk_v3_sub(p1, p0);
+            w->t0 = w->t1 = silk_v3_sub(p1, p0);
         }
-        w->geom.p0 = p0;
-        w->geom.p1 = p1;
     } else {
-        silk_bridge(p0, m->normal[w->bn0], p1, m->normal[w->bn1], &w->geom);
-        w->geom.p0 = p0;    /* the bridge must end exactly on the vertices */
-        w->geom.p1 = p1;
+        const silk_sil_pair *p = &f->pairs[w->pair0];
+        silk_curve c;
+        silk_bridge(p0, m->normal[p->n0], p1, m->normal[p->n1], &c);
+        w->t0 = c.t0;
+        w->t1 = c.t1;
     }
 }
 
@@ -258,9 +271,10 @@ silk_status silk_sil_find(silk_sil_frame *f)
     }
     f->nsides = nsides;
     f->npairs = npairs;
-    f->sides = silk_arena_array_top(a, nsides, sizeof *f->sides, SILK_MEM_FRAME);
+    /* Only STORED mode keeps the sides: which of them share records. */
+    f->sides = f->stream ? NULL : silk_arena_array_top(a, nsides, sizeof *f->sides, SILK_MEM_FRAME);
     f->pairs = silk_arena_array_top(a, npairs, sizeof *f->pairs, SILK_MEM_FRAME);
-    if (!f->sides || !f->pairs) return SILK_ERR_NOMEM;
+    if ((!f->sides && !f->stream) || !f->pairs) return SILK_ERR_NOMEM;
 
     for (uint32_t t = 0; t < m->ntris; t++) {
         if (!tri_ok(m, t)) continue;
@@ -270,16 +284,16 @@ silk_status silk_sil_find(silk_sil_frame *f)
             uint32_t w = f->edge_slot[e];
             if (w == SILK_SIL_NONE) continue;
             silk_sil_edge *we = &f->edges[w];
-            silk_sil_side *s = &f->sides[we->side0 + we->nsides];
-            s->tri = t;
-            s->k = k;
-            side_attrs(m, t, k, &m->edge[e], &s->n0, &s->n1, &s->uv0, &s->uv1);
-            s->owner = (uint32_t)(s - f->sides);
-            for (uint32_t i = 0; i < we->nsides; i++) {
-                const silk_sil_side *o = &f->sides[we->side0 + i];
-                if (o->n0 == s->n0 && o->n1 == s->n1 && o->uv0 == s->uv0 && o->uv1 == s->uv1) {
-                    s->owner = we->side0 + i;
-                    break;
+            silk_sil_side side, *s = f->sides ? &f->sides[we->side0 + we->nsides] : &side;
+            silk_sil_side_attrs(m, t, k, &m->edge[e], s);
+            if (f->sides) {
+                s->owner = (uint32_t)(s - f->sides);
+                for (uint32_t i = 0; i < we->nsides; i++) {
+                    const silk_sil_side *o = &f->sides[we->side0 + i];
+                    if (o->n0 == s->n0 && o->n1 == s->n1 && o->uv0 == s->uv0 && o->uv1 == s->uv1) {
+                        s->owner = we->side0 + i;
+                        break;
+                    }
                 }
             }
             we->nsides++;
@@ -297,7 +311,6 @@ silk_status silk_sil_find(silk_sil_frame *f)
             silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
             p->n0 = s->n0;
             p->n1 = s->n1;
-            if (we->npairs == 1) { we->bn0 = s->n0; we->bn1 = s->n1; }
         }
     }
 
@@ -308,7 +321,9 @@ silk_status silk_sil_find(silk_sil_frame *f)
         silk_sil_edge *we = &f->edges[w];
         const silk_edge *e = &m->edge[we->edge];
         edge_geometry(f, we);
-        silk_vec3 d0 = silk_view_to_eye(v, we->geom.p0), d1 = silk_view_to_eye(v, we->geom.p1);
+        silk_curve c;
+        silk_sil_edge_curve(f, we, &c);
+        silk_vec3 d0 = silk_view_to_eye(v, c.p0), d1 = silk_view_to_eye(v, c.p1);
         for (uint32_t i = 0; i < we->npairs; i++) {
             silk_sil_pair *p = &f->pairs[we->pair0 + i];
             p->u = silk_fx_clamp(silk_silhouette_param(m->normal[p->n0], d0, m->normal[p->n1], d1),
@@ -316,7 +331,7 @@ silk_status silk_sil_find(silk_sil_frame *f)
         }
         we->nfeat = 0;
         if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))
-            we->nfeat = silk_sil_intervals(v, &we->geom, unit_dot(we->geom.t0, we->geom.t1), f->tol);
+            we->nfeat = silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
         nchain += (we->nfeat > 1 ? we->nfeat - 1 : 0) + we->npairs;
     }
     f->chain = silk_arena_array_top(a, nchain, sizeof *f->chain, SILK_MEM_FRAME);

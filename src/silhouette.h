@@ -16,6 +16,16 @@
  * on the two sides of an edge may evaluate the chain on different curves
  * (their own normals and uvs) but with the same end points, tangents and
  * parameters, so the positions agree bit for bit.
+ *
+ * Two ways to run the stages.  STORED (silk_frame_smooth): the whole frame's
+ * records, curves and triangles in one silk_frame_geom.  STREAM (the
+ * renderer, silk_frame_smooth_stream): only the plan is kept - the carrying
+ * edges, their points, the perturbation - and silk_remesh_emit_tri rebuilds
+ * one input triangle's share (its own copies of the records and curves it
+ * uses) each time a band needs it.  Both run the same emission code, so the
+ * records evaluate to the same bits and the triangles come in the same
+ * order: the pictures are identical, and a stream frame needs a fraction of
+ * the memory (no sides, no segments, no output arrays).
  */
 #ifndef SILK_SILHOUETTE_H
 #define SILK_SILHOUETTE_H
@@ -49,16 +59,17 @@ typedef struct silk_sil_side {
     uint32_t curve, rec;     /* output: curve index and first chain record (owners only) */
 } silk_sil_side;
 
-/* An edge that carries points this frame. */
+/* An edge that carries points this frame.  Its curve runs from edge.v[0] to
+ * edge.v[1], exactly through the two vertices, so only the tangents are
+ * kept (silk_sil_edge_curve makes the whole curve). */
 typedef struct silk_sil_edge {
-    silk_curve geom;         /* p0, p1, t0, t1 along edge.v[0] -> v[1]: bridge or feature segment */
+    silk_vec3 t0, t1;        /* tangents of the bridge or of the feature segment */
     uint32_t edge;           /* mesh edge index */
     uint32_t pair0, npairs;  /* silhouette points */
     uint32_t side0, nsides;  /* triangle sides on this edge */
     uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
     uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
     uint32_t parent;         /* union-find over edges joined by a re-meshed triangle */
-    silk_index bn0, bn1;     /* normals the bridge was built from (non-feature edges) */
     uint8_t is_feature;
     uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
     uint8_t rejected;        /* on roots: this part is drawn coarse (out of memory) */
@@ -89,6 +100,7 @@ typedef struct silk_sil_frame {
     const silk_view *v;
     silk_fx tol;
     silk_vis_method vis;
+    int stream;              /* STREAM mode: no sides[], segs[], cost[] or output arrays */
 
     uint8_t *visible;        /* nnormals */
     uint8_t *tri_state;      /* ntris, SILK_TS_* */
@@ -103,6 +115,10 @@ typedef struct silk_sil_frame {
     silk_sil_cost *cost;     /* nedges (indexed by root) */
     uint32_t max_poly;       /* longest boundary of one re-meshed triangle */
     uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
+    /* the most one input triangle becomes, with its own records (STREAM),
+     * and the totals over the frame (all of it is accepted in STREAM mode) */
+    uint32_t max_recs, max_tris, max_curves;
+    uint32_t near_total, out_tris, seg_samples;
 
     /* perturbation (perturb.c) */
     uint32_t near_bound;     /* neighbour slots needed by the accepted concave segments */
@@ -116,11 +132,17 @@ typedef struct silk_sil_frame {
     int fell_back;
 } silk_sil_frame;
 
-/* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs out. */
+/* silhouette.c: fills visible .. chain (sides only in STORED mode).
+ * SILK_ERR_NOMEM when scratch runs out. */
 silk_status silk_sil_find(silk_sil_frame *f);
-/* The side record of triangle t's side k on edge e, or NULL. */
+/* The side record of triangle t's side k on edge e, or NULL (STORED mode). */
 const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
                                       uint32_t tri, uint32_t k);
+/* tri, k, normals and uvs of triangle t's side k on mesh edge e, from the
+ * mesh (what the stored side holds); owner, curve and rec are left alone. */
+void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s);
+/* The curve of edge e: its vertices, its tangents; normals and uvs zero. */
+void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c);
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
@@ -133,10 +155,19 @@ uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos
 
 /* remesh.c */
 silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments, counts, components, costs */
+/* The silhouette segment of silhouette triangle t (what plan stores in
+ * segs[] in STORED mode); 0 when a silhouette point is missing. */
+int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);
 int  silk_remesh_reject_last(silk_sil_frame *f);     /* drop one more component; 0 if none left */
 uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
 int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g);   /* 0 when it does not fit */
 void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats);
+/* STREAM mode: room for one input triangle's share in local (0 when it
+ * does not fit), that share (local's arrays refilled, its records refer to
+ * local->curve and f->offset), and the frame's counts. */
+int  silk_remesh_stream_alloc(silk_sil_frame *f, silk_frame_geom *local);
+void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *local, uint32_t t);
+void silk_remesh_stream_stats(const silk_sil_frame *f, silk_frame_stats *stats);
 
 /* lines.c: after silk_remesh_emit, the lines of the frame into g (the
  * silhouette segments and visible feature curves drawn); SILK_ERR_NOMEM
@@ -146,6 +177,14 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g);
 /* perturb.c */
 int  silk_perturb_alloc(silk_sil_frame *f);          /* 0 when it does not fit */
 void silk_perturb(silk_sil_frame *f);                /* fills offset, vert_offset */
+
+/* smooth.c: the plan of a STREAM frame into f and room for one input
+ * triangle's share in local, all from the top of the arena (the caller
+ * releases it; silk_remesh_stream_stats gives the frame's counts).  Returns
+ * 0 when it does not fit (or tolerance_px <= 0): then nothing is left
+ * allocated and the caller draws the coarse mesh. */
+int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
+                             silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local);
 
 /* Shared helpers. */
 uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i);

@@ -2,7 +2,10 @@
  * smooth.c - one frame of silhouette smoothing (paper section III, Fig. 7):
  * visibility and silhouette triangles, bridges and silhouette points
  * (silhouette.c), segments, adaptive sampling and re-meshing (remesh.c),
- * vertex perturbation (perturb.c), and the vertex records for the HAL.
+ * vertex perturbation (perturb.c), and the vertex records for the HAL -
+ * stored for the whole frame (silk_frame_smooth), or planned only and
+ * streamed one input triangle at a time (silk_frame_smooth_stream, what the
+ * renderer uses; silhouette.h).
  *
  * Memory runs out gracefully: scratch that does not fit turns the frame into
  * the coarse mesh; output that does not fit drops re-meshed parts from the
@@ -73,7 +76,7 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
     }
     if (flat) {
         st = fall_back_flat(a, m, &mark, g, stats, err);
-        if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, g) != SILK_OK) lines_fell_back(g, stats);
+        if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) lines_fell_back(g, stats);
         return st;
     }
     silk_perturb(&f);
@@ -81,4 +84,25 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
     if (stats) stats->fell_back = f.fell_back;
     if (lines && silk_lines_smooth(&f, g) != SILK_OK) lines_fell_back(g, stats);
     return SILK_OK;
+}
+
+int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
+                             silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local)
+{
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    memset(f, 0, sizeof *f);
+    f->a = a;
+    f->m = m;
+    f->v = v;
+    f->tol = tolerance_px;
+    f->vis = vis;
+    f->stream = 1;
+    if (tolerance_px <= 0 || silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK ||
+        !silk_perturb_alloc(f) || !silk_remesh_stream_alloc(f, local)) {
+        silk_arena_top_release(a, &mark);
+        memset(f, 0, sizeof *f);
+        return 0;
+    }
+    silk_perturb(f);
+    return 1;
 }

@@ -22,9 +22,11 @@ typedef struct silk_frame_geom {
     silk_patch *patch; uint32_t npatch;  /* PN and BLEND modes */
     /* Pen-and-ink lines (lines.c), when asked for: line i is the polyline
      * through line_vrec[line_start[i] .. line_start[i+1]-1], a silhouette
-     * line or a feature line (line_feature[i]).  Records of their own,
-     * copies of the triangles' where a line runs along them. */
+     * line or a feature line (line_feature[i]).  Records of their own;
+     * where a line runs along the triangles' edges they are copies of the
+     * triangles' records, and line_src says which (else SILK_LINE_NO_SRC). */
     silk_vrec  *line_vrec; uint32_t nline_vrec;
+    uint32_t   *line_src;                /* nline_vrec */
     uint32_t   *line_start;              /* nlines + 1 */
     uint8_t    *line_feature;            /* nlines */
     uint32_t    nlines;
@@ -49,11 +51,27 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
                                     silk_fx tolerance_px, silk_vis_method vis, int lines,
                                     silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
 
+#define SILK_LINE_NO_SRC UINT32_MAX
+
 /* The coarse mesh's outline for lines (lines.c): every edge between a
  * front- and a back-facing triangle, and every feature edge next to a
  * front-facing triangle, as two CORNER records.  Fills g's line arrays
- * (from the top of the arena); SILK_ERR_NOMEM when they do not fit. */
-silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_frame_geom *g);
+ * (from the top of the arena); SILK_ERR_NOMEM when they do not fit.  With
+ * on_mesh, g's records 3t+k are the mesh's corners (FLAT mode), and the
+ * lines name them as their sources. */
+silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_view *v, int on_mesh,
+                                 silk_frame_geom *g);
+
+/* How far to lift each line vertex towards the eye so that the triangles
+ * it lies on do not hide it: per line record, in units of 2^-24 of the
+ * rasterizer's depth (w - z) / w, from the depth slopes of the triangles
+ * through its source point (out: the vertex stage's output for every
+ * record of g).  NULL when the arena has no room (the lines then get only
+ * silk_raster_line's own bias). */
+uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_geom *g, const silk_vertex_out *out,
+                          int width, int height);
+/* o moved towards the eye by lift (as above), keeping its pixel. */
+void silk_lines_apply_lift(silk_vertex_out *o, uint32_t lift);
 
 /* PN triangles (src/pn.c): every triangle's cubic patch, its sides cut
  * into level segments, with quadratic or linear normals.  View-independent.

@@ -14,9 +14,10 @@
 #     the centre is the hole;
 #   - key 1 (flat) changed the silhouette against smooth mode, not the
 #     framing; the wheel zoomed in (more object pixels); key w shows the
-#     re-meshed triangles in red, key l the silhouette lines in blue; key h
-#     brings the status line (a dark band with text); the screenshot after
-#     the resize has the new size; key q quits with status 0.
+#     re-meshed triangles in red, key l the silhouette lines in blue, then
+#     the lines alone; key h brings the status line (a dark band with text);
+#     the screenshot after the resize has the new size; key q quits with
+#     status 0.
 # Without Xvfb, xdotool or an SDL2 build this part is skipped with a
 # message, except in CI (CI set), where .ci/run installs them.
 . "$(dirname "$0")/shlib.sh"
@@ -146,9 +147,10 @@ xdotool mousemove --window "$wid" 160 100 mousedown 1 \
     mousemove --window "$wid" 160 200 mouseup 1; shot     # 3: dragged 100 px down
 xdotool click --repeat 3 --delay 50 4; shot               # 4: three wheel notches in
 xdotool key 2 w; shot                                     # 5: smooth, wireframe
-xdotool key w l; shot                                     # 6: lines
-xdotool key h; shot                                       # 7: status line
-xdotool windowsize "$wid" 400 300; sleep 0.5; shot        # 8: resized
+xdotool key w l; shot                                     # 6: lines over the surface
+xdotool key l; shot                                       # 7: lines alone
+xdotool key l h; shot                                     # 8: status line
+xdotool windowsize "$wid" 400 300; sleep 0.5; shot        # 9: resized
 xdotool key q
 for i in $(seq 50); do kill -0 "$view_pid" 2>/dev/null || break; sleep 0.1; done
 if kill -0 "$view_pid" 2>/dev/null; then
@@ -159,11 +161,11 @@ else
     check "key q quits with status 0 (got $rc; $(head -c 200 "$tmp/view.err"))" test "$rc" -eq 0
     view_pid=
 fi
-check "every screenshot is reported" test "$(grep -c '^silk view: saved ' "$tmp/view.out")" -eq 8
+check "every screenshot is reported" test "$(grep -c '^silk view: saved ' "$tmp/view.out")" -eq 9
 cat "$tmp/view.out"
 
 s=$tmp/shot
-[ -e "$s-8.ppm" ] || { done_testing; exit 1; }
+[ -e "$s-9.ppm" ] || { done_testing; exit 1; }
 check "screenshot 1 is 320x240" test "$(ppm_size "$s-1.ppm")" = 320x240
 c=$(ppm_pixel "$s-1.ppm" 160 120)
 check "first view: the centre is the torus ($c)" test "$c" != "255 255 255"
@@ -185,11 +187,19 @@ n=$(ppm_count "$s-6.ppm" "$red")
 check "key w again: no red ($n px)" test "$n" -eq 0
 n=$(ppm_count "$s-6.ppm" "$blue")
 check "key l: silhouette lines in blue ($n px)" test "$n" -gt 200
-dark=$(ppm_count_rows "$s-7.ppm" 230 240 'r == 32 && g == 32 && b == 32')
-light=$(ppm_count_rows "$s-7.ppm" 230 240 'r > 200 && g > 200 && b > 200')
-check "key h: a status line ($dark dark, $light text px in the last rows)" test "$dark" -gt 1500 -a "$light" -gt 150
+o7=$(ppm_count "$s-7.ppm" "$object")
+n=$(ppm_count "$s-7.ppm" "$blue")
+check "key l again: the lines alone ($n blue of $o7 object px)" test "$n" -gt 200 -a "$o7" -lt $((n * 3 / 2))
+# The status band: the bottom rows that are mostly its dark grey; the text
+# is the light pixels in them.
+band=$(od -An -v -tu1 -w3 -j$(( $(head -n 3 "$s-8.ppm" | wc -c) + 200 * 320 * 3 )) "$s-8.ppm" | awk '
+    { row = int((NR - 1) / 320) } $1 == 32 && $2 == 32 && $3 == 32 { dark[row]++ }
+    $1 > 200 && $2 > 200 && $3 > 200 { light[row]++ }
+    END { for (r = 39; r >= 0 && dark[r] > 160; r--) { rows++; text += light[r] } print rows + 0, text + 0 }')
+rows=${band% *}; light=${band#* }
+check "key h: a status line ($rows dark rows with $light text px)" test "$rows" -ge 10 -a "$light" -gt 150
 n=$(ppm_count_rows "$s-6.ppm" 230 240 'r == 32 && g == 32 && b == 32')
 check "no status line before ($n dark px)" test "$n" -lt 100
-check "resize: screenshot 8 is 400x300 ($(ppm_size "$s-8.ppm"))" test "$(ppm_size "$s-8.ppm")" = 400x300
+check "resize: screenshot 9 is 400x300 ($(ppm_size "$s-9.ppm"))" test "$(ppm_size "$s-9.ppm")" = 400x300
 
 done_testing

@@ -112,7 +112,7 @@ TEST(far_eye)
             long d = ts_count_differ(&ref, &img), cov = ts_count_covered(&ref);
             CHECKF(cov > 1000 && d <= 2, "%ld of %ld pixels differ", d, cov);
             const double beyond[3] = { 0, 0, 32000 };
-            cam = ts_camera(beyond, target, 8, 30000, 32767, 96, 96);
+            cam = ts_camera(beyond, target, 8, 16000, 32767, 96, 96);
             for (int mode = 0; mode < 4; mode++) {
                 silk_render_opts o;
                 silk_render_opts_default(&o);

@@ -27,6 +27,9 @@
 #define FUZZ_ENTRY fuzz_render_entry
 #include "../fuzz/fuzz_render.c"
 #undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_math_entry
+#include "../fuzz/fuzz_math.c"
+#undef FUZZ_ENTRY
 
 typedef int (*entry_fn)(const uint8_t *data, size_t size);
 
@@ -111,11 +114,19 @@ TEST(regress_render)
     printf("  %d regression inputs\n", n);
 }
 
+TEST(regress_math)
+{
+    int n = run_dir("tests/regress/math", "", fuzz_math_entry);
+    CHECKF(n >= 1, "no inputs in tests/regress/math");
+    printf("  %d regression inputs\n", n);
+}
+
 int main(void)
 {
     RUN(regress_obj);
     RUN(regress_ply);
     RUN(regress_pack);
     RUN(regress_render);
+    RUN(regress_math);
     return check_done();
 }

@@ -242,7 +242,12 @@ void cli_print_scene_help(FILE *f)
             "  --pn-normals quadratic|linear  pn: normal patch (default quadratic)\n"
             "  --beta B             blend: silhouetteness transition, 0..1 (default %g)\n"
             "  --bg RRGGBB          background colour in hex (default %06x)\n"
-            "  --wire               draw the edges; triangles added by smoothing in red\n",
+            "  --wire               draw the edges; triangles added by smoothing in red\n"
+            "  --lines over|only    pen-and-ink outlines: the smoothed silhouette and the\n"
+            "                       visible feature curves (smooth mode; the coarse mesh's\n"
+            "                       in the others), over the shading or alone\n"
+            "  --lines-polygonal    the coarse mesh's silhouette and feature edges instead\n"
+            "                       of the smooth curves (alone: --lines over)\n",
             cli_fx_to_double(SILK_DEFAULT_CREASE_DEG), cli_fx_to_double(SILK_FOV_MIN),
             cli_fx_to_double(SILK_FOV_MAX), CLI_DEFAULT_FOV, CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT,
             SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", cli_fx_to_double(ro.tolerance_px),
@@ -351,6 +356,14 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         r = cli_parse_rgb(opt, v, &o->render.bg_rgb);
     } else if (strcmp(arg, "--wire") == 0) {
         o->render.wire = 1;
+    } else if (cli_is(arg, "--lines")) {
+        VALUE();
+        if (strcmp(v, "over") == 0) o->render.lines = SILK_LINES_OVER;
+        else if (strcmp(v, "only") == 0) o->render.lines = SILK_LINES_ONLY;
+        else return cli_fail(-1, "--lines must be over or only (got \"%s\")", v);
+    } else if (strcmp(arg, "--lines-polygonal") == 0) {
+        o->render.lines_polygonal = 1;
+        if (!o->render.lines) o->render.lines = SILK_LINES_OVER;
     } else {
         return 0;
     }

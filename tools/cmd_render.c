@@ -49,8 +49,8 @@ static void help(FILE *f)
             "                       than one\n"
             "  --sheet              one contact sheet at OUT: the modes side by side, the\n"
             "                       views in rows, each labelled with mode and triangles drawn\n"
-            "  --zoom Z             close-up, Z times (1..64) magnified around the model's\n"
-            "                       rightmost point on screen (a point of its silhouette)\n",
+            "  --zoom Z             close-up, Z times (1..64) magnified around a point of\n"
+            "                       the silhouette (the rightmost silhouette triangle)\n",
             SERIES_MAX_VIEWS);
     cli_print_scene_help(f);
     fprintf(f,
@@ -139,21 +139,32 @@ static void v3_to_double(silk_vec3 v, double d[3])
     d[2] = cli_fx_to_double(v.z);
 }
 
-/* The close-up: the same eye, looking at the vertex that lies farthest
- * right on screen (on the outline of the coarse mesh, so on a silhouette),
- * with the view zoom times narrower. */
+/* The close-up: the same eye, looking at the corner of a silhouette
+ * triangle (one whose corner normals disagree about facing the eye, paper
+ * III-B) that lies farthest right on screen, with the view zoom times
+ * narrower.  Without silhouette triangles, the rightmost vertex. */
 static int zoom_camera(const cli_scene *s, double zoom, silk_camera *cam)
 {
     silk_view v;
     silk_error err;
     if (silk_view_init(&v, cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
-    silk_fx best = SILK_FX_MIN;
-    for (uint32_t i = 0; i < s->mesh.nverts; i++) {
-        silk_vec2 px;
-        if (silk_view_project(&v, s->mesh.pos[i], &px) && px.x > best) {
-            best = px.x;
-            cam->target = s->mesh.pos[i];
+    const silk_mesh *m = &s->mesh;
+    for (int pass = 0; pass < 2; pass++) {
+        silk_fx best = SILK_FX_MIN;
+        for (uint32_t t = 0; t < m->ntris; t++) {
+            int vis[3];
+            for (int k = 0; k < 3; k++) vis[k] = silk_normal_visible(m, &v, m->tri_normal[3 * t + k]);
+            if (pass == 0 && vis[0] == vis[1] && vis[1] == vis[2]) continue;
+            for (int k = 0; k < 3; k++) {
+                silk_vec2 px;
+                silk_vec3 p = m->pos[m->tri[3 * t + k]];
+                if (silk_view_project(&v, p, &px) && px.x > best) {
+                    best = px.x;
+                    cam->target = p;
+                }
+            }
         }
+        if (best != SILK_FX_MIN) break;
     }
     if (cam->ortho) {
         cam->ortho_half_height = (silk_fx)lround(cli_fx_to_double(cam->ortho_half_height) / zoom * 65536);
@@ -210,26 +221,24 @@ static int series_view(const cli_scene_opts *o, const cli_scene *s, const series
 }
 
 /* The label under a cell: mode and triangles drawn, then what else tells
- * the frames apart. */
+ * the frames apart.  Short enough for a 240 pixel cell at font scale 2
+ * (20 characters); what all cells share is in the title. */
 static void cell_label(const series *se, const silk_render_opts *ro, const silk_frame_stats *st, int k,
                        char *buf, size_t n)
 {
     char mode[16], more[64];
     if (ro->mode == SILK_MODE_PN) snprintf(mode, sizeof mode, "pn%u", (unsigned)ro->level);
-    else snprintf(mode, sizeof mode, "%s", sheet_mode_name(ro->mode));
+    else snprintf(mode, sizeof mode, "%s", silk_mode_name(ro->mode));
     if (se->views > 1)
-        snprintf(more, sizeof more, "view %d/%d, +%g deg", k + 1, se->views, 360.0 * k / se->views);
+        snprintf(more, sizeof more, "view %d/%d +%g deg", k + 1, se->views, 360.0 * k / se->views);
     else if (ro->mode == SILK_MODE_SMOOTH)
-        snprintf(more, sizeof more, "%u silhouette, tol %g", (unsigned)st->silhouette_tris,
-                 cli_fx_to_double(ro->tolerance_px));
+        snprintf(more, sizeof more, "%u silhouette", (unsigned)st->silhouette_tris);
     else if (ro->mode == SILK_MODE_BLEND)
-        snprintf(more, sizeof more, "beta %g, tol %g", cli_fx_to_double(ro->blend_beta),
-                 cli_fx_to_double(ro->tolerance_px));
+        snprintf(more, sizeof more, "beta %g", cli_fx_to_double(ro->blend_beta));
     else if (ro->mode == SILK_MODE_PN)
-        snprintf(more, sizeof more, "level %u, %s normals", (unsigned)ro->level,
-                 ro->pn_normals == SILK_PN_LINEAR ? "linear" : "quadratic");
+        snprintf(more, sizeof more, "%s normals", ro->pn_normals == SILK_PN_LINEAR ? "linear" : "quadratic");
     else
-        snprintf(more, sizeof more, "the coarse mesh");
+        snprintf(more, sizeof more, "coarse mesh");
     snprintf(buf, n, "%s  %u tris\n%s", mode, (unsigned)st->tris_drawn, more);
 }
 
@@ -237,9 +246,9 @@ static void sheet_title(const cli_scene_opts *o, const series *se, char *buf, si
 {
     const char *base = strrchr(o->mesh_path, '/');
     base = base ? base + 1 : o->mesh_path;
-    snprintf(buf, n, "%s  %dx%d %s%s%s", base, o->width, o->height, o->ortho ? "orthographic" : "perspective",
-             o->render.wire ? ", wireframe" : "", se->zoom > 1 ? ", close-up" : "");
-    if (se->zoom > 1) snprintf(buf + strlen(buf), n - strlen(buf), " x%g", se->zoom);
+    snprintf(buf, n, "%s  %dx%d %s, tol %g px%s", base, o->width, o->height, o->ortho ? "ortho" : "perspective",
+             cli_fx_to_double(o->render.tolerance_px), o->render.wire ? ", wireframe" : "");
+    if (se->zoom > 1) snprintf(buf + strlen(buf), n - strlen(buf), ", close-up x%g", se->zoom);
 }
 
 /* Render every view and mode of the series from the loaded scene s: into
@@ -292,13 +301,13 @@ static int series_frames(const cli_scene_opts *o, const char *out, const series 
                 sheet_put(&sh, c, r, &s->target, label);
                 continue;
             }
+            /* One view: OUT as given, even with a '%' in it. */
             char path[4096];
-            if (se->views > 1 ? pattern_path(out, k, path, sizeof path) : (int)strlen(out) >= (int)sizeof path) {
+            if (se->views > 1 && pattern_path(out, k, path, sizeof path) != 0) {
                 rc = cli_fail(CLI_EXIT_USAGE, "render: output name too long: %s", out);
                 break;
             }
-            if (se->views == 1) strcpy(path, out);
-            if (silk_image_write(&s->target, path, &err) != SILK_OK) {
+            if (silk_image_write(&s->target, se->views > 1 ? path : out, &err) != SILK_OK) {
                 rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
                 break;
             }

@@ -1,15 +1,14 @@
 /*
  * cmd_view.c - `silk view MESH`: the desktop viewer (viewer.h) without its
- * window: the orbit camera, what the keys do, the frame with its overlays
- * and status line, screenshots, and the two modes that need no window at
+ * window: the orbit camera, what the keys do, the frame and its status
+ * line, screenshots, and the two modes that need no window at
  * all: `--benchmark N` (time N frames turning about the model) and
  * `--events "..."` (apply a list of key and mouse events, for scripts).
  *
- * Overlays (key l): the silhouette as drawn, found in the depth buffer
- * (covered pixels next to background or to something much farther), and the
- * feature curves of paper III-A (the Hermite segments the mesh precomputes
- * for its feature edges), depth-tested.  Key w is the core's own --wire:
- * every edge, the triangles re-meshing added in red.
+ * The overlays are the core's own: key w is opts.wire (every edge, the
+ * triangles re-meshing added in red), key l cycles opts.lines (the sampled
+ * silhouette segments and feature curves of paper III-A/D over the surface,
+ * then alone), key c switches those to the coarse mesh's polygonal outline.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -28,9 +27,8 @@
 
 #define HUD_BG    0x202020u
 #define HUD_TEXT  0xF0F0F0u
-#define LINE_SIL  0x1060FFu     /* the silhouette as drawn */
-#define LINE_FEAT 0x10A040u     /* feature curves */
-#define FEATURE_STEPS 8         /* line segments per feature curve */
+#define LINE_SIL  0x1060FFu     /* silhouette lines: blue on the grey surface */
+#define LINE_FEAT 0x10A040u     /* feature lines: green */
 #define MAX_DOUBLINGS 4
 
 static double now_ms(void)
@@ -114,19 +112,16 @@ int viewer_resize(viewer *v, int w, int h)
     if (w > CLI_MAX_SIDE) w = CLI_MAX_SIDE;
     if (h > CLI_MAX_SIDE) h = CLI_MAX_SIDE;
     size_t px = (size_t)w * (size_t)h;
-    uint8_t *color = malloc(px * silk_pixfmt_bytes(v->o.fmt)), *mark = malloc(px);
+    uint8_t *color = malloc(px * silk_pixfmt_bytes(v->o.fmt));
     uint32_t *depth = malloc(px * sizeof *depth);
-    if (!color || !mark || !depth) {
+    if (!color || !depth) {
         free(color);
-        free(mark);
         free(depth);
         return cli_fail(CLI_EXIT_INPUT, "view: out of memory for a %dx%d frame", w, h);
     }
     free(v->color);
-    free(v->mark);
     free(v->depth);
     v->color = color;
-    v->mark = mark;
     v->depth = depth;
     v->w = w;
     v->h = h;
@@ -140,6 +135,8 @@ int viewer_open(viewer *v, const cli_scene_opts *o, const char *shot_pattern)
     memset(v, 0, sizeof *v);
     v->o = *o;
     v->ro = o->render;
+    v->ro.line_rgb = LINE_SIL;
+    v->ro.line_feature_rgb = LINE_FEAT;
     v->ortho = o->ortho;
     v->hud = 1;
     v->shot_pattern = shot_pattern;
@@ -181,7 +178,6 @@ void viewer_close(viewer *v)
 {
     cli_scene_free(&v->s);
     free(v->color);
-    free(v->mark);
     free(v->depth);
     memset(v, 0, sizeof *v);
 }
@@ -217,6 +213,7 @@ void viewer_zoom(viewer *v, double notches)
 int viewer_key(viewer *v, int key)
 {
     static const silk_mode cycle[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN };
+    int was_dirty = v->dirty;
     v->dirty = 1;
     switch (key) {
     case '1': case '2': case '3': case '4':
@@ -230,7 +227,8 @@ int viewer_key(viewer *v, int key)
             }
         break;
     case 'w': v->ro.wire = !v->ro.wire; break;
-    case 'l': v->lines = !v->lines; break;
+    case 'l': v->ro.lines = (silk_lines)((v->ro.lines + 1) % (SILK_LINES_ONLY + 1)); break;
+    case 'c': v->ro.lines_polygonal = !v->ro.lines_polygonal; break;
     case 'h': v->hud = !v->hud; break;
     case ' ': v->spin = !v->spin; break;
     case 'o': v->ortho = !v->ortho; break;
@@ -253,106 +251,70 @@ int viewer_key(viewer *v, int key)
     case VIEWER_KEY_RIGHT: viewer_orbit(v, -15 / VIEWER_ORBIT_DEG_PER_PX, 0); break;
     case VIEWER_KEY_UP: viewer_orbit(v, 0, 15 / VIEWER_ORBIT_DEG_PER_PX); break;
     case VIEWER_KEY_DOWN: viewer_orbit(v, 0, -15 / VIEWER_ORBIT_DEG_PER_PX); break;
-    case 's': return viewer_screenshot(v, NULL);
+    /* The screenshot is the frame on screen, not a new one. */
+    case 's': v->dirty = was_dirty; return viewer_screenshot(v, NULL);
     case 'q': v->quit = 1; break;
-    default: v->dirty = 0; break;
+    default: v->dirty = was_dirty; break;
     }
     return 0;
 }
 
-/* ---- overlays ------------------------------------------------------------------------- */
-
-static silk_vertex_out clip_of(const silk_view *view, silk_vec3 p)
-{
-    silk_vertex_out o;
-    memset(&o, 0, sizeof o);
-    o.clip = silk_view_clip(view, p);
-    return o;
-}
-
-/* The silhouette as drawn: a covered pixel whose 4-neighbour is background
- * or lies more than 1/16 farther (depth holds 1/w: larger is nearer).  Only
- * the nearer side is marked, so the line sits on the object. */
-static void draw_outline(viewer *v)
-{
-    const uint32_t *z = v->depth;
-    int w = v->w, h = v->h;
-    memset(v->mark, 0, (size_t)w * (size_t)h);
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            uint32_t d = z[(size_t)y * w + x];
-            if (!d) continue;
-            uint32_t lim = d - d / 16;
-            int edge = (x > 0 && z[(size_t)y * w + x - 1] < lim) || (x + 1 < w && z[(size_t)y * w + x + 1] < lim) ||
-                       (y > 0 && z[(size_t)(y - 1) * w + x] < lim) || (y + 1 < h && z[(size_t)(y + 1) * w + x] < lim);
-            v->mark[(size_t)y * w + x] = (uint8_t)edge;
-        }
-    /* Two pixels wide, the second one inside the object, so that the line
-     * shows at a glance. */
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            if (!v->mark[(size_t)y * w + x]) continue;
-            silk_target_put(&v->t, x, y, LINE_SIL);
-            for (int k = 0; k < 4; k++) {
-                int nx = x + (k == 0) - (k == 1), ny = y + (k == 2) - (k == 3);
-                if (nx >= 0 && nx < w && ny >= 0 && ny < h && z[(size_t)ny * w + nx] >= z[(size_t)y * w + x])
-                    silk_target_put(&v->t, nx, ny, LINE_SIL);
-            }
-        }
-}
-
-/* Feature edges: their Hermite curves (eq. 5 with the precomputed tangents)
- * in the modes that bend them, straight in flat mode. */
-static void draw_features(viewer *v)
-{
-    const silk_mesh *m = &v->s.mesh;
-    int steps = v->ro.mode == SILK_MODE_FLAT ? 1 : FEATURE_STEPS;
-    for (uint32_t e = 0; e < m->nedges; e++) {
-        silk_index f = m->edge_feature ? m->edge_feature[e] : SILK_NO_INDEX;
-        if (f == SILK_NO_INDEX) continue;
-        silk_curve c;
-        memset(&c, 0, sizeof c);
-        c.p0 = m->pos[m->edge[e].v[0]];
-        c.p1 = m->pos[m->edge[e].v[1]];
-        c.t0 = m->feature[f].t0;
-        c.t1 = m->feature[f].t1;
-        silk_vertex_out a = clip_of(&v->view, c.p0), b;
-        for (int i = 1; i <= steps; i++) {
-            b = clip_of(&v->view, silk_hermite_point(&c, (silk_fx)((int64_t)SILK_FX_ONE * i / steps)));
-            silk_raster_line(&v->t, &a, &b, LINE_FEAT);
-            a = b;
-        }
-    }
-}
+/* ---- the status line ---------------------------------------------------------------- */
 
 static void mode_text(const silk_render_opts *ro, char *buf, size_t n)
 {
     if (ro->mode == SILK_MODE_PN) snprintf(buf, n, "pn level %u", (unsigned)ro->level);
     else if (ro->mode == SILK_MODE_FLAT) snprintf(buf, n, "flat");
-    else snprintf(buf, n, "%s tol %g", sheet_mode_name(ro->mode), cli_fx_to_double(ro->tolerance_px));
+    else snprintf(buf, n, "%s tol %g", silk_mode_name(ro->mode), cli_fx_to_double(ro->tolerance_px));
 }
 
 void viewer_status(const viewer *v, char *buf, size_t n)
 {
+    static const char *const lines[] = { "", " | lines", " | lines only" };
     char mode[40];
     mode_text(&v->ro, mode, sizeof mode);
-    double ms = v->frame_ms + v->present_ms;
+    /* This frame's render, and the last copy to the window: the status
+     * line is drawn before the frame is finished. */
+    double ms = v->render_ms + v->present_ms;
     size_t used = v->s.load_bytes + v->stats.frame_bytes;
-    snprintf(buf, n, "%s | %s | %.1f ms %.0f fps | %u tris, %u silhouette | arena %zuK of %zuK%s%s%s", mode,
+    snprintf(buf, n, "%s | %s | %.1f ms %.0f fps | %u tris, %u silhouette | arena %zuK of %zuK%s%s%s%s", mode,
              v->ortho ? "ortho" : "persp", ms, ms > 0 ? 1000 / ms : 0.0, (unsigned)v->stats.tris_drawn,
              (unsigned)v->stats.silhouette_tris, (used + 1023) / 1024, (v->s.arena.size + 1023) / 1024,
-             v->ro.wire ? " | wire" : "", v->lines ? " | lines" : "", v->stats.fell_back ? " | FELL BACK" : "");
+             v->ro.wire ? " | wire" : "", lines[v->ro.lines % 3], v->ro.lines && v->ro.lines_polygonal ? " coarse" : "",
+             v->stats.fell_back ? " | FELL BACK" : "");
 }
 
-/* The status line in a dark band at the bottom of the frame. */
+/* The status line in a dark band at the bottom of the frame, wrapped at
+ * its " | " separators when the frame is too narrow for one line. */
 static void draw_hud(viewer *v)
 {
-    int scale = v->w >= 1280 ? 2 : 1, band = (FONT_LINE + 4) * scale;
+    int scale = v->w >= 1280 ? 2 : 1, fit = (v->w - 8 * scale) / (FONT_ADVANCE * scale);
+    char text[256], lines[256];
+    viewer_status(v, text, sizeof text);
+    size_t n = 0, col = 0;
+    int nlines = 1;
+    for (char *seg = text; *seg;) {
+        char *bar = strstr(seg, " | ");
+        size_t len = bar ? (size_t)(bar - seg) : strlen(seg);
+        if (col > 0 && col + 3 + len > (size_t)(fit > 0 ? fit : 1)) {
+            lines[n++] = '\n';
+            col = 0;
+            nlines++;
+        } else if (col > 0) {
+            memcpy(lines + n, " | ", 3);
+            n += 3;
+            col += 3;
+        }
+        memcpy(lines + n, seg, len);
+        n += len;
+        col += len;
+        seg += len + (bar ? 3 : 0);
+    }
+    lines[n] = 0;
+    int band = (nlines * FONT_LINE + 4) * scale;
     for (int y = v->h - band; y < v->h; y++)
         for (int x = 0; x < v->w; x++) silk_target_put(&v->t, x, y, HUD_BG);
-    char text[256];
-    viewer_status(v, text, sizeof text);
-    font_draw(&v->t, 4 * scale, v->h - band + 3 * scale, text, HUD_TEXT, scale);
+    font_draw(&v->t, 4 * scale, v->h - band + 3 * scale, lines, HUD_TEXT, scale);
 }
 
 /* ---- frames ------------------------------------------------------------------------------ */
@@ -379,13 +341,9 @@ int viewer_frame(viewer *v)
             if ((rc = load_scene(v)) != 0) return rc;
             continue;
         }
-        if (v->lines) {
-            draw_outline(v);
-            draw_features(v);
-        }
         v->render_ms = t1 - t0;
-        v->frame_ms = now_ms() - t0;
         if (v->hud) draw_hud(v);
+        v->frame_ms = now_ms() - t0;
         break;
     }
     v->frames++;
@@ -454,7 +412,7 @@ static int run_benchmark(viewer *v, long n)
         double rm = render[n / 2], fm = frame[n / 2];
         printf("view-benchmark %s mode=%s level=%u tolerance=%g size=%dx%d frames=%ld render_ms=%.3f frame_ms=%.3f "
                "fps=%.1f tris_drawn=%.0f silhouette_tris=%.0f arena_bytes=%zu frame_bytes=%zu\n",
-               v->o.mesh_path, sheet_mode_name(v->ro.mode), (unsigned)v->ro.level, cli_fx_to_double(v->ro.tolerance_px),
+               v->o.mesh_path, silk_mode_name(v->ro.mode), (unsigned)v->ro.level, cli_fx_to_double(v->ro.tolerance_px),
                v->w, v->h, n, rm, fm, fm > 0 ? 1000 / fm : 0.0, tris / n, sil / n, v->s.arena.size, peak);
     }
     free(render);
@@ -488,7 +446,7 @@ static int run_events(viewer *v, const char *script)
         char extra;
         for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
             if (strcmp(word, named[i].name) == 0) key = named[i].key;
-        if (key < 0 && len == 1 && strchr("1234mwlhor+-=[]sq", word[0])) key = word[0];
+        if (key < 0 && len == 1 && strchr("1234mwlchor+-=[]sq", word[0])) key = word[0];
         if (key >= 0) rc = viewer_key(v, key);
         else if (sscanf(word, "drag:%lf,%lf%c", &a, &b, &extra) == 2) viewer_orbit(v, a, b);
         else if (sscanf(word, "pan:%lf,%lf%c", &a, &b, &extra) == 2) viewer_pan(v, a, b);
@@ -525,7 +483,9 @@ static void help(FILE *f)
             "keys:\n"
             "  1 2 3 4              mode: flat, smooth, blend, pn     m  next mode\n"
             "  w                    wireframe; triangles added by re-meshing in red\n"
-            "  l                    lines: the silhouette as drawn (blue), feature curves (green)\n"
+            "  l                    lines: silhouette (blue) and feature curves (green) over\n"
+            "                       the surface, then alone, then off\n"
+            "  c                    lines of the coarse mesh's polygonal outline instead\n"
             "  + -                  silhouette tolerance up / down (0.25 .. 4 px)\n"
             "  [ ]                  PN level down / up\n"
             "  o                    perspective / orthographic\n"

@@ -2,20 +2,25 @@
 # demo.sh SILK OUTDIR - the demo behind `make demo`.
 #
 # Generates the analytic meshes with `silk gen` (next to the silk binary, in
-# BUILD/meshes/), then renders each one into OUTDIR as
-#   NAME-flat.png     the coarse mesh as it is (Phong shaded)
-#   NAME-smooth.png   with smoothed silhouettes (paper section III)
-#   NAME-compare.png  the two side by side, flat on the left
-#   NAME-wire.png     smooth with edges; triangles added by re-meshing in red
-# and, when the shared reference meshes are there (../shared/meshes or
-# $SILK_MESHES), a few of those too.  Ends by listing what it wrote.
+# BUILD/meshes/), takes bunny-500 and fandisk-128 from the shared reference
+# meshes when they are there (../shared/meshes or $SILK_MESHES), and writes
+# for each model NAME into OUTDIR:
+#   NAME-modes.png    contact sheet: flat, smooth, blend and pn side by side,
+#                     each labelled with the triangles it drew
+#   NAME-wire.png     the same with the edges drawn; smooth mode shows the
+#                     triangles re-meshing added in red
+#   NAME-closeup.png  the same, zoomed 6x onto a point of the silhouette
+#   NAME-compare.png  flat | smooth at full size (silk render --compare)
+# and turntable.png, the bunny (or the knot) from 8 sides in smooth mode.
+# Ends by listing what it wrote.  DEMO_SIZE sets the cell size (320x240).
 set -eu
 
 silk=${1:-build/silk}
 outdir=${2:-out}
-size=${DEMO_SIZE:-480x360}
+size=${DEMO_SIZE:-320x240}
 meshdir=$(dirname "$silk")/meshes
 shared=${SILK_MESHES:-../shared/meshes}
+modes=flat,smooth,blend,pn
 
 [ -x "$silk" ] || { echo "demo.sh: $silk not found; run make first" >&2; exit 1; }
 mkdir -p "$outdir" "$meshdir"
@@ -26,36 +31,40 @@ mkdir -p "$outdir" "$meshdir"
 "$silk" gen cylinder --segments 16 -o "$meshdir/cylinder-64.obj"
 "$silk" gen knot -o "$meshdir/knot-1024.obj"
 
-# render NAME MESH [options...]
-render() {
+# show NAME MESH [options...]
+show() {
     name=$1; mesh=$2; shift 2
-    "$silk" render "$mesh" -o "$outdir/$name-flat.png" --size "$size" --mode flat "$@"
-    "$silk" render "$mesh" -o "$outdir/$name-smooth.png" --size "$size" --mode smooth "$@"
-    "$silk" render "$mesh" -o "$outdir/$name-compare.png" --size "$size" --compare "$@"
-    "$silk" render "$mesh" -o "$outdir/$name-wire.png" --size "$size" --mode smooth --wire "$@"
+    echo "demo.sh: $name"
+    "$silk" render "$mesh" -o "$outdir/$name-modes.png" --size "$size" --modes $modes --sheet "$@"
+    "$silk" render "$mesh" -o "$outdir/$name-wire.png" --size "$size" --modes $modes --sheet --wire "$@"
+    "$silk" render "$mesh" -o "$outdir/$name-closeup.png" --size "$size" --modes $modes --sheet --zoom 6 "$@"
+    "$silk" render "$mesh" -o "$outdir/$name-compare.png" --size 480x360 --compare "$@"
 }
 
-render sphere "$meshdir/sphere-200.obj"
-render torus "$meshdir/torus-576.obj"
+show sphere "$meshdir/sphere-200.obj"
+show torus "$meshdir/torus-576.obj"
 # the torus from the side: its inner silhouette is concave (paper III-E)
-render torus-side "$meshdir/torus-576.obj" --eye 0,0.9,4 --target 0,0,0
-render cone "$meshdir/cone-70.obj"
-render cylinder "$meshdir/cylinder-64.obj"
-render knot "$meshdir/knot-1024.obj"
-render sphere-ortho "$meshdir/sphere-200.obj" --ortho auto
+show torus-side "$meshdir/torus-576.obj" --eye 0,0.9,4 --target 0,0,0
+show cone "$meshdir/cone-70.obj"
+show cylinder "$meshdir/cylinder-64.obj"
+show knot "$meshdir/knot-1024.obj"
+show sphere-ortho "$meshdir/sphere-200.obj" --ortho auto
 
+turntable=$meshdir/knot-1024.obj
 if [ -d "$shared" ]; then
-    for m in bunny-500 knot-480; do
-        [ -f "$shared/$m.obj" ] && render "$m" "$shared/$m.obj"
-    done
-    # models whose front is not +z: views chosen by eye
-    [ -f "$shared/spot-500.obj" ] && render spot-500 "$shared/spot-500.obj" --eye 3,1.2,1.5
+    if [ -f "$shared/bunny-500.obj" ]; then
+        show bunny-500 "$shared/bunny-500.obj"
+        turntable=$shared/bunny-500.obj
+    fi
     # fandisk's default view is edge-on to its flat sides; this one shows
     # the curved faces and the sharp feature curves between them
-    [ -f "$shared/fandisk-128.obj" ] && render fandisk-128 "$shared/fandisk-128.obj" --eye 10,20,-8
+    [ -f "$shared/fandisk-128.obj" ] && show fandisk-128 "$shared/fandisk-128.obj" --eye 10,20,-8
 else
-    echo "demo.sh: $shared not found; rendering only the generated meshes"
+    echo "demo.sh: $shared not found; showing only the generated meshes"
 fi
+echo "demo.sh: turntable"
+"$silk" render "$turntable" -o "$outdir/turntable.png" --size 240x180 --turntable 8 --sheet --mode smooth
 
-echo "demo.sh: wrote $(ls "$outdir"/*.png | wc -l) images to $outdir/:"
-ls "$outdir"/*-compare.png | sed 's/^/  /'
+echo "demo.sh: wrote $(ls "$outdir"/*-modes.png "$outdir"/*-wire.png "$outdir"/*-closeup.png \
+    "$outdir"/*-compare.png "$outdir"/turntable.png | wc -l) images to $outdir/:"
+ls "$outdir"/*-modes.png "$outdir"/*-closeup.png "$outdir"/turntable.png | sed 's/^/  /'

@@ -166,22 +166,11 @@ int pattern_path(const char *pattern, long k, char *buf, size_t n)
 
 /* ---- render modes by name ------------------------------------------------------- */
 
-const char *sheet_mode_name(silk_mode mode)
-{
-    switch (mode) {
-    case SILK_MODE_FLAT: return "flat";
-    case SILK_MODE_SMOOTH: return "smooth";
-    case SILK_MODE_BLEND: return "blend";
-    case SILK_MODE_PN: return "pn";
-    }
-    return "?";
-}
-
 int sheet_parse_mode(const char *name, silk_mode *mode, uint32_t *level)
 {
     static const silk_mode all[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN };
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
-        if (strcmp(name, sheet_mode_name(all[i])) == 0) {
+        if (strcmp(name, silk_mode_name(all[i])) == 0) {
             *mode = all[i];
             return 0;
         }

@@ -54,12 +54,10 @@ int pattern_path(const char *pattern, long k, char *buf, size_t n);
 
 /* ---- render modes by name ------------------------------------------------------
  *
- * "flat", "smooth", "blend", "pn" (PN triangles at the default level) and
- * "pnL" (level L, 1..SILK_PN_MAX_LEVEL), as in `--modes flat,smooth,blend,pn3`.
- * sheet_parse_mode returns 0, or -1 for an unknown name; *level is left
- * alone unless the name gives one. */
+ * silk_mode_name's "flat", "smooth", "blend", "pn" (PN triangles at the
+ * default level), and "pnL" (level L, 1..SILK_PN_MAX_LEVEL), as in
+ * `--modes flat,smooth,blend,pn3`.  sheet_parse_mode returns 0, or -1 for
+ * an unknown name; *level is left alone unless the name gives one. */
 int sheet_parse_mode(const char *name, silk_mode *mode, uint32_t *level);
-/* "flat", "smooth", "blend" or "pn". */
-const char *sheet_mode_name(silk_mode mode);
 
 #endif

@@ -1,7 +1,8 @@
 /*
  * viewer.h - the desktop viewer behind `silk view MESH`: a camera orbiting
- * one loaded mesh, the render settings its keys change, a status line drawn
- * into the frame, and an overlay of silhouette and feature lines.
+ * one loaded mesh, the render settings its keys change (mode, tolerance,
+ * wireframe, silhouette and feature lines, projection), and a status line
+ * drawn into the frame.
  *
  * tools/cmd_view.c holds all of it and needs no window system (so
  * `--benchmark` and `--events` run anywhere); tools/viewer_sdl.c, built when
@@ -14,8 +15,8 @@
 #include <stdint.h>
 #include "cli.h"
 
-/* Keys: printable ones as their character ('1'..'4', 'm', 'w', 'l', '+',
- * '-', '[', ']', 'o', 's', 'h', ' ', 'r', 'q'), the rest as these. */
+/* Keys: printable ones as their character ('1'..'4', 'm', 'w', 'l', 'c',
+ * '+', '-', '[', ']', 'o', 's', 'h', ' ', 'r', 'q'), the rest as these. */
 enum { VIEWER_KEY_LEFT = 256, VIEWER_KEY_RIGHT, VIEWER_KEY_UP, VIEWER_KEY_DOWN };
 
 #define VIEWER_ORBIT_DEG_PER_PX 0.4   /* mouse drag: degrees per pixel */
@@ -37,10 +38,10 @@ typedef struct viewer {
     int ortho;
 
     silk_render_opts ro;
-    int lines, hud, spin, quit;
+    int hud, spin, quit;
 
     int w, h;                  /* the frame (the window's client area) */
-    uint8_t *color, *mark;     /* heap, re-created on resize */
+    uint8_t *color;            /* heap, re-created on resize */
     uint32_t *depth;
     silk_target t;
     silk_view view;
@@ -51,8 +52,8 @@ typedef struct viewer {
     long frames;               /* frames rendered */
     silk_frame_stats stats;
     double render_ms;          /* silk_render alone */
-    double frame_ms;           /* render + overlays (+ the window's present, set by the SDL loop) */
-    double present_ms;
+    double frame_ms;           /* render + status line */
+    double present_ms;         /* the last copy to the window (set by the SDL loop) */
 } viewer;
 
 /* Load o->mesh_path and set up a w x h frame from the default camera.
@@ -71,7 +72,7 @@ void viewer_pan(viewer *v, double dx_px, double dy_px);
 void viewer_zoom(viewer *v, double notches);           /* > 0: closer */
 
 /* Render the frame if it is dirty (or spinning): silk_render, then the
- * line overlay and the status line.  0, or an exit code. */
+ * status line.  0, or an exit code. */
 int viewer_frame(viewer *v);
 
 /* Write the frame as shown (rendering it first if dirty) to path, or to

@@ -53,6 +53,9 @@ case("big.obj", "# a model in millimetres\nv 0 0 0\nv 0 0 0\nv 0 0 0\nv 0 0 0\nv
      "7: coordinate 5000.0 is outside the fixed-point range (+-1024); scale the model with --scale 0.1")
 case("huge.obj", "v 0 0 0\nv 25000000 0 0\nv 0 1 0\nf 1 2 3\n",
      "2: coordinate 25000000.0 is outside the fixed-point range (+-1024); scale the model with --scale 1e-5")
+# just past the limit: six digits would print it as the limit itself ("1024.0")
+case("coordinate-just-beyond.obj", "v 0 0 0\nv 1024.00002 0 0\nv 0 1 0\nf 1 2 3\n",
+     "2: coordinate 1024.00002 is outside the fixed-point range (+-1024); scale the model with --scale 0.1")
 case("tiny.obj", "v 0 0 0\nv 0.001 0 0\nv 0 0.0005 0\nf 1 2 3\n",
      "model is too small for fixed-point precision (size 0.00112); scale it up with --scale 100")
 case("single-point.obj", "v 1 2 3\nv 1 2 3\nv 1 2 3\nf 1 2 3\n", "model has no size (all vertices are at one point)")
@@ -157,6 +160,9 @@ case("ply-big-be.ply", ply_binary("be", t="double", verts=[(0, 0, 0), (1500.25, 
      "vertex 1: coordinate 1500.25 is outside the fixed-point range (+-1024); scale the model with --scale 0.1")
 case("ply-big-int.ply", ply_binary("le", t="int", verts=[(0, 0, 0), (100000, 0, 0), (0, 100000, 0), (0, 0, 2000000)]),
      "vertex 1: coordinate 100000.0 is outside the fixed-point range (+-1024); scale the model with --scale 0.0001")
+case("ply-just-beyond-le.ply", ply_binary("le", verts=[(0, 0, 0), (0, -1024.0001, 0), (0, 1, 0), (0, 0, 1)]),
+     "vertex 1: coordinate -1024.0001220703125 is outside the fixed-point range (+-1024); "
+     "scale the model with --scale 0.1")
 case("ply-tiny.ply", ply_binary("le", verts=[(0, 0, 0), (1e-4, 0, 0), (0, 1e-4, 0), (0, 0, 1e-4)]),
      "model is too small for fixed-point precision (size 0.000173); scale it up with --scale 1000")
 

@@ -1,6 +1,7 @@
 /*
  * exact_silhouette.c - test support, double precision: ray-cast object masks
- * of a sphere and a torus, the exact silhouette sampled between pixel
+ * of a sphere, a torus, a capped cylinder and a capped cone, the exact
+ * silhouette sampled between pixel
  * centres, and the comparison of a rendered mask with the exact one (see
  * exact_silhouette.h).  This is the reference the silhouette-accuracy test
  * measures silk against, so it is written for being right, not fast.
@@ -111,6 +112,30 @@ es_shape es_torus(double cx, double cy, double cz, double ax, double ay, double 
     s.R = R;
     s.r = r;
     return s;
+}
+
+static es_shape revolved(es_kind kind, double cx, double cy, double cz, double ax, double ay, double az,
+                         double radius, double height)
+{
+    es_shape s;
+    memset(&s, 0, sizeof s);
+    s.kind = kind;
+    s.centre[0] = cx; s.centre[1] = cy; s.centre[2] = cz;
+    s.axis[0] = ax; s.axis[1] = ay; s.axis[2] = az;
+    unit3(s.axis);
+    s.radius = radius;
+    s.height = height;
+    return s;
+}
+
+es_shape es_cylinder(double cx, double cy, double cz, double ax, double ay, double az, double radius, double height)
+{
+    return revolved(ES_CYLINDER, cx, cy, cz, ax, ay, az, radius, height);
+}
+
+es_shape es_cone(double cx, double cy, double cz, double ax, double ay, double az, double radius, double height)
+{
+    return revolved(ES_CONE, cx, cy, cz, ax, ay, az, radius, height);
 }
 
 /* Parameters where the ray o + t d (d unit) is within radius rad of ctr;
@@ -227,11 +252,93 @@ static int sphere_hit(const es_shape *s, const double o[3], const double dir[3],
     return (t0 >= lo && t0 <= hi) || (t1 >= lo && t1 <= hi);
 }
 
+/* An interval of ray parameters; empty when lo > hi. */
+typedef struct span { double lo, hi; } span;
+
+static span span_cut(span a, span b)
+{
+    span r = { a.lo > b.lo ? a.lo : b.lo, a.hi < b.hi ? a.hi : b.hi };
+    return r;
+}
+
+/* The roots of A t^2 + B t + C, ascending, without cancellation; 0 when
+ * there are none. */
+static int quadratic_roots(double A, double B, double C, double *r0, double *r1)
+{
+    double disc = B * B - 4 * A * C;
+    if (disc < 0 || A == 0) return 0;
+    double q = -0.5 * (B + (B < 0 ? -sqrt(disc) : sqrt(disc)));
+    double a = q / A, b = q != 0 ? C / q : a;
+    *r0 = a < b ? a : b;
+    *r1 = a < b ? b : a;
+    return 1;
+}
+
+/* Where A t^2 + B t + C <= 0 within the span `within`: one span, the hull
+ * of the two pieces when A < 0 leaves two (they can both meet `within` only
+ * at a cone's apex, where the hull adds nothing that matters). */
+static span quadric_inside(double A, double B, double C, span within)
+{
+    span none = { 1, 0 }, all = { -ES_FAR, ES_FAR };
+    double r0, r1;
+    if (fabs(A) < 1e-15) {                             /* linear (or constant) along the ray */
+        if (fabs(B) < 1e-300) return C <= 0 ? span_cut(all, within) : none;
+        span h = B > 0 ? (span){ -ES_FAR, -C / B } : (span){ -C / B, ES_FAR };
+        return span_cut(h, within);
+    }
+    if (!quadratic_roots(A, B, C, &r0, &r1)) return A > 0 ? none : span_cut(all, within);
+    if (A > 0) return span_cut((span){ r0, r1 }, within);
+    span p = span_cut((span){ -ES_FAR, r0 }, within), q = span_cut((span){ r1, ES_FAR }, within);
+    if (p.lo > p.hi) return q;
+    if (q.lo > q.hi) return p;
+    return (span){ p.lo, q.hi };
+}
+
+/* The capped cylinder or cone: with y the height above the base along the
+ * axis and rho the distance from the axis, rho^2 <= (k (h0 - y))^2 + c0
+ * inside the side, 0 <= y <= height between the caps (cylinder: k = 0,
+ * c0 = radius^2; cone: k = radius / height, h0 = height, c0 = 0). */
+static int revolved_hit(const es_shape *s, const double o[3], const double dir[3], double lo, double hi)
+{
+    double d[3] = { dir[0], dir[1], dir[2] };
+    double dl = sqrt(dot3(d, d));
+    unit3(d);
+    lo *= dl;
+    hi *= dl;
+    double q[3];
+    sub3(q, o, s->centre);
+    double y0 = dot3(q, s->axis), dy = dot3(d, s->axis);
+    span slab;
+    if (fabs(dy) < 1e-300) {
+        if (y0 < 0 || y0 > s->height) return 0;
+        slab = (span){ -ES_FAR, ES_FAR };
+    } else {
+        double a = -y0 / dy, b = (s->height - y0) / dy;
+        slab = (span){ a < b ? a : b, a < b ? b : a };
+    }
+    /* rho^2 = |q + t d|^2 - (y0 + t dy)^2, the radial part taken out first */
+    double qr[3] = { q[0] - y0 * s->axis[0], q[1] - y0 * s->axis[1], q[2] - y0 * s->axis[2] };
+    double dr[3] = { d[0] - dy * s->axis[0], d[1] - dy * s->axis[1], d[2] - dy * s->axis[2] };
+    double A = dot3(dr, dr), B = 2 * dot3(qr, dr), C = dot3(qr, qr);
+    if (s->kind == ES_CYLINDER) {
+        C -= s->radius * s->radius;
+    } else {
+        double k = s->radius / s->height, h0 = s->height - y0;   /* (k (h0 - t dy))^2 */
+        A -= k * k * dy * dy;
+        B += 2 * k * k * h0 * dy;
+        C -= k * k * h0 * h0;
+    }
+    span in = quadric_inside(A, B, C, slab);
+    if (in.lo > in.hi) return 0;
+    return (in.lo >= lo && in.lo <= hi) || (in.hi >= lo && in.hi <= hi);
+}
+
 static int hit(const es_camera *c, const frame *fr, const es_shape *s, double px, double py)
 {
     double o[3], d[3];
     camera_ray(c, fr, px, py, o, d);
     if (s->kind == ES_SPHERE) return sphere_hit(s, o, d, c->znear, c->zfar);
+    if (s->kind == ES_CYLINDER || s->kind == ES_CONE) return revolved_hit(s, o, d, c->znear, c->zfar);
     return torus_hit(s, o, d, c->znear, c->zfar);
 }
 

@@ -1,7 +1,8 @@
 /*
  * exact_silhouette.h - test support, double precision: the exact object
- * masks of analytic surfaces (sphere, torus) seen by a camera, and the
- * measures that compare a rendered mask with them.
+ * masks of analytic surfaces (sphere, torus, capped cylinder, capped cone)
+ * seen by a camera, and the measures that compare a rendered mask with
+ * them.
  *
  * Camera conventions are those of silk/camera.h: OpenGL lookAt (the camera
  * looks down -z, x right, y up), a vertical field of view or an orthographic
@@ -28,26 +29,34 @@ typedef struct es_camera {
 /* The same camera as a silk_camera (Q16.16 fields read as their values). */
 void es_camera_from_silk(es_camera *c, const silk_camera *s);
 
-typedef enum es_kind { ES_SPHERE = 0, ES_TORUS = 1 } es_kind;
+typedef enum es_kind { ES_SPHERE = 0, ES_TORUS = 1, ES_CYLINDER = 2, ES_CONE = 3 } es_kind;
 
 typedef struct es_shape {
     es_kind kind;
-    double centre[3];
-    double radius;             /* sphere */
+    double centre[3];          /* cylinder, cone: the centre of the base disc */
+    double radius;             /* sphere; cylinder and cone: of the base */
     double R, r;               /* torus: radius of the tube's centre circle, tube radius (r < R) */
-    double axis[3];            /* torus: symmetry axis, unit */
+    double axis[3];            /* torus, cylinder, cone: symmetry axis, unit (from the base up) */
+    double height;             /* cylinder, cone: from the base along the axis (the cone's apex) */
 } es_shape;
 
 es_shape es_sphere(double cx, double cy, double cz, double radius);
 /* axis need not be unit; it is normalised. */
 es_shape es_torus(double cx, double cy, double cz, double ax, double ay, double az, double R, double r);
+/* Solids of revolution standing on the disc of the given radius centred at
+ * (cx, cy, cz) across the axis: a cylinder capped at both ends, and a cone
+ * closed by its base disc with its apex height along the axis. */
+es_shape es_cylinder(double cx, double cy, double cz, double ax, double ay, double az, double radius, double height);
+es_shape es_cone(double cx, double cy, double cz, double ax, double ay, double az, double radius, double height);
 
 /* 1 when the ray through image point (px, py) meets the shape's surface at
  * a depth in [znear, zfar].  The sphere is solved in closed form; the torus
  * quartic by isolating the extrema of its polynomial along the ray (roots
  * of the derivative, bracketed by the roots of the second derivative), so
  * grazing rays are decided by the sign of the polynomial, not by a
- * marching tolerance. */
+ * marching tolerance.  The cylinder and the cone are convex: the ray's
+ * interval inside the side's quadric, cut by the slab between base and top
+ * (apex). */
 int es_hit(const es_camera *c, const es_shape *s, double px, double py);
 
 /* mask[y * width + x] = es_hit at the pixel's centre. */
