@@ -118,7 +118,7 @@ install: $(BUILD)/libsilk.a $(BUILD)/silk
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|0.1.0|g' silk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/silk.pc
 
 clean:
-	rm -rf build build-san out
+	rm -rf build build-san build-fuzz out
 
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d)
 

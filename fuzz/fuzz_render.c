@@ -18,9 +18,9 @@
  *    23    tolerance: (b + 1) / 64 px  24  ortho half height: (b + 1)^2 * 2^8 ulps
  *    25    PN level: 1 + b % 32        26  BLEND beta: b * 2^8 ulps
  *    27    frame memory: the arena keeps 2^(8 + b % 15) bytes free after
- *          the mesh, or all of its 8 MB when b >= 240
+ *          the mesh, plus bytes 30-31 (u16) modulo that, or all of its 8 MB
+ *          when b >= 240
  *    28    band rows: 1 + b % 16       29  crease angle: b % 181 degrees
- *    30-31 unused
  * Checks besides "no crash": a failure is one clean line; the frame's
  * scratch is all released; with bands, the band-by-band pixels equal the
  * whole frame's (silk/render.h promises identical bytes), from the same
@@ -71,6 +71,8 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     uint32_t bn = fuzz_u8(&h), bf = fuzz_u8(&h), btol = fuzz_u8(&h), bortho = fuzz_u8(&h);
     uint32_t blevel = fuzz_u8(&h), bbeta = fuzz_u8(&h), bmem = fuzz_u8(&h), brows = fuzz_u8(&h);
     uint32_t bcrease = fuzz_u8(&h);
+    uint32_t bfine = fuzz_u8(&h);
+    bfine |= fuzz_u8(&h) << 8;
 
     /* kept between runs: a fresh 8 MB block per run costs more than a frame */
     static uint8_t mem[ARENA_SIZE];
@@ -119,7 +121,8 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
 
     /* Leave only the frame budget free: a block at the bottom takes the rest. */
     if (bmem < 240) {
-        size_t budget = (size_t)256 << (bmem % 15), free_now = silk_arena_free_bytes(&a);
+        size_t base = (size_t)256 << (bmem % 15), budget = base + bfine % base;
+        size_t free_now = silk_arena_free_bytes(&a);
         if (free_now > budget) silk_arena_alloc(&a, free_now - budget - SILK_ARENA_ALIGN, SILK_MEM_RASTER);
     }
 

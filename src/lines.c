@@ -160,9 +160,11 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
     uint32_t nlines = 0;
     for (uint32_t e = 0; e < m->nedges; e++) nlines += edge_kind(m, front, e) != 0;
     if (!lines_alloc(a, g, nlines, 2 * (uint64_t)nlines)) return SILK_ERR_NOMEM;
-    for (uint32_t e = 0; e < m->nedges; e++) {
+    /* silhouettes first, so that feature lines are drawn over them, as in SMOOTH mode */
+    for (uint32_t i = 0; i < 2 * m->nedges; i++) {
+        uint32_t e = i % m->nedges;
         int kind = edge_kind(m, front, e);
-        if (!kind) continue;
+        if (kind != 1 + (int)(i / m->nedges)) continue;
         const silk_edge *ed = &m->edge[e];
         /* the corners of a front-facing triangle where there is one */
         uint32_t t = ed->t[0] < m->ntris && front[ed->t[0]] ? ed->t[0] : ed->t[1];

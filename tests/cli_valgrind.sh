@@ -1,8 +1,9 @@
 #!/bin/sh
 # cli_valgrind.sh BUILD - the silk command under Valgrind's memcheck on the
-# demo meshes: every `silk gen` shape (generated under memcheck too) and a
-# few of the shared meshes, each rendered flat and smooth at 64x48 and
-# described by `silk info`.  Every run must end with 0 errors and 0 bytes
+# demo meshes (those of `make demo`): every `silk gen` shape (generated
+# under memcheck too) and bunny-500 and fandisk-128 from the shared meshes,
+# each rendered flat and smooth at 64x48 and described by `silk info`;
+# contact sheets, a close-up and --compare as the demo makes them.  Every run must end with 0 errors and 0 bytes
 # leaked of any kind (definite, indirect, possible, still reachable).
 #
 # Valgrind cannot run the AddressSanitizer build, so with BUILD = build-san
@@ -65,6 +66,15 @@ for m in $list; do
     memcheck "info $b" info "$m" --size 64x48
 done
 check "at least 6 meshes" test "$n" -ge 6
+# what `make demo` does besides: contact sheets of all modes with edges,
+# a close-up, flat | smooth side by side
+for b in sphere knot; do
+    memcheck "sheet $b" render "$tmp/$b.obj" --size 64x48 --modes flat,smooth,blend,pn --sheet --wire \
+        -o "$tmp/$b-sheet.png"
+    memcheck "close-up $b" render "$tmp/$b.obj" --size 64x48 --modes flat,smooth --sheet --zoom 6 \
+        -o "$tmp/$b-zoom.png"
+    memcheck "compare $b" render "$tmp/$b.obj" --size 64x48 --compare -o "$tmp/$b-compare.ppm"
+done
 
 # the error paths free what they took: a malformed file, an arena too
 # small for loading and for the frame, a fall-back frame

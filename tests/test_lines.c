@@ -444,7 +444,8 @@ TEST(polygonal_is_coarse_silhouette)
     printf("  polygonal: line pixels within %.2f px of the coarse silhouette edges, which are within %.2f px of a "
            "line pixel; smooth lines up to %.2f px off them\n", worst_off, worst_gap, smooth_far);
     CHECKF(worst_off <= 1.0, "a polygonal line pixel %.2f px off the coarse silhouette", worst_off);
-    CHECKF(worst_gap <= 1.0, "a coarse silhouette edge %.2f px from the nearest line pixel", worst_gap);
+    /* a one-pixel line leaves points of a diagonal up to 1.12 px from a pixel centre */
+    CHECKF(worst_gap <= 1.25, "a coarse silhouette edge %.2f px from the nearest line pixel", worst_gap);
     CHECKF(smooth_far >= 3.0, "smooth lines within %.2f px of the polygon", smooth_far);
 }
 
@@ -490,7 +491,7 @@ static int ball_blocks(const dcam *dc, const double c[3], const double p[3], dou
  * where the ball or the cylinder hides them, not drawn. */
 TEST(feature_lines_hidden_where_hidden)
 {
-    static uint8_t feat[W * H];
+    static uint8_t feat[W * H], any[W * H];
     const double eye[3] = { 1.6, 5.2, 5.0 }, target[3] = { 0, 1, 0 };
     for (int ortho = 0; ortho < 2; ortho++) {
         silk_camera cam = ts_camera(eye, target, ortho ? -1.8 : 40, 1, 20, W, H);
@@ -518,6 +519,8 @@ TEST(feature_lines_hidden_where_hidden)
             snprintf(tag, sizeof tag, "cylinder-%s-%s", ortho ? "ortho" : "persp", poly ? "polygonal" : "smooth");
             dump(tag);
             take(color, FEAT_RGB, feat);
+            take(color, SIL_RGB, any);
+            for (int i = 0; i < W * H; i++) any[i] |= feat[i];
             double seen_off = 0, seen_gap = 0, hidden_near = 1e9;
             int nseen = 0, nhidden = 0, nback = 0;
             for (int rim = 0; rim < 2; rim++)
@@ -534,8 +537,9 @@ TEST(feature_lines_hidden_where_hidden)
                         nhidden++;
                         nback += back;
                     } else if (rim == 0 && !ball_blocks(&dc, bc, p, margin)) {
-                        /* seen: the top rim faces the eye, all of it */
-                        double d = pixel_dist(feat, x, y);
+                        /* seen: the top rim faces the eye, all of it (where the
+                         * side's outline meets it, that line may be drawn over it) */
+                        double d = pixel_dist(any, x, y);
                         seen_gap = fmax(seen_gap, d);
                         nseen++;
                     }

@@ -160,7 +160,9 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
             if (w == SILK_SIL_NONE || !f->edges[w].nchain) continue;
             const silk_sil_edge *we = &f->edges[w];
             silk_fx t = m->edge[e].v[0] == v ? f->chain[we->chain0] : f->chain[we->chain0 + we->nchain - 1];
-            silk_vec3 q = silk_hermite_point(&we->geom, t);
+            silk_curve wc;
+            silk_sil_edge_curve(f, we, &wc);
+            silk_vec3 q = silk_hermite_point(&wc, t);
             if (q.x == m->pos[v].x && q.y == m->pos[v].y && q.z == m->pos[v].z) {
                 lift = 0;
                 ps->pinned++;

@@ -230,20 +230,21 @@ static void bridges_vs_reference(const char *name, int nviews)
             double chord = sqrt((p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1]) +
                                 (p1[2] - p0[2]) * (p1[2] - p0[2]));
             if (!e->is_feature && e->npairs) {
-                vec3d(m.normal[e->bn0], n0);
-                vec3d(m.normal[e->bn1], n1);
+                /* the bridge is built from the normals of the edge's first silhouette point */
+                vec3d(m.normal[f.pairs[e->pair0].n0], n0);
+                vec3d(m.normal[f.pairs[e->pair0].n1], n1);
                 bridge_ref(p0, n0, p1, n1, t0, t1);
                 double g0[3], g1[3];
-                vec3d(e->geom.t0, g0);
-                vec3d(e->geom.t1, g1);
+                vec3d(e->t0, g0);
+                vec3d(e->t1, g1);
                 for (int k = 0; k < 3; k++) {
                     double err = fmax(fabs(g0[k] - t0[k]), fabs(g1[k] - t1[k])) / chord;
                     if (err > worst_t) worst_t = err;
                 }
                 n_bridges++;
             } else {
-                vec3d(e->geom.t0, t0);
-                vec3d(e->geom.t1, t1);
+                vec3d(e->t0, t0);
+                vec3d(e->t1, t1);
             }
             double d0[3], d1[3];
             to_eye_d(&v, m.pos[me->v[0]], d0);
@@ -261,7 +262,9 @@ static void bridges_vs_reference(const char *name, int nviews)
                 /* the point itself, on the edge's curve (ref curve from the fixed tangents) */
                 double q[3], qr[3];
                 hermite_ref(p0, p1, t0, t1, u, qr);
-                vec3d(silk_hermite_point(&e->geom, p->u), q);
+                silk_curve ec;
+                silk_sil_edge_curve(&f, e, &ec);
+                vec3d(silk_hermite_point(&ec, p->u), q);
                 double dp = sqrt((q[0] - qr[0]) * (q[0] - qr[0]) + (q[1] - qr[1]) * (q[1] - qr[1]) +
                                  (q[2] - qr[2]) * (q[2] - qr[2])) / chord;
                 if (dp > worst_p) worst_p = dp;
@@ -367,6 +370,7 @@ static void sample_counts(const char *name, int nviews, silk_fx tol)
         if (!run_frame(&a, &m, &v, tol, &f, &g, &st)) { CHECK(0); return; }
         for (uint32_t s = 0; s < f.nsegs + f.nedges; s++) {
             const silk_curve *c;
+            silk_curve wc;
             double cosa;
             uint32_t n;
             if (s < f.nsegs) {
@@ -380,7 +384,8 @@ static void sample_counts(const char *name, int nviews, silk_fx tol)
             } else {
                 const silk_sil_edge *w = &f.edges[s - f.nsegs];
                 if (!w->sampled || (m.edge[w->edge].flags & SILK_EDGE_DEGENERATE)) continue;
-                c = &w->geom;
+                silk_sil_edge_curve(&f, w, &wc);
+                c = &wc;
                 double ta[3], tb[3];
                 vec3d(c->t0, ta);
                 vec3d(c->t1, tb);
