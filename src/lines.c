@@ -9,10 +9,10 @@
  * runs exactly along the triangle edges that make the drawn outline: at
  * the silhouette it is the boundary of the rendered object, bit for bit.
  *
- * The polygonal outline of the coarse mesh, for comparison and for the
- * other modes: every edge between a front-facing and a back-facing
- * triangle (the face-based silhouette) and every feature edge next to a
- * front-facing triangle, corner to corner.
+ * The polygonal outline of the coarse mesh, FLAT mode's outline and, on
+ * request, a comparison in any mode: every edge between a front-facing and
+ * a back-facing triangle (the face-based silhouette) and every feature
+ * edge next to a front-facing triangle, corner to corner.
  *
  * Which parts show is left to the depth test of silk_raster_line against
  * the drawn surface.  Its own bias is not enough here: next to a

@@ -6,12 +6,18 @@
  * vertex stage exactly once, so a vertex shared by many triangles reaches the
  * rasterizer with the same bits in all of them (no cracks); then every
  * triangle is rasterized into the target's band, and --wire draws the edges on
- * top, then the pen-and-ink lines (lines.c) if asked for.  All per-frame memory is taken from the top of the arena and released
- * before returning, so frames can be rendered forever from one arena.
+ * top, then the pen-and-ink lines (lines.c) if asked for.  All per-frame
+ * memory is taken from the top of the arena and released before returning,
+ * so frames can be rendered forever from one arena.
  *
  * FLAT and SMOOTH frames without lines are streamed instead (see "Streamed
  * frames" below): nothing but the silhouette plan is kept, and each input
  * triangle's share of the frame is rebuilt whenever a band needs it.
+ *
+ * A device that draws only FLAT and SMOOTH frames may build the core with
+ * -DSILK_NO_REFERENCE_MODES: PN and BLEND (the comparison methods of
+ * docs/methods.md, about 9 KiB of Cortex-M3 code) are then left out, and
+ * asking for them is SILK_ERR_ARG.
  */
 #include <string.h>
 #include "silhouette.h"
@@ -53,11 +59,9 @@ typedef struct frame {
     silk_vertex_out *cache;   /* NULL when the arena could not hold it */
     silk_vertex_out *line_cache;   /* the same for the lines' records */
     uint32_t *line_lift;      /* per line record (lines.c), or NULL */
-    /* streamed frames */
+    /* Streamed frames: g and cache hold one input triangle's share at a time. */
     int stream, smooth;
     silk_sil_frame sil;       /* SMOOTH: the plan */
-    silk_frame_geom part;     /* one input triangle's share of the frame */
-    silk_vertex_out *part_out;/* its records through the vertex stage */
     uint16_t *rows;           /* per input triangle: first and last row it can reach, or NULL */
 } frame;
 
@@ -111,48 +115,51 @@ static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         if (o->tolerance_px <= 0)
             return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_smooth: tolerance must be positive");
         silk_arena_mark mark = silk_arena_top_mark(a);
-        f->smooth = silk_frame_smooth_stream(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->part) &&
-                    (f->part_out = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->part_out, SILK_MEM_FRAME));
+        f->smooth = silk_frame_smooth_stream(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->g) &&
+                    (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
         if (f->smooth) {
             silk_remesh_stream_stats(&f->sil, stats);
-            f->geom.curves = f->part.curve;
+            f->geom.curves = f->g.curve;
             f->geom.offsets = f->sil.offset;
             return SILK_OK;
         }
         /* the plan does not fit: the coarse mesh, as a stored frame falls back */
         silk_arena_top_release(a, &mark);
+        memset(&f->g, 0, sizeof f->g);
+        f->cache = NULL;
         stats->fell_back = 1;
     }
     /* the coarse mesh: three CORNER records (zero-filled: kind CORNER) and one triangle at a time */
     size_t free_bytes = silk_arena_free_bytes(a);
-    f->part.vrec = silk_arena_array_top(a, 3, sizeof *f->part.vrec, SILK_MEM_FRAME);
-    f->part.tri = silk_arena_array_top(a, 3, sizeof *f->part.tri, SILK_MEM_FRAME);
-    f->part.tri_added = silk_arena_array_top(a, 1, 1, SILK_MEM_FRAME);
-    f->part_out = silk_arena_array_top(a, 3, sizeof *f->part_out, SILK_MEM_FRAME);
-    if (!f->part.vrec || !f->part.tri || !f->part.tri_added || !f->part_out) {
-        size_t need = aligned(3 * sizeof *f->part.vrec) + aligned(3 * sizeof *f->part.tri) + aligned(1) +
-                      aligned(3 * sizeof *f->part_out);
+    silk_frame_geom *g = &f->g;
+    g->vrec = silk_arena_array_top(a, 3, sizeof *g->vrec, SILK_MEM_FRAME);
+    g->tri = silk_arena_array_top(a, 3, sizeof *g->tri, SILK_MEM_FRAME);
+    g->tri_added = silk_arena_array_top(a, 1, 1, SILK_MEM_FRAME);
+    f->cache = silk_arena_array_top(a, 3, sizeof *f->cache, SILK_MEM_FRAME);
+    if (!g->vrec || !g->tri || !g->tri_added || !f->cache) {
+        size_t need = aligned(3 * sizeof *g->vrec) + aligned(3 * sizeof *g->tri) + aligned(1) +
+                      aligned(3 * sizeof *f->cache);
         return silk_fail(err, SILK_ERR_NOMEM, "frame", 0,
                          "arena too small for the frame: even the unsmoothed frame needs %lu bytes, %lu are free",
                          (unsigned long)need, (unsigned long)free_bytes);
     }
-    for (uint32_t k = 0; k < 3; k++) f->part.tri[k] = k;
-    f->part.nvrec = 3;
-    f->part.ntri = 1;
+    for (uint32_t k = 0; k < 3; k++) g->tri[k] = k;
+    g->nvrec = 3;
+    g->ntri = 1;
     stats->tris_drawn = m->ntris;
     return SILK_OK;
 }
 
-/* Input triangle t's share, through the vertex stage into part_out. */
+/* Input triangle t's share into g, through the vertex stage into cache. */
 static void stream_part(frame *f, uint32_t t)
 {
-    silk_frame_geom *p = &f->part;
+    silk_frame_geom *g = &f->g;
     if (f->smooth) {
-        silk_remesh_emit_tri(&f->sil, p, t);
+        silk_remesh_emit_tri(&f->sil, g, t);
     } else {
-        for (uint32_t k = 0; k < 3; k++) p->vrec[k].a = 3 * t + k;
+        for (uint32_t k = 0; k < 3; k++) g->vrec[k].a = 3 * t + k;
     }
-    for (uint32_t i = 0; i < p->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &p->vrec[i], &f->part_out[i]);
+    for (uint32_t i = 0; i < g->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
 }
 
 /* The row of a frame `height` rows high where the rasterizer puts clip
@@ -176,43 +183,22 @@ static void stream_rows(frame *f, silk_arena *a, int height)
     for (uint32_t t = 0; f->rows && t < n; t++) {
         stream_part(f, t);
         int64_t lo = height, hi = -1;
-        for (uint32_t i = 0; i < f->part.nvrec; i++) {
-            const silk_vec4 *c = &f->part_out[i].clip;
-            int64_t y = c->w > 0 ? clip_row(c, height) : 0;
-            if (c->w <= 0 || y - 1 < lo) lo = c->w > 0 ? y - 1 : 0;
-            if (c->w <= 0 || y + 1 > hi) hi = c->w > 0 ? y + 1 : height - 1;
-            if (c->w <= 0) break;
+        for (uint32_t i = 0; i < f->g.nvrec; i++) {
+            const silk_vec4 *c = &f->cache[i].clip;
+            if (c->w <= 0) {
+                lo = 0;
+                hi = height - 1;
+                break;
+            }
+            int64_t y = clip_row(c, height);
+            if (y - 1 < lo) lo = y - 1;
+            if (y + 1 > hi) hi = y + 1;
         }
         if (lo < 0) lo = 0;
         if (hi > height - 1) hi = height - 1;
         f->rows[2 * t] = lo <= hi ? (uint16_t)lo : UINT16_MAX;   /* never reached: no band takes it */
         f->rows[2 * t + 1] = lo <= hi ? (uint16_t)hi : 0;
     }
-}
-
-/* The band's part of the frame; --wire draws the original triangles' edges,
- * then the added ones', over the surface, as frame_draw does. */
-static void stream_draw(frame *f, const silk_render_opts *o, silk_target *t)
-{
-    const silk_frame_geom *p = &f->part;
-    const silk_vertex_out *out = f->part_out;
-    int last = t->y0 + t->rows - 1;
-    silk_target_clear(t, o->bg_rgb);
-    for (int pass = 0; pass < (o->wire ? 3 : 1); pass++)
-        for (uint32_t k = 0; k < f->geom.mesh->ntris; k++) {
-            if (f->rows && (f->rows[2 * k] > last || f->rows[2 * k + 1] < t->y0)) continue;
-            stream_part(f, k);
-            for (uint32_t i = 0; i < p->ntri; i++) {
-                const uint32_t *c = &p->tri[3 * i];
-                if (pass == 0) {
-                    silk_raster_triangle(t, f->hal, &out[c[0]], &out[c[1]], &out[c[2]]);
-                } else if (p->tri_added[i] == pass - 1) {
-                    for (int e = 0; e < 3; e++)
-                        silk_raster_line(t, &out[c[e]], &out[c[(e + 1) % 3]],
-                                         p->tri_added[i] ? o->wire_new_rgb : o->wire_rgb);
-                }
-            }
-        }
 }
 
 static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
@@ -223,20 +209,31 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
     if ((unsigned)o->lines > SILK_LINES_ONLY)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown lines setting %d", (int)o->lines);
+    /* The patches of PN and BLEND bulge over the coarse mesh, so its edges
+     * are not their outline: there only the polygonal lines, on request. */
+    if (o->lines && !o->lines_polygonal && (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                         "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
+                         "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
     memset(f, 0, sizeof *f);
     if (streamed(o)) return stream_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
     silk_status st;
-    /* The smooth curves exist only in SMOOTH mode; the others outline the coarse mesh. */
+    /* The smooth curves exist only in SMOOTH mode; FLAT outlines the coarse mesh it draws. */
     int smooth_lines = o->lines && !o->lines_polygonal && o->mode == SILK_MODE_SMOOTH;
     if (o->mode == SILK_MODE_SMOOTH)
         st = silk_frame_smooth_lines(a, m, v, o->tolerance_px, o->visibility, smooth_lines, &f->g, stats, err);
     else if (o->mode == SILK_MODE_FLAT)
         st = silk_frame_flat(a, m, &f->g, err);
+#ifndef SILK_NO_REFERENCE_MODES
     else if (o->mode == SILK_MODE_PN)
         st = silk_frame_pn(a, m, o->level, o->pn_normals, &f->g, stats, err);
     else if (o->mode == SILK_MODE_BLEND)
         st = silk_frame_blend(a, m, v, o->blend_beta, o->tolerance_px, &f->g, stats, err);
+#endif
+    else if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
+        st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_NO_REFERENCE_MODES)",
+                       silk_mode_name(o->mode));
     else
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
     if (st != SILK_OK) return st;
@@ -262,35 +259,41 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     return SILK_OK;
 }
 
-static void draw_wire(const frame *f, const silk_render_opts *o, silk_target *t)
-{
-    const silk_frame_geom *g = &f->g;
-    silk_vertex_out tmp[2];
-    /* Original triangles first, so the red of re-meshed ones stays on top. */
-    for (int pass = 0; pass < 2; pass++)
-        for (uint32_t k = 0; k < g->ntri; k++) {
-            int added = g->tri_added && g->tri_added[k];
-            if (added != pass) continue;
-            const uint32_t *c = &g->tri[3 * k];
-            for (int e = 0; e < 3; e++)
-                silk_raster_line(t, vertex_out(f, c[e], &tmp[0]), vertex_out(f, c[(e + 1) % 3], &tmp[1]),
-                                 added ? o->wire_new_rgb : o->wire_rgb);
-        }
-}
-
-static void frame_draw(const frame *f, const silk_render_opts *o, silk_target *t)
+/* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
+ * original triangles, then of the added ones, so their red stays on top. */
+static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
-    silk_target_clear(t, o->bg_rgb);
     /* Lines alone: the surface is drawn into the depth buffer only, to hide them. */
     const silk_hal *shade = o->lines == SILK_LINES_ONLY ? NULL : f->hal;
     for (uint32_t k = 0; k < g->ntri; k++) {
         const uint32_t *c = &g->tri[3 * k];
-        silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
-                             vertex_out(f, c[2], &tmp[2]));
+        int added = g->tri_added && g->tri_added[k];
+        if (pass == 0)
+            silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
+                                 vertex_out(f, c[2], &tmp[2]));
+        else if (added == pass - 1)
+            for (int e = 0; e < 3; e++)
+                silk_raster_line(t, vertex_out(f, c[e], &tmp[0]), vertex_out(f, c[(e + 1) % 3], &tmp[1]),
+                                 added ? o->wire_new_rgb : o->wire_rgb);
     }
-    if (o->wire) draw_wire(f, o, t);
+}
+
+/* The frame's triangles (a stored frame at once, a streamed one input
+ * triangle at a time, only those that reach into the band), then the lines. */
+static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
+{
+    const silk_frame_geom *g = &f->g;
+    silk_vertex_out tmp[2];
+    silk_target_clear(t, o->bg_rgb);
+    uint32_t nparts = f->stream ? f->geom.mesh->ntris : 1;
+    for (int pass = 0; pass < (o->wire ? 3 : 1); pass++)
+        for (uint32_t k = 0; k < nparts; k++) {
+            if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
+            if (f->stream) stream_part(f, k);
+            draw_tris(f, o, t, pass);
+        }
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
         uint32_t j = g->line_start[i], end = g->line_start[i + 1];
@@ -329,8 +332,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     a->top_peak = a->top;
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
-    if (st == SILK_OK && f.stream) stream_draw(&f, o, t);
-    else if (st == SILK_OK) frame_draw(&f, o, t);
+    if (st == SILK_OK) frame_draw(&f, o, t);
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;
@@ -356,8 +358,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
-        if (f.stream) stream_draw(&f, o, band);
-        else frame_draw(&f, o, band);
+        frame_draw(&f, o, band);
         if (sink->band(sink->user, band))
             st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }

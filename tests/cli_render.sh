@@ -137,7 +137,8 @@ check "no output after a small arena" test ! -e "$o"
 # not fit) one error line and no image; never a crash or a partial file.
 run_silk info "$sphere" --size 64x64
 loaded=$(info_value "$out" "  after loading")
-small=$(( (loaded + 64 * 64 * 7 + 16384) / 1024 + 1 ))K
+scratch=$(info_value "$out" "  frame bytes")
+small=$(( (loaded + 64 * 64 * 7 + scratch / 2) / 1024 + 1 ))K
 run_silk render "$sphere" --size 64x64 --arena "$small" -o "$o"
 if { [ "$rc" -eq 0 ] && is_png "$o" && grep -q '^silk: warning: the arena ran out' "$err"; } ||
    { [ "$rc" -eq 1 ] && one_error_line && [ ! -e "$o" ]; }; then

@@ -12,29 +12,9 @@
 #include <string.h>
 #include "check.h"
 #include "silk/silk.h"
+#include "support/testmesh.h"
 
 #define BAD_DIR "tests/bad"
-
-static char *read_file(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    char *buf = NULL;
-    size_t cap = 0, n = 0;
-    for (;;) {
-        if (n == cap) {
-            char *nb = realloc(buf, cap = cap ? 2 * cap : 4096);
-            if (!nb) { free(buf); fclose(f); return NULL; }
-            buf = nb;
-        }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) break;
-    }
-    fclose(f);
-    *len = n;
-    return buf;
-}
 
 static int cmp_names(const void *a, const void *b)
 {
@@ -65,8 +45,8 @@ TEST(corpus)
         snprintf(path, sizeof path, "%s/%s", BAD_DIR, names[i]);
         snprintf(expected_path, sizeof expected_path, "%s.expected", path);
         size_t len, elen;
-        char *data = read_file(path, &len);
-        char *expected = read_file(expected_path, &elen);
+        char *data = tm_read_file(path, &len);
+        char *expected = tm_read_file(expected_path, &elen);
         CHECKF(data && expected, "%s: missing file or .expected", path);
         if (!data || !expected) { free(data); free(expected); continue; }
         /* one line, "silk: " + the message */

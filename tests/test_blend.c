@@ -17,64 +17,20 @@
 #include "check.h"
 #include "silk/silk.h"
 #include "../src/patch.h"
+#include "support/testframe.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (16u << 20)
 #define ULP (1.0 / 65536.0)
 static unsigned char *arena_buf;
 
-static double d(silk_fx v) { return v / 65536.0; }
-static silk_fx fx(double v) { return (silk_fx)llround(v * 65536.0); }
-
-typedef struct dvec { double x, y, z; } dvec;
-static dvec dv(silk_vec3 a) { dvec r = { d(a.x), d(a.y), d(a.z) }; return r; }
-static dvec dmk(double x, double y, double z) { dvec r = { x, y, z }; return r; }
-static dvec dadd(dvec a, dvec b) { return dmk(a.x + b.x, a.y + b.y, a.z + b.z); }
-static dvec dsub(dvec a, dvec b) { return dmk(a.x - b.x, a.y - b.y, a.z - b.z); }
-static dvec dscale(dvec a, double s) { return dmk(a.x * s, a.y * s, a.z * s); }
-static double ddot(dvec a, dvec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static dvec dcross(dvec a, dvec b)
-{
-    return dmk(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static double dlen(dvec a) { return sqrt(ddot(a, a)); }
-static dvec dnorm(dvec a) { double l = dlen(a); return l > 0 ? dscale(a, 1 / l) : a; }
-static double ddist(dvec a, silk_vec3 b)
-{
-    return fmax(fabs(a.x - d(b.x)), fmax(fabs(a.y - d(b.y)), fabs(a.z - d(b.z))));
-}
-static silk_vec3 tofx(dvec a) { return silk_v3(fx(a.x), fx(a.y), fx(a.z)); }
-static int v3_eq(silk_vec3 a, silk_vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-static dvec rand_unit(void)
-{
-    for (;;) {
-        dvec v = dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1));
-        double l = dlen(v);
-        if (l > 0.1 && l <= 1) return dscale(v, 1 / l);
-    }
-}
-
 /* ---- meshes and views -------------------------------------------------------- */
 
 static int load_shared(silk_arena *a, const char *name, silk_mesh *m)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) { fprintf(stderr, "cannot read %s\n", path); return 0; }
-    fseek(fp, 0, SEEK_END);
-    long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *t = malloc((size_t)n + 1);
-    size_t got = fread(t, 1, (size_t)n, fp);
-    fclose(fp);
     silk_arena_init(a, arena_buf, ARENA_BYTES);
-    silk_load_opts o;
-    silk_load_opts_default(&o);
-    silk_error err;
-    silk_status st = silk_load_obj(t, got, name, &o, a, m, &err);
-    free(t);
-    if (st != SILK_OK) { fprintf(stderr, "%s\n", err.msg); return 0; }
-    return 1;
+    return tm_load_shared(a, name, m);
 }
 
 /* Looking at the model's centre from direction dir, dist bounding radii away. */
@@ -89,9 +45,9 @@ static int make_view(const silk_mesh *m, dvec dir, double dist, int ortho, silk_
     cam.up = fabs(dnorm(dir).y) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
     cam.ortho = ortho;
     cam.fov_deg = SILK_FX_C(40, 1);
-    cam.ortho_half_height = fx(1.2 * r);
-    cam.znear = fx(r * 0.05);
-    cam.zfar = fx(r * (dist + 4));
+    cam.ortho_half_height = d2fx(1.2 * r);
+    cam.znear = d2fx(r * 0.05);
+    cam.zfar = d2fx(r * (dist + 4));
     cam.width = 320;
     cam.height = 240;
     silk_error err;
@@ -138,53 +94,6 @@ static silk_fx fixed_alpha(const silk_mesh *m, const silk_view *v, uint32_t e, s
                             silk_mesh_face_normal(m, ed->t[1]), beta);
 }
 
-/* ---- crack check ------------------------------------------------------------------ */
-
-typedef struct dedge { int32_t k[6]; } dedge;
-
-static int cmp_dedge(const void *pa, const void *pb)
-{
-    const dedge *a = pa, *b = pb;
-    for (int i = 0; i < 6; i++)
-        if (a->k[i] != b->k[i]) return a->k[i] < b->k[i] ? -1 : 1;
-    return 0;
-}
-
-/* Every directed edge of the output occurs once and its reverse once, by
- * the bits of the evaluated positions: closed, no crack, no T-junction. */
-static uint32_t crack_check(const silk_mesh *m, const silk_frame_geom *g, uint32_t *checked)
-{
-    silk_geom geom = { .mesh = m, .curves = g->curve, .offsets = g->offset, .patches = g->patch };
-    silk_vec3 *pos = malloc(sizeof *pos * (g->nvrec ? g->nvrec : 1));
-    dedge *e = malloc(sizeof *e * 3 * (g->ntri ? g->ntri : 1));
-    for (uint32_t i = 0; i < g->nvrec; i++) {
-        silk_vertex_attr at;
-        silk_vrec_eval(&geom, &g->vrec[i], &at);
-        pos[i] = at.pos;
-    }
-    uint32_t n = 0, bad = 0;
-    for (uint32_t t = 0; t < g->ntri; t++)
-        for (int k = 0; k < 3; k++) {
-            silk_vec3 a = pos[g->tri[3 * t + k]], b = pos[g->tri[3 * t + (k + 1) % 3]];
-            dedge x = { { a.x, a.y, a.z, b.x, b.y, b.z } };
-            if (v3_eq(a, b)) bad++;
-            e[n++] = x;
-        }
-    qsort(e, n, sizeof *e, cmp_dedge);
-    for (uint32_t i = 0; i < n; i++) {
-        if ((i > 0 && cmp_dedge(&e[i - 1], &e[i]) == 0) || (i + 1 < n && cmp_dedge(&e[i + 1], &e[i]) == 0)) {
-            bad++;
-            continue;
-        }
-        dedge r = { { e[i].k[3], e[i].k[4], e[i].k[5], e[i].k[0], e[i].k[1], e[i].k[2] } };
-        if (!bsearch(&r, e, n, sizeof *e, cmp_dedge)) bad++;
-    }
-    free(pos);
-    free(e);
-    *checked = n;
-    return bad;
-}
-
 /* The frame's record layout, read back: per mesh triangle either three
  * CORNER records (flat) or a centre and a boundary loop; seg[3t+k] gets the
  * segment count of side k (1 for a flat triangle).  Returns 0 on a layout
@@ -220,27 +129,6 @@ static int read_layout(const silk_mesh *m, const silk_frame_geom *g, uint8_t *cu
     return r == g->nvrec;
 }
 
-/* Records at the same position must carry the same normal where the mesh
- * has one normal per vertex (no split normals): smooth shading across the
- * patches, bit for bit.  Returns the number of positions where they differ. */
-static uint32_t normal_seams(const silk_mesh *m, const silk_frame_geom *g)
-{
-    silk_geom geom = { .mesh = m, .curves = g->curve, .offsets = g->offset, .patches = g->patch };
-    dedge *pn = malloc(sizeof *pn * (g->nvrec ? g->nvrec : 1));
-    for (uint32_t i = 0; i < g->nvrec; i++) {
-        silk_vertex_attr at;
-        silk_vrec_eval(&geom, &g->vrec[i], &at);
-        dedge x = { { at.pos.x, at.pos.y, at.pos.z, at.normal.x, at.normal.y, at.normal.z } };
-        pn[i] = x;
-    }
-    qsort(pn, g->nvrec, sizeof *pn, cmp_dedge);
-    uint32_t seams = 0;
-    for (uint32_t i = 1; i < g->nvrec; i++)
-        if (memcmp(pn[i].k, pn[i - 1].k, 3 * sizeof(int32_t)) == 0 && cmp_dedge(&pn[i], &pn[i - 1]) != 0) seams++;
-    free(pn);
-    return seams;
-}
-
 /* ---- tests ----------------------------------------------------------------------- */
 
 /* Eqs. 1-2 for every smooth edge of bunny-500 from random perspective and
@@ -263,11 +151,11 @@ TEST(alpha_vs_double)
         int ortho = it % 2;
         if (!make_view(&m, rand_unit(), check_uniform(1.3, 6), ortho, &v)) { CHECK(0); continue; }
         for (int b = 0; b < 4; b++) {
-            silk_fx beta = fx(betas[b]);
+            silk_fx beta = d2fx(betas[b]);
             for (uint32_t e = 0; e < m.nedges; e++) {
                 if (m.edge[e].flags & (SILK_EDGE_FEATURE | SILK_EDGE_DEGENERATE)) continue;
-                double f = ref_f(&m, &v, e), want = alpha_of_f(f, d(beta));
-                double got = d(fixed_alpha(&m, &v, e, beta));
+                double f = ref_f(&m, &v, e), want = alpha_of_f(f, fx2d(beta));
+                double got = fx2d(fixed_alpha(&m, &v, e, beta));
                 double err = fabs(got - want);
                 if (got < 0 || got > 1) fails++;
                 if (beta == 0) {
@@ -275,7 +163,7 @@ TEST(alpha_vs_double)
                     continue;
                 }
                 partial += got > 0 && got < 1;
-                double bound = 6e-5 / d(beta) + ULP;
+                double bound = 6e-5 / fx2d(beta) + ULP;
                 if (err / bound > worst) worst = err / bound;
                 if (err > bound) fails++;
             }
@@ -306,9 +194,9 @@ TEST(alpha_continuous_in_the_eye)
         double r = dlen(dsub(dv(m.bbox_max), dv(m.bbox_min))) / 2;
         double h = D * r * 0.005 * sqrt(1.25), dmin = (D - 1) * r;
         for (uint32_t e = 0; e < m.nedges; e++) {
-            silk_fx al = fixed_alpha(&m, &v, e, fx(beta));
+            silk_fx al = fixed_alpha(&m, &v, e, d2fx(beta));
             if (i > 0) {
-                double jump = fabs(d(al) - d((silk_fx)prev[e]));
+                double jump = fabs(fx2d(al) - fx2d((silk_fx)prev[e]));
                 double allowed = 2 * h / (dmin * beta) * 1.05 + 4e-5 / beta;
                 if (jump / allowed > worst) worst = jump / allowed;
             }
@@ -384,13 +272,13 @@ TEST(blended_control_points)
             if (ddist(cen, p0.b[SILK_B111]) > 1.0 * ULP) fails++;
             /* random alphas: each side point between its l and c */
             silk_fx al[3];
-            for (int k = 0; k < 3; k++) al[k] = fx(check_uniform(0, 1));
+            for (int k = 0; k < 3; k++) al[k] = d2fx(check_uniform(0, 1));
             silk_patch_build(&m, t, al, SILK_PN_LINEAR, &pa);
             for (int k = 0; k < 3; k++)
                 for (int s = 0; s < 2; s++) {
                     int q = near[k][s];
                     dvec l = dv(p0.b[q]), c = dv(pn.b[q]);
-                    dvec want = dadd(l, dscale(dsub(c, l), d(al[k])));
+                    dvec want = dadd(l, dscale(dsub(c, l), fx2d(al[k])));
                     double e = ddist(want, pa.b[q]) / ULP;
                     if (e > worst) worst = e;
                     if (e > 1.5) fails++;
@@ -421,7 +309,7 @@ TEST(frame_structure_and_tolerance)
         for (int it = 0; it < 12; it++) {
             silk_view v;
             if (!make_view(&m, rand_unit(), check_uniform(1.2, 5), it % 3 == 2, &v)) { CHECK(0); continue; }
-            silk_fx tol = fx(tols[it % 3]), beta = SILK_FX_C(1, 4);
+            silk_fx tol = d2fx(tols[it % 3]), beta = SILK_FX_C(1, 4);
             silk_arena_mark mk = silk_arena_top_mark(&a);
             silk_frame_geom g;
             silk_frame_stats st;
@@ -452,12 +340,12 @@ TEST(frame_structure_and_tolerance)
                     dvec p0 = dv(m.pos[ed->v[0]]), p1 = dv(m.pos[ed->v[1]]);
                     dvec d0 = dsub(dv(c[0]), dv(silk_patch_lin(m.pos[ed->v[0]], m.pos[ed->v[1]])));
                     dvec d1 = dsub(dv(c[1]), dv(silk_patch_lin(m.pos[ed->v[1]], m.pos[ed->v[0]])));
-                    double A = d(al[k]);
+                    double A = fx2d(al[k]);
                     dvec mid = dscale(dadd(p0, p1), 0.5);
-                    double ppu = d(v.pixels_per_unit);
+                    double ppu = fx2d(v.pixels_per_unit);
                     if (!v.cam.ortho) {
                         dvec fw = dnorm(dsub(dv(v.cam.target), dv(v.cam.eye)));
-                        ppu /= fmax(ddot(dsub(mid, dv(v.cam.eye)), fw), d(v.cam.znear));
+                        ppu /= fmax(ddot(dsub(mid, dv(v.cam.eye)), fw), fx2d(v.cam.znear));
                     }
                     double M = A * fmax(dlen(dsub(dscale(d0, 2), d1)), dlen(dsub(d0, dscale(d1, 2))));
                     double bound_px = 0.75 * M * ppu / ((double)n * n);
@@ -477,9 +365,9 @@ TEST(frame_structure_and_tolerance)
                             err_px = fmax(err_px, dlen(dsub(on, chord)) * ppu);
                         }
                     if (err_px > bound_px * 1.0001 + 1e-9) fails++;
-                    if (n < SILK_BLEND_MAX_SEGMENTS && bound_px > d(tol) * 1.001) fails++;
-                    if (n > 1 && 0.75 * M * ppu / ((double)(n - 1) * (n - 1)) < d(tol) * 0.999) fails++;
-                    if (err_px / d(tol) > worst_px) worst_px = err_px / d(tol);
+                    if (n < SILK_BLEND_MAX_SEGMENTS && bound_px > fx2d(tol) * 1.001) fails++;
+                    if (n > 1 && 0.75 * M * ppu / ((double)(n - 1) * (n - 1)) < fx2d(tol) * 0.999) fails++;
+                    if (err_px / fx2d(tol) > worst_px) worst_px = err_px / fx2d(tol);
                 }
             }
             CHECK(st.silhouette_tris == ncurved && g.npatch == ncurved);
@@ -518,9 +406,9 @@ TEST(crack_free_shared_meshes)
             silk_frame_stats st;
             silk_error err;
             memset(&st, 0, sizeof st);
-            CHECK(silk_frame_blend(&a, &m, &v, fx(betas[it % 3]), fx(tols[(it / 3) % 3]), &g, &st, &err) == SILK_OK);
+            CHECK(silk_frame_blend(&a, &m, &v, d2fx(betas[it % 3]), d2fx(tols[(it / 3) % 3]), &g, &st, &err) == SILK_OK);
             CHECK(!st.fell_back);
-            uint32_t checked, bad = crack_check(&m, &g, &checked), seams = f != 1 ? normal_seams(&m, &g) : 0;
+            uint32_t checked, bad = tf_crack_check(&m, &g, &checked), seams = f != 1 ? tf_normal_seams(&m, &g) : 0;
             if (bad || seams) {
                 bad_frames++;
                 fprintf(stderr, "%s view %d: %u of %u edges unpaired, %u normal seams\n", names[f], it, bad, checked,

@@ -17,11 +17,13 @@
 #include <string.h>
 #include "check.h"
 #include "../src/curve.h"
+#include "support/testvec.h"
 
 #define ULP (1.0 / 65536.0)
 #define PI 3.14159265358979323846
 #define N_RANDOM 100000
 
+/* Saturating, and halves rounded up: not testvec.h's d2fx. */
 static silk_fx fx(double v)
 {
     double r = floor(v * 65536.0 + 0.5);
@@ -29,72 +31,52 @@ static silk_fx fx(double v)
     if (r < SILK_FX_MIN) r = SILK_FX_MIN;
     return (silk_fx)r;
 }
-static double dbl(silk_fx v) { return v / 65536.0; }
+static silk_vec3 fx3(dvec v) { return silk_v3(fx(v.x), fx(v.y), fx(v.z)); }
+static double maxabs(dvec a) { return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z))); }
 
-typedef struct { double x, y, z; } d3;
-static d3 d3v(double x, double y, double z) { d3 r = { x, y, z }; return r; }
-static d3 d3_of(silk_vec3 v) { return d3v(dbl(v.x), dbl(v.y), dbl(v.z)); }
-static silk_vec3 fx3(d3 v) { return silk_v3(fx(v.x), fx(v.y), fx(v.z)); }
-static d3 add(d3 a, d3 b) { return d3v(a.x + b.x, a.y + b.y, a.z + b.z); }
-static d3 sub(d3 a, d3 b) { return d3v(a.x - b.x, a.y - b.y, a.z - b.z); }
-static d3 scale(d3 a, double s) { return d3v(a.x * s, a.y * s, a.z * s); }
-static double dot(d3 a, d3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static double len(d3 a) { return sqrt(dot(a, a)); }
-static d3 unit(d3 a) { double l = len(a); return l > 0 ? scale(a, 1.0 / l) : a; }
-static d3 cross(d3 a, d3 b) { return d3v(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
-static double maxabs(d3 a) { return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z))); }
-
-static d3 rand_unit(void)
-{
-    for (;;) {
-        d3 v = d3v(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1));
-        double l = len(v);
-        if (l > 0.1 && l <= 1) return scale(v, 1 / l);
-    }
-}
 /* A length spread over many scales: 2^-14 .. 2^11 units. */
 static double rand_scale(void) { return pow(2.0, check_uniform(-14, 11)); }
 
 /* Component error of a fixed-point vector against a double one, in ulps. */
-static double err_ulp(silk_vec3 got, d3 want)
+static double err_ulp(silk_vec3 got, dvec want)
 {
-    return maxabs(sub(d3_of(got), want)) / ULP;
+    return maxabs(dsub(dv(got), want)) / ULP;
 }
 
 /* ---- eq. 4 reference -------------------------------------------------------- */
 
-static d3 ref_arc_tangent(d3 dir, d3 chord)
+static dvec ref_arc_tangent(dvec dir, dvec chord)
 {
-    double lc = len(chord), ld = len(dir);
-    if (lc == 0) return d3v(0, 0, 0);
+    double lc = dlen(chord), ld = dlen(dir);
+    if (lc == 0) return dmk(0, 0, 0);
     if (ld == 0) return chord;
-    double cth = dot(dir, chord) / (ld * lc);
+    double cth = ddot(dir, chord) / (ld * lc);
     double den = fmax(1 + cth, 2.0 / SILK_ARC_MAX_RATIO);
-    d3 t = scale(dir, 2 * lc / den / ld);
+    dvec t = dscale(dir, 2 * lc / den / ld);
     double m = maxabs(t), lim = SILK_FX_MAX / 65536.0;
-    return m > lim ? scale(t, lim / m) : t;
+    return m > lim ? dscale(t, lim / m) : t;
 }
 
 /* Bound: one rounding, the 30-bit internal precision, and the rounding of
  * the input directions (tiny vectors carry few bits: a dir of a few ulps has
  * a direction known only to ~1/|dir|). */
-static double arc_bound(d3 want) { return 1.0 + maxabs(want) / ULP * 0x1p-27; }
+static double arc_bound(dvec want) { return 1.0 + maxabs(want) / ULP * 0x1p-27; }
 
 TEST(arc_tangent_random)
 {
     double worst = 0, worst_ratio = 0;
     int bad = 0;
     for (int i = 0; i < N_RANDOM; i++) {
-        d3 chord = scale(rand_unit(), rand_scale());
-        d3 dir;
+        dvec chord = dscale(rand_unit(), rand_scale());
+        dvec dir;
         int kind = i % 4;
         if (kind == 0) dir = rand_unit();                                /* any angle */
-        else if (kind == 1) dir = add(unit(chord), scale(rand_unit(), 0.3)); /* near the chord */
-        else if (kind == 2) dir = add(scale(unit(chord), -1), scale(rand_unit(), 0.05)); /* backwards */
-        else dir = cross(chord, rand_unit());                            /* perpendicular */
-        dir = scale(unit(dir), rand_scale());
+        else if (kind == 1) dir = dadd(dnorm(chord), dscale(rand_unit(), 0.3)); /* near the chord */
+        else if (kind == 2) dir = dadd(dscale(dnorm(chord), -1), dscale(rand_unit(), 0.05)); /* backwards */
+        else dir = dcross(chord, rand_unit());                            /* perpendicular */
+        dir = dscale(dnorm(dir), rand_scale());
         silk_vec3 fd = fx3(dir), fc = fx3(chord);
-        d3 want = ref_arc_tangent(d3_of(fd), d3_of(fc));
+        dvec want = ref_arc_tangent(dv(fd), dv(fc));
         silk_vec3 got = silk_arc_tangent(fd, fc);
         double e = err_ulp(got, want);
         /* dir shorter than 2^-10 is a handful of ulps: its rounding to Q16.16
@@ -105,8 +87,8 @@ TEST(arc_tangent_random)
         if (e > arc_bound(want)) {
             if (bad++ < 5)
                 CHECKF(0, "dir (%g %g %g) chord (%g %g %g): got (%g %g %g) want (%.9g %.9g %.9g)",
-                       dir.x, dir.y, dir.z, chord.x, chord.y, chord.z, dbl(got.x), dbl(got.y),
-                       dbl(got.z), want.x, want.y, want.z);
+                       dir.x, dir.y, dir.z, chord.x, chord.y, chord.z, fx2d(got.x), fx2d(got.y),
+                       fx2d(got.z), want.x, want.y, want.z);
         }
     }
     CHECKF(bad == 0, "%d of %d beyond 1 ulp + 2^-27 relative", bad, N_RANDOM);
@@ -139,11 +121,11 @@ TEST(arc_tangent_special)
     t = silk_arc_tangent(silk_v3(-SILK_FX_ONE, 1, 0), c);     /* dir turned by 2^-16 rad */
     CHECKF(t.x == -SILK_ARC_MAX_RATIO * SILK_FX_ONE && t.y == SILK_ARC_MAX_RATIO, "%d %d", t.x, t.y);
     double th = 120.0 * PI / 180;
-    t = silk_arc_tangent(fx3(d3v(cos(th), sin(th), 0)), c);
-    CHECKF(fabs(len(d3_of(t)) - SILK_ARC_MAX_RATIO) < 4 * ULP, "len %.9g", len(d3_of(t)));
+    t = silk_arc_tangent(fx3(dmk(cos(th), sin(th), 0)), c);
+    CHECKF(fabs(dlen(dv(t)) - SILK_ARC_MAX_RATIO) < 4 * ULP, "len %.9g", dlen(dv(t)));
     th = 119.0 * PI / 180;
-    t = silk_arc_tangent(fx3(d3v(cos(th), sin(th), 0)), c);
-    CHECKF(fabs(len(d3_of(t)) - 2 / (1 + cos(th))) < 4 * ULP, "len %.9g", len(d3_of(t)));
+    t = silk_arc_tangent(fx3(dmk(cos(th), sin(th), 0)), c);
+    CHECKF(fabs(dlen(dv(t)) - 2 / (1 + cos(th))) < 4 * ULP, "len %.9g", dlen(dv(t)));
     /* 1-ulp vectors. */
     t = silk_arc_tangent(silk_v3(0, 1, 0), silk_v3(1, 0, 0));
     CHECKF(t.x == 0 && t.y == 2 && t.z == 0, "%d %d %d", t.x, t.y, t.z);
@@ -153,7 +135,7 @@ TEST(arc_tangent_special)
      * and keeps its direction. */
     silk_vec3 big = silk_v3(SILK_FX_MAX, SILK_FX_MAX, -SILK_FX_MAX);
     t = silk_arc_tangent(silk_v3(SILK_FX_MIN, 0, 0), big);
-    d3 want = ref_arc_tangent(d3_of(silk_v3(SILK_FX_MIN, 0, 0)), d3_of(big));
+    dvec want = ref_arc_tangent(dv(silk_v3(SILK_FX_MIN, 0, 0)), dv(big));
     CHECKF(err_ulp(t, want) <= arc_bound(want), "(%d %d %d)", t.x, t.y, t.z);
     CHECK(t.x == SILK_FX_MIN);
     t = silk_arc_tangent(silk_v3(INT32_MIN, INT32_MIN, INT32_MIN), silk_v3(INT32_MIN, 5, INT32_MIN));
@@ -162,22 +144,22 @@ TEST(arc_tangent_special)
      * the +-1024 box with the largest tangent. */
     silk_vec3 diag = silk_v3(2048 * SILK_FX_ONE - 1, 2048 * SILK_FX_ONE - 1, 2048 * SILK_FX_ONE - 1);
     t = silk_arc_tangent(silk_v3_neg(diag), diag);
-    CHECKF(fabs(len(d3_of(t)) - 4 * len(d3_of(diag))) < 8 * ULP * 4 * 2048, "len %.9g", len(d3_of(t)));
+    CHECKF(fabs(dlen(dv(t)) - 4 * dlen(dv(diag))) < 8 * ULP * 4 * 2048, "len %.9g", dlen(dv(t)));
 }
 
 /* ---- eqs. 2-5 reference ----------------------------------------------------- */
 
-static void ref_bridge(d3 p0, d3 n0, d3 p1, d3 n1, d3 *t0, d3 *t1, double *cond)
+static void ref_bridge(dvec p0, dvec n0, dvec p1, dvec n1, dvec *t0, dvec *t1, double *cond)
 {
-    d3 c = sub(p1, p0);
-    d3 m0 = unit(n0), m1 = unit(n1);
-    d3 a = sub(c, scale(m0, dot(c, m0)));
-    d3 b = sub(c, scale(m1, dot(c, m1)));
+    dvec c = dsub(p1, p0);
+    dvec m0 = dnorm(n0), m1 = dnorm(n1);
+    dvec a = dsub(c, dscale(m0, ddot(c, m0)));
+    dvec b = dsub(c, dscale(m1, ddot(c, m1)));
     /* How much a rounding of the chord turns the projected direction. */
-    double la = len(a), lb = len(b);
-    *cond = len(c) / fmax(fmin(la, lb), 1e-300);
-    if (la == 0 || len(n0) == 0) a = c;
-    if (lb == 0 || len(n1) == 0) b = c;
+    double la = dlen(a), lb = dlen(b);
+    *cond = dlen(c) / fmax(fmin(la, lb), 1e-300);
+    if (la == 0 || dlen(n0) == 0) a = c;
+    if (lb == 0 || dlen(n1) == 0) b = c;
     *t0 = ref_arc_tangent(a, c);
     *t1 = ref_arc_tangent(b, c);
 }
@@ -187,30 +169,30 @@ TEST(bridge_random)
     double worst = 0, worst_ratio = 0;
     int bad = 0, n = 0;
     for (int i = 0; n < N_RANDOM; i++) {
-        d3 p0 = scale(d3v(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 1024);
-        d3 c;
+        dvec p0 = dscale(dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 1024);
+        dvec c;
         int kind = i % 3;
-        if (kind == 0) c = scale(rand_unit(), rand_scale());                       /* any edge */
-        else if (kind == 1) c = sub(scale(d3v(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 1024), p0); /* huge */
-        else c = scale(rand_unit(), pow(2.0, check_uniform(-14, -6)));             /* tiny */
-        d3 p1 = add(p0, c);
+        if (kind == 0) c = dscale(rand_unit(), rand_scale());                       /* any edge */
+        else if (kind == 1) c = dsub(dscale(dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 1024), p0); /* huge */
+        else c = dscale(rand_unit(), pow(2.0, check_uniform(-14, -6)));             /* tiny */
+        dvec p1 = dadd(p0, c);
         if (maxabs(p1) > 1024) continue;
         /* Normals as on a surface: roughly across the edge, sometimes tilted
          * far towards it. */
-        d3 e = unit(c);
-        d3 side = unit(cross(e, rand_unit()));
+        dvec e = dnorm(c);
+        dvec side = dnorm(dcross(e, rand_unit()));
         double tilt0 = check_uniform(-1.2, 1.2), tilt1 = check_uniform(-1.2, 1.2);
         if (i % 10 == 0) tilt0 = check_uniform(-1.55, 1.55);
-        d3 n0 = add(scale(side, cos(tilt0)), scale(e, sin(tilt0)));
-        d3 n1 = add(scale(unit(add(side, scale(rand_unit(), 0.3))), cos(tilt1)), scale(e, sin(tilt1)));
-        n1 = unit(n1);
+        dvec n0 = dadd(dscale(side, cos(tilt0)), dscale(e, sin(tilt0)));
+        dvec n1 = dadd(dscale(dnorm(dadd(side, dscale(rand_unit(), 0.3))), cos(tilt1)), dscale(e, sin(tilt1)));
+        n1 = dnorm(n1);
         silk_vec3 fp0 = fx3(p0), fp1 = fx3(p1), fn0 = fx3(n0), fn1 = fx3(n1);
         silk_curve cv;
         memset(&cv, 0x55, sizeof cv);
         silk_bridge(fp0, fn0, fp1, fn1, &cv);
-        d3 t0, t1;
+        dvec t0, t1;
         double cond;
-        ref_bridge(d3_of(fp0), d3_of(fn0), d3_of(fp1), d3_of(fn1), &t0, &t1, &cond);
+        ref_bridge(dv(fp0), dv(fn0), dv(fp1), dv(fn1), &t0, &t1, &cond);
         double e0 = err_ulp(cv.t0, t0), e1 = err_ulp(cv.t1, t1);
         double b0 = 1.0 + maxabs(t0) / ULP * 0x1p-27 * cond;
         double b1 = 1.0 + maxabs(t1) / ULP * 0x1p-27 * cond;
@@ -269,22 +251,22 @@ TEST(bridge_special)
 }
 
 /* Hermite point of eq. 5 in double. */
-static d3 hermite(d3 p0, d3 p1, d3 t0, d3 t1, double u)
+static dvec hermite(dvec p0, dvec p1, dvec t0, dvec t1, double u)
 {
     double u2 = u * u, u3 = u2 * u;
     double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
-    return add(add(scale(p0, h00), scale(t0, h10)), add(scale(p1, h01), scale(t1, h11)));
+    return dadd(dadd(dscale(p0, h00), dscale(t0, h10)), dadd(dscale(p1, h01), dscale(t1, h11)));
 }
 
 /* Largest distance of a Hermite curve from the circle (centre ctr, unit
  * plane normal nrm, radius R), over 65 points. */
-static double circle_deviation(d3 p0, d3 p1, d3 t0, d3 t1, d3 ctr, d3 nrm, double R)
+static double circle_deviation(dvec p0, dvec p1, dvec t0, dvec t1, dvec ctr, dvec nrm, double R)
 {
     double dev = 0;
     for (int s = 0; s <= 64; s++) {
-        d3 rel = sub(hermite(p0, p1, t0, t1, s / 64.0), ctr);
-        double off = dot(rel, nrm);
-        double d = hypot(len(sub(rel, scale(nrm, off))) - R, off);
+        dvec rel = dsub(hermite(p0, p1, t0, t1, s / 64.0), ctr);
+        double off = ddot(rel, nrm);
+        double d = hypot(dlen(dsub(rel, dscale(nrm, off))) - R, off);
         if (d > dev) dev = d;
     }
     return dev;
@@ -308,16 +290,16 @@ TEST(bridge_follows_circle)
             for (int k = 0; k < 40; k++) {
                 double R = radii[ri], alpha = arcs[ai] * PI / 180;
                 /* A random plane through a random centre. */
-                d3 ctr = scale(d3v(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 1024 - 1.5 * R);
-                d3 ax = rand_unit(), ay = unit(cross(ax, rand_unit()));
-                ax = unit(cross(ay, ax));
-                d3 nrm = cross(ax, ay);
+                dvec ctr = dscale(dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 1024 - 1.5 * R);
+                dvec ax = rand_unit(), ay = dnorm(dcross(ax, rand_unit()));
+                ax = dnorm(dcross(ay, ax));
+                dvec nrm = dcross(ax, ay);
                 double a0 = check_uniform(0, 2 * PI);
-                d3 r0 = add(scale(ax, cos(a0)), scale(ay, sin(a0)));
-                d3 r1 = add(scale(ax, cos(a0 + alpha)), scale(ay, sin(a0 + alpha)));
-                d3 v0 = add(ctr, scale(r0, R)), v1 = add(ctr, scale(r1, R));
+                dvec r0 = dadd(dscale(ax, cos(a0)), dscale(ay, sin(a0)));
+                dvec r1 = dadd(dscale(ax, cos(a0 + alpha)), dscale(ay, sin(a0 + alpha)));
+                dvec v0 = dadd(ctr, dscale(r0, R)), v1 = dadd(ctr, dscale(r1, R));
                 /* the construction in double, exact inputs */
-                d3 e0, e1;
+                dvec e0, e1;
                 double cond;
                 ref_bridge(v0, r0, v1, r1, &e0, &e1, &cond);
                 double own = circle_deviation(v0, v1, e0, e1, ctr, nrm, R);
@@ -329,9 +311,9 @@ TEST(bridge_follows_circle)
                 silk_vec3 fn0 = fx3(r0), fn1 = fx3(r1);
                 silk_curve cv;
                 silk_bridge(fx3(v0), fn0, fx3(v1), fn1, &cv);
-                double dev = circle_deviation(d3_of(cv.p0), d3_of(cv.p1), d3_of(cv.t0), d3_of(cv.t1), ctr, nrm, R);
-                double turn0 = len(sub(unit(d3_of(fn0)), r0)), turn1 = len(sub(unit(d3_of(fn1)), r1));
-                double quant = 4.0 / 27 * (len(e0) * turn0 + len(e1) * turn1) + 4 * ULP;
+                double dev = circle_deviation(dv(cv.p0), dv(cv.p1), dv(cv.t0), dv(cv.t1), ctr, nrm, R);
+                double turn0 = dlen(dsub(dnorm(dv(fn0)), r0)), turn1 = dlen(dsub(dnorm(dv(fn1)), r1));
+                double quant = 4.0 / 27 * (dlen(e0) * turn0 + dlen(e1) * turn1) + 4 * ULP;
                 if (dev - own > worst_excess) worst_excess = dev - own;
                 CHECKF(dev <= own + quant, "R %g arc %g: deviation %.3g (construction %.3g, rounding allowance %.3g)",
                        R, arcs[ai], dev, own, quant);
@@ -370,11 +352,11 @@ static long double ref_silhouette_u(silk_vec3 n0, silk_vec3 d0, silk_vec3 n1, si
 }
 
 /* A view direction: towards an eye far away, close by, or parallel. */
-static d3 rand_eye(d3 at, int kind)
+static dvec rand_eye(dvec at, int kind)
 {
-    if (kind == 0) return add(at, scale(rand_unit(), check_uniform(1.05, 4)));     /* close */
-    if (kind == 1) return add(at, scale(rand_unit(), check_uniform(4, 60)));       /* usual */
-    return add(at, scale(rand_unit(), check_uniform(1000, 16000)));               /* far */
+    if (kind == 0) return dadd(at, dscale(rand_unit(), check_uniform(1.05, 4)));     /* close */
+    if (kind == 1) return dadd(at, dscale(rand_unit(), check_uniform(4, 60)));       /* usual */
+    return dadd(at, dscale(rand_unit(), check_uniform(1000, 16000)));               /* far */
 }
 
 /* Root error bound in ulps: half an ulp of rounding plus the coefficients'
@@ -388,24 +370,24 @@ TEST(silhouette_param_random)
     int bad = 0, n = 0, ill = 0;
     while (n < N_RANDOM) {
         int kind = n % 6;
-        d3 p0 = scale(d3v(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), check_uniform(1, 1000));
-        d3 p1 = add(p0, scale(rand_unit(), pow(2.0, check_uniform(-12, 4))));
+        dvec p0 = dscale(dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), check_uniform(1, 1000));
+        dvec p1 = dadd(p0, dscale(rand_unit(), pow(2.0, check_uniform(-12, 4))));
         if (maxabs(p1) > 1024) continue;
-        d3 n0 = rand_unit(), n1 = unit(add(n0, scale(rand_unit(), check_uniform(0, 1.5))));
-        d3 d0, d1;
+        dvec n0 = rand_unit(), n1 = dnorm(dadd(n0, dscale(rand_unit(), check_uniform(0, 1.5))));
+        dvec d0, d1;
         if (kind < 3) {
-            d3 e = rand_eye(p0, kind);
+            dvec e = rand_eye(p0, kind);
             if (maxabs(e) > 32000) continue;
-            d0 = sub(e, p0);
-            d1 = sub(e, p1);
+            d0 = dsub(e, p0);
+            d1 = dsub(e, p1);
         } else {
             d0 = d1 = rand_unit();                        /* parallel projection */
         }
         if (kind == 4) {
             /* near-tangent: the silhouette just inside an end */
-            d3 v = unit(d0);
+            dvec v = dnorm(d0);
             double eps = pow(10.0, check_uniform(-7, -2)) * (check_rand64() & 1 ? 1 : -1);
-            n0 = unit(add(sub(n0, scale(v, dot(n0, v))), scale(v, eps)));
+            n0 = dnorm(dadd(dsub(n0, dscale(v, ddot(n0, v))), dscale(v, eps)));
         }
         if (kind == 5) {
             /* h(u) = a (u - r0)(u - r1) with r0 in [0,1] and r1 just outside:
@@ -418,10 +400,10 @@ TEST(silhouette_param_random)
             double pc = a * r0 * r1, pb = -a * (r0 + r1), pa = a;
             double A = pc, C = pa + pb + pc, B = pb + 2 * pc;
             if (fmax(fabs(A), fmax(fabs(B), fabs(C))) > 30000) continue;
-            n0 = d3v(1, 0, 0);
-            n1 = d3v(0, 1, 0);
-            d0 = d3v(A, B / 2, 0);
-            d1 = d3v(B / 2, C, 0);
+            n0 = dmk(1, 0, 0);
+            n1 = dmk(0, 1, 0);
+            d0 = dmk(A, B / 2, 0);
+            d1 = dmk(B / 2, C, 0);
         }
         silk_vec3 fn0 = fx3(n0), fn1 = fx3(n1), fd0 = fx3(d0), fd1 = fx3(d1);
         long double slope;
@@ -476,10 +458,10 @@ TEST(silhouette_param_special)
     /* the two orientations of an edge agree: u and 1 - u */
     int asym = 0;
     for (int i = 0; i < 20000; i++) {
-        d3 p0 = rand_unit(), p1 = add(p0, scale(rand_unit(), 0.3));
-        d3 e = rand_eye(p0, i % 3);
+        dvec p0 = rand_unit(), p1 = dadd(p0, dscale(rand_unit(), 0.3));
+        dvec e = rand_eye(p0, i % 3);
         silk_vec3 a = fx3(rand_unit()), b = fx3(rand_unit());
-        silk_vec3 da = fx3(sub(e, p0)), db = fx3(sub(e, p1));
+        silk_vec3 da = fx3(dsub(e, p0)), db = fx3(dsub(e, p1));
         silk_fx f = silk_silhouette_param(a, da, b, db), g = silk_silhouette_param(b, db, a, da);
         if (abs(f + g - SILK_FX_ONE) > 1) asym++;
     }
@@ -500,27 +482,27 @@ TEST(silhouette_on_sphere)
     int n = 0;
     while (n < 20000) {
         double R = pow(10.0, check_uniform(-1, 2));
-        d3 ctr = scale(rand_unit(), check_uniform(0, 1000 - 12 * R));
+        dvec ctr = dscale(rand_unit(), check_uniform(0, 1000 - 12 * R));
         int persp = n % 2, near = n % 4 < 2;
-        d3 view = rand_unit();                           /* direction towards the eye */
+        dvec view = rand_unit();                           /* direction towards the eye */
         double dist = R * (near ? check_uniform(1.5, 4) : check_uniform(4, 10));
-        d3 eye = add(ctr, scale(view, dist));
+        dvec eye = dadd(ctr, dscale(view, dist));
         /* two points on the sphere on either side of the silhouette, an edge
          * of up to 36 degrees as on the 10-segment UV sphere */
         double ang = check_uniform(2, 36) * PI / 180;
-        d3 q0 = rand_unit();
-        d3 axis = unit(cross(q0, rand_unit()));
-        d3 q1 = add(scale(q0, cos(ang)), scale(cross(axis, q0), sin(ang)));
-        d3 v0 = add(ctr, scale(q0, R)), v1 = add(ctr, scale(q1, R));
-        d3 dd0 = persp ? sub(eye, v0) : view, dd1 = persp ? sub(eye, v1) : view;
-        if ((dot(q0, dd0) < 0) == (dot(q1, dd1) < 0)) continue;   /* not across the silhouette */
+        dvec q0 = rand_unit();
+        dvec axis = dnorm(dcross(q0, rand_unit()));
+        dvec q1 = dadd(dscale(q0, cos(ang)), dscale(dcross(axis, q0), sin(ang)));
+        dvec v0 = dadd(ctr, dscale(q0, R)), v1 = dadd(ctr, dscale(q1, R));
+        dvec dd0 = persp ? dsub(eye, v0) : view, dd1 = persp ? dsub(eye, v1) : view;
+        if ((ddot(q0, dd0) < 0) == (ddot(q1, dd1) < 0)) continue;   /* not across the silhouette */
         silk_vec3 fn0 = fx3(q0), fn1 = fx3(q1);
         silk_curve cv;
         silk_bridge(fx3(v0), fn0, fx3(v1), fn1, &cv);
         silk_fx u = silk_silhouette_param(fn0, fx3(dd0), fn1, fx3(dd1));
-        d3 S = hermite(d3_of(cv.p0), d3_of(cv.p1), d3_of(cv.t0), d3_of(cv.t1), dbl(u));
+        dvec S = hermite(dv(cv.p0), dv(cv.p1), dv(cv.t0), dv(cv.t1), fx2d(u));
         double contour = persp ? acos(R / dist) : PI / 2;          /* angle from the view axis */
-        double at = acos(fmax(-1, fmin(1, dot(unit(sub(S, ctr)), view))));
+        double at = acos(fmax(-1, fmin(1, ddot(dnorm(dsub(S, ctr)), view))));
         double err = R * fabs(at - contour) / (R * ang);
         n++;
         if (err > worst[persp]) worst[persp] = err;
@@ -541,15 +523,15 @@ TEST(silhouette_param_continuity)
     double worst = 0;
     int bad = 0;
     for (int trial = 0; trial < 200; trial++) {
-        d3 p0 = scale(rand_unit(), check_uniform(0, 500)), p1 = add(p0, scale(rand_unit(), check_uniform(0.01, 3)));
-        d3 n0 = rand_unit(), n1 = unit(add(n0, scale(rand_unit(), check_uniform(0.2, 1.5))));
+        dvec p0 = dscale(rand_unit(), check_uniform(0, 500)), p1 = dadd(p0, dscale(rand_unit(), check_uniform(0.01, 3)));
+        dvec n0 = rand_unit(), n1 = dnorm(dadd(n0, dscale(rand_unit(), check_uniform(0.2, 1.5))));
         silk_vec3 fn0 = fx3(n0), fn1 = fx3(n1), fp0 = fx3(p0), fp1 = fx3(p1);
-        d3 e0 = add(p0, scale(rand_unit(), check_uniform(2, 50)));
-        d3 step = scale(rand_unit(), 1e-3 * len(sub(e0, p0)));
+        dvec e0 = dadd(p0, dscale(rand_unit(), check_uniform(2, 50)));
+        dvec step = dscale(rand_unit(), 1e-3 * dlen(dsub(e0, p0)));
         long double prev_want = -1, slope;
         silk_fx prev_got = -1;
         for (int k = 0; k < 400; k++) {
-            silk_vec3 fe = fx3(add(e0, scale(step, k)));
+            silk_vec3 fe = fx3(dadd(e0, dscale(step, k)));
             silk_vec3 d0 = silk_v3_sub(fe, fp0), d1 = silk_v3_sub(fe, fp1);
             long double want = ref_silhouette_u(fn0, d0, fn1, d1, &slope);
             silk_fx got = silk_silhouette_param(fn0, d0, fn1, d1);
@@ -580,8 +562,8 @@ TEST(sample_count_random)
         silk_fx c = fx(check_uniform(-1, 1));
         if (i % 3 == 0) c = fx(1 - pow(10.0, check_uniform(-4.8, 0)));  /* nearly flat */
         silk_fx e = fx(check_uniform(0.25, 4));
-        double r = sqrt((1 - dbl(c)) / 2);
-        double x = sqrt(dbl(h) * r / dbl(e)) / 2;
+        double r = sqrt((1 - fx2d(c)) / 2);
+        double x = sqrt(fx2d(h) * r / fx2d(e)) / 2;
         double want = ceil(x);
         if (want < 1) want = 1;
         if (want > SILK_MAX_SAMPLES) { want = SILK_MAX_SAMPLES; capped++; }
@@ -589,7 +571,7 @@ TEST(sample_count_random)
         if ((double)got != want) {
             /* r is rounded to 24 bits: only a value within 1e-6 of an integer may go either way */
             if (fabs(x - floor(x + 0.5)) < 1e-6 * x + 1e-9) { near_boundary++; continue; }
-            if (bad++ < 5) CHECKF(0, "h %g cos %g e %g: got %u want %g (x %.9g)", dbl(h), dbl(c), dbl(e), got, want, x);
+            if (bad++ < 5) CHECKF(0, "h %g cos %g e %g: got %u want %g (x %.9g)", fx2d(h), fx2d(c), fx2d(e), got, want, x);
         }
     }
     CHECKF(bad == 0, "%d wrong sample counts", bad);

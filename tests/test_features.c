@@ -18,140 +18,51 @@
 #include "check.h"
 #include "silk/silk.h"
 #include "../src/smooth.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (48u << 20)
 #define PI 3.14159265358979323846
 #define ULP (1.0 / 65536)
 
-static silk_fx to_fx(double d) { return (silk_fx)llround(d * 65536.0); }
-static double fx_d(silk_fx v) { return v / 65536.0; }
-
-typedef struct fixture {
-    void *buf;
-    silk_arena a;
-    silk_mesh_input in;
-    silk_load_opts opts;
-    silk_mesh m;
-    silk_error err;
-} fixture;
-
-static void fx_init(fixture *f, size_t bytes)
-{
-    memset(f, 0, sizeof *f);
-    f->buf = malloc(bytes);
-    silk_arena_init(&f->a, f->buf, bytes);
-    silk_load_opts_default(&f->opts);
-}
-
-static void fx_reset(fixture *f)
-{
-    silk_arena_init(&f->a, f->buf, ARENA_BYTES);
-    memset(&f->in, 0, sizeof f->in);
-    memset(&f->m, 0, sizeof f->m);
-}
-
-static int fx_input(fixture *f, const double *pos, uint32_t nv, const uint32_t *tri, uint32_t nt)
-{
-    f->in.nverts = nv;
-    f->in.ntris = nt;
-    f->in.pos = silk_arena_array(&f->a, nv, sizeof(silk_vec3), SILK_MEM_MESH);
-    f->in.tri = silk_arena_array(&f->a, 3 * (size_t)nt, sizeof(silk_index), SILK_MEM_MESH);
-    if (!f->in.pos || !f->in.tri) return 0;
-    for (uint32_t v = 0; v < nv; v++)
-        f->in.pos[v] = silk_v3(to_fx(pos[3 * v]), to_fx(pos[3 * v + 1]), to_fx(pos[3 * v + 2]));
-    for (uint32_t c = 0; c < 3 * nt; c++) f->in.tri[c] = tri[c];
-    return 1;
-}
-
-static silk_status fx_build(fixture *f) { return silk_mesh_build(&f->in, "test", &f->opts, &f->a, &f->m, &f->err); }
-
-/* Minimal reader for the shared meshes (only `v` and `f` lines). */
-static int read_obj(const char *name, fixture *f)
-{
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s.obj", check_meshes_dir(), name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return 0;
-    fseek(fp, 0, SEEK_END);
-    long len = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *text = malloc((size_t)len + 1);
-    size_t got = fread(text, 1, (size_t)len, fp);
-    fclose(fp);
-    text[got] = 0;
-    uint32_t nv = 0, nt = 0;
-    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
-        if (l[0] == 'v' && l[1] == ' ') nv++;
-        if (l[0] == 'f' && l[1] == ' ') nt++;
-    }
-    double *pos = malloc(3 * sizeof(double) * (nv ? nv : 1));
-    uint32_t *tri = malloc(3 * sizeof(uint32_t) * (nt ? nt : 1));
-    uint32_t iv = 0, it = 0;
-    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
-        char *p = l + 2;
-        if (l[0] == 'v' && l[1] == ' ') {
-            for (int k = 0; k < 3; k++) pos[3 * iv + k] = strtod(p, &p);
-            iv++;
-        } else if (l[0] == 'f' && l[1] == ' ') {
-            for (int k = 0; k < 3; k++) tri[3 * it + k] = (uint32_t)strtoul(p, &p, 10) - 1;
-            it++;
-        }
-    }
-    int ok = fx_input(f, pos, nv, tri, nt);
-    free(text);
-    free(pos);
-    free(tri);
-    return ok;
-}
-
 /* ---- vectors in double ------------------------------------------------------------------- */
 
-typedef struct d3 { double x, y, z; } d3;
+static dvec vpos(const silk_mesh *m, uint32_t v) { return dv(m->pos[v]); }
 
-static d3 dv(double x, double y, double z) { d3 r = { x, y, z }; return r; }
-static d3 add(d3 a, d3 b) { return dv(a.x + b.x, a.y + b.y, a.z + b.z); }
-static d3 sub(d3 a, d3 b) { return dv(a.x - b.x, a.y - b.y, a.z - b.z); }
-static d3 scale(d3 a, double s) { return dv(a.x * s, a.y * s, a.z * s); }
-static double dot(d3 a, d3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static d3 cross(d3 a, d3 b) { return dv(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
-static double len(d3 a) { return sqrt(dot(a, a)); }
-static d3 of_fx(silk_vec3 v) { return dv(fx_d(v.x), fx_d(v.y), fx_d(v.z)); }
-static d3 vpos(const silk_mesh *m, uint32_t v) { return of_fx(m->pos[v]); }
-
-static double angle_between(d3 a, d3 b)
+static double angle_between(dvec a, dvec b)
 {
-    double c = dot(a, b) / (len(a) * len(b));
+    double c = ddot(a, b) / (dlen(a) * dlen(b));
     return acos(c > 1 ? 1 : (c < -1 ? -1 : c));
 }
 
 /* Eq. 5 */
-static d3 hermite(d3 p0, d3 p1, d3 t0, d3 t1, double u)
+static dvec hermite(dvec p0, dvec p1, dvec t0, dvec t1, double u)
 {
     double u2 = u * u, u3 = u2 * u;
-    return add(add(scale(p0, 2 * u3 - 3 * u2 + 1), scale(t0, u3 - 2 * u2 + u)),
-               add(scale(p1, -2 * u3 + 3 * u2), scale(t1, u3 - u2)));
+    return dadd(dadd(dscale(p0, 2 * u3 - 3 * u2 + 1), dscale(t0, u3 - 2 * u2 + u)),
+               dadd(dscale(p1, -2 * u3 + 3 * u2), dscale(t1, u3 - u2)));
 }
 
 /* The tangent at x (one of p, q, r, travelled in that order) of the circle
  * through p, q, r: the travel normal crossed with the radius, from the
  * circumcentre.  Straight points give the chord. */
-static d3 circle_tangent(d3 p, d3 q, d3 r, d3 x)
+static dvec circle_tangent(dvec p, dvec q, dvec r, dvec x)
 {
-    d3 a = sub(p, r), b = sub(q, r), axb = cross(a, b);
-    double l2 = dot(axb, axb);
-    if (l2 <= 1e-24 * dot(a, a) * dot(b, b)) return sub(r, p);
-    d3 o = add(r, scale(cross(sub(scale(b, dot(a, a)), scale(a, dot(b, b))), axb), 1 / (2 * l2)));
-    d3 n = cross(sub(q, p), sub(r, q));
-    return cross(n, sub(x, o));
+    dvec a = dsub(p, r), b = dsub(q, r), axb = dcross(a, b);
+    double l2 = ddot(axb, axb);
+    if (l2 <= 1e-24 * ddot(a, a) * ddot(b, b)) return dsub(r, p);
+    dvec o = dadd(r, dscale(dcross(dsub(dscale(b, ddot(a, a)), dscale(a, ddot(b, b))), axb), 1 / (2 * l2)));
+    dvec n = dcross(dsub(q, p), dsub(r, q));
+    return dcross(n, dsub(x, o));
 }
 
 /* Eq. 4 with curve.h's clamp (SILK_ARC_MAX_RATIO = 4 chord lengths). */
-static d3 arc_length_scaled(d3 dir, d3 chord)
+static dvec arc_length_scaled(dvec dir, dvec chord)
 {
-    double lc = len(chord), c = dot(dir, chord) / (len(dir) * lc);
+    double lc = dlen(chord), c = ddot(dir, chord) / (dlen(dir) * lc);
     double l = 2 * lc / (1 + c);
     if (!(l < 4 * lc)) l = 4 * lc;
-    return scale(dir, l / len(dir));
+    return dscale(dir, l / dlen(dir));
 }
 
 /* ---- the reference feature tangents --------------------------------------------------------- */
@@ -195,8 +106,8 @@ static double turn_at(const silk_mesh *m, uint32_t v)
         uint32_t e = m->vert_edge[i];
         if (is_feature(m, e)) nb[n++] = m->edge[e].v[0] == v ? m->edge[e].v[1] : m->edge[e].v[0];
     }
-    d3 in = sub(vpos(m, v), vpos(m, nb[0])), out = sub(vpos(m, nb[1]), vpos(m, v));
-    if (len(in) == 0 || len(out) == 0) return 180;
+    dvec in = dsub(vpos(m, v), vpos(m, nb[0])), out = dsub(vpos(m, nb[1]), vpos(m, v));
+    if (dlen(in) == 0 || dlen(out) == 0) return 180;
     return angle_between(in, out) * 180 / PI;
 }
 
@@ -218,13 +129,13 @@ static int passes(const silk_mesh *m, uint32_t v, int turn_rule)
  * its two neighbours; at an end where it stops, that of the circle through
  * the end and the next two vertices, or the chord for a polyline of one
  * edge.  Returns 0 when an end is too close to the turn limit to tell. */
-static int ref_tangents(const silk_mesh *m, uint32_t e, int turn_rule, d3 *ta, d3 *tb)
+static int ref_tangents(const silk_mesh *m, uint32_t e, int turn_rule, dvec *ta, dvec *tb)
 {
     uint32_t a = m->edge[e].v[0], b = m->edge[e].v[1];
     int pa = passes(m, a, turn_rule), pb = passes(m, b, turn_rule);
     if (pa < 0 || pb < 0) return 0;
-    d3 p = vpos(m, a), q = vpos(m, b), chord = sub(q, p);
-    d3 prev = pa ? vpos(m, beyond(m, a, e)) : p, next = pb ? vpos(m, beyond(m, b, e)) : q;
+    dvec p = vpos(m, a), q = vpos(m, b), chord = dsub(q, p);
+    dvec prev = pa ? vpos(m, beyond(m, a, e)) : p, next = pb ? vpos(m, beyond(m, b, e)) : q;
     if (pa) *ta = circle_tangent(prev, p, q, p);
     else *ta = pb ? circle_tangent(p, q, next, p) : chord;
     if (pb) *tb = circle_tangent(p, q, next, q);
@@ -241,12 +152,12 @@ typedef struct feat_report {
 } feat_report;
 
 /* One stored segment against reference tangents ta, tb. */
-static void check_segment(const silk_mesh *m, uint32_t e, d3 ta, d3 tb, double ulp_bound, feat_report *r)
+static void check_segment(const silk_mesh *m, uint32_t e, dvec ta, dvec tb, double ulp_bound, feat_report *r)
 {
     const silk_feature_seg *s = &m->feature[m->edge_feature[e]];
-    d3 g0 = of_fx(s->t0), g1 = of_fx(s->t1);
-    double ea = angle_between(g0, ta) * len(ta) / ULP, eb = angle_between(g1, tb) * len(tb) / ULP;
-    double la = fabs(len(g0) - len(ta)) / ULP, lb = fabs(len(g1) - len(tb)) / ULP;
+    dvec g0 = dv(s->t0), g1 = dv(s->t1);
+    double ea = angle_between(g0, ta) * dlen(ta) / ULP, eb = angle_between(g1, tb) * dlen(tb) / ULP;
+    double la = fabs(dlen(g0) - dlen(ta)) / ULP, lb = fabs(dlen(g1) - dlen(tb)) / ULP;
     CHECKF(ea <= ulp_bound && eb <= ulp_bound, "edge %u (%u-%u) tangent directions off by %.2f %.2f ulp", e,
            m->edge[e].v[0], m->edge[e].v[1], ea, eb);
     CHECKF(la <= ulp_bound && lb <= ulp_bound, "edge %u tangent lengths off by %.2f %.2f ulp", e, la, lb);
@@ -270,11 +181,11 @@ static void check_features(const silk_mesh *m, double ulp_bound, feat_report *r)
         CHECKF(m->edge_feature[e] == nfe, "edge %u segment %u", e, m->edge_feature[e]);
         nfe++;
         const silk_feature_seg *s = &m->feature[m->edge_feature[e]];
-        d3 chord = sub(vpos(m, m->edge[e].v[1]), vpos(m, m->edge[e].v[0]));
+        dvec chord = dsub(vpos(m, m->edge[e].v[1]), vpos(m, m->edge[e].v[0]));
         /* eq. 4's clamp holds everywhere */
-        double lmax = 4 * len(chord) + 2 * ULP;
-        CHECKF(len(of_fx(s->t0)) <= lmax && len(of_fx(s->t1)) <= lmax, "edge %u tangents longer than 4 chords", e);
-        d3 ta, tb;
+        double lmax = 4 * dlen(chord) + 2 * ULP;
+        CHECKF(dlen(dv(s->t0)) <= lmax && dlen(dv(s->t1)) <= lmax, "edge %u tangents longer than 4 chords", e);
+        dvec ta, tb;
         if (!ref_tangents(m, e, 1, &ta, &tb)) {
             r->skipped++;
             continue;
@@ -291,15 +202,15 @@ static void check_features(const silk_mesh *m, double ulp_bound, feat_report *r)
  * carries up to about 0.87 ulp / its length). */
 static double meet_angle(const silk_mesh *m, uint32_t v, double *slack)
 {
-    d3 t[2];
+    dvec t[2];
     int n = 0;
     for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1] && n < 2; i++) {
         uint32_t e = m->vert_edge[i];
         if (!is_feature(m, e)) continue;
         const silk_feature_seg *s = &m->feature[m->edge_feature[e]];
-        t[n++] = m->edge[e].v[0] == v ? of_fx(s->t0) : scale(of_fx(s->t1), -1);
+        t[n++] = m->edge[e].v[0] == v ? dv(s->t0) : dscale(dv(s->t1), -1);
     }
-    *slack = ULP / len(t[0]) + ULP / len(t[1]);
+    *slack = ULP / dlen(t[0]) + ULP / dlen(t[1]);
     return angle_between(t[0], t[1]);
 }
 
@@ -320,25 +231,25 @@ static double check_g1(const silk_mesh *m, double tol)
 
 /* Largest distance of the feature segments of edges with both ends within
  * eps of the circle (centre c, unit normal n, radius rad) from that circle. */
-static double circle_deviation(const silk_mesh *m, d3 c, d3 n, double rad, uint32_t *nseg)
+static double circle_deviation(const silk_mesh *m, dvec c, dvec n, double rad, uint32_t *nseg)
 {
     double worst = 0;
     *nseg = 0;
     for (uint32_t e = 0; e < m->nedges; e++) {
         if (!is_feature(m, e)) continue;
-        d3 p0 = vpos(m, m->edge[e].v[0]), p1 = vpos(m, m->edge[e].v[1]);
+        dvec p0 = vpos(m, m->edge[e].v[0]), p1 = vpos(m, m->edge[e].v[1]);
         int on = 1;
         for (int k = 0; k < 2; k++) {
-            d3 d = sub(k ? p1 : p0, c);
-            double h = dot(d, n), r = len(sub(d, scale(n, h)));
+            dvec d = dsub(k ? p1 : p0, c);
+            double h = ddot(d, n), r = dlen(dsub(d, dscale(n, h)));
             on &= fabs(h) < 1e-3 && fabs(r - rad) < 1e-3 * rad;
         }
         if (!on) continue;
         (*nseg)++;
         const silk_feature_seg *s = &m->feature[m->edge_feature[e]];
         for (int i = 0; i <= 64; i++) {
-            d3 d = sub(hermite(p0, p1, of_fx(s->t0), of_fx(s->t1), i / 64.0), c);
-            double h = dot(d, n), r = len(sub(d, scale(n, h)));
+            dvec d = dsub(hermite(p0, p1, dv(s->t0), dv(s->t1), i / 64.0), c);
+            double h = ddot(d, n), r = dlen(dsub(d, dscale(n, h)));
             double dist = sqrt(h * h + (r - rad) * (r - rad));
             if (dist > worst) worst = dist;
         }
@@ -349,9 +260,9 @@ static double circle_deviation(const silk_mesh *m, d3 c, d3 n, double rad, uint3
 /* ---- circles ------------------------------------------------------------------------------- */
 
 /* Points of a circle, in the plane through c spanned by unit u and w. */
-static d3 on_circle(d3 c, d3 u, d3 w, double rad, double ang)
+static dvec on_circle(dvec c, dvec u, dvec w, double rad, double ang)
 {
-    return add(c, add(scale(u, rad * cos(ang)), scale(w, rad * sin(ang))));
+    return dadd(c, dadd(dscale(u, rad * cos(ang)), dscale(w, rad * sin(ang))));
 }
 
 /* How far the exact eq. 4 Hermite curve over an arc of phi radians strays
@@ -359,14 +270,14 @@ static d3 on_circle(d3 c, d3 u, d3 w, double rad, double ang)
  * method's, not the fixed point's. */
 static double ideal_arc_error(double rad, double phi)
 {
-    d3 p0 = dv(rad, 0, 0), p1 = dv(rad * cos(phi), rad * sin(phi), 0), chord = sub(p1, p0);
-    d3 t0 = arc_length_scaled(dv(0, 1, 0), chord), t1 = arc_length_scaled(dv(-sin(phi), cos(phi), 0), chord);
+    dvec p0 = dmk(rad, 0, 0), p1 = dmk(rad * cos(phi), rad * sin(phi), 0), chord = dsub(p1, p0);
+    dvec t0 = arc_length_scaled(dmk(0, 1, 0), chord), t1 = arc_length_scaled(dmk(-sin(phi), cos(phi), 0), chord);
     double worst = 0;
-    for (int i = 0; i <= 256; i++) worst = fmax(worst, fabs(len(hermite(p0, p1, t0, t1, i / 256.0)) - rad));
+    for (int i = 0; i <= 256; i++) worst = fmax(worst, fabs(dlen(hermite(p0, p1, t0, t1, i / 256.0)) - rad));
     return worst;
 }
 
-static void put(double *pos, uint32_t v, d3 p)
+static void put(double *pos, uint32_t v, dvec p)
 {
     pos[3 * v] = p.x;
     pos[3 * v + 1] = p.y;
@@ -389,11 +300,11 @@ TEST(closed_loop_on_a_circle)
 {
     /* a flat fan in a tilted plane; its boundary is one closed feature loop
      * through points at irregular angles on a circle */
-    d3 c = dv(0.3, -0.2, 0.5), u = dv(0.6, 0.8, 0), w = dv(0, 0, 1);
-    u = scale(u, 1 / len(u));
-    w = cross(u, dv(-0.48, 0.36, 0.8));
-    w = scale(w, 1 / len(w));
-    d3 n = cross(u, w);
+    dvec c = dmk(0.3, -0.2, 0.5), u = dmk(0.6, 0.8, 0), w = dmk(0, 0, 1);
+    u = dscale(u, 1 / dlen(u));
+    w = dcross(u, dmk(-0.48, 0.36, 0.8));
+    w = dscale(w, 1 / dlen(w));
+    dvec n = dcross(u, w);
     double rad = 2.5, ang[64];
     for (int round = 0; round < 3; round++) {
         double lo = round == 0 ? 8 : 4, hi = round == 0 ? 12 : (round == 1 ? 20 : 30);
@@ -405,9 +316,9 @@ TEST(closed_loop_on_a_circle)
             put(pos, i + 1, on_circle(c, u, w, rad, ang[i]));
             tri[3 * i] = 0, tri[3 * i + 1] = i + 1, tri[3 * i + 2] = i + 1 < k ? i + 2 : 1;
         }
-        fixture f;
-        fx_init(&f, ARENA_BYTES);
-        CHECK(fx_input(&f, pos, k + 1, tri, k) && fx_build(&f) == SILK_OK);
+        tm_fixture f;
+        tm_fixture_init(&f, ARENA_BYTES);
+        CHECK(tm_fixture_input(&f, pos, k + 1, tri, k) && tm_fixture_build(&f) == SILK_OK);
         CHECK(f.m.nfeature_edges == k && f.m.nboundary_edges == k);
         feat_report r;
         check_features(&f.m, 4, &r);
@@ -431,7 +342,7 @@ TEST(open_arc_with_junction_ends)
 {
     /* a flat sector and a wall hanging from its arc: the arc is a 90-degree
      * crease, an open polyline whose ends meet two boundary edges each */
-    d3 c = dv(-1, 2, 0.25), u = dv(1, 0, 0), w = dv(0, 1, 0), down = dv(0, 0, -0.7);
+    dvec c = dmk(-1, 2, 0.25), u = dmk(1, 0, 0), w = dmk(0, 1, 0), down = dmk(0, 0, -0.7);
     double rad = 1.75, ang[64];
     uint32_t k = irregular_angles(ang, 40, 2.2, 6, 22);
     uint32_t nv = 1 + 2 * k, nt = (k - 1) * 3;
@@ -439,9 +350,9 @@ TEST(open_arc_with_junction_ends)
     uint32_t *tri = malloc(sizeof(uint32_t) * 3 * nt), t = 0;
     put(pos, 0, c);
     for (uint32_t i = 0; i < k; i++) {
-        d3 p = on_circle(c, u, w, rad, ang[i]);
+        dvec p = on_circle(c, u, w, rad, ang[i]);
         put(pos, 1 + i, p);
-        put(pos, 1 + k + i, add(p, down));
+        put(pos, 1 + k + i, dadd(p, down));
     }
     for (uint32_t i = 1; i < k; i++) {
         uint32_t p0 = i, p1 = i + 1, q0 = k + i, q1 = k + i + 1;
@@ -449,9 +360,9 @@ TEST(open_arc_with_junction_ends)
         tri[3 * t] = p1, tri[3 * t + 1] = p0, tri[3 * t + 2] = q0, t++;
         tri[3 * t] = p1, tri[3 * t + 1] = q0, tri[3 * t + 2] = q1, t++;
     }
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
-    CHECK(fx_input(&f, pos, nv, tri, nt) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
+    CHECK(tm_fixture_input(&f, pos, nv, tri, nt) && tm_fixture_build(&f) == SILK_OK);
     uint32_t creases = 0;
     for (uint32_t e = 0; e < f.m.nedges; e++) creases += (f.m.edge[e].flags & SILK_EDGE_CREASE) != 0;
     CHECK(creases == k - 1);
@@ -459,7 +370,7 @@ TEST(open_arc_with_junction_ends)
     feat_report r;
     check_features(&f.m, 4, &r);
     uint32_t nseg;
-    double dev = circle_deviation(&f.m, c, dv(0, 0, 1), rad, &nseg);
+    double dev = circle_deviation(&f.m, c, dmk(0, 0, 1), rad, &nseg);
     double ideal = 0;
     for (uint32_t i = 0; i + 1 < k; i++) ideal = fmax(ideal, ideal_arc_error(rad, ang[i + 1] - ang[i]));
     double bound = ideal + 2 * ULP;
@@ -478,9 +389,9 @@ TEST(single_edge_stays_straight)
      * boundary turns 90 degrees at 1 and 3, so it is four more */
     static const double pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0.5, 0.5, 0.70710678 };
     static const uint32_t tri[] = { 0, 1, 2, 0, 2, 3 };
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 2) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 2) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nfeature_edges == 5);
     uint32_t e = f.m.tri_edge[2];
     CHECK(f.m.edge[e].flags & SILK_EDGE_CREASE);
@@ -497,14 +408,14 @@ TEST(single_edge_stays_straight)
 
 /* A random rotation (uniform enough for a test): three random unit axes,
  * made orthonormal. */
-static void random_frame(d3 *u, d3 *w, d3 *n)
+static void random_frame(dvec *u, dvec *w, dvec *n)
 {
-    d3 a = dv(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1));
-    d3 b = dv(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1));
-    *u = scale(a, 1 / len(a));
-    *n = cross(*u, b);
-    *n = scale(*n, 1 / len(*n));
-    *w = cross(*n, *u);
+    dvec a = dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1));
+    dvec b = dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1));
+    *u = dscale(a, 1 / dlen(a));
+    *n = dcross(*u, b);
+    *n = dscale(*n, 1 / dlen(*n));
+    *w = dcross(*n, *u);
 }
 
 /* Octagons turn by exactly SILK_FEATURE_TURN_DEG at every vertex, the one
@@ -530,23 +441,23 @@ TEST(octagon_stays_one_smooth_loop)
             L[6] = L[2] + (L[1] + L[3] - L[5] - L[7]) / sqrt(2);
             if (L[6] >= 1.5 && L[7] >= 1.5 && L[6] <= 2.5 && L[7] <= 2.5) break;
         }
-        d3 u, w, n, o = dv(check_uniform(-3, 3), check_uniform(-3, 3), check_uniform(-3, 3));
+        dvec u, w, n, o = dmk(check_uniform(-3, 3), check_uniform(-3, 3), check_uniform(-3, 3));
         random_frame(&u, &w, &n);
         double pos[3 * 9], x = 0, y = 0;
         uint32_t tri[3 * 8];
-        d3 centre = dv(0, 0, 0);
+        dvec centre = dmk(0, 0, 0);
         for (int k = 0; k < 8; k++) {
-            d3 p = add(o, add(scale(u, x), scale(w, y)));
+            dvec p = dadd(o, dadd(dscale(u, x), dscale(w, y)));
             put(pos, (uint32_t)k + 1, p);
-            centre = add(centre, scale(p, 1.0 / 8));
+            centre = dadd(centre, dscale(p, 1.0 / 8));
             x += L[k] * cos(k * PI / 4);
             y += L[k] * sin(k * PI / 4);
             tri[3 * k] = 0, tri[3 * k + 1] = (uint32_t)k + 1, tri[3 * k + 2] = k < 7 ? (uint32_t)k + 2 : 1;
         }
         put(pos, 0, centre);
-        fixture f;
-        fx_init(&f, 1 << 16);
-        CHECK(fx_input(&f, pos, 9, tri, 8) && fx_build(&f) == SILK_OK);
+        tm_fixture f;
+        tm_fixture_init(&f, 1 << 16);
+        CHECK(tm_fixture_input(&f, pos, 9, tri, 8) && tm_fixture_build(&f) == SILK_OK);
         CHECK(f.m.nfeature_edges == 8);
         /* the tangents of one closed loop: the circle through each vertex
          * and its two neighbours, at every vertex */
@@ -554,9 +465,9 @@ TEST(octagon_stays_one_smooth_loop)
         for (uint32_t e = 0; e < f.m.nedges; e++) {
             if (!is_feature(&f.m, e)) continue;
             uint32_t a = f.m.edge[e].v[0], b = f.m.edge[e].v[1];
-            d3 pa = vpos(&f.m, a), pb = vpos(&f.m, b), chord = sub(pb, pa);
-            d3 ta = circle_tangent(vpos(&f.m, beyond(&f.m, a, e)), pa, pb, pa);
-            d3 tb = circle_tangent(pa, pb, vpos(&f.m, beyond(&f.m, b, e)), pb);
+            dvec pa = vpos(&f.m, a), pb = vpos(&f.m, b), chord = dsub(pb, pa);
+            dvec ta = circle_tangent(vpos(&f.m, beyond(&f.m, a, e)), pa, pb, pa);
+            dvec tb = circle_tangent(pa, pb, vpos(&f.m, beyond(&f.m, b, e)), pb);
             check_segment(&f.m, e, arc_length_scaled(ta, chord), arc_length_scaled(tb, chord), 4, &r);
         }
         uint32_t bad = 0;
@@ -586,9 +497,9 @@ TEST(sharp_corner_breaks_the_polyline)
 {
     const double R = 2, d = 1.2, h = sqrt(R * R - d * d), half = atan2(h, d);
     for (int round = 0; round < 4; round++) {
-        d3 u, w, n, o = dv(check_uniform(-2, 2), check_uniform(-2, 2), check_uniform(-2, 2));
+        dvec u, w, n, o = dmk(check_uniform(-2, 2), check_uniform(-2, 2), check_uniform(-2, 2));
         random_frame(&u, &w, &n);
-        d3 ca = sub(o, scale(u, d)), cb = add(o, scale(u, d));
+        dvec ca = dsub(o, dscale(u, d)), cb = dadd(o, dscale(u, d));
         /* arc A (centre ca) from P = o - h w to Q = o + h w, then arc B back */
         double angA[32], angB[32];
         uint32_t na = irregular_angles(angA, 32, 2 * half, 8, 25), nb = irregular_angles(angB, 32, 2 * half, 8, 25);
@@ -600,9 +511,9 @@ TEST(sharp_corner_breaks_the_polyline)
         for (uint32_t i = 0; i < nb; i++) put(pos, 1 + na + i, on_circle(cb, u, w, R, PI - half + angB[i]));
         for (uint32_t i = 0; i < na + nb; i++)
             tri[3 * i] = 0, tri[3 * i + 1] = 1 + i, tri[3 * i + 2] = i + 1 < na + nb ? i + 2 : 1;
-        fixture f;
-        fx_init(&f, 1 << 20);
-        CHECK(fx_input(&f, pos, nv, tri, na + nb) && fx_build(&f) == SILK_OK);
+        tm_fixture f;
+        tm_fixture_init(&f, 1 << 20);
+        CHECK(tm_fixture_input(&f, pos, nv, tri, na + nb) && tm_fixture_build(&f) == SILK_OK);
         const silk_mesh *m = &f.m;
         CHECK(m->nfeature_edges == na + nb);
         feat_report r;
@@ -613,30 +524,30 @@ TEST(sharp_corner_breaks_the_polyline)
         for (int c = 0; c < 2; c++) {
             uint32_t v = corner[c];
             CHECKF(passes(m, v, 1) == 0 && turn_at(m, v) > 70, "corner %u turns by %.1f deg", v, turn_at(m, v));
-            d3 pv = vpos(m, v), leave[2];
+            dvec pv = vpos(m, v), leave[2];
             int k = 0;
             for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1]; i++) {
                 uint32_t e = m->vert_edge[i];
                 if (!is_feature(m, e) || k == 2) continue;
                 const silk_feature_seg *s = &m->feature[m->edge_feature[e]];
                 uint32_t other = m->edge[e].v[0] == v ? m->edge[e].v[1] : m->edge[e].v[0];
-                d3 t = m->edge[e].v[0] == v ? of_fx(s->t0) : scale(of_fx(s->t1), -1);
+                dvec t = m->edge[e].v[0] == v ? dv(s->t0) : dscale(dv(s->t1), -1);
                 /* the edge's own arc: the neighbour's circle; its tangent at
                  * the corner, pointing along the edge */
-                d3 cc = other <= na ? ca : cb, radius = sub(pv, cc), own = cross(n, radius);
-                if (dot(own, sub(vpos(m, other), pv)) < 0) own = scale(own, -1);
-                double err = angle_between(t, own) * len(t) / ULP;
+                dvec cc = other <= na ? ca : cb, radius = dsub(pv, cc), own = dcross(n, radius);
+                if (ddot(own, dsub(vpos(m, other), pv)) < 0) own = dscale(own, -1);
+                double err = angle_between(t, own) * dlen(t) / ULP;
                 CHECKF(err <= 4, "corner %u, edge %u: tangent %.2f ulp off its own arc", v, e, err);
                 worst_own = fmax(worst_own, err);
                 /* the old rule's tangent: circle through the corner's two
                  * neighbours, travelled from the other one to this edge's */
                 uint32_t across = beyond(m, v, e);
-                d3 old = circle_tangent(vpos(m, across), pv, vpos(m, other), pv);
+                dvec old = circle_tangent(vpos(m, across), pv, vpos(m, other), pv);
                 worst_old = fmax(worst_old, angle_between(old, own) * 180 / PI);
                 leave[k++] = t;
             }
             /* the arcs' own angle at the corner */
-            d3 ta = cross(n, sub(pv, ca)), tb = cross(n, sub(pv, cb));
+            dvec ta = dcross(n, dsub(pv, ca)), tb = dcross(n, dsub(pv, cb));
             double want = PI - angle_between(ta, tb), got = angle_between(leave[0], leave[1]);
             CHECKF(fabs(got - want) < 1e-3, "corner %u: segments leave at %.4f rad, the arcs at %.4f", v, got, want);
             worst_meet = fmax(worst_meet, fabs(got - want));
@@ -663,13 +574,13 @@ TEST(shared_meshes_vs_reference)
         "bunny-500", "dragon-500", "feline-500", "cow-500", "springer-500", "dragon-5k", "knot-480", "cat-500",
         "spot-500", "armadillo-500", "fish-500", "venus-500",
     };   /* not maxplanck-500: 400 units across, its tangents carry 100 times the rounding */
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     double worst_dir = 0, worst_len = 0, worst_g1 = 0;
     for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
-        fx_reset(&f);
-        CHECKF(read_obj(names[i], &f), "cannot read %s", names[i]);
-        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
+        tm_fixture_reset(&f);
+        CHECKF(tm_fixture_read_shared(&f, names[i]), "cannot read %s", names[i]);
+        if (tm_fixture_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
         feat_report r;
         check_features(&f.m, 4, &r);
         double g1 = check_g1(&f.m, 1e-3);
@@ -681,7 +592,7 @@ TEST(shared_meshes_vs_reference)
         worst_g1 = fmax(worst_g1, g1);
         if (!strcmp(names[i], "cone-70")) {
             uint32_t nseg;
-            double dev = circle_deviation(&f.m, dv(0, 0, 0), dv(0, 1, 0), 1, &nseg);
+            double dev = circle_deviation(&f.m, dmk(0, 0, 0), dmk(0, 1, 0), 1, &nseg);
             double ideal = ideal_arc_error(1, 2 * PI / 35);
             CHECKF(nseg == 35 && dev <= ideal + 2 * ULP, "cone rim: %u segments, off the circle by %.3g", nseg, dev);
             printf("  cone-70 rim: 35 segments, off the unit circle by %.2g (%.2f ulp)\n", dev, dev / ULP);
@@ -713,13 +624,13 @@ TEST(turn_angles_on_shared_meshes)
         "cow-500", "spot-500", "armadillo-500", "dragon-500", "fish-500", "venus-500", "feline-500",
         "maxplanck-500", "springer-500", "sphere-200", "torus-576",
     };
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     printf("  %-14s %5s %5s %5s %6s  turns (deg), largest first\n", "mesh", "two", ">45", "44-46", "kinked");
     for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
-        fx_reset(&f);
-        CHECKF(read_obj(names[i], &f), "cannot read %s", names[i]);
-        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
+        tm_fixture_reset(&f);
+        CHECKF(tm_fixture_read_shared(&f, names[i]), "cannot read %s", names[i]);
+        if (tm_fixture_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
         const silk_mesh *m = &f.m;
         double *turn = malloc(sizeof *turn * (m->nverts + 1));
         uint32_t n = 0, over = 0, near = 0, kinked = 0;
@@ -753,35 +664,35 @@ TEST(turn_angles_on_shared_meshes)
 
 /* Largest distance of the Hermite curve p0 t0 t1 p1 from the segment p0 p1,
  * over the chord's length. */
-static double seg_dist(d3 p, d3 a, d3 b)
+static double seg_dist(dvec p, dvec a, dvec b)
 {
-    d3 ab = sub(b, a);
-    double t = dot(sub(p, a), ab) / dot(ab, ab);
+    dvec ab = dsub(b, a);
+    double t = ddot(dsub(p, a), ab) / ddot(ab, ab);
     t = t < 0 ? 0 : (t > 1 ? 1 : t);
-    return len(sub(p, add(a, scale(ab, t))));
+    return dlen(dsub(p, dadd(a, dscale(ab, t))));
 }
-static double bulge(d3 p0, d3 p1, d3 t0, d3 t1)
+static double bulge(dvec p0, dvec p1, dvec t0, dvec t1)
 {
     double worst = 0;
     for (int i = 1; i < 64; i++) worst = fmax(worst, seg_dist(hermite(p0, p1, t0, t1, i / 64.0), p0, p1));
-    return worst / len(sub(p1, p0));
+    return worst / dlen(dsub(p1, p0));
 }
 
 /* A camera looking at the model's bounding-box centre from direction dir,
  * 3 bounding radii away. */
-static int view_from(const silk_mesh *m, d3 dir, silk_view *v)
+static int view_from(const silk_mesh *m, dvec dir, silk_view *v)
 {
-    d3 lo = of_fx(m->bbox_min), hi = of_fx(m->bbox_max), c = scale(add(lo, hi), 0.5);
-    double r = len(sub(hi, lo)) / 2;
-    d3 eye = add(c, scale(dir, 3 * r / len(dir)));
+    dvec lo = dv(m->bbox_min), hi = dv(m->bbox_max), c = dscale(dadd(lo, hi), 0.5);
+    double r = dlen(dsub(hi, lo)) / 2;
+    dvec eye = dadd(c, dscale(dir, 3 * r / dlen(dir)));
     silk_camera cam;
     memset(&cam, 0, sizeof cam);
-    cam.eye = silk_v3(to_fx(eye.x), to_fx(eye.y), to_fx(eye.z));
-    cam.target = silk_v3(to_fx(c.x), to_fx(c.y), to_fx(c.z));
-    cam.up = fabs(dir.y / len(dir)) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
+    cam.eye = silk_v3(d2fx(eye.x), d2fx(eye.y), d2fx(eye.z));
+    cam.target = silk_v3(d2fx(c.x), d2fx(c.y), d2fx(c.z));
+    cam.up = fabs(dir.y / dlen(dir)) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
     cam.fov_deg = SILK_FX_C(45, 1);
-    cam.znear = to_fx(r * 0.01);
-    cam.zfar = to_fx(r * 8);
+    cam.znear = d2fx(r * 0.01);
+    cam.zfar = d2fx(r * 8);
     cam.width = 256;
     cam.height = 256;
     silk_error err;
@@ -814,19 +725,19 @@ static uint32_t feature_edge_at(const silk_mesh *m, silk_vec3 p0, silk_vec3 p1)
 TEST(fandisk_feature_segments_near_their_chords)
 {
     const double limit = tan(TURN_DEG / 2 * PI / 180) / 2;
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
-    CHECK(read_obj("fandisk-128", &f));
-    if (fx_build(&f) != SILK_OK) { CHECKF(0, "fandisk-128: %s", f.err.msg); free(f.buf); return; }
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
+    CHECK(tm_fixture_read_shared(&f, "fandisk-128"));
+    if (tm_fixture_build(&f) != SILK_OK) { CHECKF(0, "fandisk-128: %s", f.err.msg); free(f.buf); return; }
     const silk_mesh *m = &f.m;
     double stored = 0, ref_new = 0, ref_old = 0, chord_min = 1e30;
     uint32_t over_old = 0, worst_e = 0;
     for (uint32_t e = 0; e < m->nedges; e++) {
         if (!is_feature(m, e)) continue;
         const silk_feature_seg *s = &m->feature[m->edge_feature[e]];
-        d3 p0 = vpos(m, m->edge[e].v[0]), p1 = vpos(m, m->edge[e].v[1]), ta, tb;
-        chord_min = fmin(chord_min, len(sub(p1, p0)));
-        double b = bulge(p0, p1, of_fx(s->t0), of_fx(s->t1));
+        dvec p0 = vpos(m, m->edge[e].v[0]), p1 = vpos(m, m->edge[e].v[1]), ta, tb;
+        chord_min = fmin(chord_min, dlen(dsub(p1, p0)));
+        double b = bulge(p0, p1, dv(s->t0), dv(s->t1));
         if (b > stored) stored = b, worst_e = e;
         if (ref_tangents(m, e, 1, &ta, &tb)) ref_new = fmax(ref_new, bulge(p0, p1, ta, tb));
         ref_tangents(m, e, 0, &ta, &tb);
@@ -844,7 +755,7 @@ TEST(fandisk_feature_segments_near_their_chords)
     uint32_t ncurves = 0, npoints = 0;
     for (int i = 0; i < 8; i++) {
         silk_view v;
-        if (!view_from(m, dv(dirs[i][0], dirs[i][1], dirs[i][2]), &v)) { CHECK(0); break; }
+        if (!view_from(m, dmk(dirs[i][0], dirs[i][1], dirs[i][2]), &v)) { CHECK(0); break; }
         silk_arena_mark mk = silk_arena_top_mark(&f.a);
         silk_frame_geom g;
         silk_frame_stats st;
@@ -861,11 +772,11 @@ TEST(fandisk_feature_segments_near_their_chords)
             if (feature_edge_at(m, cv->p0, cv->p1) == SILK_NO_INDEX) continue;
             on_feature[c] = 1;
             ncurves++;
-            d3 p0 = of_fx(cv->p0), p1 = of_fx(cv->p1);
+            dvec p0 = dv(cv->p0), p1 = dv(cv->p1);
             double worst = 0;
             for (int k = 1; k < 64; k++)   /* as the renderer evaluates it */
-                worst = fmax(worst, seg_dist(of_fx(silk_hermite_point(cv, SILK_FX_ONE * k / 64)), p0, p1));
-            drawn = fmax(drawn, worst / len(sub(p1, p0)));
+                worst = fmax(worst, seg_dist(dv(silk_hermite_point(cv, SILK_FX_ONE * k / 64)), p0, p1));
+            drawn = fmax(drawn, worst / dlen(dsub(p1, p0)));
         }
         silk_geom gg = { .mesh = m, .curves = g.curve, .offsets = g.offset };
         for (uint32_t r = 0; r < g.nvrec; r++) {
@@ -874,8 +785,8 @@ TEST(fandisk_feature_segments_near_their_chords)
             silk_vertex_attr at;
             silk_vrec_eval(&gg, rec, &at);
             const silk_curve *cv = &g.curve[rec->a];
-            d3 p0 = of_fx(cv->p0), p1 = of_fx(cv->p1);
-            sampled = fmax(sampled, seg_dist(of_fx(at.pos), p0, p1) / len(sub(p1, p0)));
+            dvec p0 = dv(cv->p0), p1 = dv(cv->p1);
+            sampled = fmax(sampled, seg_dist(dv(at.pos), p0, p1) / dlen(dsub(p1, p0)));
             npoints++;
         }
         free(on_feature);

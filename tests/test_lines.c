@@ -17,7 +17,9 @@
  * top rim: the rim's line follows the true circle within 1 px where it is
  * seen, is not drawn where the ball hides it, and the back half of the
  * bottom rim (behind the cylinder) is not drawn at all.  Band rendering
- * draws the same lines; a bad setting and a short arena fail cleanly.
+ * draws the same lines; a bad setting, outlines asked of PN or BLEND (whose
+ * patches are not outlined by the coarse edges) and a short arena fail
+ * cleanly, the last by drawing the frame and setting fell_back.
  */
 #include <math.h>
 #include <stdint.h>
@@ -560,10 +562,12 @@ TEST(feature_lines_hidden_where_hidden)
                         }
                     seen_off = fmax(seen_off, best);
                 }
+            char near[32];
+            snprintf(near, sizeof near, hidden_near > 3 ? "more than 3 px" : "%.2f px", hidden_near);
             printf("  cylinder %s %s: feature pixels within %.2f px of the rims; seen rim (%d points) within %.2f px of "
-                   "a line pixel; hidden rim (%d points, %d behind the side) %.2f px from the nearest\n",
+                   "a line pixel; hidden rim (%d points, %d behind the side) %s from the nearest feature pixel\n",
                    ortho ? "ortho" : "persp", poly ? "polygonal" : "smooth", seen_off, nseen, seen_gap, nhidden, nback,
-                   hidden_near);
+                   near);
             CHECK(nseen > 300 && nhidden > 300 && nback > 100 && nhidden > nback + 10);
             /* half a pixel, plus the sampling tolerance (0.5 px), plus the curve's own error */
             if (!poly) CHECKF(seen_off <= 1.25, "smooth rim line %.2f px off the circle", seen_off);
@@ -635,6 +639,21 @@ TEST(bad_setting_and_short_arena)
     memset(&err, 0, sizeof err);
     CHECK(silk_render(&sphere.arena, &sphere.mesh, &v, &hal, &o, &t, NULL, &err) == SILK_ERR_ARG);
     CHECKF(strstr(err.msg, "lines") != NULL, "message: %s", err.msg);
+    /* PN and BLEND: the coarse mesh's edges only when asked for by name */
+    for (int k = 0; k < 2; k++) {
+        o = opts(k ? SILK_MODE_BLEND : SILK_MODE_PN, SILK_LINES_OVER, 0);
+        memset(&err, 0, sizeof err);
+        CHECK(silk_render(&sphere.arena, &sphere.mesh, &v, &hal, &o, &t, NULL, &err) == SILK_ERR_ARG);
+        CHECKF(strstr(err.msg, "polygonal") != NULL, "message: %s", err.msg);
+        o.lines_polygonal = 1;
+        CHECK(silk_render(&sphere.arena, &sphere.mesh, &v, &hal, &o, &t, NULL, &err) == SILK_OK);
+        long n = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) n += pixel(color, x, y) == SIL_RGB;
+        /* the patches hide most of the coarse edges, but not all */
+        CHECKF(n > 10, "%s with polygonal lines: %ld line pixels", k ? "blend" : "pn", n);
+    }
+    o = opts(SILK_MODE_SMOOTH, SILK_LINES_OVER, 0);
 
     /* The frame's peak with and without lines; then an arena with room for
      * the frame but not for all of its lines. */

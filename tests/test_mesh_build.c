@@ -15,88 +15,10 @@
 
 #include "check.h"
 #include "silk/silk.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (48u << 20)
-
-static silk_fx to_fx(double d) { return (silk_fx)llround(d * 65536.0); }
-
-/* ---- building meshes ----------------------------------------------------------- */
-
-typedef struct fixture {
-    void *buf;
-    silk_arena a;
-    silk_mesh_input in;
-    silk_load_opts opts;
-    silk_mesh m;
-    silk_error err;
-} fixture;
-
-static void fx_init(fixture *f, size_t bytes)
-{
-    memset(f, 0, sizeof *f);
-    f->buf = malloc(bytes ? bytes : 1);
-    silk_arena_init(&f->a, f->buf, bytes);
-    silk_load_opts_default(&f->opts);
-}
-
-static void fx_free(fixture *f) { free(f->buf); }
-
-/* Positions and triangles into the arena (as a loader would put them). */
-static int fx_input(fixture *f, const double *pos, uint32_t nv, const uint32_t *tri, uint32_t nt)
-{
-    f->in.nverts = nv;
-    f->in.ntris = nt;
-    f->in.pos = silk_arena_array(&f->a, nv, sizeof(silk_vec3), SILK_MEM_MESH);
-    f->in.tri = silk_arena_array(&f->a, 3 * (size_t)nt, sizeof(silk_index), SILK_MEM_MESH);
-    if (!f->in.pos || !f->in.tri) return 0;
-    for (uint32_t v = 0; v < nv; v++)
-        f->in.pos[v] = silk_v3(to_fx(pos[3 * v]), to_fx(pos[3 * v + 1]), to_fx(pos[3 * v + 2]));
-    for (uint32_t c = 0; c < 3 * nt; c++) f->in.tri[c] = tri[c];
-    return 1;
-}
-
-static silk_status fx_build(fixture *f)
-{
-    return silk_mesh_build(&f->in, "test", &f->opts, &f->a, &f->m, &f->err);
-}
-
-/* Minimal reader for the shared meshes (SOURCES.md: only `v x y z` and
- * `f i j k` lines). */
-static int read_obj(const char *path, fixture *f)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return 0;
-    fseek(fp, 0, SEEK_END);
-    long len = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *text = malloc((size_t)len + 1);
-    size_t got = fread(text, 1, (size_t)len, fp);
-    fclose(fp);
-    text[got] = 0;
-    uint32_t nv = 0, nt = 0;
-    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
-        if (l[0] == 'v' && l[1] == ' ') nv++;
-        if (l[0] == 'f' && l[1] == ' ') nt++;
-    }
-    double *pos = malloc(3 * sizeof(double) * (nv ? nv : 1));
-    uint32_t *tri = malloc(3 * sizeof(uint32_t) * (nt ? nt : 1));
-    uint32_t iv = 0, it = 0;
-    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
-        char *p = l + 2;
-        if (l[0] == 'v' && l[1] == ' ') {
-            for (int k = 0; k < 3; k++) pos[3 * iv + k] = strtod(p, &p);
-            iv++;
-        } else if (l[0] == 'f' && l[1] == ' ') {
-            for (int k = 0; k < 3; k++) tri[3 * it + k] = (uint32_t)strtoul(p, &p, 10) - 1;
-            it++;
-        }
-    }
-    int ok = fx_input(f, pos, nv, tri, nt);
-    free(text);
-    free(pos);
-    free(tri);
-    return ok;
-}
 
 /* ---- the reference adjacency ----------------------------------------------------- */
 
@@ -236,32 +158,32 @@ static const uint32_t cube_tri[] = {
 
 TEST(closed_tetrahedron_and_cube)
 {
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, tet_pos, 4, tet_tri, 4) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, tet_pos, 4, tet_tri, 4) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nedges == 6 && f.m.nboundary_edges == 0 && f.m.nnonmanifold_edges == 0);
     CHECK((int)f.m.nverts - (int)f.m.nedges + (int)f.m.ntris == 2);
     check_adjacency(&f.m);
     for (uint32_t v = 0; v < 4; v++) CHECK(f.m.vert_edge_start[v + 1] - f.m.vert_edge_start[v] == 3);
-    fx_free(&f);
+    tm_fixture_free(&f);
 
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, cube_pos, 8, cube_tri, 12) && fx_build(&f) == SILK_OK);
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, cube_pos, 8, cube_tri, 12) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nedges == 18 && f.m.nboundary_edges == 0 && f.m.ndegenerate_tris == 0);
     CHECK((int)f.m.nverts - (int)f.m.nedges + (int)f.m.ntris == 2);
     check_adjacency(&f.m);
     /* with the bounding box of the unit cube */
     CHECK(f.m.bbox_min.x == 0 && f.m.bbox_max.z == SILK_FX_ONE);
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 TEST(open_square)
 {
     static const double pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
     static const uint32_t tri[] = { 0, 1, 2, 0, 2, 3 };
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 2) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 2) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nedges == 5 && f.m.nboundary_edges == 4);
     check_adjacency(&f.m);
     for (uint32_t e = 0; e < f.m.nedges; e++) {
@@ -270,7 +192,7 @@ TEST(open_square)
         CHECKF(diag ? (ed->t[0] == 0 && ed->t[1] == 1) : (ed->t[1] == SILK_NO_INDEX), "edge %u", e);
         CHECK(!diag == ((ed->flags & SILK_EDGE_BOUNDARY) != 0));
     }
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 TEST(nonmanifold_fan)
@@ -278,9 +200,9 @@ TEST(nonmanifold_fan)
     /* three triangles on the edge 0-1 */
     static const double pos[] = { 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0.2, 0.5, 0, 1 };
     static const uint32_t tri[] = { 0, 1, 2, 1, 0, 3, 0, 1, 4 };
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 5, tri, 3) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, pos, 5, tri, 3) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nedges == 7 && f.m.nnonmanifold_edges == 1 && f.m.nboundary_edges == 6);
     check_adjacency(&f.m);
     uint32_t e01 = f.m.tri_edge[0];
@@ -291,7 +213,7 @@ TEST(nonmanifold_fan)
     /* a non-manifold edge is a feature edge and separates the normals */
     CHECK(f.m.edge_feature[e01] != SILK_NO_INDEX);
     CHECK(f.m.tri_normal[0] != f.m.tri_normal[3 + 1] && f.m.tri_normal[0] != f.m.tri_normal[6]);
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 TEST(duplicate_triangles)
@@ -299,12 +221,12 @@ TEST(duplicate_triangles)
     uint32_t tri[15];
     memcpy(tri, tet_tri, sizeof tet_tri);
     memcpy(tri + 12, tet_tri, 3 * sizeof *tri);     /* face 0 twice */
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, tet_pos, 4, tri, 5) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, tet_pos, 4, tri, 5) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nedges == 6 && f.m.nnonmanifold_edges == 3);
     check_adjacency(&f.m);
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 TEST(degenerate_triangles)
@@ -313,9 +235,9 @@ TEST(degenerate_triangles)
      * a triangle repeating vertex 0, and the unused vertex 5 */
     static const double pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0.5, 0, 7, 7, 7 };
     static const uint32_t tri[] = { 0, 1, 2, 0, 2, 3, 1, 4, 2, 0, 0, 3 };
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 6, tri, 4) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, pos, 6, tri, 4) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.ndegenerate_tris == 2);
     check_adjacency(&f.m);
     /* the zero-length side 0-0 is an edge of its own, flagged, never a feature */
@@ -330,14 +252,14 @@ TEST(degenerate_triangles)
     /* the unused vertex: no edges, no normal, but it is in the bounding box */
     CHECK(f.m.vert_edge_start[6] == f.m.vert_edge_start[5]);
     for (uint32_t n = 0; n < f.m.nnormals; n++) CHECK(f.m.normal_vertex[n] != 5);
-    CHECK(f.m.bbox_max.x == to_fx(7));
+    CHECK(f.m.bbox_max.x == d2fx(7));
     /* vertex 4 has only the degenerate triangle: still a unit normal */
     for (uint32_t n = 0; n < f.m.nnormals; n++) {
         silk_vec3 u = f.m.normal[n];
         double l = sqrt((double)u.x * u.x + (double)u.y * u.y + (double)u.z * u.z) / 65536.0;
         CHECKF(fabs(l - 1) < 1e-4, "normal %u length %g", n, l);
     }
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 TEST(tiny_face_normal_keeps_direction)
@@ -346,9 +268,9 @@ TEST(tiny_face_normal_keeps_direction)
      * its direction exactly where a Q16.16 cross product would be zero */
     static const double pos[] = { 1, 1, 1, 1 + 3 / 65536.0, 1, 1 + 1 / 65536.0, 1, 1 + 2 / 65536.0, 1 };
     static const uint32_t tri[] = { 0, 1, 2 };
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 3, tri, 1) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, pos, 3, tri, 1) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.ndegenerate_tris == 0);
     silk_vec3 n = silk_mesh_face_normal(&f.m, 0);
     /* (3,0,1) x (0,2,0) = (-2, 0, 6) */
@@ -356,37 +278,37 @@ TEST(tiny_face_normal_keeps_direction)
     CHECKF(fabs(n.x / 65536.0 - ex) < 2.0 / 65536 && n.y == 0 && fabs(n.z / 65536.0 - ez) < 2.0 / 65536,
            "normal %d %d %d", n.x, n.y, n.z);
     CHECK(silk_mesh_face_normal(&f.m, 1).x == 0);   /* out of range: zero, no crash */
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 TEST(bad_input)
 {
-    fixture f;
+    tm_fixture f;
     static const uint32_t bad_tri[] = { 0, 1, 9 };
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, tet_pos, 4, bad_tri, 1));
-    CHECK(fx_build(&f) == SILK_ERR_ARG);
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, tet_pos, 4, bad_tri, 1));
+    CHECK(tm_fixture_build(&f) == SILK_ERR_ARG);
     CHECKF(strcmp(f.err.msg, "test: triangle 1 uses vertex 10 (4 vertices)") == 0, "%s", f.err.msg);
-    fx_free(&f);
+    tm_fixture_free(&f);
 
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, tet_pos, 4, tet_tri, 4));
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, tet_pos, 4, tet_tri, 4));
     f.in.pos[2].y = SILK_COORD_MAX + 1;
-    CHECK(fx_build(&f) == SILK_ERR_RANGE);
+    CHECK(tm_fixture_build(&f) == SILK_ERR_RANGE);
     CHECKF(strstr(f.err.msg, "vertex 3") != NULL, "%s", f.err.msg);
     f.in.pos[2].y = 0;
     f.in.ntris = 0;
-    CHECK(fx_build(&f) == SILK_ERR_EMPTY);
+    CHECK(tm_fixture_build(&f) == SILK_ERR_EMPTY);
     CHECKF(strcmp(f.err.msg, "test: no triangles") == 0, "%s", f.err.msg);
     f.in.ntris = 4;
     f.opts.crease_deg = SILK_FX_C(200, 1);
-    CHECK(fx_build(&f) == SILK_ERR_ARG);
+    CHECK(tm_fixture_build(&f) == SILK_ERR_ARG);
     CHECKF(strstr(f.err.msg, "crease angle 200") != NULL, "%s", f.err.msg);
     f.opts.crease_deg = SILK_FX_C(60, 1);
     CHECK(silk_mesh_build(NULL, "test", &f.opts, &f.a, &f.m, &f.err) == SILK_ERR_ARG);
     CHECK(silk_mesh_build(&f.in, "test", NULL, &f.a, &f.m, &f.err) == SILK_ERR_ARG);
     CHECK(silk_mesh_build(&f.in, "test", &f.opts, &f.a, &f.m, NULL) == SILK_OK);
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 /* Every arena size below what the build needs fails cleanly with NOMEM
@@ -394,16 +316,16 @@ TEST(bad_input)
  * gives the same mesh. */
 TEST(small_arenas)
 {
-    fixture big;
-    fx_init(&big, 1 << 16);
-    CHECK(fx_input(&big, cube_pos, 8, cube_tri, 12) && fx_build(&big) == SILK_OK);
+    tm_fixture big;
+    tm_fixture_init(&big, 1 << 16);
+    CHECK(tm_fixture_input(&big, cube_pos, 8, cube_tri, 12) && tm_fixture_build(&big) == SILK_OK);
     size_t need = big.a.peak;
     int ok_seen = 0, bad_msgs = 0;
     for (size_t size = 0; size <= need + 64; size += 8) {
-        fixture f;
-        fx_init(&f, size);
-        if (!fx_input(&f, cube_pos, 8, cube_tri, 12)) { fx_free(&f); continue; }
-        silk_status st = fx_build(&f);
+        tm_fixture f;
+        tm_fixture_init(&f, size);
+        if (!tm_fixture_input(&f, cube_pos, 8, cube_tri, 12)) { tm_fixture_free(&f); continue; }
+        silk_status st = tm_fixture_build(&f);
         if (st == SILK_OK) {
             ok_seen = 1;
             CHECK(f.m.nedges == 18 && f.m.nnormals == big.m.nnormals);
@@ -412,26 +334,26 @@ TEST(small_arenas)
             bad_msgs += strstr(f.err.msg, "out of arena memory") == NULL;
         }
         CHECK(f.a.top == 0);
-        fx_free(&f);
+        tm_fixture_free(&f);
     }
     CHECK(ok_seen && bad_msgs == 0);
     printf("  cube needs %lu arena bytes at the peak (bottom %lu)\n", (unsigned long)need,
            (unsigned long)big.a.bottom);
-    fx_free(&big);
+    tm_fixture_free(&big);
 }
 
 TEST(bytes_used_adds_up)
 {
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, cube_pos, 8, cube_tri, 12) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, cube_pos, 8, cube_tri, 12) && tm_fixture_build(&f) == SILK_OK);
     silk_mesh_bytes b;
     silk_mesh_bytes_used(&f.m, &b);
     /* positions and triangles come from this test, the rest from the build */
     CHECKF(b.total == f.a.bottom, "bytes_used %lu, arena bottom %lu", (unsigned long)b.total,
            (unsigned long)f.a.bottom);
     CHECK(b.positions == 8 * sizeof(silk_vec3) && b.features > 0);
-    fx_free(&f);
+    tm_fixture_free(&f);
 }
 
 /* ---- the shared meshes: counts from SOURCES.md and the Euler characteristic ----- */
@@ -445,8 +367,8 @@ TEST(shared_meshes_topology)
     if (!fp) return;
     char line[1024];
     int nmesh = 0, nclosed = 0;
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     while (fgets(line, sizeof line, fp)) {
         char name[128];
         unsigned tris, verts, bnd, nme, nmv, inc, deg, dup, g, cc;
@@ -456,8 +378,8 @@ TEST(shared_meshes_topology)
         snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
         silk_arena_init(&f.a, f.buf, ARENA_BYTES);
         memset(&f.in, 0, sizeof f.in);
-        CHECKF(read_obj(path, &f), "cannot read %s", path);
-        silk_status st = fx_build(&f);
+        CHECKF(tm_fixture_read_obj(&f, path), "cannot read %s", path);
+        silk_status st = tm_fixture_build(&f);
         CHECKF(st == SILK_OK, "%s: %s", name, f.err.msg);
         if (st != SILK_OK) continue;
         nmesh++;
@@ -483,7 +405,7 @@ TEST(shared_meshes_topology)
         }
     }
     fclose(fp);
-    fx_free(&f);
+    tm_fixture_free(&f);
     printf("  %d shared meshes, %d closed ones with V-E+F = 2-2g\n", nmesh, nclosed);
     CHECK(nmesh >= 30 && nclosed == nmesh);
 }

@@ -15,120 +15,27 @@
 
 #include "check.h"
 #include "silk/silk.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (48u << 20)
 #define PI 3.14159265358979323846
-
-static silk_fx to_fx(double d) { return (silk_fx)llround(d * 65536.0); }
-static double fx_d(silk_fx v) { return v / 65536.0; }
-
-typedef struct fixture {
-    void *buf;
-    silk_arena a;
-    silk_mesh_input in;
-    silk_load_opts opts;
-    silk_mesh m;
-    silk_error err;
-} fixture;
-
-static void fx_init(fixture *f, size_t bytes)
-{
-    memset(f, 0, sizeof *f);
-    f->buf = malloc(bytes);
-    silk_arena_init(&f->a, f->buf, bytes);
-    silk_load_opts_default(&f->opts);
-}
-
-static void fx_reset(fixture *f, size_t bytes)
-{
-    silk_arena_init(&f->a, f->buf, bytes);
-    memset(&f->in, 0, sizeof f->in);
-    memset(&f->m, 0, sizeof f->m);
-}
-
-static int fx_input(fixture *f, const double *pos, uint32_t nv, const uint32_t *tri, uint32_t nt)
-{
-    f->in.nverts = nv;
-    f->in.ntris = nt;
-    f->in.pos = silk_arena_array(&f->a, nv, sizeof(silk_vec3), SILK_MEM_MESH);
-    f->in.tri = silk_arena_array(&f->a, 3 * (size_t)nt, sizeof(silk_index), SILK_MEM_MESH);
-    if (!f->in.pos || !f->in.tri) return 0;
-    for (uint32_t v = 0; v < nv; v++)
-        f->in.pos[v] = silk_v3(to_fx(pos[3 * v]), to_fx(pos[3 * v + 1]), to_fx(pos[3 * v + 2]));
-    for (uint32_t c = 0; c < 3 * nt; c++) f->in.tri[c] = tri[c];
-    return 1;
-}
-
-static silk_status fx_build(fixture *f) { return silk_mesh_build(&f->in, "test", &f->opts, &f->a, &f->m, &f->err); }
-
-/* Minimal OBJ parser for the shared meshes and `silk gen` (only `v` and
- * `f` lines of triangles). */
-static int parse_obj(char *text, fixture *f)
-{
-    uint32_t nv = 0, nt = 0;
-    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
-        if (l[0] == 'v' && l[1] == ' ') nv++;
-        if (l[0] == 'f' && l[1] == ' ') nt++;
-    }
-    double *pos = malloc(3 * sizeof(double) * (nv ? nv : 1));
-    uint32_t *tri = malloc(3 * sizeof(uint32_t) * (nt ? nt : 1));
-    uint32_t iv = 0, it = 0;
-    for (char *l = text; *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : l + strlen(l)) {
-        char *p = l + 2;
-        if (l[0] == 'v' && l[1] == ' ') {
-            for (int k = 0; k < 3; k++) pos[3 * iv + k] = strtod(p, &p);
-            iv++;
-        } else if (l[0] == 'f' && l[1] == ' ') {
-            for (int k = 0; k < 3; k++) tri[3 * it + k] = (uint32_t)strtoul(p, &p, 10) - 1;
-            it++;
-        }
-    }
-    int ok = nv > 0 && nt > 0 && fx_input(f, pos, nv, tri, nt);
-    free(pos);
-    free(tri);
-    return ok;
-}
-
-static char *read_all(FILE *fp)
-{
-    size_t n = 0, cap = 1 << 16;
-    char *text = malloc(cap);
-    for (;;) {
-        n += fread(text + n, 1, cap - 1 - n, fp);
-        if (n < cap - 1) break;
-        text = realloc(text, cap *= 2);
-    }
-    text[n] = 0;
-    return text;
-}
-
-static int read_obj(const char *name, fixture *f)
-{
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s.obj", check_meshes_dir(), name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return 0;
-    char *text = read_all(fp);
-    fclose(fp);
-    int ok = parse_obj(text, f);
-    free(text);
-    return ok;
-}
 
 /* The silk program next to this test (BUILD/tests/test_normals ->
  * BUILD/silk), for `silk gen`. */
 static char silk_path[512] = "build/silk";
 
 /* Runs `silk gen ARGS -o -` and parses what it writes. */
-static int gen_obj(const char *args, fixture *f)
+static int gen_obj(const char *args, tm_fixture *f)
 {
     char cmd[1024];
     snprintf(cmd, sizeof cmd, "%s gen %s -o -", silk_path, args);
     FILE *fp = popen(cmd, "r");
     if (!fp) return 0;
-    char *text = read_all(fp);
+    size_t len;
+    char *text = tm_read_stream(fp, &len);
     int rc = pclose(fp);
-    int ok = rc == 0 && parse_obj(text, f);
+    int ok = rc == 0 && text && tm_fixture_parse_obj(text, f);
     free(text);
     return ok;
 }
@@ -137,9 +44,9 @@ static int gen_obj(const char *args, fixture *f)
 
 static void posd(const silk_mesh *m, uint32_t v, double p[3])
 {
-    p[0] = fx_d(m->pos[v].x);
-    p[1] = fx_d(m->pos[v].y);
-    p[2] = fx_d(m->pos[v].z);
+    p[0] = fx2d(m->pos[v].x);
+    p[1] = fx2d(m->pos[v].y);
+    p[2] = fx2d(m->pos[v].z);
 }
 
 static void cross3(const double a[3], const double b[3], double c[3])
@@ -148,7 +55,6 @@ static void cross3(const double a[3], const double b[3], double c[3])
     c[1] = a[2] * b[0] - a[0] * b[2];
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 static double len3(const double a[3]) { return sqrt(dot3(a, a)); }
 
 /* Unit face normal (zero for zero area) and the angle at each corner. */
@@ -333,7 +239,7 @@ static void check_normals(const silk_mesh *m, double crease_deg, double margin_d
         if (l < 1e-9) continue;
         r->checked++;
         silk_vec3 n = m->normal[m->tri_normal[c]];
-        double got[3] = { fx_d(n.x), fx_d(n.y), fx_d(n.z) };
+        double got[3] = { fx2d(n.x), fx2d(n.y), fx2d(n.z) };
         /* Rounded face normals and angles, summed exactly, normalised once:
          * about 1 ulp, growing with the cancellation in the sum (kappa). */
         double kappa = wsum[c] / l;
@@ -365,9 +271,9 @@ static const uint32_t cube_tri[] = {
 
 TEST(cube_split_normals)
 {
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, cube_pos, 8, cube_tri, 12) && fx_build(&f) == SILK_OK);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, cube_pos, 8, cube_tri, 12) && tm_fixture_build(&f) == SILK_OK);
     const silk_mesh *m = &f.m;
     CHECK(m->nnormals == 24);
     uint32_t per_vertex[8] = { 0 };
@@ -385,7 +291,7 @@ TEST(cube_split_normals)
     CHECK(m->tri_normal[0] == m->tri_normal[3]);
     CHECK(m->nfeature_edges == 12);   /* the cube's edges, not its diagonals */
     normal_report r;
-    check_normals(m, fx_d(f.opts.crease_deg), 1e-3, &r);
+    check_normals(m, fx2d(f.opts.crease_deg), 1e-3, &r);
     CHECK(r.max_err_ulp == 0);
     free(f.buf);
 }
@@ -396,15 +302,15 @@ TEST(crease_threshold)
     double s = sin(50 * PI / 180), c = cos(50 * PI / 180);
     double pos[] = { 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -c, -s };
     static const uint32_t tri[] = { 0, 1, 2, 1, 0, 3 };
-    fixture f;
-    fx_init(&f, 1 << 16);
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
     f.opts.crease_deg = SILK_FX_C(40, 1);
-    CHECK(fx_input(&f, pos, 4, tri, 2) && fx_build(&f) == SILK_OK);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 2) && tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.edge[f.m.tri_edge[0]].flags & SILK_EDGE_CREASE);
     CHECK(f.m.nnormals == 6);
-    fx_reset(&f, 1 << 16);
+    tm_fixture_reset(&f);
     f.opts.crease_deg = SILK_FX_C(60, 1);
-    CHECK(fx_input(&f, pos, 4, tri, 2) && fx_build(&f) == SILK_OK);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 2) && tm_fixture_build(&f) == SILK_OK);
     CHECK(!(f.m.edge[f.m.tri_edge[0]].flags & SILK_EDGE_CREASE));
     CHECK(f.m.nnormals == 4);   /* the hinge vertices have one normal: the bisector */
     CHECK(f.m.normal[f.m.tri_normal[0]].x == 0);   /* the bisector of the two faces */
@@ -419,21 +325,21 @@ TEST(smoothing_groups)
     /* a flat square whose two triangles are in different smoothing groups */
     static const double pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
     static const uint32_t tri[] = { 0, 1, 2, 0, 2, 3 };
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 2));
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 2));
     uint32_t groups[2] = { 1, 2 };
     f.in.tri_group = groups;
-    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(tm_fixture_build(&f) == SILK_OK);
     uint32_t diag = f.m.tri_edge[2];   /* side 2-0 of triangle 0 */
     CHECK(f.m.edge[diag].flags & SILK_EDGE_GROUPS);
     CHECK(!(f.m.edge[diag].flags & SILK_EDGE_CREASE));
     CHECK(f.m.nnormals == 6 && f.m.nfeature_edges == 5);
-    fx_reset(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 2));
+    tm_fixture_reset(&f);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 2));
     groups[1] = 1;
     f.in.tri_group = groups;
-    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nnormals == 4 && f.m.nfeature_edges == 4);
     free(f.buf);
 }
@@ -442,18 +348,18 @@ TEST(file_normals)
 {
     static const double pos[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
     static const uint32_t tri[] = { 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2 };
-    fixture f;
-    fx_init(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 4));
+    tm_fixture f;
+    tm_fixture_init(&f, 1 << 16);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 4));
     /* one file normal per vertex, not unit length, and one zero normal */
-    silk_vec3 fn[4] = { { 0, 0, 0 }, { to_fx(3), 0, 0 }, { 0, to_fx(0.5), 0 }, { to_fx(1), to_fx(1), to_fx(1) } };
+    silk_vec3 fn[4] = { { 0, 0, 0 }, { d2fx(3), 0, 0 }, { 0, d2fx(0.5), 0 }, { d2fx(1), d2fx(1), d2fx(1) } };
     silk_index tfn[12];
     for (int c = 0; c < 12; c++) tfn[c] = tri[c];
     f.in.file_normal = fn;
     f.in.tri_file_normal = tfn;
     f.in.nfile_normals = 4;
     f.opts.normals = SILK_NORMALS_FILE;
-    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nnormals == 4);
     CHECK(f.m.normal[f.m.tri_normal[1]].y == SILK_FX_ONE);   /* vertex 2: (0,0.5,0) normalised */
     CHECK(f.m.normal[f.m.tri_normal[2]].x == SILK_FX_ONE);
@@ -464,39 +370,39 @@ TEST(file_normals)
     CHECK(f.m.nfeature_edges == 6);   /* features are still found: every edge is sharp */
 
     /* per-corner file normals: three normals at each vertex */
-    fx_reset(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 4));
+    tm_fixture_reset(&f);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 4));
     silk_vec3 fn12[12];
     for (int c = 0; c < 12; c++) {
-        fn12[c] = silk_v3(0, 0, to_fx(c + 1));
+        fn12[c] = silk_v3(0, 0, d2fx(c + 1));
         tfn[c] = (silk_index)c;
     }
     f.in.file_normal = fn12;
     f.in.tri_file_normal = tfn;
     f.in.nfile_normals = 12;
-    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nnormals == 12 && f.m.normal[5].z == SILK_FX_ONE);
 
     /* a corner without a file normal: computed normals instead */
-    fx_reset(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 4));
+    tm_fixture_reset(&f);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 4));
     tfn[7] = SILK_NO_INDEX;
     f.in.file_normal = fn12;
     f.in.tri_file_normal = tfn;
     f.in.nfile_normals = 12;
-    CHECK(fx_build(&f) == SILK_OK);
+    CHECK(tm_fixture_build(&f) == SILK_OK);
     CHECK(f.m.nnormals == 12 && f.m.normal[5].z != SILK_FX_ONE);
     normal_report r;
-    check_normals(&f.m, fx_d(f.opts.crease_deg), 1e-3, &r);
+    check_normals(&f.m, fx2d(f.opts.crease_deg), 1e-3, &r);
 
     /* a file normal index out of range is an error, not a crash */
-    fx_reset(&f, 1 << 16);
-    CHECK(fx_input(&f, pos, 4, tri, 4));
+    tm_fixture_reset(&f);
+    CHECK(tm_fixture_input(&f, pos, 4, tri, 4));
     tfn[7] = 12;
     f.in.file_normal = fn12;
     f.in.tri_file_normal = tfn;
     f.in.nfile_normals = 12;
-    CHECK(fx_build(&f) == SILK_ERR_ARG);
+    CHECK(tm_fixture_build(&f) == SILK_ERR_ARG);
     free(f.buf);
 }
 
@@ -513,18 +419,18 @@ static const char *const all_meshes[] = {
 
 TEST(shared_meshes_normals_vs_reference)
 {
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     double worst = 0, worst_kappa = 0;
     const char *worst_name = "";
     for (size_t i = 0; i < sizeof all_meshes / sizeof *all_meshes; i++) {
-        fx_reset(&f, ARENA_BYTES);
-        CHECKF(read_obj(all_meshes[i], &f), "cannot read %s", all_meshes[i]);
-        silk_status st = fx_build(&f);
+        tm_fixture_reset(&f);
+        CHECKF(tm_fixture_read_shared(&f, all_meshes[i]), "cannot read %s", all_meshes[i]);
+        silk_status st = tm_fixture_build(&f);
         CHECKF(st == SILK_OK, "%s: %s", all_meshes[i], f.err.msg);
         if (st != SILK_OK) continue;
         normal_report r;
-        check_normals(&f.m, fx_d(f.opts.crease_deg), 1e-3, &r);
+        check_normals(&f.m, fx2d(f.opts.crease_deg), 1e-3, &r);
         printf("  %-15s %6u normals  worst %.2f ulp (kappa %.2f)\n", all_meshes[i], f.m.nnormals, r.max_err_ulp,
                r.max_err_kappa);
         if (r.max_err_ulp > worst) worst = r.max_err_ulp, worst_kappa = r.max_err_kappa, worst_name = all_meshes[i];
@@ -557,9 +463,9 @@ TEST(crease_default_on_shared_meshes)
         "wingnut-500", "pawn-304", "fandisk-128", "cone-70",
     };
     static const double th[] = { 30, 45, 60, 70, 80, 90 };
-    double deflt = fx_d(SILK_DEFAULT_CREASE_DEG);
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    double deflt = fx2d(SILK_DEFAULT_CREASE_DEG);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     printf("  default crease angle %.1f degrees\n", deflt);
     printf("  %-14s %5s  %-28s  crease edges at (deg)          default\n", "mesh", "edges",
            "dihedral histogram 0..180/20");
@@ -567,9 +473,9 @@ TEST(crease_default_on_shared_meshes)
            th[4], th[5]);
     uint32_t organic = 0, organic_edges = 0;
     for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
-        fx_reset(&f, ARENA_BYTES);
-        CHECKF(read_obj(names[i], &f), "cannot read %s", names[i]);
-        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
+        tm_fixture_reset(&f);
+        CHECKF(tm_fixture_read_shared(&f, names[i]), "cannot read %s", names[i]);
+        if (tm_fixture_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
         const silk_mesh *m = &f.m;
         uint32_t hist[9] = { 0 }, above[6] = { 0 }, creases = 0;
         for (uint32_t e = 0; e < m->nedges; e++) {
@@ -615,9 +521,9 @@ TEST(crease_default_on_shared_meshes)
             /* the real creases: coarse edges lying (ends and middle within 1%
              * of the model size) along sharp edges (> 45 deg) of fandisk-fine */
             silk_mesh coarse = *m;
-            fixture g;
-            fx_init(&g, ARENA_BYTES);
-            CHECK(read_obj("fandisk-fine", &g) && fx_build(&g) == SILK_OK);
+            tm_fixture g;
+            tm_fixture_init(&g, ARENA_BYTES);
+            CHECK(tm_fixture_read_shared(&g, "fandisk-fine") && tm_fixture_build(&g) == SILK_OK);
             seg *sharp = malloc(sizeof *sharp * g.m.nedges);
             uint32_t nsharp = 0;
             for (uint32_t e = 0; e < g.m.nedges; e++)
@@ -687,8 +593,8 @@ static uint32_t check_split_vertex(const silk_mesh *m, uint32_t v, double *worst
         double dn[3], ang[3], err = 0, ferr = 0;
         ref_face(m, t, dn, ang);
         for (int i = 0; i < 3; i++) {
-            ferr = fmax(ferr, fabs(fx_d((&got.x)[i]) - fx_d((&fn.x)[i])) * 65536);
-            err = fmax(err, fabs(fx_d((&got.x)[i]) - dn[i]) * 65536);
+            ferr = fmax(ferr, fabs(fx2d((&got.x)[i]) - fx2d((&fn.x)[i])) * 65536);
+            err = fmax(err, fabs(fx2d((&got.x)[i]) - dn[i]) * 65536);
         }
         CHECKF(ferr <= 1 && err <= 1.5, "vertex %u corner %u: normal %.2f ulp from the core's face normal, %.2f from "
                "the exact one", v, c, ferr, err);
@@ -742,12 +648,12 @@ static double vertex_apex_angle(const silk_mesh *m, uint32_t v)
 TEST(apex_split_cone_and_spike)
 {
     static const char *const names[] = { "cone-70", "armadillo-500" };
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     for (int i = 0; i < 2; i++) {
-        fx_reset(&f, ARENA_BYTES);
-        CHECKF(read_obj(names[i], &f), "cannot read %s", names[i]);
-        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
+        tm_fixture_reset(&f);
+        CHECKF(tm_fixture_read_shared(&f, names[i]), "cannot read %s", names[i]);
+        if (tm_fixture_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", names[i], f.err.msg); continue; }
         const silk_mesh *m = &f.m;
         uint32_t vs[4], n = split_vertices(m, vs, 4);
         CHECKF(n == 1, "%s: %u vertices split", names[i], n);
@@ -758,8 +664,8 @@ TEST(apex_split_cone_and_spike)
         uint32_t corners = check_split_vertex(m, vs[0], &worst);
         CHECKF(corners >= 3 && apex > APEX_DEG, "%s: vertex %u, %u corners, %.2f deg", names[i], vs[0], corners, apex);
         printf("  %-14s vertex %u at (%.3f %.3f %.3f): %u corners, group normal %.2f deg from the nearest face; "
-               "split, normals within %.2f ulp of the faces'\n", names[i], vs[0], fx_d(m->pos[vs[0]].x),
-               fx_d(m->pos[vs[0]].y), fx_d(m->pos[vs[0]].z), corners, apex, worst);
+               "split, normals within %.2f ulp of the faces'\n", names[i], vs[0], fx2d(m->pos[vs[0]].x),
+               fx2d(m->pos[vs[0]].y), fx2d(m->pos[vs[0]].z), corners, apex, worst);
     }
     free(f.buf);
 }
@@ -778,12 +684,12 @@ TEST(apex_split_gen_cone)
         { "cone --segments 64 --height 1.15", 0 },
         { "cone --height 1", 0 },
     };
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
-        fx_reset(&f, ARENA_BYTES);
+        tm_fixture_reset(&f);
         if (!gen_obj(cases[i].args, &f)) { CHECKF(0, "`%s gen %s` failed (make tests builds it)", silk_path, cases[i].args); continue; }
-        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", cases[i].args, f.err.msg); continue; }
+        if (tm_fixture_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", cases[i].args, f.err.msg); continue; }
         const silk_mesh *m = &f.m;
         uint32_t apex = 0;
         for (uint32_t v = 1; v < m->nverts; v++)
@@ -840,9 +746,9 @@ TEST(apex_split_threshold_any_axis)
             tri[3 * nt] = 0, tri[3 * nt + 1] = p0, tri[3 * nt + 2] = p1, nt++;
             tri[3 * nt] = 1, tri[3 * nt + 1] = p1, tri[3 * nt + 2] = p0, nt++;
         }
-        fixture f;
-        fx_init(&f, 1 << 18);
-        CHECK(fx_input(&f, pos, 2 + (uint32_t)sides, tri, nt) && fx_build(&f) == SILK_OK);
+        tm_fixture f;
+        tm_fixture_init(&f, 1 << 18);
+        CHECK(tm_fixture_input(&f, pos, 2 + (uint32_t)sides, tri, nt) && tm_fixture_build(&f) == SILK_OK);
         double angle = vertex_apex_angle(&f.m, 0);
         CHECKF(fabs(angle - want) < 0.01, "pyramid %d: apex angle %.3f, built for %.0f", round, angle, want);
         uint32_t vs[2], n = split_vertices(&f.m, vs, 2);
@@ -855,7 +761,7 @@ TEST(apex_split_threshold_any_axis)
             whole++;
         }
         normal_report rep;
-        check_normals(&f.m, fx_d(f.opts.crease_deg), 1e-3, &rep);
+        check_normals(&f.m, fx2d(f.opts.crease_deg), 1e-3, &rep);
         free(f.buf);
     }
     printf("  24 pyramids, 5..11 sides, random axes: %u split at 51 deg, %u whole at 49; split normals within %.2f ulp "
@@ -869,14 +775,14 @@ TEST(apex_split_threshold_any_axis)
 TEST(apex_angles_on_shared_meshes)
 {
     static const double th[] = { 40, 45, 50, 55 };
-    fixture f;
-    fx_init(&f, ARENA_BYTES);
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
     printf("  %-15s %5s %5s %5s %5s  %7s  %5s\n", "mesh", ">40", ">45", ">50", ">55", "largest", "split");
     uint32_t coarse_split = 0;
     for (size_t i = 0; i < sizeof all_meshes / sizeof *all_meshes; i++) {
-        fx_reset(&f, ARENA_BYTES);
-        CHECKF(read_obj(all_meshes[i], &f), "cannot read %s", all_meshes[i]);
-        if (fx_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", all_meshes[i], f.err.msg); continue; }
+        tm_fixture_reset(&f);
+        CHECKF(tm_fixture_read_shared(&f, all_meshes[i]), "cannot read %s", all_meshes[i]);
+        if (tm_fixture_build(&f) != SILK_OK) { CHECKF(0, "%s: %s", all_meshes[i], f.err.msg); continue; }
         const silk_mesh *m = &f.m;
         uint32_t nc = 3 * m->ntris, above[4] = { 0 };
         uint32_t *p = malloc(sizeof *p * (nc + 1));

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "check.h"
 #include "silk/silk.h"
+#include "support/testmesh.h"
 
 static unsigned char arena_buf[4 << 20];
 static silk_arena arena;
@@ -430,28 +431,13 @@ TEST(truncation_and_corruption)
 
 /* ---- the reference meshes -------------------------------------------------- */
 
-static char *read_file(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);   /* terminated: the test also reads it as text */
-    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) { free(buf); buf = NULL; }
-    if (buf) buf[n] = '\0';
-    fclose(f);
-    *len = (size_t)n;
-    return buf;
-}
-
 TEST(shared_meshes)
 {
     /* Every row of the table in SOURCES.md: | file | tris | verts | bnd | nm-e | ... */
     char path[512];
     size_t slen;
     snprintf(path, sizeof path, "%s/SOURCES.md", check_meshes_dir());
-    char *sources = read_file(path, &slen);
+    char *sources = tm_read_file(path, &slen);
     CHECKF(sources != NULL, "cannot read %s", path);
     if (!sources) return;
     size_t big = 16u << 20;
@@ -466,7 +452,7 @@ TEST(shared_meshes)
             strstr(file, ".obj")) {
             size_t len;
             snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), file);
-            char *data = read_file(path, &len);
+            char *data = tm_read_file(path, &len);
             CHECKF(data != NULL, "cannot read %s", path);
             if (data) {
                 silk_arena_init(&arena, mem, big);
@@ -497,7 +483,7 @@ TEST(shared_mesh_values)
     char path[512];
     size_t len;
     snprintf(path, sizeof path, "%s/cone-70.obj", check_meshes_dir());
-    char *data = read_file(path, &len);
+    char *data = tm_read_file(path, &len);
     CHECK(data != NULL);
     if (!data) return;
     silk_arena_init(&arena, arena_buf, sizeof arena_buf);

@@ -12,78 +12,18 @@
 #include "check.h"
 #include "silk/silk.h"
 #include "../src/silhouette.h"
+#include "support/testframe.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (32u << 20)
 static unsigned char *arena_buf;
 
-static double fx2d(silk_fx v) { return v / 65536.0; }
-static silk_fx d2fx(double v) { return (silk_fx)llround(v * 65536.0); }
-
 static int load_shared(silk_arena *a, const char *name, silk_mesh *m)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) { fprintf(stderr, "cannot read %s\n", path); return 0; }
-    fseek(fp, 0, SEEK_END);
-    long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *t = malloc((size_t)n + 1);
-    size_t got = fread(t, 1, (size_t)n, fp);
-    fclose(fp);
     silk_arena_init(a, arena_buf, ARENA_BYTES);
-    silk_load_opts o;
-    silk_load_opts_default(&o);
-    silk_error err;
-    silk_status st = silk_load_obj(t, got, name, &o, a, m, &err);
-    free(t);
-    if (st != SILK_OK) { fprintf(stderr, "%s\n", err.msg); return 0; }
-    return 1;
+    return tm_load_shared(a, name, m);
 }
-
-static int make_view(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v)
-{
-    double c[3], r = 0;
-    for (int i = 0; i < 3; i++) {
-        double lo = fx2d((&m->bbox_min.x)[i]), hi = fx2d((&m->bbox_max.x)[i]);
-        c[i] = (lo + hi) / 2;
-        r += (hi - lo) * (hi - lo) / 4;
-    }
-    r = sqrt(r);
-    double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    silk_camera cam;
-    memset(&cam, 0, sizeof cam);
-    cam.eye = silk_v3(d2fx(c[0] + dir[0] / len * dist * r), d2fx(c[1] + dir[1] / len * dist * r),
-                      d2fx(c[2] + dir[2] / len * dist * r));
-    cam.target = silk_v3(d2fx(c[0]), d2fx(c[1]), d2fx(c[2]));
-    cam.up = fabs(dir[1] / len) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
-    cam.ortho = ortho;
-    cam.fov_deg = SILK_FX_C(45, 1);
-    cam.ortho_half_height = d2fx(r * 1.2);
-    cam.znear = d2fx(r * 0.01);
-    cam.zfar = d2fx(r * (dist + 4));
-    cam.width = 512;
-    cam.height = 512;
-    silk_error err;
-    return silk_view_init(v, &cam, &err) == SILK_OK;
-}
-
-static int run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_sil_frame *f,
-                     silk_frame_geom *g, silk_frame_stats *st)
-{
-    memset(f, 0, sizeof *f);
-    memset(g, 0, sizeof *g);
-    memset(st, 0, sizeof *st);
-    f->a = a; f->m = m; f->v = v; f->tol = SILK_FX_HALF; f->vis = SILK_VIS_BRUTE;
-    if (silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK) return 0;
-    if (!silk_perturb_alloc(f) || !silk_remesh_alloc(f, g)) return 0;
-    silk_perturb(f);
-    silk_remesh_emit(f, g, st);
-    return 1;
-}
-
-static void vec3d(silk_vec3 v, double o[3]) { o[0] = fx2d(v.x); o[1] = fx2d(v.y); o[2] = fx2d(v.z); }
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* Is v a neighbouring vertex of triangle t (a corner, or one edge from one)? */
 static int is_near(const silk_mesh *m, uint32_t t, uint32_t v)
@@ -218,12 +158,12 @@ static void perturb_views(const char *name, int nviews, pstats *ps)
         double ang = i * 2 * 3.14159265358979 / nviews;
         double d[3] = { cos(ang), 0.15 + 0.5 * (i % 3), sin(ang) };
         silk_view v;
-        if (!make_view(&m, d, 2 + (i % 4), i & 1, &v)) { CHECK(0); return; }
+        if (!tf_view_around(&m, d, 2 + (i % 4), i & 1, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
         check_view(&m, &f, &g, ps);
         CHECK(st.moved_vertices == g.noffset);
         silk_arena_top_release(&a, &mk);
@@ -308,7 +248,7 @@ TEST(moves_down_to_the_plane)
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
         check_view(&m, &f, &g, &ps);
         for (uint32_t vtx = 0; vtx < m.nverts; vtx++) {
             uint32_t sl = f.vert_offset ? f.vert_offset[vtx] : SILK_SIL_NONE;

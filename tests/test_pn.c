@@ -17,54 +17,20 @@
 #include "check.h"
 #include "silk/silk.h"
 #include "../src/patch.h"
+#include "support/testframe.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (16u << 20)
 #define ULP (1.0 / 65536.0)
 static unsigned char *arena_buf;
 
-static double d(silk_fx v) { return v / 65536.0; }
-static silk_fx fx(double v) { return (silk_fx)llround(v * 65536.0); }
-
-/* ---- double vectors ---------------------------------------------------------- */
-
-typedef struct dvec { double x, y, z; } dvec;
-static dvec dv(silk_vec3 a) { dvec r = { d(a.x), d(a.y), d(a.z) }; return r; }
-static dvec dmk(double x, double y, double z) { dvec r = { x, y, z }; return r; }
-static dvec dadd(dvec a, dvec b) { return dmk(a.x + b.x, a.y + b.y, a.z + b.z); }
-static dvec dsub(dvec a, dvec b) { return dmk(a.x - b.x, a.y - b.y, a.z - b.z); }
-static dvec dscale(dvec a, double s) { return dmk(a.x * s, a.y * s, a.z * s); }
-static double ddot(dvec a, dvec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static dvec dcross(dvec a, dvec b)
-{
-    return dmk(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static double dlen(dvec a) { return sqrt(ddot(a, a)); }
-static dvec dnorm(dvec a) { double l = dlen(a); return l > 0 ? dscale(a, 1 / l) : a; }
-/* largest component difference */
-static double ddist(dvec a, silk_vec3 b)
-{
-    double e = fabs(a.x - d(b.x));
-    if (fabs(a.y - d(b.y)) > e) e = fabs(a.y - d(b.y));
-    if (fabs(a.z - d(b.z)) > e) e = fabs(a.z - d(b.z));
-    return e;
-}
-static silk_vec3 tofx(dvec a) { return silk_v3(fx(a.x), fx(a.y), fx(a.z)); }
-
-static dvec rand_unit(void)
-{
-    for (;;) {
-        dvec v = dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1));
-        double l = dlen(v);
-        if (l > 0.1 && l <= 1) return dscale(v, 1 / l);
-    }
-}
 static silk_vec3 rand_normal_fx(void)
 {
     silk_vec3 n;
     silk_v3_normalize(tofx(rand_unit()), &n);
     return n;
 }
-static int v3_eq(silk_vec3 a, silk_vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 /* ---- the double reference ------------------------------------------------------ */
 
@@ -102,8 +68,8 @@ static void ref_patch(const silk_mesh *m, uint32_t t, const double *alpha, int l
     for (int k = 0; k < 3; k++) {
         P[k] = p->b[k] = dv(m->pos[m->tri[3 * t + k]]);
         N[k] = p->n[k] = dv(m->normal[m->tri_normal[3 * t + k]]);
-        p->uv[k][0] = m->uv ? d(m->uv[m->tri_uv[3 * t + k]].x) : 0;
-        p->uv[k][1] = m->uv ? d(m->uv[m->tri_uv[3 * t + k]].y) : 0;
+        p->uv[k][0] = m->uv ? fx2d(m->uv[m->tri_uv[3 * t + k]].x) : 0;
+        p->uv[k][1] = m->uv ? fx2d(m->uv[m->tri_uv[3 * t + k]].y) : 0;
     }
     for (int k = 0; k < 3; k++) {
         int k1 = (k + 1) % 3;
@@ -150,24 +116,8 @@ static dvec ref_normal(const dpatch *p, double u, double v, double w)
 
 static int load_shared(silk_arena *a, const char *name, silk_mesh *m)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) { fprintf(stderr, "cannot read %s\n", path); return 0; }
-    fseek(fp, 0, SEEK_END);
-    long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *t = malloc((size_t)n + 1);
-    size_t got = fread(t, 1, (size_t)n, fp);
-    fclose(fp);
     silk_arena_init(a, arena_buf, ARENA_BYTES);
-    silk_load_opts o;
-    silk_load_opts_default(&o);
-    silk_error err;
-    silk_status st = silk_load_obj(t, got, name, &o, a, m, &err);
-    free(t);
-    if (st != SILK_OK) { fprintf(stderr, "%s\n", err.msg); return 0; }
-    return 1;
+    return tm_load_shared(a, name, m);
 }
 
 /* A mesh of nt triangles over nv random-ish vertices, with one file normal
@@ -192,8 +142,8 @@ static int build_mesh(silk_arena *a, const dvec *pos, uint32_t nv, const uint32_
         in.tri[c] = tri[c];
         in.file_normal[c] = corner_n[c];
         in.tri_file_normal[c] = in.tri_uv[c] = c;
-        in.uv[c].x = fx(check_uniform(-4, 4));
-        in.uv[c].y = fx(check_uniform(-4, 4));
+        in.uv[c].x = d2fx(check_uniform(-4, 4));
+        in.uv[c].y = d2fx(check_uniform(-4, 4));
     }
     silk_load_opts o;
     silk_load_opts_default(&o);
@@ -220,76 +170,6 @@ static int random_quad(silk_arena *a, double scale, double spread, silk_mesh *m)
         for (int k = 0; k < 3; k++) n[3 * t + k] = tofx(dnorm(dadd(fn, dscale(rand_unit(), spread))));
     }
     return build_mesh(a, p, 4, tri, 2, n, m);
-}
-
-/* ---- crack check ---------------------------------------------------------------- */
-
-typedef struct dedge { int32_t k[6]; } dedge;
-
-static int cmp_dedge(const void *pa, const void *pb)
-{
-    const dedge *a = pa, *b = pb;
-    for (int i = 0; i < 6; i++)
-        if (a->k[i] != b->k[i]) return a->k[i] < b->k[i] ? -1 : 1;
-    return 0;
-}
-
-/* Evaluates every record as the vertex stage would, and checks that every
- * directed edge of every output triangle occurs once and its reverse once:
- * a closed surface with no crack and no T-junction.  Returns the number of
- * edges that fail (and the number checked in *checked). */
-static uint32_t crack_check(const silk_mesh *m, const silk_frame_geom *g, uint32_t *checked)
-{
-    silk_geom geom = { .mesh = m, .curves = g->curve, .offsets = g->offset, .patches = g->patch };
-    silk_vec3 *pos = malloc(sizeof *pos * (g->nvrec ? g->nvrec : 1));
-    dedge *e = malloc(sizeof *e * 3 * (g->ntri ? g->ntri : 1));
-    for (uint32_t i = 0; i < g->nvrec; i++) {
-        silk_vertex_attr at;
-        silk_vrec_eval(&geom, &g->vrec[i], &at);
-        pos[i] = at.pos;
-    }
-    uint32_t n = 0, bad = 0;
-    for (uint32_t t = 0; t < g->ntri; t++)
-        for (int k = 0; k < 3; k++) {
-            silk_vec3 a = pos[g->tri[3 * t + k]], b = pos[g->tri[3 * t + (k + 1) % 3]];
-            dedge x = { { a.x, a.y, a.z, b.x, b.y, b.z } };
-            if (v3_eq(a, b)) bad++;
-            e[n++] = x;
-        }
-    qsort(e, n, sizeof *e, cmp_dedge);
-    for (uint32_t i = 0; i < n; i++) {
-        if ((i > 0 && cmp_dedge(&e[i - 1], &e[i]) == 0) || (i + 1 < n && cmp_dedge(&e[i + 1], &e[i]) == 0)) {
-            bad++;
-            continue;
-        }
-        dedge r = { { e[i].k[3], e[i].k[4], e[i].k[5], e[i].k[0], e[i].k[1], e[i].k[2] } };
-        if (!bsearch(&r, e, n, sizeof *e, cmp_dedge)) bad++;
-    }
-    free(pos);
-    free(e);
-    *checked = n;
-    return bad;
-}
-
-/* Records at the same position must carry the same normal where the mesh
- * has one normal per vertex (no split normals): smooth shading across the
- * patches, bit for bit.  Returns the number of positions where they differ. */
-static uint32_t normal_seams(const silk_mesh *m, const silk_frame_geom *g)
-{
-    silk_geom geom = { .mesh = m, .curves = g->curve, .offsets = g->offset, .patches = g->patch };
-    dedge *pn = malloc(sizeof *pn * (g->nvrec ? g->nvrec : 1));
-    for (uint32_t i = 0; i < g->nvrec; i++) {
-        silk_vertex_attr at;
-        silk_vrec_eval(&geom, &g->vrec[i], &at);
-        dedge x = { { at.pos.x, at.pos.y, at.pos.z, at.normal.x, at.normal.y, at.normal.z } };
-        pn[i] = x;
-    }
-    qsort(pn, g->nvrec, sizeof *pn, cmp_dedge);
-    uint32_t seams = 0;
-    for (uint32_t i = 1; i < g->nvrec; i++)
-        if (memcmp(pn[i].k, pn[i - 1].k, 3 * sizeof(int32_t)) == 0 && cmp_dedge(&pn[i], &pn[i - 1]) != 0) seams++;
-    free(pn);
-    return seams;
 }
 
 /* ---- tests ------------------------------------------------------------------------ */
@@ -411,8 +291,8 @@ TEST(tessellation_on_double_patch)
             double ep = ddist(ref_point(&r[rec->a], u, v, w), at.pos) / ULP;
             double en = ddist(ref_normal(&r[rec->a], u, v, w), at.normal);
             const dpatch *rp = &r[rec->a];
-            double eu = fmax(fabs(u * rp->uv[0][0] + v * rp->uv[1][0] + w * rp->uv[2][0] - d(at.uv.x)),
-                             fabs(u * rp->uv[0][1] + v * rp->uv[1][1] + w * rp->uv[2][1] - d(at.uv.y))) / ULP;
+            double eu = fmax(fabs(u * rp->uv[0][0] + v * rp->uv[1][0] + w * rp->uv[2][0] - fx2d(at.uv.x)),
+                             fabs(u * rp->uv[0][1] + v * rp->uv[1][1] + w * rp->uv[2][1] - fx2d(at.uv.y))) / ULP;
             if (ep > worst_p) worst_p = ep;
             if (en > worst_n) worst_n = en;
             if (eu > worst_uv) worst_uv = eu;
@@ -571,7 +451,7 @@ TEST(sphere_closer_than_facets)
             flat_err = fmax(flat_err, fabs(dlen(mid) - R));
         }
     uint32_t checked;
-    CHECK(crack_check(&m, &g, &checked) == 0);
+    CHECK(tf_crack_check(&m, &g, &checked) == 0);
     printf("# UV sphere (r 3, %u triangles): PN level 4 off the sphere by %.5f, facet edge midpoints by %.5f\n",
            m.ntris, pn_err, flat_err);
     CHECKF(pn_err < flat_err / 5, "PN %g vs facets %g", pn_err, flat_err);
@@ -607,11 +487,11 @@ TEST(crack_free_shared_meshes)
                 silk_frame_stats st;
                 silk_error err;
                 CHECK(silk_frame_pn(&a, &m, levels[l], q ? SILK_PN_LINEAR : SILK_PN_QUADRATIC, &g, &st, &err) == SILK_OK);
-                uint32_t checked, bad = crack_check(&m, &g, &checked);
+                uint32_t checked, bad = tf_crack_check(&m, &g, &checked);
                 CHECKF(bad == 0 && checked == 3 * m.ntris * levels[l] * levels[l], "%s level %u: %u of %u edges unpaired",
                        names[f], levels[l], bad, checked);
                 if (f != 1) {
-                    uint32_t seams = normal_seams(&m, &g);
+                    uint32_t seams = tf_normal_seams(&m, &g);
                     CHECKF(seams == 0, "%s level %u: %u normal seams", names[f], levels[l], seams);
                 }
                 silk_arena_top_release(&a, &mk);
@@ -629,8 +509,8 @@ static void make_view(const silk_mesh *m, dvec dir, double dist, int w, int h, s
     cam.target = tofx(c);
     cam.up = fabs(dnorm(dir).y) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
     cam.fov_deg = SILK_FX_C(40, 1);
-    cam.znear = fx(r * 0.05);
-    cam.zfar = fx(r * (dist + 4));
+    cam.znear = d2fx(r * 0.05);
+    cam.zfar = d2fx(r * (dist + 4));
     cam.width = w;
     cam.height = h;
     silk_error err;

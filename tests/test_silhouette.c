@@ -13,60 +13,17 @@
 #include "silk/silk.h"
 #include "../src/silhouette.h"
 #include "../src/curve.h"
+#include "support/testframe.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (32u << 20)
 static unsigned char *arena_buf;
 
-static double fx2d(silk_fx v) { return v / 65536.0; }
-static silk_fx d2fx(double v) { return (silk_fx)llround(v * 65536.0); }
-
 static int load_shared(silk_arena *a, const char *name, silk_mesh *m)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) { fprintf(stderr, "cannot read %s\n", path); return 0; }
-    fseek(fp, 0, SEEK_END);
-    long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *t = malloc((size_t)n + 1);
-    size_t got = fread(t, 1, (size_t)n, fp);
-    fclose(fp);
     silk_arena_init(a, arena_buf, ARENA_BYTES);
-    silk_load_opts o;
-    silk_load_opts_default(&o);
-    silk_error err;
-    silk_status st = silk_load_obj(t, got, name, &o, a, m, &err);
-    free(t);
-    if (st != SILK_OK) { fprintf(stderr, "%s\n", err.msg); return 0; }
-    return 1;
-}
-
-static int make_view(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v)
-{
-    double c[3], r = 0;
-    for (int i = 0; i < 3; i++) {
-        double lo = fx2d((&m->bbox_min.x)[i]), hi = fx2d((&m->bbox_max.x)[i]);
-        c[i] = (lo + hi) / 2;
-        r += (hi - lo) * (hi - lo) / 4;
-    }
-    r = sqrt(r);
-    double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    silk_camera cam;
-    memset(&cam, 0, sizeof cam);
-    cam.eye = silk_v3(d2fx(c[0] + dir[0] / len * dist * r), d2fx(c[1] + dir[1] / len * dist * r),
-                      d2fx(c[2] + dir[2] / len * dist * r));
-    cam.target = silk_v3(d2fx(c[0]), d2fx(c[1]), d2fx(c[2]));
-    cam.up = fabs(dir[1] / len) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
-    cam.ortho = ortho;
-    cam.fov_deg = SILK_FX_C(45, 1);
-    cam.ortho_half_height = d2fx(r * 1.2);
-    cam.znear = d2fx(r * 0.01);
-    cam.zfar = d2fx(r * (dist + 4));
-    cam.width = 512;
-    cam.height = 512;
-    silk_error err;
-    return silk_view_init(v, &cam, &err) == SILK_OK;
+    return tm_load_shared(a, name, m);
 }
 
 static void random_dir(double d[3])
@@ -77,25 +34,6 @@ static void random_dir(double d[3])
         l = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     } while (l < 0.01 || l > 1);
 }
-
-/* The stages exactly as silk_frame_smooth runs them when memory suffices,
- * keeping the internal frame for inspection. */
-static int run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol,
-                     silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *st)
-{
-    memset(f, 0, sizeof *f);
-    memset(g, 0, sizeof *g);
-    memset(st, 0, sizeof *st);
-    f->a = a; f->m = m; f->v = v; f->tol = tol; f->vis = SILK_VIS_BRUTE;
-    if (silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK) return 0;
-    if (!silk_perturb_alloc(f) || !silk_remesh_alloc(f, g)) return 0;
-    silk_perturb(f);
-    silk_remesh_emit(f, g, st);
-    return 1;
-}
-
-static void vec3d(silk_vec3 v, double o[3]) { o[0] = fx2d(v.x); o[1] = fx2d(v.y); o[2] = fx2d(v.z); }
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* View direction towards the eye, in double, from the same camera. */
 static void to_eye_d(const silk_view *v, silk_vec3 p, double d[3])
@@ -164,12 +102,12 @@ static void silhouette_triangles(const char *name, int nviews)
         double d[3];
         random_dir(d);
         silk_view v;
-        if (!make_view(&m, d, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!tf_view_around(&m, d, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
         uint32_t count = 0;
         for (uint32_t t = 0; t < m.ntris; t++) {
             int vis[3];
@@ -215,12 +153,12 @@ static void bridges_vs_reference(const char *name, int nviews)
         double dir[3];
         random_dir(dir);
         silk_view v;
-        if (!make_view(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!tf_view_around(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
         for (uint32_t w = 0; w < f.nedges; w++) {
             const silk_sil_edge *e = &f.edges[w];
             const silk_edge *me = &m.edge[e->edge];
@@ -302,12 +240,12 @@ static void shared_points(const char *name, int nviews, int want_split)
         double dir[3];
         random_dir(dir);
         silk_view v;
-        if (!make_view(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!tf_view_around(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
         silk_geom gg = { .mesh = &m, .curves = g.curve, .offsets = g.offset };
         for (uint32_t w = 0; w < f.nedges; w++) {
             const silk_sil_edge *e = &f.edges[w];
@@ -362,12 +300,12 @@ static void sample_counts(const char *name, int nviews, silk_fx tol)
         double dir[3];
         random_dir(dir);
         silk_view v;
-        if (!make_view(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!tf_view_around(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, tol, &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, tol, &f, &g, &st)) { CHECK(0); return; }
         for (uint32_t s = 0; s < f.nsegs + f.nedges; s++) {
             const silk_curve *c;
             silk_curve wc;
@@ -433,7 +371,7 @@ TEST(sample_counts_monotone)
     if (!load_shared(&a, "sphere-200.obj", &m)) { CHECK(0); return; }
     double dir[3] = { 0.3, 0.4, 1 };
     silk_view v;
-    if (!make_view(&m, dir, 3, 0, &v)) { CHECK(0); return; }
+    if (!tf_view_around(&m, dir, 3, 0, &v)) { CHECK(0); return; }
     uint32_t prev = 0;
     int mono = 1;
     static const silk_fx tols[] = { SILK_FX_C(4, 1), SILK_FX_C(2, 1), SILK_FX_ONE, SILK_FX_HALF, SILK_FX_C(1, 4) };
@@ -442,7 +380,7 @@ TEST(sample_counts_monotone)
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, tols[i], &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, tols[i], &f, &g, &st)) { CHECK(0); return; }
         if (st.samples < prev) mono = 0;
         printf("  tolerance %.2f px: %u samples, %u triangles\n", fx2d(tols[i]), st.samples, g.ntri);
         prev = st.samples;
@@ -499,12 +437,12 @@ TEST(uvs_interpolate_linearly_across_seams)
         double dir[3];
         random_dir(dir);
         silk_view v;
-        if (!make_view(&m, dir, 2 + i % 3, i & 1, &v)) { CHECK(0); return; }
+        if (!tf_view_around(&m, dir, 2 + i % 3, i & 1, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
         silk_frame_stats st;
-        if (!run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
+        if (!tf_run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
         silk_geom gg = { .mesh = &m, .curves = g.curve, .offsets = g.offset };
         for (uint32_t w = 0; w < f.nedges; w++) {
             const silk_sil_edge *e = &f.edges[w];

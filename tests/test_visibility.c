@@ -10,14 +10,13 @@
 #include <string.h>
 #include "silk/silk.h"
 #include "check.h"
+#include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define PI 3.14159265358979323846
 #define ARENA_BYTES ((size_t)96 << 20)
 static unsigned char *arena_buf;
 static int san_scale = 1;              /* views are divided by this under sanitizers */
-
-static silk_fx fx(double d) { return (silk_fx)llround(d * 65536.0); }
-static double dbl(silk_fx f) { return f / 65536.0; }
 
 /* Exact: every product is below 2^49 and the sums below 2^51, so double
  * holds them without rounding. */
@@ -94,8 +93,8 @@ static void check_mesh_views(const silk_mesh *m, silk_arena *a, int nviews, cons
 {
     uint8_t *vb = malloc(m->nnormals + 1), *vg = malloc(m->nnormals + 1), *va = malloc(m->nnormals + 1);
     tally tp = { 0 }, tq = { 0 };
-    double lo[3] = { dbl(m->bbox_min.x), dbl(m->bbox_min.y), dbl(m->bbox_min.z) };
-    double hi[3] = { dbl(m->bbox_max.x), dbl(m->bbox_max.y), dbl(m->bbox_max.z) };
+    double lo[3] = { fx2d(m->bbox_min.x), fx2d(m->bbox_min.y), fx2d(m->bbox_min.z) };
+    double hi[3] = { fx2d(m->bbox_max.x), fx2d(m->bbox_max.y), fx2d(m->bbox_max.z) };
     double mid[3], size = 0;
     for (int k = 0; k < 3; k++) {
         mid[k] = (lo[k] + hi[k]) / 2;
@@ -110,14 +109,14 @@ static void check_mesh_views(const silk_mesh *m, silk_arena *a, int nviews, cons
         silk_vec3 eye;
         if (kind <= 2) {            /* around the model, 1.2 .. 8 radii */
             double dist = size * check_uniform(1.2, 8);
-            eye = silk_v3(fx(mid[0] + d[0] * dist), fx(mid[1] + d[1] * dist), fx(mid[2] + d[2] * dist));
+            eye = silk_v3(d2fx(mid[0] + d[0] * dist), d2fx(mid[1] + d[1] * dist), d2fx(mid[2] + d[2] * dist));
         } else if (kind == 3) {     /* inside the bounding box */
-            eye = silk_v3(fx(check_uniform(lo[0], hi[0])), fx(check_uniform(lo[1], hi[1])),
-                          fx(check_uniform(lo[2], hi[2])));
+            eye = silk_v3(d2fx(check_uniform(lo[0], hi[0])), d2fx(check_uniform(lo[1], hi[1])),
+                          d2fx(check_uniform(lo[2], hi[2])));
         } else if (kind == 4) {     /* far away, up to the edge of the range */
             double dist = check_uniform(100, 30000);
-            eye = silk_v3(fx(fmax(-32767, fmin(32767, d[0] * dist))), fx(fmax(-32767, fmin(32767, d[1] * dist))),
-                          fx(fmax(-32767, fmin(32767, d[2] * dist))));
+            eye = silk_v3(d2fx(fmax(-32767, fmin(32767, d[0] * dist))), d2fx(fmax(-32767, fmin(32767, d[1] * dist))),
+                          d2fx(fmax(-32767, fmin(32767, d[2] * dist))));
         } else {                    /* on the tangent plane of a random normal: N.(E-V) == 0 */
             uint32_t i = (uint32_t)(check_rand64() % m->nnormals);
             silk_vec3 n = m->normal[i], p = m->pos[m->normal_vertex[i]];
@@ -135,7 +134,7 @@ static void check_mesh_views(const silk_mesh *m, silk_arena *a, int nviews, cons
          * perpendicular to a normal */
         silk_vec3 f;
         if (kind <= 3) {
-            f = silk_v3(fx(d[0]), fx(d[1]), fx(d[2]));
+            f = silk_v3(d2fx(d[0]), d2fx(d[1]), d2fx(d[2]));
         } else if (kind == 4) {
             int ax = (int)(check_rand64() % 3);
             silk_fx s = (check_rand64() & 1) ? 65536 : -65536;
@@ -221,25 +220,12 @@ static void check_build(silk_mesh *m, silk_arena *a, const char *name)
     free(before.v);
 }
 
-static int read_file(const char *path, char **data, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return 0;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    *data = malloc((size_t)n + 1);
-    *len = fread(*data, 1, (size_t)n, f);
-    fclose(f);
-    return *len == (size_t)n;
-}
-
 static int load_shared(const char *file, silk_arena *a, silk_mesh *m)
 {
     char path[512], *data;
     size_t len;
     snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), file);
-    if (!read_file(path, &data, &len)) {
+    if (!(data = tm_read_file(path, &len))) {
         CHECKF(0, "cannot read %s", path);
         return 0;
     }
@@ -289,7 +275,7 @@ static int gen_bumpy_torus(silk_arena *a, silk_mesh *m, uint32_t nu, uint32_t nv
             double u = 2 * PI * i / nu, w = 2 * PI * j / nv;
             double r = 0.4 * (1 + 0.25 * sin(5 * u) * sin(3 * w));
             double x = (1.5 + r * cos(w)) * cos(u), y = (1.5 + r * cos(w)) * sin(u), z = r * sin(w);
-            in.pos[i * nv + j] = silk_v3(fx(x + 0.3), fx(y - 0.2), fx(z + 0.1));
+            in.pos[i * nv + j] = silk_v3(d2fx(x + 0.3), d2fx(y - 0.2), d2fx(z + 0.1));
         }
     uint32_t t = 0;
     for (uint32_t i = 0; i < nu; i++)
@@ -329,12 +315,12 @@ TEST(brute_exact_at_the_range_limits)
     silk_vec3 pos[NV], nrm[NN];
     silk_index nvx[NN];
     for (int i = 0; i < NV; i++)
-        pos[i] = silk_v3(fx(check_uniform(-1024, 1024)), fx(check_uniform(-1024, 1024)), fx(check_uniform(-1024, 1024)));
+        pos[i] = silk_v3(d2fx(check_uniform(-1024, 1024)), d2fx(check_uniform(-1024, 1024)), d2fx(check_uniform(-1024, 1024)));
     for (int i = 0; i < NN; i++) {
         double d[3];
         random_unit(d);
         double l = i % 4 == 0 ? 0 : check_uniform(0, 1);
-        nrm[i] = silk_v3(fx(d[0] * l), fx(d[1] * l), fx(d[2] * l));
+        nrm[i] = silk_v3(d2fx(d[0] * l), d2fx(d[1] * l), d2fx(d[2] * l));
         nvx[i] = (silk_index)(check_rand64() % NV);
     }
     silk_mesh m;
@@ -363,7 +349,6 @@ static void sph(double lat_deg, double lon_deg, double p[3])
     double la = lat_deg * PI / 180, lo = lon_deg * PI / 180;
     p[0] = cos(la) * cos(lo); p[1] = cos(la) * sin(lo); p[2] = sin(la);
 }
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* Cell of level 3, latitude 22.5..45, longitude 0..45.  The plane through
  * the great circle of its two lower corners, tilted a little towards the
@@ -394,7 +379,7 @@ TEST(bulging_cell_is_not_decided_by_its_corners)
     silk_vec3 c;
     silk_fx r;
     CHECK(silk_vis_cell_ball(level, ilat, ilon, &c, &r));
-    double cd[3] = { dbl(c.x), dbl(c.y), dbl(c.z) }, rd = dbl(r), worst = 0;
+    double cd[3] = { fx2d(c.x), fx2d(c.y), fx2d(c.z) }, rd = fx2d(r), worst = 0;
     for (int i = 0; i <= 60; i++)
         for (int j = 0; j <= 60; j++) {
             double p[3];
@@ -418,9 +403,9 @@ TEST(bulging_cell_is_not_decided_by_its_corners)
                     for (int t = 0; t <= 12; t++) {
                         double p[3];
                         sph(a0 + (a1 - a0) * s / 12, o0 + (o1 - o0) * t / 12, p);
-                        double e = sqrt((p[0] - dbl(c.x)) * (p[0] - dbl(c.x)) + (p[1] - dbl(c.y)) * (p[1] - dbl(c.y)) +
-                                        (p[2] - dbl(c.z)) * (p[2] - dbl(c.z)));
-                        if (e / dbl(r) > worst_ratio) worst_ratio = e / dbl(r);
+                        double e = sqrt((p[0] - fx2d(c.x)) * (p[0] - fx2d(c.x)) + (p[1] - fx2d(c.y)) * (p[1] - fx2d(c.y)) +
+                                        (p[2] - fx2d(c.z)) * (p[2] - fx2d(c.z)));
+                        if (e / fx2d(r) > worst_ratio) worst_ratio = e / fx2d(r);
                     }
             }
     CHECKF(worst_ratio <= 1, "a cell point outside its ball: ratio %g", worst_ratio);
@@ -434,7 +419,7 @@ TEST(bulging_cell_is_not_decided_by_its_corners)
         double p[3];
         if (i == 0) memcpy(p, mid, sizeof p);
         else sph(check_uniform(la0 + 0.01, la1 - 0.01), check_uniform(lo0 + 0.01, lo1 - 0.01), p);
-        nrm[i] = silk_v3(fx(p[0]), fx(p[1]), fx(p[2]));
+        nrm[i] = silk_v3(d2fx(p[0]), d2fx(p[1]), d2fx(p[2]));
         nvx[i] = 0;
     }
     silk_mesh m;
@@ -447,7 +432,7 @@ TEST(bulging_cell_is_not_decided_by_its_corners)
     CHECK(silk_vis_build(&m, &o, &a, &err) == SILK_OK);
     CHECK(m.vis && m.vis->depth == 3 && m.vis->widened == 0);
     silk_view v;
-    parallel_view(&v, silk_v3(fx(-d[0]), fx(-d[1]), fx(-d[2])));
+    parallel_view(&v, silk_v3(d2fx(-d[0]), d2fx(-d[1]), d2fx(-d[2])));
     uint8_t vb[NN], vg[NN];
     silk_vis_stats st;
     silk_visibility_brute(&m, &v, vb);
@@ -536,7 +521,7 @@ TEST(degenerate_normals)
     enum { NN = 600 };
     silk_vec3 pos[4], nrm[NN];
     silk_index nvx[NN];
-    for (int i = 0; i < 4; i++) pos[i] = silk_v3(fx(i * 0.5 - 1), fx(i * 0.25), fx(-i * 0.125));
+    for (int i = 0; i < 4; i++) pos[i] = silk_v3(d2fx(i * 0.5 - 1), d2fx(i * 0.25), d2fx(-i * 0.125));
     static const int axes[][3] = { { 0, 0, 1 }, { 0, 0, -1 }, { -1, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 0 } };
     for (int i = 0; i < NN; i++) {
         const int *ax = axes[i % 7];
@@ -544,15 +529,15 @@ TEST(degenerate_normals)
         else {
             double d[3];
             random_unit(d);
-            nrm[i] = silk_v3(fx(d[0]), fx(d[1]), fx(d[2]));
+            nrm[i] = silk_v3(d2fx(d[0]), d2fx(d[1]), d2fx(d[2]));
         }
         nvx[i] = (silk_index)(i % 4);
     }
     silk_mesh m;
     memset(&m, 0, sizeof m);
     m.nverts = 4; m.pos = pos; m.nnormals = NN; m.normal = nrm; m.normal_vertex = nvx;
-    m.bbox_min = silk_v3(fx(-1), 0, fx(-0.375));
-    m.bbox_max = silk_v3(fx(0.5), fx(0.75), 0);
+    m.bbox_min = silk_v3(d2fx(-1), 0, d2fx(-0.375));
+    m.bbox_max = silk_v3(d2fx(0.5), d2fx(0.75), 0);
     silk_arena a;
     silk_arena_init(&a, arena_buf, ARENA_BYTES);
     silk_vis_opts o = { 0, 2 };

@@ -170,6 +170,14 @@ const char *cli_value(int argc, char **argv, int *i)
     return argv[++*i];
 }
 
+int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path)
+{
+    if (arg[0] == '-' && arg[1]) return cli_fail(CLI_EXIT_USAGE, "%s: unknown option %s (try silk %s --help)", cmd, arg, cmd);
+    if (*mesh_path) return cli_fail(CLI_EXIT_USAGE, "%s: one mesh at a time (got %s and %s)", cmd, *mesh_path, arg);
+    *mesh_path = arg;
+    return 0;
+}
+
 const char *cli_find_output(int argc, char **argv)
 {
     const char *out = NULL;
@@ -243,11 +251,11 @@ void cli_print_scene_help(FILE *f)
             "  --beta B             blend: silhouetteness transition, 0..1 (default %g)\n"
             "  --bg RRGGBB          background colour in hex (default %06x)\n"
             "  --wire               draw the edges; triangles added by smoothing in red\n"
-            "  --lines over|only    pen-and-ink outlines: the smoothed silhouette and the\n"
-            "                       visible feature curves (smooth mode; the coarse mesh's\n"
-            "                       in the others), over the shading or alone\n"
-            "  --lines-polygonal    the coarse mesh's silhouette and feature edges instead\n"
-            "                       of the smooth curves (alone: --lines over)\n",
+            "  --lines over|only    pen-and-ink outlines over the shading or alone: the\n"
+            "                       smoothed silhouette and visible feature curves (smooth),\n"
+            "                       the mesh's silhouette and feature edges (flat)\n"
+            "  --lines-polygonal    the coarse mesh's silhouette and feature edges in any\n"
+            "                       mode (pn and blend draw lines only so; alone: --lines over)\n",
             cli_fx_to_double(SILK_DEFAULT_CREASE_DEG), cli_fx_to_double(SILK_FOV_MIN),
             cli_fx_to_double(SILK_FOV_MAX), CLI_DEFAULT_FOV, CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT,
             SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", cli_fx_to_double(ro.tolerance_px),
@@ -392,12 +400,10 @@ static double len3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + 
  *   and --ortho auto takes the half height that fits the sphere (c, R);
  *   up = +y, or -z when the view is within 1 degree of vertical;
  *   znear/zfar bracket the sphere as seen from the eye. */
-int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
+double cli_mesh_radius(const silk_mesh *m, double c[3])
 {
-    const double deg = 3.14159265358979323846 / 180;
     double lo[3] = { cli_fx_to_double(m->bbox_min.x), cli_fx_to_double(m->bbox_min.y), cli_fx_to_double(m->bbox_min.z) };
     double hi[3] = { cli_fx_to_double(m->bbox_max.x), cli_fx_to_double(m->bbox_max.y), cli_fx_to_double(m->bbox_max.z) };
-    double c[3];
     for (int k = 0; k < 3; k++) c[k] = (lo[k] + hi[k]) / 2;
     double r2 = 0;
     for (uint32_t i = 0; i < m->nverts; i++) {
@@ -407,7 +413,14 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
         if (q > r2) r2 = q;
     }
     double r = 1.05 * sqrt(r2);
-    if (!(r > 0)) r = 1;
+    return r > 0 ? r : 1;
+}
+
+int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
+{
+    const double deg = 3.14159265358979323846 / 180;
+    double c[3];
+    double r = cli_mesh_radius(m, c);
     double aspect = (double)o->width / o->height;
 
     double target[3], eye[3], up[3] = { 0, 1, 0 };

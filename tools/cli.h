@@ -121,6 +121,15 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam);
 /* Q16.16 to double, for printing. */
 double cli_fx_to_double(silk_fx v);
 
+/* The centre of the mesh's bounding box (into c) and the radius about it
+ * that holds every vertex, 5% to spare; 1 for a mesh of one point. */
+double cli_mesh_radius(const silk_mesh *m, double c[3]);
+
+/* An argument of `silk CMD` that no option took: the one mesh (*mesh_path),
+ * or the usage error of an unknown option or a second mesh.  Returns 0 or
+ * CLI_EXIT_USAGE. */
+int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path);
+
 /* The value of the last "-o"/"--output" in argv, or NULL: found before the
  * options are parsed, so that even a usage error removes a stale output. */
 const char *cli_find_output(int argc, char **argv);

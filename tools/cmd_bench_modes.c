@@ -242,18 +242,8 @@ static int path_camera(const silk_mesh *m, const bench_cfg *c, int k, int proj, 
     o.ortho = proj == PROJ_ORTHO;
     o.ortho_auto = o.ortho;
 
-    double ctr[3] = { cli_fx_to_double(m->bbox_min.x) / 2 + cli_fx_to_double(m->bbox_max.x) / 2,
-                      cli_fx_to_double(m->bbox_min.y) / 2 + cli_fx_to_double(m->bbox_max.y) / 2,
-                      cli_fx_to_double(m->bbox_min.z) / 2 + cli_fx_to_double(m->bbox_max.z) / 2 };
-    double r2 = 0;
-    for (uint32_t i = 0; i < m->nverts; i++) {
-        double d[3] = { cli_fx_to_double(m->pos[i].x) - ctr[0], cli_fx_to_double(m->pos[i].y) - ctr[1],
-                        cli_fx_to_double(m->pos[i].z) - ctr[2] };
-        double q = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        if (q > r2) r2 = q;
-    }
-    double r = 1.05 * sqrt(r2);
-    if (!(r > 0)) r = 1;
+    double ctr[3];
+    double r = cli_mesh_radius(m, ctr);
     double half_v = o.fov * deg / 2, half_h = atan(tan(half_v) * c->width / c->height);
     double half = half_v < half_h ? half_v : half_h;
     double dist = o.ortho ? 2 * r : r / sin(half);

@@ -237,12 +237,8 @@ int cmd_view(int argc, char **argv)
         } else if (cli_is(a, "--rows")) {
             if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--rows", val, 1, CLI_MAX_SIDE, &v.rows) != 0)
                 rc = CLI_EXIT_USAGE;
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "view: unknown option %s (try silk view --help)", a);
-        } else if (o.mesh_path) {
-            rc = cli_fail(CLI_EXIT_USAGE, "view: one mesh at a time (got %s and %s)", o.mesh_path, a);
         } else {
-            o.mesh_path = a;
+            rc = cli_mesh_arg("view", a, &o.mesh_path);
         }
     }
     if (rc) return rc;

@@ -130,9 +130,7 @@ int cmd_info(int argc, char **argv)
         int r = cli_scene_option(&o, argc, argv, &i);
         if (r < 0) rc = CLI_EXIT_USAGE;
         if (r != 0) continue;
-        if (a[0] == '-' && a[1]) rc = cli_fail(CLI_EXIT_USAGE, "info: unknown option %s (try silk info --help)", a);
-        else if (o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "info: one mesh at a time (got %s and %s)", o.mesh_path, a);
-        else o.mesh_path = a;
+        rc = cli_mesh_arg("info", a, &o.mesh_path);
     }
     if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "info: no mesh given (silk info MESH)");
     if (rc) return rc;

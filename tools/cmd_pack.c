@@ -383,12 +383,8 @@ int cmd_pack(int argc, char **argv)
             else if (!valid_name(name_opt))
                 rc = cli_fail(CLI_EXIT_USAGE, "pack: --name must be a C identifier of at most 40 characters (got \"%s\")",
                               name_opt);
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "pack: unknown option %s (try silk pack --help)", a);
-        } else if (o.mesh_path) {
-            rc = cli_fail(CLI_EXIT_USAGE, "pack: one mesh at a time (got %s and %s)", o.mesh_path, a);
         } else {
-            o.mesh_path = a;
+            rc = cli_mesh_arg("pack", a, &o.mesh_path);
         }
     }
     if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "pack: no mesh given (silk pack MESH -o MODEL.h)");

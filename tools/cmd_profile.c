@@ -775,12 +775,8 @@ int cmd_profile(int argc, char **argv)
             build = 0;
         } else if (strcmp(a, "--check") == 0) {
             check = 1;
-        } else if (a[0] == '-' && a[1]) {
-            return cli_fail(CLI_EXIT_USAGE, "profile: unknown option %s (try silk profile --help)", a);
-        } else if (mesh) {
-            return cli_fail(CLI_EXIT_USAGE, "profile: one mesh at a time (got %s and %s)", mesh, a);
-        } else {
-            mesh = a;
+        } else if (cli_mesh_arg("profile", a, &mesh)) {
+            return CLI_EXIT_USAGE;
         }
     }
     if (!mesh) return cli_fail(CLI_EXIT_USAGE, "profile: no mesh given (silk profile MESH --board NAME)");

@@ -407,12 +407,8 @@ int cmd_render(int argc, char **argv)
             const char *v = cli_value(argc, argv, &i);
             if (!v || cli_parse_double("--zoom", v, 1, 64, &se.zoom)) rc = CLI_EXIT_USAGE;
             use_series = 1;
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "render: unknown option %s (try silk render --help)", a);
-        } else if (o.mesh_path) {
-            rc = cli_fail(CLI_EXIT_USAGE, "render: one mesh at a time (got %s and %s)", o.mesh_path, a);
         } else {
-            o.mesh_path = a;
+            rc = cli_mesh_arg("render", a, &o.mesh_path);
         }
     }
     if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "render: no mesh given (silk render MESH -o OUT.png)");

@@ -589,12 +589,8 @@ int cmd_view_desktop(int argc, char **argv)
                 rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--events")) {
             if (!(events = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "view: unknown option %s (try silk view --help)", a);
-        } else if (o.mesh_path) {
-            rc = cli_fail(CLI_EXIT_USAGE, "view: one mesh at a time (got %s and %s)", o.mesh_path, a);
         } else {
-            o.mesh_path = a;
+            rc = cli_mesh_arg("view", a, &o.mesh_path);
         }
     }
     if (rc) return rc;

@@ -38,10 +38,12 @@ typedef enum silk_pn_normals { SILK_PN_QUADRATIC = 0, SILK_PN_LINEAR = 1 } silk_
 
 /* Pen-and-ink lines (src/lines.c): in SMOOTH mode the sampled silhouette
  * segments and the visible feature curves, exactly as the re-meshed surface
- * runs along them; in the other modes, or with lines_polygonal, the coarse
- * mesh's silhouette edges (between a front- and a back-facing triangle)
- * and its feature edges next to a front-facing triangle.  Lines are
- * depth-tested against the drawn surface, so hidden parts stay hidden. */
+ * runs along them; in FLAT mode, or with lines_polygonal in any mode, the
+ * coarse mesh's silhouette edges (between a front- and a back-facing
+ * triangle) and its feature edges next to a front-facing triangle.  PN and
+ * BLEND draw patches that bulge over those edges, so there lines without
+ * lines_polygonal are SILK_ERR_ARG.  Lines are depth-tested against the
+ * drawn surface, so hidden parts stay hidden. */
 typedef enum silk_lines {
     SILK_LINES_NONE = 0,
     SILK_LINES_OVER = 1,     /* over the shaded surface */

@@ -1,0 +1,38 @@
+/*
+ * testframe.h - test support for the per-frame stages (src/smooth.h,
+ * src/silhouette.h): a view around a mesh, the smooth-silhouette stages
+ * run by hand so that the test can inspect the internal frame, and the
+ * watertightness checks of a frame's output geometry.
+ */
+#ifndef SILK_TESTFRAME_H
+#define SILK_TESTFRAME_H
+
+#include <stdint.h>
+#include "silk/silk.h"
+#include "../../src/smooth.h"
+#include "../../src/silhouette.h"
+
+/* Looking at the centre of the mesh's bounding box from direction dir
+ * (any length), dist bounding radii away: 512 x 512, 45 degrees, or a
+ * parallel view 1.2 radii high.  Returns 0 when silk_view_init refuses. */
+int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v);
+
+/* The stages exactly as silk_frame_smooth runs them when memory suffices
+ * (brute-force visibility), keeping the internal frame for inspection.
+ * Returns 0 when a stage fails. */
+int tf_run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol, silk_sil_frame *f,
+                 silk_frame_geom *g, silk_frame_stats *st);
+
+/* Evaluates every record as the vertex stage would, and checks that every
+ * directed edge of every output triangle occurs once and its reverse once,
+ * by the bits of the evaluated positions: a closed surface with no crack
+ * and no T-junction.  Returns the number of edges that fail (and the
+ * number checked in *checked). */
+uint32_t tf_crack_check(const silk_mesh *m, const silk_frame_geom *g, uint32_t *checked);
+
+/* Records at the same position must carry the same normal where the mesh
+ * has one normal per vertex (no split normals): smooth shading across the
+ * patches, bit for bit.  Returns the number of positions where they differ. */
+uint32_t tf_normal_seams(const silk_mesh *m, const silk_frame_geom *g);
+
+#endif
