@@ -255,6 +255,10 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         for (uint32_t i = 0; i < f->g.nline_vrec; i++)
             h->vertex(h, &f->geom, &f->g.line_vrec[i], &f->line_cache[i]);
     f->line_lift = silk_lines_lift(a, m, &f->g, f->cache, v->cam.width, v->cam.height);
+    /* Without their lift (no room for it or for the vertex cache it reads)
+     * lines sink into the surface they lie on: the frame says so, as one
+     * that could not smooth does. */
+    if (f->g.nline_vrec && f->g.line_src && !f->line_lift) stats->fell_back = 1;
     stats->tris_drawn = f->g.ntri;
     return SILK_OK;
 }

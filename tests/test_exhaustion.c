@@ -151,11 +151,13 @@ typedef struct frame_case {
     silk_mode mode;
     ts_mesh *mesh;
     double eye[3];
+    silk_lines lines;        /* with lines a SMOOTH frame is stored, not streamed */
 } frame_case;
 
 /* Renders with only `budget` bytes free for the frame. */
 static silk_status render_budget(silk_arena *a, const silk_mesh *m, const silk_camera *cam, silk_mode mode,
-                                 size_t budget, ts_image *img, silk_frame_stats *fs, silk_error *err)
+                                 silk_lines lines, size_t budget, ts_image *img, silk_frame_stats *fs,
+                                 silk_error *err)
 {
     silk_arena_mark mark = silk_arena_top_mark(a);
     size_t bottom = a->bottom, used = a->used[SILK_MEM_RASTER], free_now = silk_arena_free_bytes(a);
@@ -163,6 +165,7 @@ static silk_status render_budget(silk_arena *a, const silk_mesh *m, const silk_c
     silk_render_opts o;
     silk_render_opts_default(&o);
     o.mode = mode;
+    o.lines = lines;
     silk_status st = ts_render(a, m, cam, &o, img, fs, err);
     CHECKF(a->top == mark.top, "scratch not released: top %zu", a->top);
     a->bottom = bottom;                     /* drop the filler */
@@ -182,15 +185,15 @@ static void frames_at_every_size(const frame_case *fc)
     silk_camera cam = ts_camera(fc->eye, target, 40, 0.1, 20, 48, 40);
     ts_image ref = { 0 }, flat = { 0 }, img = { 0 };
     silk_frame_stats rs, fs;
-    CHECK(render_budget(&a, &m, &cam, fc->mode, BIG, &ref, &rs, &err) == SILK_OK);
-    CHECK(render_budget(&a, &m, &cam, SILK_MODE_FLAT, BIG, &flat, &fs, &err) == SILK_OK);
+    CHECK(render_budget(&a, &m, &cam, fc->mode, fc->lines, BIG, &ref, &rs, &err) == SILK_OK);
+    CHECK(render_budget(&a, &m, &cam, SILK_MODE_FLAT, fc->lines, BIG, &flat, &fs, &err) == SILK_OK);
     CHECKF(!rs.fell_back && memcmp(ref.rgb, flat.rgb, 48 * 40 * 3) != 0,
            "%s: the full frame should differ from FLAT", fc->name);
     size_t need = rs.frame_bytes, first_ok = 0;
     int fell = 0, partial = 0, errors = 0;
     for (size_t budget = 0; budget <= need + 1024; budget += 64) {
         memset(&fs, 0, sizeof fs);
-        silk_status st = render_budget(&a, &m, &cam, fc->mode, budget, &img, &fs, &err);
+        silk_status st = render_budget(&a, &m, &cam, fc->mode, fc->lines, budget, &img, &fs, &err);
         if (st != SILK_OK) {
             errors++;
             CHECKF(!first_ok, "%s: drawn with %zu bytes, not with %zu", fc->name, first_ok, budget);
@@ -207,11 +210,12 @@ static void frames_at_every_size(const frame_case *fc)
             continue;
         }
         fell++;
-        if (fs.silhouette_tris == 0 && fc->mode == SILK_MODE_SMOOTH) {
+        if (fs.silhouette_tris == 0 && fc->mode == SILK_MODE_SMOOTH && !fc->lines) {
             CHECKF(same_flat, "%s at %zu: fell back all the way, yet differs from FLAT", fc->name, budget);
             continue;
         }
         partial++;
+        if (fc->lines) continue;      /* lines follow whatever was drawn: no pixel-wise bound */
         long mixed = 0;
         for (int i = 0; i < 48 * 40; i++)
             if (memcmp(img.rgb + 3 * i, ref.rgb + 3 * i, 3) && memcmp(img.rgb + 3 * i, flat.rgb + 3 * i, 3)) mixed++;
@@ -222,8 +226,9 @@ static void frames_at_every_size(const frame_case *fc)
     }
     CHECKF(first_ok > 0, "%s: never drawn", fc->name);
     CHECKF(fell > 0, "%s: never fell back (need %zu bytes)", fc->name, need);
-    printf("  %-10s %-6s frame needs %6zu bytes; drawn from %6zu; fell back at %3d sizes (%d partly); %d refused\n",
-           fc->name, fc->mode == SILK_MODE_SMOOTH ? "smooth" : fc->mode == SILK_MODE_PN ? "pn" : "blend", need,
+    printf("  %-10s %-6s%s frame needs %6zu bytes; drawn from %6zu; fell back at %3d sizes (%d partly); %d refused\n",
+           fc->name, fc->mode == SILK_MODE_SMOOTH ? "smooth" : fc->mode == SILK_MODE_PN ? "pn" : "blend",
+           fc->lines ? " + lines" : "", need,
            first_ok, fell, partial, errors);
     ts_image_free(&ref);
     ts_image_free(&flat);
@@ -244,11 +249,12 @@ TEST(frame_sizes)
     }
     cup.nf = kept;
     const frame_case cases[] = {
-        { "sphere", SILK_MODE_SMOOTH, &sphere, { 0.5, 1, 3.2 } },
-        { "torus", SILK_MODE_SMOOTH, &ring, { 0, 2.2, 2.2 } },
-        { "cup", SILK_MODE_SMOOTH, &cup, { 0.5, 2, 2.5 } },
-        { "sphere", SILK_MODE_PN, &sphere, { 0.5, 1, 3.2 } },
-        { "torus", SILK_MODE_BLEND, &ring, { 0, 2.2, 2.2 } },
+        { "sphere", SILK_MODE_SMOOTH, &sphere, { 0.5, 1, 3.2 }, SILK_LINES_NONE },
+        { "torus", SILK_MODE_SMOOTH, &ring, { 0, 2.2, 2.2 }, SILK_LINES_NONE },
+        { "cup", SILK_MODE_SMOOTH, &cup, { 0.5, 2, 2.5 }, SILK_LINES_NONE },
+        { "torus", SILK_MODE_SMOOTH, &ring, { 0, 2.2, 2.2 }, SILK_LINES_OVER },
+        { "sphere", SILK_MODE_PN, &sphere, { 0.5, 1, 3.2 }, SILK_LINES_NONE },
+        { "torus", SILK_MODE_BLEND, &ring, { 0, 2.2, 2.2 }, SILK_LINES_NONE },
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) frames_at_every_size(&cases[i]);
     ts_mesh_free(&sphere);
@@ -291,7 +297,7 @@ TEST(bands_with_little_memory)
     int checked = 0;
     for (size_t budget = 0; budget < 40000; budget += 1000) {
         silk_frame_stats fs, bs;
-        silk_status st = render_budget(&a, &m, &cam, SILK_MODE_SMOOTH, budget, &whole, &fs, &err);
+        silk_status st = render_budget(&a, &m, &cam, SILK_MODE_SMOOTH, SILK_LINES_NONE, budget, &whole, &fs, &err);
         size_t bottom = a.bottom, used = a.used[SILK_MEM_RASTER], free_now = silk_arena_free_bytes(&a);
         if (free_now > budget) silk_arena_alloc(&a, free_now - budget - (SILK_ARENA_ALIGN - 1), SILK_MEM_RASTER);
         silk_target band;

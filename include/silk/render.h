@@ -5,9 +5,14 @@
  * triangles -> bridges, points, segments -> adaptive sampling -> re-meshing
  * and perturbation (mode SMOOTH), or the coarse mesh as it is (mode FLAT),
  * or one of the two reference methods (modes PN and BLEND, docs/methods.md);
- * then the HAL's vertex stage over every vertex record once, and the
- * rasterizer over every triangle for the target's band.  Per-frame memory
- * comes from the top of the arena and is released before it returns.
+ * then the HAL's vertex stage over the vertex records, and the rasterizer
+ * over every triangle for the target's band.  FLAT and SMOOTH frames without
+ * lines are streamed: only the silhouette plan is kept, and each input
+ * triangle's records are rebuilt and evaluated when a band needs them (same
+ * pixels, a fraction of the memory: docs/small-devices.md).  Per-frame
+ * memory comes from the top of the arena and is released before it returns.
+ * A device build may leave PN and BLEND out with -DSILK_NO_REFERENCE_MODES
+ * (src/render.c).
  */
 #ifndef SILK_RENDER_H
 #define SILK_RENDER_H
@@ -84,8 +89,9 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
  * band->rows lines of band->width pixels (band->height is the frame height);
  * the frame is drawn band by band from the top, each finished band handed to
  * sink->band (as an SPI display driver takes it).  The per-frame silhouette
- * work and the vertex stage run once per frame, not once per band; only the
- * rasterizer runs per band.  Pixels are identical to silk_render()'s. */
+ * work runs once per frame, not once per band; a streamed frame rebuilds,
+ * per band, only the triangles that reach into it (stored frames go through
+ * the vertex stage once).  Pixels are identical to silk_render()'s. */
 typedef struct silk_sink {
     /* return 0 to go on, non-zero to stop the frame (reported as SILK_ERR_IO) */
     int (*band)(void *user, const silk_target *band);
