@@ -20,7 +20,9 @@
  *    27    frame memory: the arena keeps 2^(8 + b % 15) bytes free after
  *          the mesh, plus bytes 30-31 (u16) modulo that, or all of its 8 MB
  *          when b >= 240
- *    28    band rows: 1 + b % 16       29  crease angle: b % 181 degrees
+ *    28    band rows: 1 + b % 16; pen-and-ink lines: (b >> 4) % 3 (none,
+ *          over, only), polygonal: bit 6
+ *    29    crease angle: b % 181 degrees
  * Checks besides "no crash": a failure is one clean line; the frame's
  * scratch is all released; with bands, the band-by-band pixels equal the
  * whole frame's (silk/render.h promises identical bytes), from the same
@@ -134,6 +136,8 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     ro.tolerance_px = (silk_fx)((btol + 1) * 1024);
     ro.level = 1 + blevel % 32;
     ro.blend_beta = (silk_fx)(bbeta * 256);
+    ro.lines = (silk_lines)((brows >> 4) % 3);
+    ro.lines_polygonal = (brows >> 6) & 1;
     silk_pixfmt fmt = (flags >> 7) ? SILK_PIX_RGB565 : SILK_PIX_RGB888;
     size_t bpp = silk_pixfmt_bytes(fmt), px = (size_t)width * (size_t)height;
     /* exact sizes on the heap, so that ASan sees any write outside */

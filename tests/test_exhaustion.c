@@ -8,7 +8,8 @@
  * is the peak of a load into a roomy arena (bottom and top together).
  *
  * Frames: with the model loaded, the memory left for the frame is stepped
- * from 0 upward (64 bytes at a time) past what the frame needs.  At every
+ * from 0 upward (64 bytes at a time, or in 512 steps for a frame above
+ * 32 KB) past what the frame needs.  At every
  * step silk_render either draws the frame or - only when not even the
  * coarse mesh's records fit - fails with one clean line.  A frame drawn in
  * full memory is the reference; a drawn frame is
@@ -191,7 +192,9 @@ static void frames_at_every_size(const frame_case *fc)
            "%s: the full frame should differ from FLAT", fc->name);
     size_t need = rs.frame_bytes, first_ok = 0;
     int fell = 0, partial = 0, errors = 0;
-    for (size_t budget = 0; budget <= need + 1024; budget += 64) {
+    /* 64-byte steps, or 512 steps over a frame larger than 32 KB */
+    size_t step = need / 512 > 64 ? (need / 512 + 63) & ~(size_t)63 : 64;
+    for (size_t budget = 0; budget <= need + 1024; budget += step) {
         memset(&fs, 0, sizeof fs);
         silk_status st = render_budget(&a, &m, &cam, fc->mode, fc->lines, budget, &img, &fs, &err);
         if (st != SILK_OK) {
