@@ -3,7 +3,7 @@
  * the Gaussian sphere (paper III-B, after Benichou & Elber).
  *
  * Each normal N at vertex V is the point V' = (N, w), w = -N.(V-C)/s, and is
- * visible iff E'.V' >= 0 with E' = (E - C, s) in perspective (paper eq. 9,
+ * visible iff E'.V' >= 0 with E' = (E - C, s) in perspective (paper III-B, F(E;V),
  * shifted to the model centre C and scaled by s so that |w| <= 1) or
  * E' = (D, 0) in parallel projection.  The sign of E'.V' does not change when
  * V' is scaled, so V' never has to be put on S^3: cells live on S^2 x [-1,1]

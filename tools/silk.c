@@ -1,6 +1,7 @@
 /*
  * silk.c - the `silk` command: main and the dispatch to its subcommands
- * (render, info, gen, bench), each in its own cmd_*.c file.
+ * (render, info, gen, view, bench, diff, simplify, pack, profile, help),
+ * each in its own cmd_*.c file.
  */
 #include <stdio.h>
 #include <string.h>
