@@ -16,9 +16,10 @@
  * Counts can only be lowered: an array shorter than its count is beyond
  * any check (the validator cannot know an array's real length).
  *
- * Input: 1 byte E, then E edits of 6 bytes (array: 1, word index: 2 or
- * byte offset, value: 3, see apply_edit), 1 byte of view (mode: bits 0-1,
- * orthographic: bit 2, eye octant: bits 3-5), then a mesh (OBJ or PLY).
+ * Input: 1 byte E, then E edits of 6 bytes (array: 1, word index: 2,
+ * value: 3, see apply_edit), 1 byte of view (mode: bits 0-1, orthographic:
+ * bit 2, eye octant: bits 3-5, pen-and-ink lines: bits 6-7, polygonal
+ * ones in PN and BLEND), then a mesh (OBJ or PLY).
  */
 #include "fuzz.h"
 #include "silk/validate.h"
@@ -149,6 +150,8 @@ static void draw(const silk_mesh *m, uint32_t view_bits)
         silk_render_opts_default(&ro);
         ro.mode = (silk_mode)(view_bits & 3);
         ro.wire = 1;
+        ro.lines = (silk_lines)((view_bits >> 6) % 3);
+        ro.lines_polygonal = ro.mode == SILK_MODE_PN || ro.mode == SILK_MODE_BLEND;
         silk_status st = silk_render(&a, m, &view, &hal, &ro, &t, NULL, &err);
         if (st != SILK_OK) fuzz_check_error(st, &err, NULL);
         fuzz_expect(a.top == 0 && a.bottom == 0, "the frame kept memory");

@@ -198,7 +198,7 @@ static int screen_point(const silk_vertex_out *o, int width, int height, spt *p)
     if (w <= 0 || x > GUARD * w || -x > GUARD * w || y > GUARD * w || -y > GUARD * w) return 0;
     p->x = (x * width * 128) / w + (int64_t)width * 128;
     p->y = (int64_t)height * 128 - (y * height * 128) / w;
-    p->d = ((w - z) << 24) / w;   /* [0, 2^25] inside the clip volume */
+    p->d = (w - z) * ((int64_t)1 << 24) / w;   /* [0, 2^25] inside the clip volume; w - z < 0 beyond it */
     if (p->d > (1 << 26)) p->d = 1 << 26;
     if (p->d < -(1 << 26)) p->d = -(1 << 26);
     return 1;
