@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "silk/silk.h"
+#include "silk/validate.h"
 
 /* The entry point: libFuzzer's, unless tests/test_regress.c, which runs
  * every harness in one program, names each one itself. */
@@ -76,6 +77,68 @@ static inline uint32_t fuzz_u32(fuzz_bytes *b)
     uint32_t v = 0;
     for (int i = 0; i < 4; i++) v |= fuzz_u8(b) << (8 * i);
     return v;
+}
+
+
+/* A mesh reader: silk_load_obj or silk_load_ply. */
+typedef silk_status (*fuzz_reader_fn)(const void *data, size_t len, const char *name, const silk_load_opts *o,
+                                      silk_arena *a, silk_mesh *out, silk_error *err);
+
+/* One load into mem (or a heap block of arena_size when mem is NULL), with
+ * every outcome checked:
+ *   failure: one clean line naming the file, the arena as it was;
+ *   success: the mesh passes silk_mesh_validate (every index consistent),
+ *            and the visibility hierarchy builds over it (or fails cleanly). */
+static inline void fuzz_load_checked(fuzz_reader_fn load, const char *name, const uint8_t *data, size_t size,
+                                     const silk_load_opts *o, uint8_t *mem, size_t arena_size)
+{
+    uint8_t *own = mem ? NULL : malloc(arena_size);
+    if (!mem && !(mem = own)) return;
+    silk_arena a;
+    silk_mesh m;
+    silk_error err;
+    memset(&err, 0, sizeof err);
+    silk_arena_init(&a, mem, arena_size);
+    silk_status st = load(data, size, name, o, &a, &m, &err);
+    if (st != SILK_OK) {
+        fuzz_check_error(st, &err, name);
+        fuzz_check_arena_empty(&a);
+    } else {
+        fuzz_expect(a.top == 0, "loading left %zu bytes of scratch", a.top);
+        silk_status v = silk_mesh_validate(&m, name, &err);
+        fuzz_expect(v == SILK_OK, "the loaded mesh is inconsistent: %s", err.msg);
+        size_t bottom = a.bottom;
+        st = silk_vis_build(&m, NULL, &a, &err);
+        if (st != SILK_OK) {
+            fuzz_check_error(st, &err, NULL);
+            fuzz_expect(a.bottom == bottom && a.top == 0, "failed hierarchy build kept memory");
+        } else {
+            v = silk_mesh_validate(&m, name, &err);
+            fuzz_expect(v == SILK_OK, "the mesh is inconsistent after the hierarchy: %s", err.msg);
+        }
+    }
+    free(own);
+}
+
+/* A reader harness: the input loaded twice, with the default options into
+ * an arena of 64 bytes per input byte (so the out-of-memory paths run for
+ * dense files), and with file normals, a --scale and a crease angle taken
+ * from its length into a roomy one. */
+static inline void fuzz_reader(fuzz_reader_fn load, const char *name, const uint8_t *data, size_t size)
+{
+    silk_load_opts o;
+    silk_load_opts_default(&o);
+    fuzz_load_checked(load, name, data, size, &o, NULL, 64 * size + 4096);
+
+    /* The other options, chosen by the length so that one input covers both. */
+    o.normals = SILK_NORMALS_FILE;
+    o.crease_deg = SILK_FX_C((int64_t)(size % 181), 1);
+    o.scale.mant = (int64_t)(size % 7) + 1;
+    o.scale.exp10 = (int32_t)(size % 5) - 2;
+    /* the roomy arena is kept between runs: a fresh 4 MB block per run costs
+     * more than the load */
+    static uint8_t roomy[(size_t)1 << 22];
+    fuzz_load_checked(load, name, data, size, &o, roomy, sizeof roomy);
 }
 
 #endif
