@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
+#include "support/testframe.h"
 #include "silk/silk.h"
 #include "../src/smooth.h"
 
@@ -19,7 +20,6 @@
 static unsigned char *arena_buf;
 
 static double fx2d(silk_fx v) { return v / 65536.0; }
-static silk_fx d2fx(double v) { return (silk_fx)llround(v * 65536.0); }
 
 static char *read_file(const char *name, size_t *len)
 {
@@ -65,31 +65,7 @@ static int load_shared(silk_arena *a, const char *name, silk_mesh *m)
 static int make_view(const silk_mesh *m, const double dir[3], double dist, int ortho, int w, int h,
                      silk_view *v)
 {
-    double c[3], r = 0;
-    for (int i = 0; i < 3; i++) {
-        double lo = fx2d((&m->bbox_min.x)[i]), hi = fx2d((&m->bbox_max.x)[i]);
-        c[i] = (lo + hi) / 2;
-        r += (hi - lo) * (hi - lo) / 4;
-    }
-    r = sqrt(r);
-    double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    silk_camera cam;
-    memset(&cam, 0, sizeof cam);
-    cam.eye = silk_v3(d2fx(c[0] + dir[0] / len * dist * r), d2fx(c[1] + dir[1] / len * dist * r),
-                      d2fx(c[2] + dir[2] / len * dist * r));
-    cam.target = silk_v3(d2fx(c[0]), d2fx(c[1]), d2fx(c[2]));
-    /* an up vector not parallel to dir */
-    cam.up = fabs(dir[1] / len) > 0.9 ? silk_v3(SILK_FX_ONE, 0, 0) : silk_v3(0, SILK_FX_ONE, 0);
-    cam.ortho = ortho;
-    cam.fov_deg = SILK_FX_C(45, 1);
-    cam.ortho_half_height = d2fx(r * 1.2);
-    cam.znear = d2fx(r * 0.01);
-    cam.zfar = d2fx(r * (dist + 4));
-    cam.width = w;
-    cam.height = h;
-    silk_error err;
-    if (silk_view_init(v, &cam, &err) != SILK_OK) { fprintf(stderr, "view: %s\n", err.msg); return 0; }
-    return 1;
+    return tf_view_around_size(m, dir, dist, ortho, w, h, v);
 }
 
 static void random_dir(double d[3])

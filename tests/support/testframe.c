@@ -6,10 +6,17 @@
 #include "testvec.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v)
+{
+    return tf_view_around_size(m, dir, dist, ortho, 512, 512, v);
+}
+
+int tf_view_around_size(const silk_mesh *m, const double dir[3], double dist, int ortho, int w, int h,
+                        silk_view *v)
 {
     double c[3], r = 0;
     for (int i = 0; i < 3; i++) {
@@ -30,10 +37,14 @@ int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ort
     cam.ortho_half_height = d2fx(r * 1.2);
     cam.znear = d2fx(r * 0.01);
     cam.zfar = d2fx(r * (dist + 4));
-    cam.width = 512;
-    cam.height = 512;
+    cam.width = w;
+    cam.height = h;
     silk_error err;
-    return silk_view_init(v, &cam, &err) == SILK_OK;
+    if (silk_view_init(v, &cam, &err) != SILK_OK) {
+        fprintf(stderr, "view: %s\n", err.msg);
+        return 0;
+    }
+    return 1;
 }
 
 int tf_run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol, silk_sil_frame *f,

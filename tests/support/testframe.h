@@ -16,6 +16,9 @@
  * (any length), dist bounding radii away: 512 x 512, 45 degrees, or a
  * parallel view 1.2 radii high.  Returns 0 when silk_view_init refuses. */
 int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v);
+/* The same at w x h pixels (tf_view_around is 512 x 512). */
+int tf_view_around_size(const silk_mesh *m, const double dir[3], double dist, int ortho, int w, int h,
+                        silk_view *v);
 
 /* The stages exactly as silk_frame_smooth runs them when memory suffices
  * (brute-force visibility), keeping the internal frame for inspection.
