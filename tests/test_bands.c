@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
+#include "support/testframe.h"
 #include "silk/silk.h"
 
 #define W 320
@@ -73,13 +74,7 @@ static silk_fx d2fx(double v) { return (silk_fx)llround(v * 65536.0); }
 static int make_view(const silk_mesh *m, double az, double el, int ortho, silk_view *v)
 {
     const double deg = 3.14159265358979323846 / 180;
-    double c[3], r = 0;
-    for (int i = 0; i < 3; i++) {
-        double lo = (&m->bbox_min.x)[i] / 65536.0, hi = (&m->bbox_max.x)[i] / 65536.0;
-        c[i] = (lo + hi) / 2;
-        r += (hi - lo) * (hi - lo) / 4;
-    }
-    r = sqrt(r);
+    double c[3], r = tf_bounds(m, c);
     double d[3] = { cos(el * deg) * sin(az * deg), sin(el * deg), cos(el * deg) * cos(az * deg) };
     silk_camera cam;
     memset(&cam, 0, sizeof cam);

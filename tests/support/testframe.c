@@ -10,6 +10,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+double tf_bounds(const silk_mesh *m, double c[3])
+{
+    double r = 0;
+    for (int i = 0; i < 3; i++) {
+        double lo = fx2d((&m->bbox_min.x)[i]), hi = fx2d((&m->bbox_max.x)[i]);
+        c[i] = (lo + hi) / 2;
+        r += (hi - lo) * (hi - lo) / 4;
+    }
+    return sqrt(r);
+}
+
 int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v)
 {
     return tf_view_around_size(m, dir, dist, ortho, 512, 512, v);
@@ -18,13 +29,7 @@ int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ort
 int tf_view_around_size(const silk_mesh *m, const double dir[3], double dist, int ortho, int w, int h,
                         silk_view *v)
 {
-    double c[3], r = 0;
-    for (int i = 0; i < 3; i++) {
-        double lo = fx2d((&m->bbox_min.x)[i]), hi = fx2d((&m->bbox_max.x)[i]);
-        c[i] = (lo + hi) / 2;
-        r += (hi - lo) * (hi - lo) / 4;
-    }
-    r = sqrt(r);
+    double c[3], r = tf_bounds(m, c);
     double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     silk_camera cam;
     memset(&cam, 0, sizeof cam);

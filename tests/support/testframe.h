@@ -15,6 +15,8 @@
 /* Looking at the centre of the mesh's bounding box from direction dir
  * (any length), dist bounding radii away: 512 x 512, 45 degrees, or a
  * parallel view 1.2 radii high.  Returns 0 when silk_view_init refuses. */
+/* The centre of m's bounding box into c; returns half its diagonal. */
+double tf_bounds(const silk_mesh *m, double c[3]);
 int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ortho, silk_view *v);
 /* The same at w x h pixels (tf_view_around is 512 x 512). */
 int tf_view_around_size(const silk_mesh *m, const double dir[3], double dist, int ortho, int w, int h,
