@@ -38,8 +38,8 @@ static void help(FILE *f)
             "  silk simplify bunny-fine.obj bunny-500.obj --triangles 500\n");
 }
 
-/* The mesh as silk loads it, positions widened to double. */
-static int load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
+/* The mesh as silk loads it, positions widened to double (simplify.h). */
+int simp_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
 {
     uint8_t *data;
     size_t len;
@@ -85,7 +85,7 @@ static int load(const char *path, silk_decimal scale, simp_mesh *out, int *close
     return rc;
 }
 
-static int write_obj(const simp_mesh *m, const char *in, const char *path, uint32_t target)
+int simp_write_obj(const simp_mesh *m, const char *path, const char *comment)
 {
     silk_outfile o;
     silk_error err;
@@ -95,7 +95,7 @@ static int write_obj(const simp_mesh *m, const char *in, const char *path, uint3
         if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         f = o.fp;
     }
-    fprintf(f, "# silk simplify %s --triangles %u: %u triangles, %u vertices\n", in, target, m->ntris, m->nverts);
+    fprintf(f, "# %s: %u triangles, %u vertices\n", comment, m->ntris, m->nverts);
     for (uint32_t i = 0; i < m->nverts; i++)
         fprintf(f, "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
     for (uint32_t i = 0; i < m->ntris; i++)
@@ -109,7 +109,9 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
 {
     simp_mesh m;
     int closed = 0, rc;
-    if ((rc = load(in, scale, &m, &closed)) != 0) {
+    char comment[1024];
+    snprintf(comment, sizeof comment, "silk simplify %s --triangles %u", in, so->target_tris);
+    if ((rc = simp_load(in, scale, &m, &closed)) != 0) {
         simp_free(&m);
         return rc;
     }
@@ -122,7 +124,7 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
                       "%u non-manifold vertices, %u misoriented edges); not written",
                       in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
-    else if ((rc = write_obj(&m, in, out, so->target_tris)) == 0) {
+    else if ((rc = simp_write_obj(&m, out, comment)) == 0) {
         if (strcmp(out, "-") != 0)
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
                    m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);

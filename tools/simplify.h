@@ -17,6 +17,8 @@
 
 #include <stdint.h>
 
+#include "silk/silk.h"
+
 typedef struct simp_mesh {
     uint32_t nverts, ntris;
     double *pos;             /* 3 * nverts, malloc'd */
@@ -58,5 +60,15 @@ typedef struct simp_topology {
 int simp_topology_check(const simp_mesh *m, simp_topology *t);
 
 void simp_free(simp_mesh *m);
+
+/* The command's input and output (tools/cmd_simplify.c), shared by the
+ * commands that make meshes from meshes.  simp_load: the mesh as silk's
+ * loader reads it (every format, every error message), coordinates times
+ * scale, widened to double, and whether it is closed and manifold; 0 or an
+ * exit code after printing the error.  simp_write_obj: OBJ with the comment
+ * line "# COMMENT: N triangles, N vertices", atomically, "-" for stdout; 0
+ * or an exit code after printing the error. */
+int simp_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold);
+int simp_write_obj(const simp_mesh *m, const char *path, const char *comment);
 
 #endif
