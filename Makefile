@@ -73,7 +73,11 @@ $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_TOOL_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+
+# Tests of host tools that link the tools' objects rather than include them.
+$(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
+$(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
 
 tests: $(TEST_BIN) $(BUILD)/silk
 

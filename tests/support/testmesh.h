@@ -65,4 +65,8 @@ static inline int tm_fixture_read_shared(tm_fixture *f, const char *name)
 }
 #endif
 
+/* Squared distance from point p to triangle abc, in double (closest point
+ * by regions). */
+double tm_point_tri_d2(const double *p, const double *a, const double *b, const double *c);
+
 #endif
