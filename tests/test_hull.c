@@ -180,32 +180,9 @@ static int load_shared(const char *name, simp_mesh *out)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        printf("skip: no %s\n", path);
-        return -1;
-    }
-    fclose(f);
-    size_t bytes = 64u << 20;
-    void *buf = malloc(bytes);
-    silk_arena a;
-    silk_arena_init(&a, buf, bytes);
-    silk_mesh m;
-    int ok = tm_load_shared(&a, name, &m);
-    CHECKF(ok, "%s does not load", name);
-    if (ok) {
-        out->nverts = m.nverts, out->ntris = m.ntris;
-        out->pos = malloc(3 * sizeof(double) * m.nverts);
-        out->tri = malloc(3 * sizeof(uint32_t) * m.ntris);
-        for (uint32_t i = 0; i < m.nverts; i++) {
-            out->pos[3 * i] = m.pos[i].x / 65536.0;
-            out->pos[3 * i + 1] = m.pos[i].y / 65536.0;
-            out->pos[3 * i + 2] = m.pos[i].z / 65536.0;
-        }
-        for (uint32_t i = 0; i < 3 * m.ntris; i++) out->tri[i] = m.tri[i];
-    }
-    free(buf);
-    return ok ? 0 : -1;
+    int r = tm_load_doubles(path, &out->pos, &out->nverts, &out->tri, &out->ntris);
+    CHECKF(r >= 0, "%s does not load", name);
+    return r == 1 ? 0 : -1;
 }
 
 static void shared_sequence(const char *name)

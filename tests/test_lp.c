@@ -89,12 +89,19 @@ static void random_halfspace(lp_halfspace *g, const double x0[3], double slack_l
     g->b = dot3(g->a, x0) - check_uniform(slack_lo, slack_hi);
 }
 
-static void random_box(problem *p)
+/* A random box, a point x0 in it, n half-spaces whose planes pass
+ * between slack_lo and slack_hi from x0 (positive: x0 inside), and a
+ * random objective. */
+static void random_problem(problem *p, int n, double slack_lo, double slack_hi, double x0[3])
 {
     for (int k = 0; k < 3; k++) {
         p->lo[k] = check_uniform(-3, 0);
         p->hi[k] = p->lo[k] + check_uniform(0.5, 4);
+        x0[k] = check_uniform(p->lo[k], p->hi[k]);
     }
+    p->n = n;
+    for (int i = 0; i < n; i++) random_halfspace(&p->h[i], x0, slack_lo, slack_hi);
+    for (int k = 0; k < 3; k++) p->c[k] = check_uniform(-1, 1);
 }
 
 /* Solve with lp3 and compare with brute force; returns 1 when the case
@@ -125,12 +132,8 @@ TEST(lp_feasible_matches_brute_force)
     uint64_t rng = 12345;
     for (int trial = 0; trial < 400; trial++) {
         problem p;
-        random_box(&p);
         double x0[3];
-        for (int k = 0; k < 3; k++) x0[k] = check_uniform(p.lo[k], p.hi[k]);
-        p.n = 1 + (int)(check_rand64() % 30);
-        for (int i = 0; i < p.n; i++) random_halfspace(&p.h[i], x0, 0, 1);
-        for (int k = 0; k < 3; k++) p.c[k] = check_uniform(-1, 1);
+        random_problem(&p, 1 + (int)(check_rand64() % 30), 0, 1, x0);
         compare(&p, &rng);
     }
 }
@@ -141,16 +144,13 @@ TEST(lp_infeasible_matches_brute_force)
     int infeasible = 0, decided = 0;
     for (int trial = 0; trial < 400; trial++) {
         problem p;
-        random_box(&p);
         double x0[3];
-        for (int k = 0; k < 3; k++) x0[k] = check_uniform(p.lo[k], p.hi[k]);
-        p.n = 2 + (int)(check_rand64() % 20);
-        /* slack of either sign: about half of these have no feasible point */
-        for (int i = 0; i < p.n; i++) random_halfspace(&p.h[i], x0, -0.6, 0.4);
-        for (int k = 0; k < 3; k++) p.c[k] = check_uniform(-1, 1);
+        /* slack of either sign: many of these have no feasible point */
+        random_problem(&p, 2 + (int)(check_rand64() % 20), -0.15, 0.5, x0);
         decided += compare(&p, &rng);
         infeasible += isinf(brute(&p, 1e-11));
     }
+    printf("  %d of 400 infeasible\n", infeasible);
     CHECKF(infeasible > 50 && infeasible < 350, "%d of 400 infeasible: the cases do not test both sides", infeasible);
     CHECKF(decided > 380, "only %d of 400 decided", decided);
 }
@@ -161,13 +161,9 @@ TEST(lp_unbounded_without_the_box)
     uint64_t rng = 99;
     for (int trial = 0; trial < 200; trial++) {
         problem p;
-        random_box(&p);
-        for (int k = 0; k < 3; k++) p.c[k] = check_uniform(-1, 1);
         double x0[3];
-        for (int k = 0; k < 3; k++) x0[k] = check_uniform(p.lo[k], p.hi[k]);
-        p.n = 1 + (int)(check_rand64() % 3);
+        random_problem(&p, 1 + (int)(check_rand64() % 3), 0, 0.5, x0);
         for (int i = 0; i < p.n; i++) {
-            random_halfspace(&p.h[i], x0, 0, 0.5);
             /* make the half-space contain the direction -c */
             if (dot3(p.h[i].a, p.c) > 0)
                 for (int k = 0; k < 3; k++) p.h[i].a[k] = -p.h[i].a[k];
@@ -184,11 +180,8 @@ TEST(lp_degenerate_objectives)
     uint64_t rng = 5;
     for (int trial = 0; trial < 200; trial++) {
         problem p;
-        random_box(&p);
         double x0[3];
-        for (int k = 0; k < 3; k++) x0[k] = check_uniform(p.lo[k], p.hi[k]);
-        p.n = 3 + (int)(check_rand64() % 10);
-        for (int i = 0; i < p.n; i++) random_halfspace(&p.h[i], x0, 0, 1);
+        random_problem(&p, 3 + (int)(check_rand64() % 10), 0, 1, x0);
         for (int k = 0; k < 3; k++) p.c[k] = trial & 1 ? 0 : p.h[0].a[k];
         compare(&p, &rng);
     }
@@ -199,12 +192,8 @@ TEST(lp_many_constraints)
     uint64_t rng = 31337;
     for (int trial = 0; trial < 10; trial++) {
         problem p;
-        random_box(&p);
         double x0[3];
-        for (int k = 0; k < 3; k++) x0[k] = check_uniform(p.lo[k], p.hi[k]);
-        p.n = MAXH;
-        for (int i = 0; i < p.n; i++) random_halfspace(&p.h[i], x0, 0, 0.3);
-        for (int k = 0; k < 3; k++) p.c[k] = check_uniform(-1, 1);
+        random_problem(&p, MAXH, 0, 0.3, x0);
         compare(&p, &rng);
     }
 }

@@ -22,38 +22,10 @@ static int load(const char *name, simp_mesh *out)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
-    uint8_t *data;
-    size_t len;
-    silk_error err;
     memset(out, 0, sizeof *out);
-    if (silk_file_read(path, &data, &len, &err) != SILK_OK) {
-        printf("skip: %s\n", err.msg);
-        return -1;
-    }
-    size_t size = len * 16 + (4 << 20);
-    void *buf = malloc(size);
-    silk_arena a;
-    silk_arena_init(&a, buf, size);
-    silk_load_opts lo;
-    silk_load_opts_default(&lo);
-    silk_mesh m;
-    silk_status st = silk_load_mesh(data, len, path, &lo, &a, &m, &err);
-    free(data);
-    CHECKF(st == SILK_OK, "%s", err.msg);
-    if (st == SILK_OK) {
-        out->nverts = m.nverts;
-        out->ntris = m.ntris;
-        out->pos = malloc(3 * sizeof(double) * m.nverts);
-        out->tri = malloc(3 * sizeof(uint32_t) * m.ntris);
-        for (uint32_t i = 0; i < m.nverts; i++) {
-            out->pos[3 * i] = m.pos[i].x / 65536.0;
-            out->pos[3 * i + 1] = m.pos[i].y / 65536.0;
-            out->pos[3 * i + 2] = m.pos[i].z / 65536.0;
-        }
-        for (uint32_t i = 0; i < 3 * m.ntris; i++) out->tri[i] = m.tri[i];
-    }
-    free(buf);
-    return st == SILK_OK ? 0 : -1;
+    int r = tm_load_doubles(path, &out->pos, &out->nverts, &out->tri, &out->ntris);
+    CHECKF(r >= 0, "%s does not load", name);
+    return r == 1 ? 0 : -1;
 }
 
 typedef struct dist { double mean, max; } dist;

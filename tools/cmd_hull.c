@@ -8,7 +8,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
 #include "hull.h"
@@ -83,29 +82,20 @@ static int hull(const char *in, const char *out, const hull_opts *ho, silk_decim
 
 int cmd_hull(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    long target = -1;
+    const char *in = NULL;
+    simp_args args = { NULL, -1, { 1, 0 } };
     hull_opts ho;
     hull_opts_default(&ho, 0);
-    silk_decimal scale = { 1, 0 };
-    int rc = 0;
+    int rc = 0, k;
     for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i], *v;
+        const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        } else if (cli_is(a, "--triangles")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_long("--triangles", v, 4, 100000000, &target))
-                rc = CLI_EXIT_USAGE;
+        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
+            if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--inner") == 0) {
             ho.inner = 1;
-        } else if (cli_is(a, "--scale")) {
-            const char *end;
-            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (silk_decimal_parse(v, &end, &scale) != 0 || *end || scale.mant <= 0)
-                rc = cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
-        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
             rc = cli_fail(CLI_EXIT_USAGE, "hull: unknown option %s (try silk hull --help)", a);
         } else if (!in) {
@@ -115,15 +105,10 @@ int cmd_hull(int argc, char **argv)
         }
     }
     if (!rc && !in) rc = cli_fail(CLI_EXIT_USAGE, "hull: give the mesh (silk hull FINE -o HULL.obj --triangles N)");
-    if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "hull: -o HULL.obj is needed");
-    if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "hull: --triangles N is needed");
-    ho.target_tris = (uint32_t)target;
-    if (!rc) rc = hull(in, out, &ho, scale);
-    /* A file at OUT after a failure would be an earlier run's - unless it
-     * is the input itself. */
-    if (!out) out = cli_find_output(argc, argv);
-    struct stat si, so;
-    int same = in && out && stat(in, &si) == 0 && stat(out, &so) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino;
-    if (rc && out && strcmp(out, "-") != 0 && !same) silk_file_remove_stale(out);
+    if (!rc && !args.out) rc = cli_fail(CLI_EXIT_USAGE, "hull: -o HULL.obj is needed");
+    if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "hull: --triangles N is needed");
+    ho.target_tris = (uint32_t)args.target;
+    if (!rc) rc = hull(in, args.out, &ho, args.scale);
+    if (rc) simp_remove_stale(in, args.out ? args.out : cli_find_output(argc, argv));
     return rc;
 }

@@ -105,6 +105,35 @@ int simp_write_obj(const simp_mesh *m, const char *path, const char *comment)
     return 0;
 }
 
+int simp_common_option(int argc, char **argv, int *i, simp_args *args)
+{
+    const char *a = argv[*i], *v, *end;
+    if (cli_is(a, "--triangles")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_long("--triangles", v, 4, 100000000, &args->target)) return -1;
+    } else if (cli_is(a, "--scale")) {
+        if (!(v = cli_value(argc, argv, i))) return -1;
+        if (silk_decimal_parse(v, &end, &args->scale) != 0 || *end || args->scale.mant <= 0) {
+            cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
+            return -1;
+        }
+    } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
+        if (!(args->out = cli_value(argc, argv, i))) return -1;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* A file at OUT after a failure would be an earlier run's - unless it is
+ * the input itself. */
+void simp_remove_stale(const char *in, const char *out)
+{
+    if (!out || strcmp(out, "-") == 0) return;
+    struct stat si, so;
+    int same = in && stat(in, &si) == 0 && stat(out, &so) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino;
+    if (!same) silk_file_remove_stale(out);
+}
+
 static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale)
 {
     simp_mesh m;
@@ -138,52 +167,40 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
 
 int cmd_simplify(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    long target = -1;
+    const char *in = NULL;
+    simp_args args = { NULL, -1, { 1, 0 } };
     simp_opts so;
     simp_opts_default(&so, 0);
-    silk_decimal scale = { 1, 0 };
-    int rc = 0;
+    int rc = 0, k;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        } else if (cli_is(a, "--triangles")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_long("--triangles", v, 4, 100000000, &target))
-                rc = CLI_EXIT_USAGE;
+        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
+            if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--crease")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--crease", v, 0, 180, &so.crease_deg))
                 rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--feature-weight")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
                 rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--scale")) {
-            const char *end;
-            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (silk_decimal_parse(v, &end, &scale) != 0 || *end || scale.mant <= 0)
-                rc = cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
-        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
             rc = cli_fail(CLI_EXIT_USAGE, "simplify: unknown option %s (try silk simplify --help)", a);
         } else if (!in) {
             in = a;
-        } else if (!out) {
-            out = a;
+        } else if (!args.out) {
+            args.out = a;
         } else {
             rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", a);
         }
     }
-    if (!rc && (!in || !out)) rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
-    if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
-    so.target_tris = (uint32_t)target;
+    if (!rc && (!in || !args.out))
+        rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
+    if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
+    so.target_tris = (uint32_t)args.target;
     if (rc) return rc;
-    rc = simplify(in, out, &so, scale);
-    /* A file at OUT after a failure would be an earlier run's - unless it
-     * is the input itself. */
-    struct stat si, so_;
-    int same = stat(in, &si) == 0 && stat(out, &so_) == 0 && si.st_dev == so_.st_dev && si.st_ino == so_.st_ino;
-    if (rc && strcmp(out, "-") != 0 && !same) silk_file_remove_stale(out);
+    rc = simplify(in, args.out, &so, args.scale);
+    if (rc) simp_remove_stale(in, args.out);
     return rc;
 }

@@ -71,4 +71,18 @@ void simp_free(simp_mesh *m);
 int simp_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold);
 int simp_write_obj(const simp_mesh *m, const char *path, const char *comment);
 
+/* Their common options: --triangles N (4..1e8), --scale S, -o/--output OUT.
+ * simp_common_option: 1 when argv[*i] is one of them (consumed with its
+ * value, *i advanced), 0 when not, -1 after printing a usage error. */
+typedef struct simp_args {
+    const char *out;           /* NULL: not given */
+    long target;               /* -1: not given */
+    silk_decimal scale;        /* {1, 0}: none */
+} simp_args;
+int simp_common_option(int argc, char **argv, int *i, simp_args *args);
+
+/* After a failure: remove OUT (unless it is "-", NULL or the input itself),
+ * so no earlier run's file stays behind. */
+void simp_remove_stale(const char *in, const char *out);
+
 #endif

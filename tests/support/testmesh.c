@@ -130,6 +130,46 @@ int tm_fixture_read_obj(tm_fixture *f, const char *path)
     return ok;
 }
 
+/* ---- as double arrays ---------------------------------------------------------- */
+
+int tm_load_doubles(const char *path, double **pos, uint32_t *nv, uint32_t **tri, uint32_t *nt)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        printf("skip: no %s\n", path);
+        return 0;
+    }
+    fclose(f);
+    size_t len;
+    char *text = tm_read_file(path, &len);
+    if (!text) {
+        fprintf(stderr, "cannot read %s\n", path);
+        return -1;
+    }
+    size_t bytes = len * 16 + ((size_t)4 << 20);
+    void *buf = malloc(bytes);
+    silk_arena a;
+    silk_arena_init(&a, buf, bytes);
+    silk_load_opts lo;
+    silk_load_opts_default(&lo);
+    silk_mesh m;
+    silk_error err;
+    silk_status st = silk_load_mesh((const uint8_t *)text, len, path, &lo, &a, &m, &err);
+    free(text);
+    if (st != SILK_OK) {
+        fprintf(stderr, "%s\n", err.msg);
+        free(buf);
+        return -1;
+    }
+    *nv = m.nverts, *nt = m.ntris;
+    *pos = malloc(3 * sizeof **pos * (m.nverts ? m.nverts : 1));
+    *tri = malloc(3 * sizeof **tri * (m.ntris ? m.ntris : 1));
+    for (uint32_t i = 0; i < m.nverts; i++) vec3d(m.pos[i], &(*pos)[3 * i]);
+    for (uint32_t i = 0; i < 3 * m.ntris; i++) (*tri)[i] = m.tri[i];
+    free(buf);
+    return 1;
+}
+
 /* ---- geometry ------------------------------------------------------------------ */
 
 static void tm_sub3(const double *a, const double *b, double *r)
