@@ -77,7 +77,6 @@ typedef struct hull {
     entry *heap, *later;       /* the queue; refused collapses */
     size_t nheap, capheap, nlater, caplater;
     uint32_t *ring, nring, *nbr, nnbr, capnbr;   /* scratch */
-    uint64_t rng;
 } hull;
 
 static int grow(void **p, size_t *cap, size_t need, size_t size)
@@ -251,7 +250,10 @@ static int place(hull *h, uint32_t u, uint32_t v, double w[3], double *cost)
     for (int j = 0; j < 3; j++) ext = fmax(ext, hi[j] - lo[j]);
     for (int j = 0; j < 3; j++) lo[j] -= ext + 4 * h->margin, hi[j] += ext + 4 * h->margin;
     h->st->lps++;
-    if (lp3_solve(hs, (int)h->nring, c, lo, hi, h->margin / 64, &h->rng, w) != LP_OK) return REFUSE_INFEASIBLE;
+    /* the solver's random order seeded by the edge: the same neighbourhood
+     * always gives the same point */
+    uint64_t rng = ((uint64_t)u << 32 ^ v) * 0x9E3779B97F4A7C15ull | 1;
+    if (lp3_solve(hs, (int)h->nring, c, lo, hi, h->margin / 64, &rng, w) != LP_OK) return REFUSE_INFEASIBLE;
     for (int j = 0; j < 3; j++) {
         w[j] += o[j];
         if (h->o->grid > 0) w[j] = nearbyint(w[j] / h->o->grid) * h->o->grid;
@@ -417,7 +419,6 @@ static int hull_init(hull *h, const simp_mesh *m, const hull_opts *o, hull_stats
     memset(h, 0, sizeof *h);
     h->o = o, h->st = st;
     h->nv = m->nverts, h->nt = m->ntris, h->alive = m->ntris;
-    h->rng = 0x9E3779B97F4A7C15ull;
     size_t nv = h->nv ? h->nv : 1, nt = h->nt ? h->nt : 1;
     h->pos = malloc(3 * nv * sizeof *h->pos);
     h->tri = malloc(3 * nt * sizeof *h->tri);
