@@ -78,6 +78,8 @@ $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BU
 # Tests of host tools that link the tools' objects rather than include them.
 $(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
 $(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
+$(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
+$(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
 
 tests: $(TEST_BIN) $(BUILD)/silk
 
