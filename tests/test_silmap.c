@@ -4,14 +4,16 @@
  * oriented outward); binary images against a per-pixel barycentric
  * reference; outlines traced from random and hand-made images (areas add
  * up to the set pixels, outer loops positive, holes negative, diagonal
- * neighbours apart, every boundary side once); Douglas-Peucker within its
- * tolerance; and the whole chain on a sphere against its exact projected
- * circle.
+ * neighbours apart, every boundary side once) and the loops through the
+ * sides' middles; Douglas-Peucker within its tolerance; and the dense map
+ * of a sphere against its exact projected circle.
  */
 #include <math.h>
 #include <string.h>
+#include <time.h>
 
 #include "check.h"
+#include "support/testmesh.h"
 #include "../tools/gen.h"
 #include "../tools/silmap.h"
 
@@ -152,6 +154,22 @@ TEST(trace_random_images)
         silmap_contours c;
         CHECK(silmap_trace(img, W, H, &c) == 0);
         check_trace("random", img, W, H, &c);
+        /* through the sides' middles: each corner cut by an eighth of a
+         * pixel of area, every point the middle of a unit side */
+        silmap_contours m;
+        CHECK(silmap_midpoints(&c, &m) == 0);
+        CHECK(m.nloops == c.nloops && m.npts <= 2 * c.npts);
+        int off = 0;
+        for (uint32_t l = 0; l < c.nloops && m.nloops == c.nloops; l++) {
+            double corners = c.start[l + 1] - c.start[l];
+            off += fabs(silmap_loop_area2(&m, l) - silmap_loop_area2(&c, l)) / 2 > corners / 8 + 1e-9;
+        }
+        for (uint32_t k = 0; k < m.npts; k++) {
+            double fx = m.pt[2 * k] - floor(m.pt[2 * k]), fy = m.pt[2 * k + 1] - floor(m.pt[2 * k + 1]);
+            off += !((fx == 0.5 && fy == 0) || (fx == 0 && fy == 0.5));
+        }
+        CHECKF(off == 0, "%d loops or points of the middles wrong", off);
+        silmap_contours_free(&m);
         silmap_contours_free(&c);
     }
 }
@@ -241,41 +259,77 @@ TEST(simplify_within_tolerance)
     }
 }
 
-/* The chain on a sphere: one loop, close to the exact projected circle. */
-TEST(sphere_silhouette)
+/* The dense map of a sphere: one loop per view, close to the exact
+ * projected circle. */
+TEST(sphere_map)
 {
     gen_params gp;
     gen_defaults(GEN_SPHERE, &gp);
     gp.segments = 96, gp.bands = 96, gp.radius = 1;
     gen_mesh g;
     CHECK(gen_build(&gp, &g) == 0);
-    silmap_polytope views;
-    CHECK(silmap_icosphere(1, &views) == 0);
-    enum { R = 256 };
-    static uint8_t img[R * R];
-    double centre[3] = { 0, 0, 0 }, worst = 0, area_err = 0;
-    for (uint32_t v = 0; v < views.nviews; v++) {
-        silmap_camera cam;
-        silmap_camera_at(centre, 1, &views.dir[3 * v], 3, R, &cam);
-        CHECK(silmap_rasterize(&cam, g.pos, g.nverts, g.tri, g.ntris, img) == 0);
-        silmap_contours c, s;
-        CHECK(silmap_trace(img, R, R, &c) == 0);
-        CHECK(silmap_simplify(&c, 0.5, &s) == 0);
-        CHECKF(s.nloops == 1, "view %u: %u loops", v, s.nloops);
+    silmap_params p;
+    silmap_params_default(&p);
+    p.level = 1;
+    silmap m;
+    CHECK(silmap_build(g.pos, g.nverts, g.tri, g.ntris, &p, &m) == 0);
+    CHECKF(m.poly.nviews == 42 && fabs(m.radius - 1) < 1e-9, "%u views, radius %g", m.poly.nviews, m.radius);
+    double worst = 0, area_err = 0;
+    uint32_t pts = 0;
+    for (uint32_t v = 0; v < m.poly.nviews; v++) {
+        const silmap_view *view = &m.views[v];
+        const silmap_contours *s = &view->outline;
+        CHECKF(s->nloops == 1, "view %u: %u loops", v, s->nloops);
+        pts += s->npts;
         /* the sphere's outline: a circle about the image centre */
-        double rho = cam.focal * tan(asin(1.0 / 3));
-        for (uint32_t k = 0; k < s.npts; k++)
-            worst = fmax(worst, fabs(hypot(s.pt[2 * k] - R / 2.0, s.pt[2 * k + 1] - R / 2.0) - rho));
-        if (s.nloops == 1) area_err = fmax(area_err, fabs(silmap_loop_area2(&s, 0) / 2 / (3.14159265358979323846 * rho * rho) - 1));
-        silmap_contours_free(&c);
-        silmap_contours_free(&s);
+        double rho = view->cam.focal * tan(asin(1.0 / p.distance)), half = p.res / 2.0;
+        for (uint32_t k = 0; k < s->npts; k++)
+            worst = fmax(worst, fabs(hypot(s->pt[2 * k] - half, s->pt[2 * k + 1] - half) - rho));
+        if (s->nloops == 1)
+            area_err = fmax(area_err, fabs(silmap_loop_area2(s, 0) / 2 / (3.14159265358979323846 * rho * rho) - 1));
     }
     CHECKF(worst < 1.5, "a polygon vertex %.3f px off the exact circle", worst);
     CHECKF(area_err < 0.01, "area off by %.4f", area_err);
-    printf("  sphere, %u views at 256 px: vertices within %.2f px of the circle, area within %.2f%%\n", views.nviews,
-           worst, 100 * area_err);
-    silmap_polytope_free(&views);
+    printf("  sphere, %u views at %d px: %u polygon vertices, within %.2f px of the circle, area within %.2f%%\n",
+           m.poly.nviews, p.res, pts, worst, 100 * area_err);
+    silmap_free(&m);
+    p.res = 4;
+    CHECK(silmap_build(g.pos, g.nverts, g.tri, g.ntris, &p, &m) == -1);
     gen_free(&g);
+}
+
+/* The dense map of the shared bunny: every view has an outline; what it
+ * costs. */
+TEST(bunny_map)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/bunny-fine.obj", check_meshes_dir());
+    double *pos;
+    uint32_t *tri, nv, nt;
+    int r = tm_load_doubles(path, &pos, &nv, &tri, &nt);
+    CHECK(r >= 0);
+    if (r != 1) return;
+    silmap_params p;
+    silmap_params_default(&p);
+    silmap m;
+    clock_t t0 = clock();
+    CHECK(silmap_build(pos, nv, tri, nt, &p, &m) == 0);
+    double secs = (double)(clock() - t0) / CLOCKS_PER_SEC;
+    uint32_t pts = 0, most = 0, empty = 0, traced = 0;
+    for (uint32_t v = 0; v < m.poly.nviews; v++) {
+        const silmap_contours *o = &m.views[v].outline;
+        double area = 0;
+        for (uint32_t l = 0; l < o->nloops; l++) area += silmap_loop_area2(o, l) / 2;
+        empty += !(area > 100);
+        pts += o->npts, traced += m.views[v].traced_pts;
+        if (o->npts > most) most = o->npts;
+    }
+    CHECKF(empty == 0, "%u views without an outline", empty);
+    printf("  bunny-fine, %u views at %d px, %.2g px: %u corners traced, %u kept (%.0f a view, at most %u), %.2f s\n",
+           m.poly.nviews, p.res, p.tol, traced, pts, (double)pts / m.poly.nviews, most, secs);
+    silmap_free(&m);
+    free(pos);
+    free(tri);
 }
 
 int main(void)
@@ -286,6 +340,7 @@ int main(void)
     RUN(trace_random_images);
     RUN(trace_hole_and_diagonal);
     RUN(simplify_within_tolerance);
-    RUN(sphere_silhouette);
+    RUN(sphere_map);
+    RUN(bunny_map);
     return check_done();
 }

@@ -287,6 +287,30 @@ done:
     return rc;
 }
 
+int silmap_midpoints(const silmap_contours *in, silmap_contours *out)
+{
+    memset(out, 0, sizeof *out);
+    out->start = malloc(sizeof *out->start * (in->nloops + 1));
+    out->pt = malloc(4 * sizeof *out->pt * (in->npts ? in->npts : 1));
+    if (!out->start || !out->pt) {
+        silmap_contours_free(out);
+        return -1;
+    }
+    out->start[0] = 0;
+    for (uint32_t l = 0; l < in->nloops; l++) {
+        uint32_t a = in->start[l], n = in->start[l + 1] - a;
+        for (uint32_t k = 0; k < n; k++) {
+            const double *p = &in->pt[2 * (a + k)], *q = &in->pt[2 * (a + (k + 1) % n)];
+            double dx = q[0] - p[0], dy = q[1] - p[1], len = fabs(dx) + fabs(dy);   /* axis-aligned */
+            dx /= len, dy /= len;
+            out->pt[2 * out->npts] = p[0] + dx / 2, out->pt[2 * out->npts + 1] = p[1] + dy / 2, out->npts++;
+            if (len > 1) out->pt[2 * out->npts] = q[0] - dx / 2, out->pt[2 * out->npts + 1] = q[1] - dy / 2, out->npts++;
+        }
+        out->start[++out->nloops] = out->npts;
+    }
+    return 0;
+}
+
 /* ---- Douglas-Peucker ---------------------------------------------------------------- */
 
 static double seg_dist(const double *p, const double *a, const double *b)
@@ -365,5 +389,76 @@ int silmap_simplify(const silmap_contours *in, double tol, silmap_contours *out)
         out->start[++out->nloops] = out->npts;
     }
     free(keep), free(stack);
+    return 0;
+}
+
+/* ---- the whole dense map -------------------------------------------------------------- */
+
+void silmap_params_default(silmap_params *p)
+{
+    p->level = 2;
+    p->res = 256;
+    p->tol = 0.5;
+    p->distance = 3;
+}
+
+void silmap_free(silmap *m)
+{
+    if (m->views)
+        for (uint32_t i = 0; i < m->poly.nviews; i++) silmap_contours_free(&m->views[i].outline);
+    free(m->views);
+    silmap_polytope_free(&m->poly);
+    memset(m, 0, sizeof *m);
+}
+
+int silmap_build(const double *pos, uint32_t nverts, const uint32_t *tri, uint32_t ntris, const silmap_params *p,
+                 silmap *m)
+{
+    memset(m, 0, sizeof *m);
+    if (p->level < 0 || p->level > 6 || p->res < 8 || p->res > 4096 || !(p->tol >= 0) || !(p->distance > 1) ||
+        nverts == 0)
+        return -1;
+    m->params = *p;
+    double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+    for (uint32_t i = 0; i < nverts; i++)
+        for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], pos[3 * i + k]), hi[k] = fmax(hi[k], pos[3 * i + k]);
+    for (int k = 0; k < 3; k++) m->centre[k] = (lo[k] + hi[k]) / 2;
+    double r2 = 0;
+    for (uint32_t i = 0; i < nverts; i++) {
+        double d[3] = { pos[3 * i] - m->centre[0], pos[3 * i + 1] - m->centre[1], pos[3 * i + 2] - m->centre[2] };
+        r2 = fmax(r2, dot(d, d));
+    }
+    m->radius = r2 > 0 ? sqrt(r2) : 1;
+    uint8_t *img = malloc((size_t)p->res * p->res);
+    if (!img || silmap_icosphere(p->level, &m->poly) ||
+        !(m->views = calloc(m->poly.nviews, sizeof *m->views))) {
+        free(img);
+        silmap_free(m);
+        return -1;
+    }
+    for (uint32_t i = 0; i < m->poly.nviews; i++) {
+        silmap_view *v = &m->views[i];
+        silmap_contours traced;
+        silmap_camera_at(m->centre, m->radius, &m->poly.dir[3 * i], p->distance, p->res, &v->cam);
+        if (silmap_rasterize(&v->cam, pos, nverts, tri, ntris, img) || silmap_trace(img, p->res, p->res, &traced)) {
+            free(img);
+            silmap_free(m);
+            return -1;
+        }
+        v->traced_pts = traced.npts;
+        silmap_contours mid;
+        int rc = silmap_midpoints(&traced, &mid);
+        silmap_contours_free(&traced);
+        if (!rc) {
+            rc = silmap_simplify(&mid, p->tol, &v->outline);
+            silmap_contours_free(&mid);
+        }
+        if (rc) {
+            free(img);
+            silmap_free(m);
+            return -1;
+        }
+    }
+    free(img);
     return 0;
 }

@@ -68,6 +68,13 @@ typedef struct silmap_contours {
  * memory). */
 int silmap_trace(const uint8_t *img, int w, int h, silmap_contours *c);
 
+/* The loops through the middles of the pixel sides instead of their
+ * corners: every corner cut by half a pixel each way (the boundary at the
+ * pixel centres' resolution, without the staircase's corners).  Each side
+ * of length L from A to B gives A + d/2 and B - d/2 (one point if L = 1),
+ * d its unit direction.  0 or -1 (out of memory). */
+int silmap_midpoints(const silmap_contours *in, silmap_contours *out);
+
 /* Douglas-Peucker on every loop: the points kept are a subset, and every
  * point left out is within tol of the kept polygon's edge across it.  A
  * loop keeps at least three points.  0 or -1 (out of memory). */
@@ -77,5 +84,37 @@ int silmap_simplify(const silmap_contours *in, double tol, silmap_contours *out)
 double silmap_loop_area2(const silmap_contours *c, uint32_t i);
 
 void silmap_contours_free(silmap_contours *c);
+
+/* ---- the whole dense map -------------------------------------------------------- */
+
+typedef struct silmap_params {
+    int level;               /* icosahedron subdivisions: 10 * 4^level + 2 views */
+    int res;                 /* image side in pixels */
+    double tol;              /* Douglas-Peucker tolerance in pixels */
+    double distance;         /* eyes this many bounding radii from the centre, > 1 */
+} silmap_params;
+
+/* level 2 (162 views), 256 pixels, 0.5 pixel, 3 radii. */
+void silmap_params_default(silmap_params *p);
+
+typedef struct silmap_view {
+    silmap_camera cam;
+    silmap_contours outline;  /* traced, through the sides' middles, simplified */
+    uint32_t traced_pts;      /* corners before simplification */
+} silmap_view;
+
+typedef struct silmap {
+    silmap_params params;
+    silmap_polytope poly;     /* view i at centre + distance * radius * poly.dir[i] */
+    double centre[3], radius; /* the mesh's bounding sphere (about its box's centre) */
+    silmap_view *views;       /* poly.nviews */
+} silmap;
+
+/* Every view of the mesh (pos: 3 * nverts, tri: 3 * ntris): its camera,
+ * image, outline.  0, or -1 when out of memory or the parameters are out
+ * of range (level 0..6, res 8..4096, tol >= 0, distance > 1). */
+int silmap_build(const double *pos, uint32_t nverts, const uint32_t *tri, uint32_t ntris, const silmap_params *p,
+                 silmap *m);
+void silmap_free(silmap *m);
 
 #endif
