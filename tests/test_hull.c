@@ -74,6 +74,47 @@ static void copy_mesh(const simp_mesh *src, simp_mesh *dst)
     memcpy(dst->tri, src->tri, 3 * sizeof(uint32_t) * src->ntris);
 }
 
+/* The nearest face of m to p, and its distance. */
+static uint32_t nearest_face(const simp_mesh *m, const double p[3], double *dist)
+{
+    double best = INFINITY;
+    uint32_t at = 0;
+    for (uint32_t f = 0; f < m->ntris; f++) {
+        const uint32_t *t = &m->tri[3 * f];
+        double d = tm_point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]);
+        if (d < best) best = d, at = f;
+    }
+    *dist = sqrt(best);
+    return at;
+}
+
+/* What the hull's vertices stand for (section 7's closest points): near
+ * the detailed surface (nearer than half the hull vertices' distance, on
+ * average: interpolating across faces cuts the curved surface), with normals
+ * close to the detailed surface's there. */
+static void check_stands_for(const char *name, const simp_mesh *fine, const simp_mesh *h, const hull_fine *s)
+{
+    double worst = 0, sum_cos = 0, sum_hull = 0, sum_point = 0;
+    uint32_t facing_away = 0;
+    for (uint32_t i = 0; i < h->nverts; i++) {
+        double d, dh;
+        uint32_t f = nearest_face(fine, &s->point[3 * i], &d);
+        nearest_face(fine, &h->pos[3 * i], &dh);
+        const uint32_t *t = &fine->tri[3 * f];
+        dvec n = dnorm(dcross(dsub(at(fine, t[1]), at(fine, t[0])), dsub(at(fine, t[2]), at(fine, t[0]))));
+        double c = ddot(n, dmk(s->normal[3 * i], s->normal[3 * i + 1], s->normal[3 * i + 2]));
+        sum_cos += c, facing_away += c < 0;
+        worst = fmax(worst, d), sum_point += d, sum_hull += dh;
+    }
+    double mean_cos = sum_cos / h->nverts;
+    CHECKF(sum_point < 0.5 * sum_hull, "%s: the points are %g from the surface on average, the hull's vertices %g",
+           name, sum_point / h->nverts, sum_hull / h->nverts);
+    CHECKF(mean_cos > 0.8 && facing_away <= h->nverts / 50, "%s: normals' mean cosine %.3f, %u facing away", name,
+           mean_cos, facing_away);
+    printf("  %s: closest points %.2g from the surface on average (hull vertices %.2g), at most %.2g; normals' mean "
+           "cosine %.3f\n", name, sum_point / h->nverts, sum_hull / h->nverts, worst, mean_cos);
+}
+
 /* Closed, manifold, oriented, the target's count within 2%. */
 static void check_shape(const char *name, const simp_mesh *h, uint32_t target)
 {
@@ -95,7 +136,8 @@ static void outer_step(const char *name, const simp_mesh *fine, const simp_mesh 
     hull_opts_default(&o, target);
     hull_stats st;
     clock_t t0 = clock();
-    CHECK(hull_run(out, &o, &st) == 0);
+    hull_fine stands;
+    CHECK(hull_run(out, &o, &st, &stands) == 0);
     double secs = (double)(clock() - t0) / CLOCKS_PER_SEC;
     check_shape(name, out, target);
     double worst;
@@ -108,6 +150,8 @@ static void outer_step(const char *name, const simp_mesh *fine, const simp_mesh 
     CHECKF(st.volume_out >= hull_volume(fine), "%s: the hull holds less volume than the mesh", name);
     printf("  %s: %u -> %u triangles in %.2f s (%u LPs), volume +%.1f%%\n", name, prev->ntris, out->ntris, secs,
            st.lps, 100 * (st.volume_out / hull_volume(fine) - 1));
+    if (prev == fine) check_stands_for(name, fine, out, &stands);
+    hull_fine_free(&stands);
 }
 
 static void inner_check(const char *name, const simp_mesh *fine, uint32_t target)
@@ -118,7 +162,7 @@ static void inner_check(const char *name, const simp_mesh *fine, uint32_t target
     hull_opts_default(&o, target);
     o.inner = 1;
     hull_stats st;
-    CHECK(hull_run(&in, &o, &st) == 0);
+    CHECK(hull_run(&in, &o, &st, NULL) == 0);
     check_shape(name, &in, target);
     double worst;
     uint32_t bad = outside(fine, in.pos, in.nverts, &worst);
@@ -168,7 +212,7 @@ TEST(hull_cube_is_its_own_hull)
     hull_opts o;
     hull_opts_default(&o, 4);
     hull_stats st;
-    CHECK(hull_run(&m, &o, &st) == 0);
+    CHECK(hull_run(&m, &o, &st, NULL) == 0);
     CHECKF(m.ntris == 12 && st.collapses == 0 && st.refused_infeasible > 0, "%u triangles, %u collapses", m.ntris,
            st.collapses);
     simp_free(&m);

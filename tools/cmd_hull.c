@@ -23,7 +23,9 @@ static void help(FILE *f)
             "ever move the surface outward, each placed to add the least volume.  With\n"
             "--inner, the inner hull: a mesh inside FINE.  Vertices lie on silk's fixed-\n"
             "point grid, so the hull holds FINE as the renderer loads it.  Writes HULL.obj\n"
-            "(atomically; - for stdout) and prints one line:\n"
+            "(atomically; - for stdout) with a normal per vertex, the detailed surface's\n"
+            "where the vertex stands for it (silk render --normals file shades with them),\n"
+            "and prints one line:\n"
             "  hull FINE HULL.obj triangles=N vertices=N target=N collapses=N volume=X (+P%%)\n"
             "It stops above N when no collapse that keeps the hull is left (a warning).\n"
             "\n"
@@ -47,6 +49,7 @@ static int hull(const char *in, const char *out, const hull_opts *ho, silk_decim
     }
     simp_topology topo;
     hull_stats st;
+    hull_fine fine = { NULL, NULL };
     if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
     else if (!closed || topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts ||
              topo.misoriented_edges || topo.degenerate_tris)
@@ -57,7 +60,7 @@ static int hull(const char *in, const char *out, const hull_opts *ho, silk_decim
     else if (!(hull_volume(&m) > 0))
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the faces point inward (the enclosed volume is not positive); a hull "
                       "needs them counter-clockwise seen from outside", in);
-    else if (hull_run(&m, ho, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while making the hull", in);
+    else if (hull_run(&m, ho, &st, &fine) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while making the hull", in);
     else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
     else if (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges)
         /* the link condition in hull.c should make this impossible */
@@ -66,7 +69,7 @@ static int hull(const char *in, const char *out, const hull_opts *ho, silk_decim
         char comment[1024];
         snprintf(comment, sizeof comment, "silk hull %s --triangles %u%s", in, ho->target_tris,
                  ho->inner ? " --inner" : "");
-        if ((rc = simp_write_obj(&m, out, comment)) == 0) {
+        if ((rc = simp_write_obj(&m, fine.normal, out, comment)) == 0) {
             if (strcmp(out, "-") != 0)
                 printf("hull %s %s triangles=%u vertices=%u target=%u collapses=%u volume=%.6g (%+.1f%%)\n", in, out,
                        m.ntris, m.nverts, ho->target_tris, st.collapses, st.volume_out,
@@ -77,6 +80,7 @@ static int hull(const char *in, const char *out, const hull_opts *ho, silk_decim
         }
     }
     simp_free(&m);
+    hull_fine_free(&fine);
     return rc;
 }
 

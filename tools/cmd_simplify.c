@@ -85,7 +85,7 @@ int simp_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_
     return rc;
 }
 
-int simp_write_obj(const simp_mesh *m, const char *path, const char *comment)
+int simp_write_obj(const simp_mesh *m, const double *normals, const char *path, const char *comment)
 {
     silk_outfile o;
     silk_error err;
@@ -98,8 +98,16 @@ int simp_write_obj(const simp_mesh *m, const char *path, const char *comment)
     fprintf(f, "# %s: %u triangles, %u vertices\n", comment, m->ntris, m->nverts);
     for (uint32_t i = 0; i < m->nverts; i++)
         fprintf(f, "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
-    for (uint32_t i = 0; i < m->ntris; i++)
-        fprintf(f, "f %u %u %u\n", m->tri[3 * i] + 1, m->tri[3 * i + 1] + 1, m->tri[3 * i + 2] + 1);
+    if (normals)
+        for (uint32_t i = 0; i < m->nverts; i++)
+            fprintf(f, "vn %.6f %.6f %.6f\n", normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+    for (uint32_t i = 0; i < m->ntris; i++) {
+        const uint32_t *t = &m->tri[3 * i];
+        if (normals)
+            fprintf(f, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1);
+        else
+            fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    }
     if (to_stdout) return fflush(stdout) == 0 ? 0 : cli_fail(CLI_EXIT_INPUT, "cannot write to stdout");
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
@@ -153,7 +161,7 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
                       "%u non-manifold vertices, %u misoriented edges); not written",
                       in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
-    else if ((rc = simp_write_obj(&m, out, comment)) == 0) {
+    else if ((rc = simp_write_obj(&m, NULL, out, comment)) == 0) {
         if (strcmp(out, "-") != 0)
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
                    m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);

@@ -71,6 +71,7 @@ typedef struct hull {
     hull_stats *st;
     uint32_t nv, nt, alive;
     double *pos, margin;
+    double *fp, *fn;           /* what each vertex stands for: point and normal on the detailed surface */
     uint32_t *tri, *stamp, *mark, gen;
     uint8_t *vdead, *tdead;
     faces *vf;
@@ -313,6 +314,53 @@ static int offer(hull *h, uint32_t u, uint32_t v)
     return r == OK ? heap_add(h, &e) : refuse(h, &e, r);
 }
 
+/* The barycentric coordinates of the point of triangle abc closest to p
+ * (by regions: Ericson, Real-Time Collision Detection 5.1.5) into l; the
+ * squared distance. */
+static double closest_on_tri(const double *p, const double *a, const double *b, const double *c, double l[3])
+{
+    double ab[3], ac[3], ap[3], bp[3], cp[3];
+    sub(b, a, ab), sub(c, a, ac), sub(p, a, ap), sub(p, b, bp), sub(p, c, cp);
+    double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp), d5 = dot(ab, cp), d6 = dot(ac, cp);
+    double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2, t;
+    if (d1 <= 0 && d2 <= 0) l[0] = 1, l[1] = 0, l[2] = 0;
+    else if (d3 >= 0 && d4 <= d3) l[0] = 0, l[1] = 1, l[2] = 0;
+    else if (d6 >= 0 && d5 <= d6) l[0] = 0, l[1] = 0, l[2] = 1;
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0) t = d1 / (d1 - d3), l[0] = 1 - t, l[1] = t, l[2] = 0;
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0) t = d2 / (d2 - d6), l[0] = 1 - t, l[1] = 0, l[2] = t;
+    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        t = (d4 - d3) / ((d4 - d3) + (d5 - d6)), l[0] = 0, l[1] = 1 - t, l[2] = t;
+    else {
+        double den = 1 / (va + vb + vc);
+        l[1] = vb * den, l[2] = vc * den, l[0] = 1 - l[1] - l[2];
+    }
+    double q[3];
+    for (int k = 0; k < 3; k++) q[k] = l[0] * a[k] + l[1] * b[k] + l[2] * c[k] - p[k];
+    return dot(q, q);
+}
+
+/* What the merged vertex at w stands for: interpolated at its closest
+ * point on the faces around (u, v), before the collapse, into p and n. */
+static void stand_for(hull *h, uint32_t u, uint32_t v, const double w[3], double p[3], double n[3])
+{
+    double best = INFINITY, l[3], bl[3] = { 1, 0, 0 };
+    uint32_t bf = h->vf[u].f[0];
+    gather_ring(h, u, v);   /* place() has found it no larger than MAX_RING */
+    for (uint32_t i = 0; i < h->nring; i++) {
+        const uint32_t *t = &h->tri[3 * h->ring[i]];
+        double d = closest_on_tri(w, &h->pos[3 * t[0]], &h->pos[3 * t[1]], &h->pos[3 * t[2]], l);
+        if (d < best) best = d, bf = h->ring[i], memcpy(bl, l, sizeof l);
+    }
+    const uint32_t *t = &h->tri[3 * bf];
+    for (int k = 0; k < 3; k++) {
+        p[k] = n[k] = 0;
+        for (int j = 0; j < 3; j++) p[k] += bl[j] * h->fp[3 * t[j] + k], n[k] += bl[j] * h->fn[3 * t[j] + k];
+    }
+    double len = sqrt(dot(n, n));
+    if (len > 0)
+        for (int k = 0; k < 3; k++) n[k] /= len;
+}
+
 /* Merge v into u at w (the one with more faces keeps its index). */
 static int collapse(hull *h, uint32_t u, uint32_t v, const double w[3])
 {
@@ -320,6 +368,10 @@ static int collapse(hull *h, uint32_t u, uint32_t v, const double w[3])
         uint32_t t = u;
         u = v, v = t;
     }
+    double fp[3], fn[3];
+    stand_for(h, u, v, w, fp, fn);
+    memcpy(&h->fp[3 * u], fp, sizeof fp);
+    memcpy(&h->fn[3 * u], fn, sizeof fn);
     memcpy(&h->pos[3 * u], w, 3 * sizeof *w);
     h->stamp[u]++;
     h->stamp[v]++;
@@ -410,7 +462,7 @@ static void hull_free(hull *h)
 {
     if (h->vf)
         for (uint32_t i = 0; i < h->nv; i++) free(h->vf[i].f);
-    free(h->vf), free(h->pos), free(h->tri), free(h->stamp), free(h->mark), free(h->vdead), free(h->tdead);
+    free(h->vf), free(h->pos), free(h->fp), free(h->fn), free(h->tri), free(h->stamp), free(h->mark), free(h->vdead), free(h->tdead);
     free(h->heap), free(h->later), free(h->ring), free(h->nbr);
 }
 
@@ -428,8 +480,28 @@ static int hull_init(hull *h, const simp_mesh *m, const hull_opts *o, hull_stats
     h->tdead = calloc(nt, 1);
     h->vf = calloc(nv, sizeof *h->vf);
     h->ring = malloc(MAX_RING * sizeof *h->ring);
-    if (!h->pos || !h->tri || !h->stamp || !h->mark || !h->vdead || !h->tdead || !h->vf || !h->ring) return -1;
+    h->fp = malloc(3 * nv * sizeof *h->fp);
+    h->fn = calloc(3 * nv, sizeof *h->fn);
+    if (!h->pos || !h->tri || !h->stamp || !h->mark || !h->vdead || !h->tdead || !h->vf || !h->ring || !h->fp || !h->fn)
+        return -1;
     memcpy(h->pos, m->pos, 3 * (size_t)h->nv * sizeof *h->pos);
+    memcpy(h->fp, m->pos, 3 * (size_t)h->nv * sizeof *h->fp);
+    /* the detailed mesh's area-weighted vertex normals, outward even for the
+     * inner hull (whose input is turned over) */
+    for (uint32_t f = 0; f < h->nt; f++) {
+        const uint32_t *t = &m->tri[3 * f];
+        double e1[3], e2[3], n[3];
+        sub(&m->pos[3 * t[1]], &m->pos[3 * t[0]], e1);
+        sub(&m->pos[3 * t[2]], &m->pos[3 * t[0]], e2);
+        cross(e1, e2, n);
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++) h->fn[3 * t[k] + j] += o->inner ? -n[j] : n[j];
+    }
+    for (uint32_t i = 0; i < h->nv; i++) {
+        double l = sqrt(dot(&h->fn[3 * i], &h->fn[3 * i]));
+        if (l > 0)
+            for (int k = 0; k < 3; k++) h->fn[3 * i + k] /= l;
+    }
     memcpy(h->tri, m->tri, 3 * (size_t)h->nt * sizeof *h->tri);
     double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY }, size = 0;
     for (uint32_t i = 0; i < h->nv; i++)
@@ -442,8 +514,16 @@ static int hull_init(hull *h, const simp_mesh *m, const hull_opts *o, hull_stats
     return 0;
 }
 
-int hull_run(simp_mesh *m, const hull_opts *o, hull_stats *st)
+void hull_fine_free(hull_fine *f)
 {
+    free(f->point);
+    free(f->normal);
+    memset(f, 0, sizeof *f);
+}
+
+int hull_run(simp_mesh *m, const hull_opts *o, hull_stats *st, hull_fine *fine)
+{
+    if (fine) memset(fine, 0, sizeof *fine);
     memset(st, 0, sizeof *st);
     st->tris_in = m->ntris;
     st->volume_in = st->volume_out = hull_volume(m);
@@ -454,8 +534,13 @@ int hull_run(simp_mesh *m, const hull_opts *o, hull_stats *st)
     uint32_t *remap = malloc((h.nv ? h.nv : 1) * sizeof *remap);
     double *pos = malloc(3 * (size_t)(h.nv ? h.nv : 1) * sizeof *pos);
     uint32_t *tri = malloc(3 * (size_t)(h.alive ? h.alive : 1) * sizeof *tri);
-    if (!remap || !pos || !tri) {
+    if (fine) {
+        fine->point = malloc(3 * (size_t)(h.nv ? h.nv : 1) * sizeof *fine->point);
+        fine->normal = malloc(3 * (size_t)(h.nv ? h.nv : 1) * sizeof *fine->normal);
+    }
+    if (!remap || !pos || !tri || (fine && (!fine->point || !fine->normal))) {
         free(remap), free(pos), free(tri);
+        if (fine) hull_fine_free(fine);
         goto done;
     }
     /* The live vertices in their old order, then the live faces. */
@@ -463,6 +548,10 @@ int hull_run(simp_mesh *m, const hull_opts *o, hull_stats *st)
     for (uint32_t i = 0; i < h.nv; i++) {
         remap[i] = nv;
         if (h.vdead[i] || h.vf[i].n == 0) continue;
+        if (fine) {
+            memcpy(&fine->point[3 * nv], &h.fp[3 * i], 3 * sizeof *pos);
+            memcpy(&fine->normal[3 * nv], &h.fn[3 * i], 3 * sizeof *pos);
+        }
         memcpy(&pos[3 * nv++], &h.pos[3 * i], 3 * sizeof *pos);
     }
     for (uint32_t f = 0; f < h.nt; f++) {

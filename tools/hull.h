@@ -42,11 +42,23 @@ typedef struct hull_stats {
     double volume_in, volume_out;
 } hull_stats;
 
+/* What each hull vertex stands for on the detailed surface (section 7,
+ * "closest point"): every vertex of the detailed mesh stands for itself,
+ * with its area-weighted normal; a merged vertex for what its closest point
+ * on the faces around the edge before the collapse stands for, interpolated
+ * there.  malloc'd, 3 doubles per output vertex; hull_fine_free. */
+typedef struct hull_fine {
+    double *point;           /* near the detailed surface */
+    double *normal;          /* unit, outward */
+} hull_fine;
+void hull_fine_free(hull_fine *f);
+
 /* Replace m (closed, manifold, consistently oriented with outward normals:
- * the caller checks) by its hull.  Returns 0, or -1 when out of memory (m
- * is then unchanged).  It stops early only when every remaining collapse is
- * refused; stats tell how far it got. */
-int hull_run(simp_mesh *m, const hull_opts *o, hull_stats *st);
+ * the caller checks) by its hull, and fill fine (unless NULL) for its
+ * vertices.  Returns 0, or -1 when out of memory (m is then unchanged).  It
+ * stops early only when every remaining collapse is refused; stats tell how
+ * far it got. */
+int hull_run(simp_mesh *m, const hull_opts *o, hull_stats *st, hull_fine *fine);
 
 /* The volume m encloses (positive for outward normals). */
 double hull_volume(const simp_mesh *m);

@@ -66,10 +66,11 @@ void simp_free(simp_mesh *m);
  * loader reads it (every format, every error message), coordinates times
  * scale, widened to double, and whether it is closed and manifold; 0 or an
  * exit code after printing the error.  simp_write_obj: OBJ with the comment
- * line "# COMMENT: N triangles, N vertices", atomically, "-" for stdout; 0
- * or an exit code after printing the error. */
+ * line "# COMMENT: N triangles, N vertices" and, unless normals is NULL, one
+ * normal per vertex (3 doubles each, "vn" lines, faces "f a//a ..."),
+ * atomically, "-" for stdout; 0 or an exit code after printing the error. */
 int simp_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold);
-int simp_write_obj(const simp_mesh *m, const char *path, const char *comment);
+int simp_write_obj(const simp_mesh *m, const double *normals, const char *path, const char *comment);
 
 /* Their common options: --triangles N (4..1e8), --scale S, -o/--output OUT.
  * simp_common_option: 1 when argv[*i] is one of them (consumed with its
