@@ -29,6 +29,15 @@ check "inner: less volume" grep -qE '\(-[0-9.]+%\)' "$out"
 check "to stdout: 50 faces" [ "$(grep -c '^f ' "$tmp/stdout.obj")" = 50 ]
 check "to stdout: nothing else on stderr" [ ! -s "$err" ]
 
+# a cube cannot lose a corner without cutting into itself: all of it, and a warning
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n' >"$tmp/cube.obj"
+printf 'f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n' >>"$tmp/cube.obj"
+run_silk hull "$tmp/cube.obj" -o "$tmp/cube-hull.obj" --triangles 4
+cube_kept() {
+    [ "$rc" -eq 0 ] && grep -q "triangles=12 .*collapses=0" "$out" && grep -q "^silk: warning: .*stopped at 12 triangles" "$err"
+}
+check "cube: kept whole, with a warning" cube_kept
+
 # errors
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n' >"$tmp/open.obj"
 want="closed, manifold" expect_input "open mesh" hull "$tmp/open.obj" -o "$tmp/x.obj" --triangles 4
