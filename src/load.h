@@ -73,6 +73,14 @@ silk_status silk_ld_parse_decimal(const char *t, size_t n, silk_decimal *d,
 /* Quote at most 32 bytes of a token for an error message. */
 const char *silk_ld_quote(const char *s, size_t n, char *buf, size_t bufsize);
 
+/* STL (stl.c): whether the buffer has exactly the size of the binary STL
+ * its header describes (84 + 50 n bytes), and whether a byte may appear in
+ * a text file (the mesh readers' test for binary data). */
+int silk_ld_stl_binary_size(const void *data, size_t len);
+/* Whether the buffer starts (after blanks) with the keyword "solid". */
+int silk_ld_stl_solid(const void *data, size_t len);
+int silk_ld_text_byte(unsigned char ch);
+
 /* Arena bytes an array of count*size takes (aligned), added to *total with
  * overflow check.  Returns 0 on overflow. */
 int silk_ld_need(size_t *total, uint64_t count, size_t size);

@@ -105,7 +105,15 @@ silk_status silk_load_obj(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
 silk_status silk_load_ply(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
-/* Picks the format from the content ("ply\n" magic) and falls back to OBJ. */
+/* STL, ascii or binary (told apart by the binary size, 84 + 50 n bytes).
+ * Corners with bit-identical Q16.16 coordinates become one vertex. */
+silk_status silk_load_stl(const void *data, size_t len, const char *name,
+                          const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
+/* Picks the reader from the content: "ply" magic, the size of a binary STL
+ * or an ascii STL's "solid", else OBJ; a name ending in ".stl" picks STL
+ * when the content does not say.  Files of other formats (glTF, FBX, 3DS,
+ * OFF, compressed or archived files, binary data) fail with a line naming
+ * what they are (docs/formats.md). */
 silk_status silk_load_mesh(const void *data, size_t len, const char *name,
                            const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
 
