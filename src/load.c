@@ -19,6 +19,7 @@ void silk_load_opts_default(silk_load_opts *o)
     o->scale.exp10 = 0;
     o->crease_deg = SILK_DEFAULT_CREASE_DEG;
     o->normals = SILK_NORMALS_COMPUTE;
+    o->orient = SILK_ORIENT_FIX;
 }
 
 /* ---- choosing the reader --------------------------------------------------- */
