@@ -266,9 +266,8 @@ static silk_status binary_check(const unsigned char *b, size_t len, const char *
                          "binary STL is truncated: the header declares %llu triangles (%llu bytes), "
                          "the file has %zu bytes", (unsigned long long)n, (unsigned long long)want, len);
     return silk_fail(err, SILK_ERR_PARSE, name, 0,
-                     "binary STL has %llu bytes after its %llu triangles (the header declares %llu bytes, "
-                     "the file has %zu)", (unsigned long long)((uint64_t)len - want), (unsigned long long)n,
-                     (unsigned long long)want, len);
+                     "binary STL is longer than its header says: %llu triangles take %llu bytes, the file has %zu",
+                     (unsigned long long)n, (unsigned long long)want, len);
 }
 
 static silk_status binary_fill(const unsigned char *b, uint32_t ntri, silk_vec3 *cpos, silk_ld_coords *coords,
