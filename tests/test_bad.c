@@ -2,7 +2,8 @@
  * test_bad.c - the malformed-input corpus in tests/bad/ (OBJ, PLY, STL and
  * files of formats silk does not read), through the library: every file
  * must fail to load with exactly the line its NAME.expected gives (less
- * the CLI's "silk: " prefix), leave the arena as it was, and do so under the sanitizers without reading outside the buffer.
+ * the CLI's "silk: " prefix), leave the arena as it was, and do so under
+ * the sanitizers without reading outside the buffer.
  * tests/cli_bad.sh checks the same files through the `silk` command.
  * Run from the repository root (tests/run.sh does).
  */
