@@ -113,12 +113,11 @@ silk_status silk_load_mesh(const void *data, size_t len, const char *name,
         return silk_load_stl(data, len, name, opts, a, out, err);
     /* Binary data named .stl is taken for a damaged binary STL. */
     const char *what = unsupported(p, len);
-    if (what == binary_data && name_ends_stl(name)) what = NULL;
+    if (what == binary_data && name_ends_stl(name)) return silk_load_stl(data, len, name, opts, a, out, err);
     if (what) {
         if (out) memset(out, 0, sizeof *out);
         return silk_fail(err, SILK_ERR_PARSE, name ? name : "mesh", 0, "%s", what);
     }
-    if (name_ends_stl(name)) return silk_load_stl(data, len, name, opts, a, out, err);
     return silk_load_obj(data, len, name, opts, a, out, err);
 }
 

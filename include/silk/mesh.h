@@ -120,8 +120,8 @@ silk_status silk_load_ply(const void *data, size_t len, const char *name,
 silk_status silk_load_stl(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
 /* Picks the reader from the content: "ply" magic, the size of a binary STL
- * or an ascii STL's "solid", else OBJ; a name ending in ".stl" picks STL
- * when the content does not say.  Files of other formats (glTF, FBX, 3DS,
+ * or an ascii STL's "solid", else OBJ; binary data in a file whose name
+ * ends in ".stl" is read as a (damaged) binary STL.  Files of other formats (glTF, FBX, 3DS,
  * OFF, compressed or archived files, binary data) fail with a line naming
  * what they are (docs/formats.md). */
 silk_status silk_load_mesh(const void *data, size_t len, const char *name,
