@@ -525,6 +525,20 @@ silk_status silk_ld_parse_decimal(const char *t, size_t n, silk_decimal *d,
 
 /* ---- messages and memory ------------------------------------------------------- */
 
+silk_status silk_ld_start(const char *fn, const void *data, size_t len, const char **name,
+                          const silk_load_opts **opts, silk_load_opts *defaults, silk_arena *a, silk_mesh *out,
+                          silk_error *err)
+{
+    if (!*name) *name = "mesh";
+    if (!*opts) { silk_load_opts_default(defaults); *opts = defaults; }
+    if (!a || !out || (!data && len))
+        return silk_fail(err, SILK_ERR_ARG, *name, 0, "%s: missing buffer, arena or output", fn);
+    if ((*opts)->scale.mant <= 0)
+        return silk_fail(err, SILK_ERR_ARG, *name, 0, "scale must be positive");
+    memset(out, 0, sizeof *out);
+    return SILK_OK;
+}
+
 const char *silk_ld_quote(const char *s, size_t n, char *buf, size_t bufsize)
 {
     size_t keep = n > 32 ? 32 : n, o = 0;

@@ -81,6 +81,13 @@ int silk_ld_stl_binary_size(const void *data, size_t len);
 int silk_ld_stl_solid(const void *data, size_t len);
 int silk_ld_text_byte(unsigned char ch);
 
+/* What every reader checks first: a name ("mesh" for NULL), options (the
+ * defaults, in *defaults, for NULL), a buffer, an arena and an output
+ * (fn names the reader in that error), a positive scale.  Clears *out. */
+silk_status silk_ld_start(const char *fn, const void *data, size_t len, const char **name,
+                          const silk_load_opts **opts, silk_load_opts *defaults, silk_arena *a, silk_mesh *out,
+                          silk_error *err);
+
 /* Arena bytes an array of count*size takes (aligned), added to *total with
  * overflow check.  Returns 0 on overflow. */
 int silk_ld_need(size_t *total, uint64_t count, size_t size);

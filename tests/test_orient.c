@@ -16,6 +16,7 @@
 #include "silk/silk.h"
 #include "silk/validate.h"
 #include "support/testmesh.h"
+#include "support/testvec.h"
 
 #define ARENA_BYTES (8u << 20)
 #define PI 3.14159265358979323846
@@ -85,13 +86,8 @@ static double volume(const silk_mesh *m)
 {
     double v = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        double p[3][3];
-        for (int k = 0; k < 3; k++) {
-            silk_vec3 q = m->pos[m->tri[3 * t + k]];
-            p[k][0] = q.x / 65536.0; p[k][1] = q.y / 65536.0; p[k][2] = q.z / 65536.0;
-        }
-        v += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-              p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) / 6;
+        dvec p0 = dv(m->pos[m->tri[3 * t]]), p1 = dv(m->pos[m->tri[3 * t + 1]]), p2 = dv(m->pos[m->tri[3 * t + 2]]);
+        v += ddot(p0, dcross(p1, p2)) / 6;
     }
     return v;
 }
@@ -112,7 +108,17 @@ static int consistent(const silk_mesh *m)
 }
 
 static shape S;
-static uint32_t T[3 * 8192];
+static uint32_t T[3 * 8192];   /* S's triangles as the test winds them */
+
+/* T = S's triangles, then every step-th of [from, to) flipped (returns how
+ * many). */
+static void copy_tris(void) { memcpy(T, S.tri, sizeof(uint32_t) * 3 * S.nt); }
+static uint32_t flip_range(uint32_t from, uint32_t to, uint32_t step)
+{
+    uint32_t n = 0;
+    for (uint32_t t = from; t < to; t += step) flip(&T[3 * t]), n++;
+    return n;
+}
 
 TEST(sphere_is_outward_already)
 {
@@ -135,10 +141,8 @@ TEST(flipped_and_inside_out)
     add_sphere(&S, 0, 1, 10, 11, 0);
     /* every third triangle, then every triangle, then all but the first */
     for (int pattern = 0; pattern < 3; pattern++) {
-        uint32_t flipped = 0;
-        memcpy(T, S.tri, sizeof(uint32_t) * 3 * S.nt);
-        for (uint32_t t = 0; t < S.nt; t++)
-            if ((pattern == 0 && t % 3 == 0) || pattern == 1 || (pattern == 2 && t > 0)) flip(&T[3 * t]), flipped++;
+        copy_tris();
+        uint32_t flipped = flip_range(pattern == 2, S.nt, pattern == 0 ? 3 : 1);
         CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
         CHECKF(f.m.nreoriented_tris == flipped, "pattern %d: %u reoriented, %u flipped", pattern,
                f.m.nreoriented_tris, flipped);
@@ -161,9 +165,9 @@ TEST(components_each_outward)
     add_sphere(&S, -2, 1, 8, 7, 0);
     uint32_t first = S.nt;
     add_sphere(&S, 2, 0.5, 12, 9, 0);
-    memcpy(T, S.tri, sizeof(uint32_t) * 3 * S.nt);
-    for (uint32_t t = first; t < S.nt; t++) flip(&T[3 * t]);
-    for (uint32_t t = 0; t < first; t += 5) flip(&T[3 * t]);
+    copy_tris();
+    flip_range(first, S.nt, 1);
+    flip_range(0, first, 5);
     CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
     CHECK(same_tris(&f.m, S.tri));
     CHECK(consistent(&f.m) && volume(&f.m) > 0);
@@ -179,13 +183,13 @@ TEST(open_surface_majority)
     add_sphere(&S, 0, 1, 10, 10, 1);
     CHECK(build(&f, &S, S.tri, SILK_ORIENT_FIX) == SILK_OK);
     CHECK(f.m.nboundary_edges > 0 && f.m.nreoriented_tris == 0);
-    memcpy(T, S.tri, sizeof(uint32_t) * 3 * S.nt);
-    uint32_t few = 0;
-    for (uint32_t t = 0; t < S.nt; t += 4) flip(&T[3 * t]), few++;
+    copy_tris();
+    uint32_t few = flip_range(0, S.nt, 4);
     CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
     CHECK(f.m.nreoriented_tris == few && same_tris(&f.m, S.tri));
     /* all flipped: a consistent open surface is left as it is */
-    for (uint32_t t = 0; t < S.nt; t++) { memcpy(&T[3 * t], &S.tri[3 * t], sizeof(uint32_t) * 3); flip(&T[3 * t]); }
+    copy_tris();
+    flip_range(0, S.nt, 1);
     CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
     CHECK(f.m.nreoriented_tris == 0 && same_tris(&f.m, T));
     tm_fixture_free(&f);
@@ -216,8 +220,8 @@ TEST(moebius_left_alone)
         t[3] = a0; t[4] = b1; t[5] = a1;
         S.nt += 2;
     }
-    memcpy(T, S.tri, sizeof(uint32_t) * 3 * S.nt);
-    for (uint32_t t = 0; t < S.nt; t += 3) flip(&T[3 * t]);
+    copy_tris();
+    flip_range(0, S.nt, 3);
     CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
     CHECKF(f.m.nnonorientable_tris == S.nt && f.m.nreoriented_tris == 0, "%u non-orientable, %u reoriented",
            f.m.nnonorientable_tris, f.m.nreoriented_tris);
@@ -263,8 +267,8 @@ TEST(volume_at_the_range_limit)
         S.nv = 8;
         S.nt = 12;
         memcpy(S.tri, cube, sizeof cube);
-        memcpy(T, cube, sizeof cube);
-        for (uint32_t t = 0; t < 12; t++) flip(&T[3 * t]);
+        copy_tris();
+        flip_range(0, 12, 1);
         CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
         CHECKF(same_tris(&f.m, S.tri) && f.m.nreoriented_tris == 12, "scale %g: %u reoriented", s,
                f.m.nreoriented_tris);
@@ -283,7 +287,7 @@ TEST(random_windings)
         memset(&S, 0, sizeof S);
         int seg = 3 + (int)(check_rand64() % 20), bands = 2 + (int)(check_rand64() % 20);
         add_sphere(&S, check_uniform(-5, 5), check_uniform(0.1, 20), seg, bands, 0);
-        memcpy(T, S.tri, sizeof(uint32_t) * 3 * S.nt);
+        copy_tris();
         for (uint32_t t = 0; t < S.nt; t++)
             if (check_rand64() & 1) flip(&T[3 * t]);
         CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
