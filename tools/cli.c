@@ -491,7 +491,8 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
 void cli_orient_note(const char *path, const silk_mesh *m)
 {
     if (m->nreoriented_tris)
-        fprintf(stderr, "silk: note: %s: %lu triangles turned round to face outward%s (--orient keep leaves them)\n",
+        fprintf(stderr, "silk: note: %s: %lu triangles turned round for a consistent, outward winding%s "
+                "(--orient keep leaves them)\n",
                 path, (unsigned long)m->nreoriented_tris,
                 m->nnonorientable_tris ? "; others are on a non-orientable surface, left as they are" : "");
     else if (m->nnonorientable_tris)
