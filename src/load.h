@@ -61,6 +61,15 @@ int silk_ld_dec_cmp(silk_decimal a, silk_decimal b);          /* -1, 0, 1 */
 /* Up to `sig` significant digits, "5000.0", "0.001", "1.5e+30". */
 char *silk_ld_dec_format(silk_decimal d, int sig, char *buf, size_t n);
 
+/* Where a text reader is: the rest of the buffer, the line last read (for
+ * messages), the file's name and the error to fill. */
+typedef struct silk_ld_text {
+    const char *p, *end;
+    uint32_t line;
+    const char *name;
+    silk_error *err;
+} silk_ld_text;
+
 /* Next whitespace-separated token of the text [*p, e) as [*tb, *tb + *tn);
  * a token starting with '#' comments out the rest.  Returns 0 at the end. */
 int silk_ld_token(const char **p, const char *e, const char **tb, size_t *tn);

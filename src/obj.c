@@ -17,12 +17,7 @@ typedef struct obj_counts {
     int any_s;                   /* there is an `s` statement */
 } obj_counts;
 
-typedef struct obj_reader {
-    const char *p, *end;         /* rest of the buffer */
-    uint32_t line;               /* number of the line last returned */
-    const char *name;
-    silk_error *err;
-} obj_reader;
+typedef silk_ld_text obj_reader;
 
 /* Next line as [*b, *e) without its end ("\n", "\r\n" or a lone "\r"). */
 static int next_line(obj_reader *r, const char **b, const char **e)

@@ -125,12 +125,7 @@ static silk_status weld(const silk_vec3 *cpos, uint32_t nc, const char *name, si
 
 /* ---- ascii --------------------------------------------------------------------- */
 
-typedef struct stl_reader {
-    const char *p, *end;         /* rest of the buffer */
-    uint32_t line;               /* number of the line last returned */
-    const char *name;
-    silk_error *err;
-} stl_reader;
+typedef silk_ld_text stl_reader;
 
 #define FAIL(r, code, ...) silk_fail((r)->err, (code), (r)->name, (r)->line, __VA_ARGS__)
 

@@ -66,12 +66,14 @@ static void flip(uint32_t *t)
     t[2] = x;
 }
 
-static silk_status build(tm_fixture *f, const shape *s, const uint32_t *tri, silk_orient_mode mode)
+static tm_fixture F;   /* one arena for every test */
+
+static silk_status build(const shape *s, const uint32_t *tri, silk_orient_mode mode)
 {
-    tm_fixture_reset(f);
-    f->opts.orient = mode;
-    if (!tm_fixture_input(f, s->pos, s->nv, tri, s->nt)) return SILK_ERR_NOMEM;
-    return tm_fixture_build(f);
+    tm_fixture_reset(&F);
+    F.opts.orient = mode;
+    if (!tm_fixture_input(&F, s->pos, s->nv, tri, s->nt)) return SILK_ERR_NOMEM;
+    return tm_fixture_build(&F);
 }
 
 static int same_tris(const silk_mesh *m, const uint32_t *tri)
@@ -112,6 +114,7 @@ static uint32_t T[3 * 8192];   /* S's triangles as the test winds them */
 
 /* T = S's triangles, then every step-th of [from, to) flipped (returns how
  * many). */
+static void new_shape(void) { memset(&S, 0, sizeof S); }
 static void copy_tris(void) { memcpy(T, S.tri, sizeof(uint32_t) * 3 * S.nt); }
 static uint32_t flip_range(uint32_t from, uint32_t to, uint32_t step)
 {
@@ -122,85 +125,71 @@ static uint32_t flip_range(uint32_t from, uint32_t to, uint32_t step)
 
 TEST(sphere_is_outward_already)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
-    memset(&S, 0, sizeof S);
+    new_shape();
     add_sphere(&S, 0, 1, 10, 11, 0);
-    CHECK(build(&f, &S, S.tri, SILK_ORIENT_FIX) == SILK_OK);
-    CHECK(f.m.nreoriented_tris == 0 && f.m.nnonorientable_tris == 0);
-    CHECK(same_tris(&f.m, S.tri));
-    CHECK(volume(&f.m) > 3.5 && consistent(&f.m));
-    tm_fixture_free(&f);
+    CHECK(build(&S, S.tri, SILK_ORIENT_FIX) == SILK_OK);
+    CHECK(F.m.nreoriented_tris == 0 && F.m.nnonorientable_tris == 0);
+    CHECK(same_tris(&F.m, S.tri));
+    CHECK(volume(&F.m) > 3.5 && consistent(&F.m));
 }
 
 TEST(flipped_and_inside_out)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
-    memset(&S, 0, sizeof S);
+    new_shape();
     add_sphere(&S, 0, 1, 10, 11, 0);
     /* every third triangle, then every triangle, then all but the first */
     for (int pattern = 0; pattern < 3; pattern++) {
         copy_tris();
         uint32_t flipped = flip_range(pattern == 2, S.nt, pattern == 0 ? 3 : 1);
-        CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
-        CHECKF(f.m.nreoriented_tris == flipped, "pattern %d: %u reoriented, %u flipped", pattern,
-               f.m.nreoriented_tris, flipped);
-        CHECKF(same_tris(&f.m, S.tri), "pattern %d: not the original triangles", pattern);
-        CHECK(silk_mesh_validate(&f.m, "test", &f.err) == SILK_OK);
+        CHECK(build(&S, T, SILK_ORIENT_FIX) == SILK_OK);
+        CHECKF(F.m.nreoriented_tris == flipped, "pattern %d: %u reoriented, %u flipped", pattern,
+               F.m.nreoriented_tris, flipped);
+        CHECKF(same_tris(&F.m, S.tri), "pattern %d: not the original triangles", pattern);
+        CHECK(silk_mesh_validate(&F.m, "test", &F.err) == SILK_OK);
         /* keep: the file as it is */
-        CHECK(build(&f, &S, T, SILK_ORIENT_KEEP) == SILK_OK);
-        CHECK(f.m.nreoriented_tris == 0 && same_tris(&f.m, T));
+        CHECK(build(&S, T, SILK_ORIENT_KEEP) == SILK_OK);
+        CHECK(F.m.nreoriented_tris == 0 && same_tris(&F.m, T));
     }
-    tm_fixture_free(&f);
 }
 
 /* Two spheres, one inside out, one of them with a scrambled winding: each
  * closed part is turned outward on its own. */
 TEST(components_each_outward)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
-    memset(&S, 0, sizeof S);
+    new_shape();
     add_sphere(&S, -2, 1, 8, 7, 0);
     uint32_t first = S.nt;
     add_sphere(&S, 2, 0.5, 12, 9, 0);
     copy_tris();
     flip_range(first, S.nt, 1);
     flip_range(0, first, 5);
-    CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
-    CHECK(same_tris(&f.m, S.tri));
-    CHECK(consistent(&f.m) && volume(&f.m) > 0);
-    tm_fixture_free(&f);
+    CHECK(build(&S, T, SILK_ORIENT_FIX) == SILK_OK);
+    CHECK(same_tris(&F.m, S.tri));
+    CHECK(consistent(&F.m) && volume(&F.m) > 0);
 }
 
 /* An open bowl has no inside: the winding most of its triangles have wins. */
 TEST(open_surface_majority)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
-    memset(&S, 0, sizeof S);
+    new_shape();
     add_sphere(&S, 0, 1, 10, 10, 1);
-    CHECK(build(&f, &S, S.tri, SILK_ORIENT_FIX) == SILK_OK);
-    CHECK(f.m.nboundary_edges > 0 && f.m.nreoriented_tris == 0);
+    CHECK(build(&S, S.tri, SILK_ORIENT_FIX) == SILK_OK);
+    CHECK(F.m.nboundary_edges > 0 && F.m.nreoriented_tris == 0);
     copy_tris();
     uint32_t few = flip_range(0, S.nt, 4);
-    CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
-    CHECK(f.m.nreoriented_tris == few && same_tris(&f.m, S.tri));
+    CHECK(build(&S, T, SILK_ORIENT_FIX) == SILK_OK);
+    CHECK(F.m.nreoriented_tris == few && same_tris(&F.m, S.tri));
     /* all flipped: a consistent open surface is left as it is */
     copy_tris();
     flip_range(0, S.nt, 1);
-    CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
-    CHECK(f.m.nreoriented_tris == 0 && same_tris(&f.m, T));
-    tm_fixture_free(&f);
+    CHECK(build(&S, T, SILK_ORIENT_FIX) == SILK_OK);
+    CHECK(F.m.nreoriented_tris == 0 && same_tris(&F.m, T));
 }
 
 /* A Moebius band cannot be oriented: it is left exactly as given. */
 TEST(moebius_left_alone)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
-    memset(&S, 0, sizeof S);
+    new_shape();
     const int n = 24;
     for (int i = 0; i < n; i++) {
         double a = 2 * PI * i / n, w;
@@ -222,39 +211,33 @@ TEST(moebius_left_alone)
     }
     copy_tris();
     flip_range(0, S.nt, 3);
-    CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
-    CHECKF(f.m.nnonorientable_tris == S.nt && f.m.nreoriented_tris == 0, "%u non-orientable, %u reoriented",
-           f.m.nnonorientable_tris, f.m.nreoriented_tris);
-    CHECK(same_tris(&f.m, T));
-    CHECK(silk_mesh_validate(&f.m, "test", &f.err) == SILK_OK);
-    tm_fixture_free(&f);
+    CHECK(build(&S, T, SILK_ORIENT_FIX) == SILK_OK);
+    CHECKF(F.m.nnonorientable_tris == S.nt && F.m.nreoriented_tris == 0, "%u non-orientable, %u reoriented",
+           F.m.nnonorientable_tris, F.m.nreoriented_tris);
+    CHECK(same_tris(&F.m, T));
+    CHECK(silk_mesh_validate(&F.m, "test", &F.err) == SILK_OK);
 }
 
 /* Three fins on one edge and a triangle that repeats a vertex: no walk
  * across the non-manifold edge, nothing broken. */
 TEST(nonmanifold_and_degenerate)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
     static const double pos[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 1, 1, 1 };
     static const uint32_t tri[] = { 0, 1, 2, 1, 0, 3, 0, 1, 4, 2, 1, 5, 5, 5, 2 };
-    memset(&S, 0, sizeof S);
+    new_shape();
     memcpy(S.pos, pos, sizeof pos);
     memcpy(S.tri, tri, sizeof tri);
     S.nv = 6;
     S.nt = 5;
-    CHECK(build(&f, &S, S.tri, SILK_ORIENT_FIX) == SILK_OK);
-    CHECK(f.m.nnonmanifold_edges == 1);
-    CHECK(silk_mesh_validate(&f.m, "test", &f.err) == SILK_OK);
-    tm_fixture_free(&f);
+    CHECK(build(&S, S.tri, SILK_ORIENT_FIX) == SILK_OK);
+    CHECK(F.m.nnonmanifold_edges == 1);
+    CHECK(silk_mesh_validate(&F.m, "test", &F.err) == SILK_OK);
 }
 
 /* At the edge of the coordinate range each volume term is near 2^82: the
  * sum must still have the right sign (it would wrap in 64 bits). */
 TEST(volume_at_the_range_limit)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
     for (int big = 0; big < 2; big++) {
         double s = big ? 1023.0 : 0.001;
         static const double unit[] = { -1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1,
@@ -262,43 +245,40 @@ TEST(volume_at_the_range_limit)
         /* the 12 triangles of a cube, outward */
         static const uint32_t cube[] = { 0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
                                          2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3 };
-        memset(&S, 0, sizeof S);
+        new_shape();
         for (int i = 0; i < 24; i++) S.pos[i] = unit[i] * s + (big ? 0 : 0.5);
         S.nv = 8;
         S.nt = 12;
         memcpy(S.tri, cube, sizeof cube);
         copy_tris();
         flip_range(0, 12, 1);
-        CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
-        CHECKF(same_tris(&f.m, S.tri) && f.m.nreoriented_tris == 12, "scale %g: %u reoriented", s,
-               f.m.nreoriented_tris);
-        CHECK(volume(&f.m) > 0);
+        CHECK(build(&S, T, SILK_ORIENT_FIX) == SILK_OK);
+        CHECKF(same_tris(&F.m, S.tri) && F.m.nreoriented_tris == 12, "scale %g: %u reoriented", s,
+               F.m.nreoriented_tris);
+        CHECK(volume(&F.m) > 0);
     }
-    tm_fixture_free(&f);
 }
 
 /* Random windings of random closed meshes (spheres of several sizes): the
  * result is consistent and outward, and the original winding. */
 TEST(random_windings)
 {
-    tm_fixture f;
-    tm_fixture_init(&f, ARENA_BYTES);
     for (int round = 0; round < 40; round++) {
-        memset(&S, 0, sizeof S);
+        new_shape();
         int seg = 3 + (int)(check_rand64() % 20), bands = 2 + (int)(check_rand64() % 20);
         add_sphere(&S, check_uniform(-5, 5), check_uniform(0.1, 20), seg, bands, 0);
         copy_tris();
         for (uint32_t t = 0; t < S.nt; t++)
             if (check_rand64() & 1) flip(&T[3 * t]);
-        CHECK(build(&f, &S, T, SILK_ORIENT_FIX) == SILK_OK);
-        CHECKF(same_tris(&f.m, S.tri), "round %d: %dx%d sphere", round, seg, bands);
-        CHECK(consistent(&f.m) && volume(&f.m) > 0);
+        CHECK(build(&S, T, SILK_ORIENT_FIX) == SILK_OK);
+        CHECKF(same_tris(&F.m, S.tri), "round %d: %dx%d sphere", round, seg, bands);
+        CHECK(consistent(&F.m) && volume(&F.m) > 0);
     }
-    tm_fixture_free(&f);
 }
 
 int main(void)
 {
+    tm_fixture_init(&F, ARENA_BYTES);
     RUN(sphere_is_outward_already);
     RUN(flipped_and_inside_out);
     RUN(components_each_outward);
@@ -307,5 +287,6 @@ int main(void)
     RUN(nonmanifold_and_degenerate);
     RUN(volume_at_the_range_limit);
     RUN(random_windings);
+    tm_fixture_free(&F);
     return check_done();
 }
