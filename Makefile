@@ -75,7 +75,17 @@ $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BU
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
 
+# The golden frames draw meshes made by `silk gen`'s generator.
+$(BUILD)/tests/test_golden: tests/test_golden.c $(BUILD)/obj/tools/gen.o $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -Itools -Iplatform -o $@ $< $(BUILD)/obj/tools/gen.o $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+
 tests: $(TEST_BIN) $(BUILD)/silk
+
+# Rewrite the golden frames (tests/golden/) that differ and list them.
+.PHONY: golden
+golden: $(BUILD)/tests/test_golden
+	$(BUILD)/tests/test_golden --update
 
 # The core may not use floating point: compiled without FP/SIMD registers,
 # any float or double use is a compile error.
