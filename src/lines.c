@@ -8,6 +8,12 @@
  * The records are copies of the ones the re-meshed triangles use, so a line
  * runs exactly along the triangle edges that make the drawn outline: at
  * the silhouette it is the boundary of the rendered object, bit for bit.
+ * The outline also runs where no segment is: along a mesh edge the surface
+ * folds over (the two triangles on it face opposite ways), round a cone's
+ * apex.  So after the vertex stage the contour of the drawn triangles -
+ * every side shared by two triangles that face opposite ways on screen,
+ * the records matched by their clip positions - is added as silhouette
+ * lines (silk_lines_contour).
  *
  * The polygonal outline of the coarse mesh, FLAT mode's outline and, on
  * request, a comparison in any mode: every edge between a front-facing and
@@ -21,8 +27,12 @@
  * the line would break up.  So each line vertex is lifted towards the eye
  * by what the triangles through it rise over one pixel (their depth slope,
  * at most their depth extent): a polygon offset scaled by slope, as
- * glPolygonOffset does, but only by the triangles the line lies on.
+ * glPolygonOffset does, but only by the triangles the line lies on; and
+ * by 1/LINE_NEAR of its depth, for the surface half a pixel inside a
+ * silhouette, whose depth rises like the square root of the distance from
+ * it, faster than any triangle's slope at the line.
  */
+#include <stdlib.h>
 #include <string.h>
 #include "silhouette.h"
 
@@ -191,6 +201,7 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
 typedef struct spt { int64_t x, y, d; } spt;
 
 #define GUARD 64   /* clip x, y within +-GUARD w */
+#define LINE_NEAR 128   /* lines are drawn this fraction of their depth nearer */
 
 static int screen_point(const silk_vertex_out *o, int width, int height, spt *p)
 {
@@ -280,7 +291,126 @@ uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_ge
 
 void silk_lines_apply_lift(silk_vertex_out *o, uint32_t lift)
 {
-    /* depth (w - z) / w grows by lift / 2^24: z falls by lift w / 2^24 */
-    int64_t dz = silk_shr_round64((int64_t)lift * o->clip.w, 24);
+    /* depth (w - z) / w grows by lift / 2^24: z falls by lift w / 2^24;
+     * and by a further 1/LINE_NEAR of itself, for the surface next to a
+     * silhouette, whose depth rises like a square root of the distance
+     * from it: half a pixel inside, the triangles there are nearer than
+     * their slope at the line says */
+    int64_t dz = silk_shr_round64((int64_t)lift * o->clip.w, 24) + ((int64_t)o->clip.w - o->clip.z) / LINE_NEAR;
     o->clip.z = silk_fx_sat((int64_t)o->clip.z - dz);
+}
+
+/* ---- the contour of the drawn triangles --------------------------------------------- */
+
+/* Records are matched by where the vertex stage put them: the records of
+ * one point (a vertex's corners, the copies of an edge point on the two
+ * sides of a crease) have the same clip position, bit for bit. */
+typedef struct rec_pos {
+    silk_vec4 c;
+    uint32_t r;
+} rec_pos;
+
+static int pos_cmp(const void *pa, const void *pb)
+{
+    const silk_vec4 *a = &((const rec_pos *)pa)->c, *b = &((const rec_pos *)pb)->c;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    if (a->z != b->z) return a->z < b->z ? -1 : 1;
+    if (a->w != b->w) return a->w < b->w ? -1 : 1;
+    return 0;
+}
+
+/* One side of a drawn triangle: its two points (smaller first), its
+ * records, and which way its triangle faces on screen (+1, -1; 0 unknown). */
+typedef struct half_edge {
+    uint32_t k0, k1, r0, r1;
+    int32_t facing;
+} half_edge;
+
+static int half_cmp(const void *pa, const void *pb)
+{
+    const half_edge *a = pa, *b = pb;
+    if (a->k0 != b->k0) return a->k0 < b->k0 ? -1 : 1;
+    if (a->k1 != b->k1) return a->k1 < b->k1 ? -1 : 1;
+    return 0;
+}
+
+/* Which way triangle t of g faces on screen: +1, -1, or 0 (edge-on, or a
+ * corner behind the eye or far outside the view). */
+static int32_t screen_facing(const silk_frame_geom *g, const silk_vertex_out *out, uint32_t t, int width, int height)
+{
+    const uint32_t *c = &g->tri[3 * t];
+    spt p[3];
+    for (int k = 0; k < 3; k++)
+        if (!screen_point(&out[c[k]], width, height, &p[k])) return 0;
+    int64_t area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+    return area2 > 0 ? 1 : area2 < 0 ? -1 : 0;
+}
+
+silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_vertex_out *out, int width, int height)
+{
+    if (!g->nlines) return SILK_OK;
+    if (g->ntri > UINT32_MAX / 3) return SILK_ERR_NOMEM;
+    uint32_t nhalf = 3 * g->ntri;
+    rec_pos *pos = silk_arena_array_top(a, g->nvrec, sizeof *pos, SILK_MEM_FRAME);
+    uint32_t *id = silk_arena_array_top(a, g->nvrec, sizeof *id, SILK_MEM_FRAME);
+    uint8_t *on_line = silk_arena_array_top(a, g->nvrec, 1, SILK_MEM_FRAME);
+    half_edge *h = silk_arena_array_top(a, nhalf, sizeof *h, SILK_MEM_FRAME);
+    if (!pos || !id || !on_line || !h) return SILK_ERR_NOMEM;
+
+    /* Each record's point: the first record at its position. */
+    for (uint32_t r = 0; r < g->nvrec; r++) {
+        pos[r].c = out[r].clip;
+        pos[r].r = r;
+    }
+    qsort(pos, g->nvrec, sizeof *pos, pos_cmp);
+    for (uint32_t i = 0; i < g->nvrec; i++) id[pos[i].r] = i && !pos_cmp(&pos[i - 1], &pos[i]) ? id[pos[i - 1].r] : i;
+    memset(on_line, 0, g->nvrec);
+    for (uint32_t i = 0; i < g->nline_vrec; i++)
+        if (g->line_src[i] < g->nvrec) on_line[id[g->line_src[i]]] = 1;
+
+    for (uint32_t t = 0; t < g->ntri; t++) {
+        int32_t facing = screen_facing(g, out, t, width, height);
+        for (uint32_t j = 0; j < 3; j++) {
+            half_edge *e = &h[3 * t + j];
+            e->r0 = g->tri[3 * t + j];
+            e->r1 = g->tri[3 * t + (j + 1) % 3];
+            uint32_t ka = id[e->r0], kb = id[e->r1];
+            e->k0 = ka < kb ? ka : kb;
+            e->k1 = ka < kb ? kb : ka;
+            e->facing = facing;
+        }
+    }
+    qsort(h, nhalf, sizeof *h, half_cmp);
+
+    /* A side shared by exactly two triangles facing opposite ways is on
+     * the contour, unless a line runs along it already. */
+    uint32_t ncont = 0;
+    for (uint32_t i = 0; i + 1 < nhalf; i++) {
+        const half_edge *e = &h[i], *o = &h[i + 1];
+        int two = !half_cmp(e, o) && (i + 2 >= nhalf || half_cmp(o, &h[i + 2])) && (i == 0 || half_cmp(&h[i - 1], e));
+        if (two && e->k0 != e->k1 && e->facing * o->facing < 0)
+            h[ncont++] = *e;
+    }
+
+    /* The lines again: the silhouette lines, the contour, the feature lines. */
+    silk_frame_geom old = *g;
+    if (!lines_alloc(a, g, old.nlines + ncont, (uint64_t)old.nline_vrec + 2 * (uint64_t)ncont)) {
+        *g = old;
+        return SILK_ERR_NOMEM;
+    }
+    for (uint8_t feature = 0; feature < 2; feature++) {
+        for (uint32_t i = 0; i < old.nlines; i++) {
+            if (old.line_feature[i] != feature) continue;
+            for (uint32_t j = old.line_start[i]; j < old.line_start[i + 1]; j++)
+                line_point(g, &old.line_vrec[j], old.line_src[j]);
+            line_end(g, feature);
+        }
+        for (uint32_t i = 0; !feature && i < ncont; i++) {
+            line_rec(g, h[i].r0);
+            line_rec(g, h[i].r1);
+            line_end(g, 0);
+        }
+    }
+    return SILK_OK;
 }

@@ -80,7 +80,7 @@ static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 {
     if (f->line_cache) *out = f->line_cache[i];
     else f->hal->vertex(f->hal, &f->geom, &f->g.line_vrec[i], out);
-    if (f->line_lift) silk_lines_apply_lift(out, f->line_lift[i]);
+    silk_lines_apply_lift(out, f->line_lift ? f->line_lift[i] : 0);
 }
 
 /* ---- Streamed frames ------------------------------------------------------------
@@ -250,6 +250,11 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     f->cache = silk_arena_array_top(a, f->g.nvrec, sizeof *f->cache, SILK_MEM_FRAME);
     if (f->cache)
         for (uint32_t i = 0; i < f->g.nvrec; i++) h->vertex(h, &f->geom, &f->g.vrec[i], &f->cache[i]);
+    /* Smooth lines: where the outline leaves the silhouette segments, the
+     * contour of the drawn triangles closes it (it needs the vertex stage's
+     * output; without room for it the frame says so). */
+    if (smooth_lines && (!f->cache || silk_lines_contour(a, &f->g, f->cache, v->cam.width, v->cam.height) != SILK_OK))
+        stats->fell_back = 1;
     f->line_cache = silk_arena_array_top(a, f->g.nline_vrec, sizeof *f->line_cache, SILK_MEM_FRAME);
     if (f->line_cache)
         for (uint32_t i = 0; i < f->g.nline_vrec; i++)

@@ -62,6 +62,15 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_view *v, int on_mesh,
                                  silk_frame_geom *g);
 
+/* The contour of the drawn triangles (after the vertex stage; out: its
+ * output for every record of g): every side shared by two triangles of g
+ * that face opposite ways on screen and that no line of g runs along yet,
+ * added to g's lines as a silhouette line.  Where the outline of the
+ * re-meshed surface leaves its silhouette segments (a fold along a mesh
+ * edge, round a cone's apex) these close it.  SILK_ERR_NOMEM, with g's
+ * lines unchanged, when they do not fit. */
+silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_vertex_out *out, int width, int height);
+
 /* How far to lift each line vertex towards the eye so that the triangles
  * it lies on do not hide it: per line record, in units of 2^-24 of the
  * rasterizer's depth (w - z) / w, from the depth slopes of the triangles

@@ -29,9 +29,9 @@
 
 #include "check.h"
 #include "silk/silk.h"
-#include "platform.h"
-#include "png_read.h"
-#include "gen.h"
+#include "../platform/platform.h"
+#include "../platform/png_read.h"
+#include "../tools/gen.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"
 
