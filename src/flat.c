@@ -3,7 +3,7 @@
  * corner (the records of paper Fig. 16 with no re-meshing at all).  This is
  * FLAT mode, and the reference SMOOTH mode is compared against.
  */
-#include "smooth.h"
+#include "frame.h"
 
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err)
 {

@@ -34,7 +34,7 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "silhouette.h"
+#include "lines.h"
 
 /* Room for nlines polylines over nrec records, from the top of the arena. */
 static int lines_alloc(silk_arena *a, silk_frame_geom *g, uint32_t nlines, uint64_t nrec)

@@ -18,7 +18,7 @@
 #ifndef SILK_PATCH_H
 #define SILK_PATCH_H
 
-#include "smooth.h"
+#include "frame.h"
 
 /* l_ij = (2 p_i + p_j) / 3, the inner control point of the straight edge
  * written as a cubic (eq. 6), rounded once. */

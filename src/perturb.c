@@ -32,7 +32,8 @@
  * becomes a MOVED record with it, so the vertex moves as one.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "perturb.h"
+#include "remesh.h"
 
 #define MIN_COS ((int64_t)1 << 30)     /* 1/4 in Q32.32 */
 #define RISE_CAP (2 * SILK_FX_ONE)      /* times the segment's rise */

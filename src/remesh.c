@@ -35,13 +35,13 @@
  * triangles and curves.  When the output does not fit, smooth.c drops parts
  * from the last one back (silk_remesh_reject_last); a dropped part is drawn
  * as the coarse mesh, which is crack-free because no edge is shared between
- * parts.  In STREAM mode (silhouette.h) nothing is dropped and nothing is
+ * parts.  In STREAM mode (plan.h) nothing is dropped and nothing is
  * stored: segments are rebuilt from the edges' points when needed, and
  * silk_remesh_emit_tri runs the same emission for one input triangle into
  * a small share with its own copies of the corner and side records.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "remesh.h"
 #include "curve.h"
 
 #define T_TWO_THIRDS ((silk_fx)43691)

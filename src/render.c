@@ -20,7 +20,9 @@
  * asking for them is SILK_ERR_ARG.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "smooth.h"
+#include "remesh.h"
+#include "lines.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -86,7 +88,7 @@ static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 /* ---- Streamed frames ------------------------------------------------------------
  *
  * A FLAT or SMOOTH frame without lines is never stored.  The silhouette plan
- * (silhouette.h: carrying edges, their points, the perturbation) is made once
+ * (plan.h: carrying edges, their points, the perturbation) is made once
  * per frame; an input triangle's share of the frame - its records, curves
  * and triangles, what a stored frame holds for it, in the same order - is
  * rebuilt and put through the vertex stage whenever a band needs it, so the

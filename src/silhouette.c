@@ -12,10 +12,10 @@
  *
  * Everything placed on an edge is computed here once per edge and frame and
  * collected into the edge's chain of parameters, which every triangle on the
- * edge then walks (see silhouette.h), so neighbours agree bit for bit.
+ * edge then walks (see plan.h), so neighbours agree bit for bit.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "plan.h"
 #include "curve.h"
 
 /* ---- small helpers ---------------------------------------------------------- */

@@ -5,7 +5,7 @@
  * vertex perturbation (perturb.c), and the vertex records for the HAL -
  * stored for the whole frame (silk_frame_smooth), or planned only and
  * streamed one input triangle at a time (silk_frame_smooth_stream, what the
- * renderer uses; silhouette.h).
+ * renderer uses; plan.h).
  *
  * Memory runs out gracefully: scratch that does not fit turns the frame into
  * the coarse mesh; output that does not fit drops re-meshed parts from the
@@ -13,7 +13,10 @@
  * frame is still drawn.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "smooth.h"
+#include "remesh.h"
+#include "perturb.h"
+#include "lines.h"
 
 static silk_status fall_back_flat(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
                                   silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)

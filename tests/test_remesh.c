@@ -14,7 +14,7 @@
 #include "check.h"
 #include "support/testframe.h"
 #include "silk/silk.h"
-#include "../src/smooth.h"
+#include "../src/frame.h"
 
 #define ARENA_BYTES (48u << 20)
 static unsigned char *arena_buf;

@@ -1,6 +1,6 @@
 /*
- * testframe.h - test support for the per-frame stages (src/smooth.h,
- * src/silhouette.h): a view around a mesh, the smooth-silhouette stages
+ * testframe.h - test support for the per-frame stages (src/frame.h,
+ * src/plan.h): a view around a mesh, the smooth-silhouette stages
  * run by hand so that the test can inspect the internal frame, and the
  * watertightness checks of a frame's output geometry.
  */
@@ -9,8 +9,10 @@
 
 #include <stdint.h>
 #include "silk/silk.h"
-#include "../../src/smooth.h"
-#include "../../src/silhouette.h"
+#include "../../src/frame.h"
+#include "../../src/plan.h"
+#include "../../src/remesh.h"
+#include "../../src/perturb.h"
 
 /* Looking at the centre of the mesh's bounding box from direction dir
  * (any length), dist bounding radii away: 512 x 512, 45 degrees, or a

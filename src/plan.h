@@ -1,6 +1,7 @@
 /*
- * silhouette.h - internal: the per-frame data the silhouette stages pass to
- * each other (paper section III-B..E).  Not installed.
+ * plan.h - internal: the plan of a SMOOTH frame, the per-frame data the
+ * silhouette stages pass to each other (paper section III-B..E), and
+ * silhouette.c, which makes its first part.  Not installed.
  *
  *   silhouette.c  visibility, silhouette triangles, the edges that carry
  *                 points this frame (silhouette bridges, feature segments),
@@ -27,10 +28,10 @@
  * order: the pictures are identical, and a stream frame needs a fraction of
  * the memory (no sides, no segments, no output arrays).
  */
-#ifndef SILK_SILHOUETTE_H
-#define SILK_SILHOUETTE_H
+#ifndef SILK_PLAN_H
+#define SILK_PLAN_H
 
-#include "smooth.h"
+#include "frame.h"
 
 #define SILK_SIL_NONE UINT32_MAX
 
@@ -152,39 +153,6 @@ void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
  * projected chord in pixels and cos alpha (see silhouette.c for why the
  * chord). */
 uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol);
-
-/* remesh.c */
-silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments, counts, components, costs */
-/* The silhouette segment of silhouette triangle t (what plan stores in
- * segs[] in STORED mode); 0 when a silhouette point is missing. */
-int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);
-int  silk_remesh_reject_last(silk_sil_frame *f);     /* drop one more component; 0 if none left */
-uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
-int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g);   /* 0 when it does not fit */
-void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats);
-/* STREAM mode: room for one input triangle's share in local (0 when it
- * does not fit), that share (local's arrays refilled, its records refer to
- * local->curve and f->offset), and the frame's counts. */
-int  silk_remesh_stream_alloc(silk_sil_frame *f, silk_frame_geom *local);
-void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *local, uint32_t t);
-void silk_remesh_stream_stats(const silk_sil_frame *f, silk_frame_stats *stats);
-
-/* lines.c: after silk_remesh_emit, the lines of the frame into g (the
- * silhouette segments and visible feature curves drawn); SILK_ERR_NOMEM
- * when they do not fit, with no lines in g. */
-silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g);
-
-/* perturb.c */
-int  silk_perturb_alloc(silk_sil_frame *f);          /* 0 when it does not fit */
-void silk_perturb(silk_sil_frame *f);                /* fills offset, vert_offset */
-
-/* smooth.c: the plan of a STREAM frame into f and room for one input
- * triangle's share in local, all from the top of the arena (the caller
- * releases it; silk_remesh_stream_stats gives the frame's counts).  Returns
- * 0 when it does not fit (or tolerance_px <= 0): then nothing is left
- * allocated and the caller draws the coarse mesh. */
-int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                             silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local);
 
 /* Shared helpers. */
 uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i);
