@@ -34,8 +34,23 @@ typedef struct silk_frame_geom {
     uint32_t    nlines;
 } silk_frame_geom;
 
+/* raster.c: the row of a frame `height` rows high that the rasterizer
+ * maps clip point c to (w > 0), so that a renderer can tell which band a
+ * vertex falls in exactly as the rasterizer will. */
+int64_t silk_raster_row(const silk_vec4 *c, int height);
+
 /* The coarse mesh as it is: one CORNER record per triangle corner. */
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err);
+
+/* The one policy for a frame that does not fit (flat.c): release the top
+ * of the arena to mark, draw the coarse mesh into g, and say so in stats
+ * (silk_frame_stats_fell_back).  Only when not even that fits is the
+ * error returned. */
+silk_status silk_frame_fall_back(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
+                                 silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
+/* stats of a frame drawn as the coarse mesh (tris_drawn triangles): no
+ * silhouette work counted, fell_back set.  stats may be NULL. */
+void silk_frame_stats_fell_back(silk_frame_stats *stats, uint32_t tris_drawn);
 
 /* Paper section III for one view.  All arrays come from the top of the arena
  * (purpose FRAME); the caller releases them.  When the arena runs out part way,

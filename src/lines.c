@@ -128,16 +128,6 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
 
 /* ---- the coarse mesh's outline -------------------------------------------------- */
 
-/* Front-facing by the face normal, as silhouette.c decides it for feature
- * triangles; a zero-area or broken triangle faces nowhere. */
-static int tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
-{
-    for (int k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] >= m->nverts) return 0;
-    silk_vec3 fn = silk_mesh_face_normal(m, t);
-    return silk_v3_dot64(fn, silk_view_to_eye(v, m->pos[m->tri[3 * t]])) > 0;
-}
-
 /* What edge e is in the outline: 0 nothing, 1 silhouette, 2 feature.  A
  * feature edge is a feature line even where it is also the silhouette, as
  * in SMOOTH mode, where it is drawn on its feature curve. */
@@ -166,7 +156,7 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
     if (!m->edge || !m->tri) return SILK_OK;
     uint8_t *front = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
     if (!front) return SILK_ERR_NOMEM;
-    for (uint32_t t = 0; t < m->ntris; t++) front[t] = (uint8_t)tri_front(m, v, t);
+    for (uint32_t t = 0; t < m->ntris; t++) front[t] = (uint8_t)silk_sil_tri_front(m, v, t);
     uint32_t nlines = 0;
     for (uint32_t e = 0; e < m->nedges; e++) nlines += edge_kind(m, front, e) != 0;
     if (!lines_alloc(a, g, nlines, 2 * (uint64_t)nlines)) return SILK_ERR_NOMEM;
@@ -215,8 +205,6 @@ static int screen_point(const silk_vertex_out *o, int width, int height, spt *p)
     return 1;
 }
 
-static int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-
 /* What triangle abc rises over one pixel in depth (2^-24): the size of its
  * depth gradient, over-estimated by |gx| + |gy|; a triangle seen exactly
  * edge-on gives INT64_MAX. */
@@ -226,8 +214,8 @@ static int64_t depth_slope(const spt *a, const spt *b, const spt *c)
     int64_t bd = b->d - a->d, cd = c->d - a->d;
     /* |coordinates| < 2^28 (1/256 px, within the guard band), |depth| <
      * 2^27: every product below 2^56 */
-    int64_t area2 = abs64(bx * cy - cx * by);
-    int64_t gx = abs64(bd * cy - cd * by), gy = abs64(cd * bx - bd * cx);
+    int64_t area2 = (int64_t)silk_abs64(bx * cy - cx * by);
+    int64_t gx = (int64_t)silk_abs64(bd * cy - cd * by), gy = (int64_t)silk_abs64(cd * bx - bd * cx);
     /* per 1/256 px: (gx + gy) / area2; per pixel 256 times that.  A sliver
      * below 1/256 px^2 counts as edge-on. */
     if (area2 < 256) return INT64_MAX;

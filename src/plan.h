@@ -149,6 +149,11 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv);
 
+/* Whether triangle t faces the eye, by its face normal (what decides which
+ * feature edges are sampled, and the coarse outline of lines.c); a
+ * zero-area or broken triangle faces nowhere. */
+int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
+
 /* Eq. 8 for curve c: the number of intervals to sample it with, from its
  * projected chord in pixels and cos alpha (see silhouette.c for why the
  * chord). */

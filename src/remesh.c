@@ -71,11 +71,6 @@ static const silk_sil_pair *side_pair(const silk_sil_frame *f, const silk_sil_ed
     return NULL;
 }
 
-static silk_fx sample_t(uint32_t i, uint32_t n)
-{
-    return silk_fx_sat(((int64_t)i * SILK_FX_ONE + n / 2) / n);
-}
-
 /* The sample of segment s closest to the bisector plane of the base edge
  * b1 -> b2: joined to both base vertices it gives the fattest middle triangle. */
 static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
@@ -87,7 +82,7 @@ static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
     uint32_t best = s->n / 2;
     int64_t best_d = INT64_MAX;
     for (uint32_t i = 0; i <= s->n; i++) {
-        int64_t d = silk_v3_dot64(silk_v3_sub(silk_hermite_point(&s->c, sample_t(i, s->n)), mid), dir);
+        int64_t d = silk_v3_dot64(silk_v3_sub(silk_hermite_point(&s->c, silk_sample_param(i, s->n)), mid), dir);
         if (d < 0) d = -d;
         if (d < best_d) { best_d = d; best = i; }
     }
@@ -506,7 +501,7 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, s
     s->curve = g->ncurve++;
     g->curve[s->curve] = s->c;
     s->rec = g->nvrec;
-    for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, s->curve, sample_t(i, s->n));
+    for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, s->curve, silk_sample_param(i, s->n));
     s->rec_a = cyc[l.iA];
     s->rec_b = cyc[l.iB];
 #define SAMPLE(i) ((i) == 0 ? cyc[l.iA] : (i) == s->n ? cyc[l.iB] : s->rec + (i) - 1)

@@ -129,7 +129,7 @@ static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         silk_arena_top_release(a, &mark);
         memset(&f->g, 0, sizeof f->g);
         f->cache = NULL;
-        stats->fell_back = 1;
+        silk_frame_stats_fell_back(stats, m->ntris);
     }
     /* the coarse mesh: three CORNER records (zero-filled: kind CORNER) and one triangle at a time */
     size_t free_bytes = silk_arena_free_bytes(a);
@@ -164,14 +164,6 @@ static void stream_part(frame *f, uint32_t t)
     for (uint32_t i = 0; i < g->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
 }
 
-/* The row of a frame `height` rows high where the rasterizer puts clip
- * point c, y' = (1 - y/w) height/2, floored (w > 0). */
-static int64_t clip_row(const silk_vec4 *c, int height)
-{
-    int64_t n = ((int64_t)c->w - c->y) * height, d = 2 * (int64_t)c->w;
-    return n >= 0 ? n / d : -((-n + d - 1) / d);
-}
-
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
  * lowest row; one row more on each side covers the rasterizer's rounding to
@@ -192,7 +184,7 @@ static void stream_rows(frame *f, silk_arena *a, int height)
                 hi = height - 1;
                 break;
             }
-            int64_t y = clip_row(c, height);
+            int64_t y = silk_raster_row(c, height);
             if (y - 1 < lo) lo = y - 1;
             if (y + 1 > hi) hi = y + 1;
         }

@@ -41,11 +41,12 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     else { s->uv0 = SILK_NO_INDEX; s->uv1 = SILK_NO_INDEX; }
 }
 
-static int is_front(const silk_mesh *m, const silk_view *v, uint32_t t)
+int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
+    for (int k = 0; k < 3; k++)
+        if (m->tri[3 * t + k] >= m->nverts) return 0;
     silk_vec3 fn = silk_mesh_face_normal(m, t);
-    silk_vec3 d = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
-    return silk_v3_dot64(fn, d) > 0;
+    return silk_v3_dot64(fn, silk_view_to_eye(v, m->pos[m->tri[3 * t]])) > 0;
 }
 
 /* Triangles whose three normals and corners are usable; anything else is
@@ -225,7 +226,7 @@ silk_status silk_sil_find(silk_sil_frame *f)
             int has_feature = 0;
             for (int k = 0; k < 3; k++)
                 if (m->edge[m->tri_edge[3 * t + k]].flags & SILK_EDGE_FEATURE) has_feature = 1;
-            if (has_feature && is_front(m, v, t)) {
+            if (has_feature && silk_sil_tri_front(m, v, t)) {
                 st |= SILK_TS_FRONT;
                 for (int k = 0; k < 3; k++) {
                     silk_index e = m->tri_edge[3 * t + k];
@@ -342,7 +343,7 @@ silk_status silk_sil_find(silk_sil_frame *f)
         silk_fx *c = &f->chain[nchain];
         uint32_t n = 0;
         for (uint32_t i = 1; i < we->nfeat; i++)
-            c[n++] = silk_fx_sat(((int64_t)i * SILK_FX_ONE + we->nfeat / 2) / we->nfeat);
+            c[n++] = silk_sample_param(i, we->nfeat);
         for (uint32_t i = 0; i < we->npairs; i++) chain_insert(c, &n, f->pairs[we->pair0 + i].u);
         for (uint32_t i = 0; i < we->npairs; i++) {
             silk_sil_pair *p = &f->pairs[we->pair0 + i];

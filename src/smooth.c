@@ -18,21 +18,6 @@
 #include "perturb.h"
 #include "lines.h"
 
-static silk_status fall_back_flat(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
-                                  silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
-{
-    silk_arena_top_release(a, mark);
-    memset(g, 0, sizeof *g);
-    silk_status st = silk_frame_flat(a, m, g, err);
-    if (st != SILK_OK) return st;
-    if (stats) {
-        stats->silhouette_tris = stats->bridges = stats->samples = stats->moved_vertices = 0;
-        stats->tris_drawn = g->ntri;
-        stats->fell_back = 1;
-    }
-    return SILK_OK;
-}
-
 silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view *v,
                               silk_fx tolerance_px, silk_vis_method vis,
                               silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
@@ -78,7 +63,7 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
         flat = !silk_remesh_reject_last(&f);
     }
     if (flat) {
-        st = fall_back_flat(a, m, &mark, g, stats, err);
+        st = silk_frame_fall_back(a, m, &mark, g, stats, err);
         if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) lines_fell_back(g, stats);
         return st;
     }
