@@ -188,7 +188,10 @@ static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
     if (f->edge_slot[e] == SILK_SIL_NONE) f->edge_slot[e] = (*n)++;
 }
 
-silk_status silk_sil_find(silk_sil_frame *f)
+/* Visibility of the normals (III-B), the silhouette triangles and the
+ * front-facing triangles next to a feature edge (tri_state), and a slot for
+ * every edge that carries points this frame (edge_slot; f->nedges of them). */
+static silk_status find_triangles(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
     const silk_view *v = f->v;
@@ -236,8 +239,17 @@ silk_status silk_sil_find(silk_sil_frame *f)
         }
         f->tri_state[t] = st;
     }
-
     f->nedges = nwork;
+    return SILK_OK;
+}
+
+/* The carrying edges, and room for their sides and silhouette points:
+ * each edge's run of sides and of points laid out edge by edge. */
+static silk_status lay_out_edges(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
+    silk_arena *a = f->a;
+    uint32_t nwork = f->nedges;
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
     for (uint32_t e = 0; e < m->nedges; e++) {
@@ -276,7 +288,14 @@ silk_status silk_sil_find(silk_sil_frame *f)
     f->sides = f->stream ? NULL : silk_arena_array_top(a, nsides, sizeof *f->sides, SILK_MEM_FRAME);
     f->pairs = silk_arena_array_top(a, npairs, sizeof *f->pairs, SILK_MEM_FRAME);
     if ((!f->sides && !f->stream) || !f->pairs) return SILK_ERR_NOMEM;
+    return SILK_OK;
+}
 
+/* Every side on a carrying edge (with the side whose records it shares, in
+ * STORED mode) and one silhouette point per distinct normal pair. */
+static void fill_sides(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
     for (uint32_t t = 0; t < m->ntris; t++) {
         if (!tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
@@ -314,7 +333,16 @@ silk_status silk_sil_find(silk_sil_frame *f)
             p->n1 = s->n1;
         }
     }
+}
 
+/* Per edge: its curve, its silhouette points (eqs. 6-7), its feature
+ * sampling (eq. 8), then the chain of all its parameters. */
+static silk_status chain_points(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
+    const silk_view *v = f->v;
+    silk_arena *a = f->a;
+    uint32_t nwork = f->nedges;
     /* Per edge: its curve, its silhouette points (eqs. 6-7), its feature
      * sampling (eq. 8), then the chain of all its parameters. */
     uint32_t nchain = 0;
@@ -355,4 +383,13 @@ silk_status silk_sil_find(silk_sil_frame *f)
     }
     f->nchain = nchain;
     return SILK_OK;
+}
+
+silk_status silk_sil_find(silk_sil_frame *f)
+{
+    silk_status st = find_triangles(f);
+    if (st == SILK_OK) st = lay_out_edges(f);
+    if (st != SILK_OK) return st;
+    fill_sides(f);
+    return chain_points(f);
 }
