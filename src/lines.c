@@ -32,7 +32,6 @@
  * silhouette, whose depth rises like the square root of the distance from
  * it, faster than any triangle's slope at the line.
  */
-#include <stdlib.h>
 #include <string.h>
 #include "lines.h"
 
@@ -298,29 +297,72 @@ typedef struct rec_pos {
     uint32_t r;
 } rec_pos;
 
-static int pos_cmp(const void *pa, const void *pb)
+static int pos_cmp(const rec_pos *a, const rec_pos *b)
 {
-    const silk_vec4 *a = &((const rec_pos *)pa)->c, *b = &((const rec_pos *)pb)->c;
-    if (a->x != b->x) return a->x < b->x ? -1 : 1;
-    if (a->y != b->y) return a->y < b->y ? -1 : 1;
-    if (a->z != b->z) return a->z < b->z ? -1 : 1;
-    if (a->w != b->w) return a->w < b->w ? -1 : 1;
+    if (a->c.x != b->c.x) return a->c.x < b->c.x ? -1 : 1;
+    if (a->c.y != b->c.y) return a->c.y < b->c.y ? -1 : 1;
+    if (a->c.z != b->c.z) return a->c.z < b->c.z ? -1 : 1;
+    if (a->c.w != b->c.w) return a->c.w < b->c.w ? -1 : 1;
     return 0;
 }
 
+/* Sorting orders: by the key, then by the place in the input, so the order
+ * is the same on every libc (and no qsort is linked into a device). */
+static int pos_before(const void *pa, const void *pb)
+{
+    const rec_pos *a = pa, *b = pb;
+    int c = pos_cmp(a, b);
+    return c ? c < 0 : a->r < b->r;
+}
+
 /* One side of a drawn triangle: its two points (smaller first), its
- * records, and which way its triangle faces on screen (+1, -1; 0 unknown). */
+ * records, which way its triangle faces on screen (+1, -1; 0 unknown), and
+ * its place in the input (3 t + side). */
 typedef struct half_edge {
-    uint32_t k0, k1, r0, r1;
+    uint32_t k0, k1, r0, r1, at;
     int32_t facing;
 } half_edge;
 
-static int half_cmp(const void *pa, const void *pb)
+static int half_cmp(const half_edge *a, const half_edge *b)
 {
-    const half_edge *a = pa, *b = pb;
     if (a->k0 != b->k0) return a->k0 < b->k0 ? -1 : 1;
     if (a->k1 != b->k1) return a->k1 < b->k1 ? -1 : 1;
     return 0;
+}
+
+static int half_before(const void *pa, const void *pb)
+{
+    const half_edge *a = pa, *b = pb;
+    int c = half_cmp(a, b);
+    return c ? c < 0 : a->at < b->at;
+}
+
+static void swap_bytes(uint8_t *a, uint8_t *b, size_t size)
+{
+    for (size_t i = 0; i < size; i++) {
+        uint8_t x = a[i];
+        a[i] = b[i];
+        b[i] = x;
+    }
+}
+
+/* Heapsort of n elements of size bytes by the strict order `before`: no
+ * memory beyond the array, O(n log n) always. */
+static void heap_sort(void *base, uint32_t n, size_t size, int (*before)(const void *, const void *))
+{
+    uint8_t *b = base;
+    for (uint32_t end = n, start = n / 2; end > 1;) {
+        if (start > 0) start--;
+        else swap_bytes(b, b + (size_t)--end * size, size);
+        for (uint32_t i = start;;) {
+            uint32_t c = 2 * i + 1;
+            if (c >= end) break;
+            if (c + 1 < end && before(b + (size_t)c * size, b + (size_t)(c + 1) * size)) c++;
+            if (!before(b + (size_t)i * size, b + (size_t)c * size)) break;
+            swap_bytes(b + (size_t)i * size, b + (size_t)c * size, size);
+            i = c;
+        }
+    }
 }
 
 /* Which way triangle t of g faces on screen: +1, -1, or 0 (edge-on, or a
@@ -351,7 +393,7 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
         pos[r].c = out[r].clip;
         pos[r].r = r;
     }
-    qsort(pos, g->nvrec, sizeof *pos, pos_cmp);
+    heap_sort(pos, g->nvrec, sizeof *pos, pos_before);
     for (uint32_t i = 0; i < g->nvrec; i++) id[pos[i].r] = i && !pos_cmp(&pos[i - 1], &pos[i]) ? id[pos[i - 1].r] : i;
     memset(on_line, 0, g->nvrec);
     for (uint32_t i = 0; i < g->nline_vrec; i++)
@@ -363,13 +405,14 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
             half_edge *e = &h[3 * t + j];
             e->r0 = g->tri[3 * t + j];
             e->r1 = g->tri[3 * t + (j + 1) % 3];
+            e->at = 3 * t + j;
             uint32_t ka = id[e->r0], kb = id[e->r1];
             e->k0 = ka < kb ? ka : kb;
             e->k1 = ka < kb ? kb : ka;
             e->facing = facing;
         }
     }
-    qsort(h, nhalf, sizeof *h, half_cmp);
+    heap_sort(h, nhalf, sizeof *h, half_before);
 
     /* A side shared by exactly two triangles facing opposite ways is on
      * the contour, unless a line runs along it already. */
