@@ -66,12 +66,6 @@ static void line_end(silk_frame_geom *g, int feature)
 
 /* ---- SMOOTH mode ------------------------------------------------------------- */
 
-/* Whether silhouette segment s was drawn re-meshed (its part not dropped). */
-static int seg_drawn(const silk_sil_frame *f, const silk_sil_seg *s)
-{
-    return !f->edges[s->comp].rejected;
-}
-
 /* The corner record of side s at edge.v[0] (end 0) or edge.v[1] (end 1):
  * record 3t+k is corner k of triangle t in every SMOOTH frame (CORNER, or
  * MOVED at a perturbed vertex). */
@@ -88,7 +82,6 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
     uint32_t nlines = 0;
     uint64_t nrec = 0;
     for (uint32_t i = 0; i < f->nsegs; i++) {
-        if (!seg_drawn(f, &f->segs[i])) continue;
         nlines++;
         nrec += f->segs[i].n + 1;
     }
@@ -102,14 +95,13 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
 
     for (uint32_t i = 0; i < f->nsegs; i++) {
         const silk_sil_seg *s = &f->segs[i];
-        if (!seg_drawn(f, s)) continue;
         line_rec(g, s->rec_a);
         for (uint32_t j = 1; j < s->n; j++) line_rec(g, s->rec + j - 1);
         line_rec(g, s->rec_b);
         line_end(g, 0);
     }
-    /* A feature edge whose part was dropped, or that needed no samples, is
-     * drawn straight between its corners, and so is its line. */
+    /* A feature edge that needed no samples is drawn straight between its
+     * corners, and so is its line. */
     for (uint32_t w = 0; w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;

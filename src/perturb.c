@@ -137,7 +137,7 @@ void silk_perturb(silk_sil_frame *f)
             silk_sil_seg tmp;
             const silk_sil_seg *s = f->segs ? &f->segs[i] : (silk_remesh_seg(f, t, &tmp) ? &tmp : NULL);
             i++;
-            if (!s || !s->concave || f->edges[s->comp].rejected) continue;
+            if (!s || !s->concave) continue;
             visit_near(f, s, pass * ns + i, pass);
         }
         if (pass == 0)

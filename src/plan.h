@@ -70,10 +70,8 @@ typedef struct silk_sil_edge {
     uint32_t side0, nsides;  /* triangle sides on this edge */
     uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
     uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
-    uint32_t parent;         /* union-find over edges joined by a re-meshed triangle */
     uint8_t is_feature;
     uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
-    uint8_t rejected;        /* on roots: this part is drawn coarse (out of memory) */
 } silk_sil_edge;
 
 /* The silhouette segment of one silhouette triangle (III-D) and its samples. */
@@ -82,18 +80,12 @@ typedef struct silk_sil_seg {
     uint32_t tri;
     uint32_t n;              /* sampling intervals (eq. 8) */
     uint32_t split;          /* sample joined to both base vertices (Fig. 11) */
-    uint32_t comp;           /* union-find root (edge index) */
     int concave;             /* III-E: N_A.F > 0 and N_B.F < 0 */
     silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E */
     silk_fx rise;            /* how far the segment's ends rise above P_i */
     uint32_t curve, rec;     /* output: segment curve and its first interior sample */
     uint32_t rec_a, rec_b;   /* output: the records of A and B (points of the edge chains) */
 } silk_sil_seg;
-
-/* Per union-find root: what accepting that part of the frame costs. */
-typedef struct silk_sil_cost {
-    uint32_t recs, tris, curves, near;   /* near: neighbour vertices of its concave segments */
-} silk_sil_cost;
 
 typedef struct silk_sil_frame {
     silk_arena *a;
@@ -113,7 +105,7 @@ typedef struct silk_sil_frame {
     silk_sil_side *sides;  uint32_t nsides;
     silk_fx *chain;        uint32_t nchain;
     silk_sil_seg *segs;    uint32_t nsegs;
-    silk_sil_cost *cost;     /* nedges (indexed by root) */
+    uint64_t store_recs, store_tris, store_curves;   /* what a stored frame holds */
     uint32_t max_poly;       /* longest boundary of one re-meshed triangle */
     uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
     /* the most one input triangle becomes, with its own records (STREAM),
@@ -129,8 +121,6 @@ typedef struct silk_sil_frame {
     uint32_t *slot_vert, *slot_stamp, nslots;
     uint32_t *vert_offset;   /* nverts view of vert_slot after perturbation: offset index */
     silk_vec3 *offset;     uint32_t noffset;
-
-    int fell_back;
 } silk_sil_frame;
 
 /* silhouette.c: fills visible .. chain (sides only in STORED mode).
@@ -159,14 +149,11 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
  * chord). */
 uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol);
 
-/* Shared helpers. */
-uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i);
-/* Whether mesh edge `edge` carries points this frame (after silk_remesh_plan:
- * parents are roots then, and a dropped part is marked on its root). */
+/* Whether mesh edge `edge` carries points this frame. */
 static inline int silk_sil_chained(const silk_sil_frame *f, uint32_t edge)
 {
     uint32_t w = f->edge_slot[edge];
-    return w != SILK_SIL_NONE && !f->edges[f->edges[w].parent].rejected && f->edges[w].nchain > 0;
+    return w != SILK_SIL_NONE && f->edges[w].nchain > 0;
 }
 
 #endif

@@ -12,7 +12,6 @@ silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments, counts, compon
 /* The silhouette segment of silhouette triangle t (what plan stores in
  * segs[] in STORED mode); 0 when a silhouette point is missing. */
 int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);
-int  silk_remesh_reject_last(silk_sil_frame *f);     /* drop one more component; 0 if none left */
 uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
 int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g);   /* 0 when it does not fit */
 void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats);

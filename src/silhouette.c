@@ -60,14 +60,6 @@ static int tri_ok(const silk_mesh *m, uint32_t t)
     return 1;
 }
 
-uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i)
-{
-    uint32_t r = i;
-    while (edges[r].parent != r) r = edges[r].parent;
-    while (edges[i].parent != r) { uint32_t nx = edges[i].parent; edges[i].parent = r; i = nx; }
-    return r;
-}
-
 const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
                                       uint32_t tri, uint32_t k)
 {
@@ -256,7 +248,6 @@ static silk_status lay_out_edges(silk_sil_frame *f)
         uint32_t w = f->edge_slot[e];
         if (w == SILK_SIL_NONE) continue;
         f->edges[w].edge = e;
-        f->edges[w].parent = w;
         f->edges[w].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
     }
 
