@@ -73,12 +73,12 @@ $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_EXTRA_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
 
-# The golden frames draw meshes made by `silk gen`'s generator.
-$(BUILD)/tests/test_golden: tests/test_golden.c $(BUILD)/obj/tools/gen.o $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
-	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -Itools -Iplatform -o $@ $< $(BUILD)/obj/tools/gen.o $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+# Tests that draw meshes made by `silk gen`'s generator link it.
+GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines
+$(GEN_TESTS): $(BUILD)/obj/tools/gen.o
+$(GEN_TESTS): TEST_EXTRA_OBJ := $(BUILD)/obj/tools/gen.o
 
 tests: $(TEST_BIN) $(BUILD)/silk
 
