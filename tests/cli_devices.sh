@@ -63,7 +63,7 @@ fi
 echo stale >"$tmp/stale.h"
 expect_usage "pack: no output" pack "$mesh"
 want='--eye or --views' expect_usage "pack: --eye with --views" pack "$mesh" -o "$tmp/stale.h" --eye 0,0,3 --views 2
-check "pack: a failed run removes the old header" [ ! -e "$tmp/stale.h" ]
+check "pack: a failed run keeps an earlier header" test "$(cat "$tmp/stale.h")" = stale
 want='C identifier' expect_usage "pack: bad --name" pack "$mesh" -o "$tmp/x.h" --name 9lives
 want='--views' expect_usage "pack: --views 0" pack "$mesh" -o "$tmp/x.h" --views 0
 expect_input "pack: missing mesh" pack "$tmp/none.obj" -o "$tmp/x.h"

@@ -9,7 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
 #include "measure.h"
@@ -177,11 +176,6 @@ int cmd_simplify(int argc, char **argv)
     if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
     so.target_tris = (uint32_t)target;
     if (rc) return rc;
-    rc = simplify(in, out, &so, scale);
-    /* A file at OUT after a failure would be an earlier run's - unless it
-     * is the input itself. */
-    struct stat si, so_;
-    int same = stat(in, &si) == 0 && stat(out, &so_) == 0 && si.st_dev == so_.st_dev && si.st_ino == so_.st_ino;
-    if (rc && strcmp(out, "-") != 0 && !same) silk_file_remove_stale(out);
-    return rc;
+    /* A failed run leaves OUT as it was (written atomically). */
+    return simplify(in, out, &so, scale);
 }
