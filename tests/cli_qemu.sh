@@ -1,6 +1,6 @@
 #!/bin/sh
 # cli_qemu.sh - the Cortex-M3 firmware (boards/mps2-an385) under QEMU, byte
-# for byte against the host (issue 6, part 5).
+# for byte against the host.
 #
 # `make test` builds, per model of the board (bunny-500 and knot-480, packed
 # into flash by `silk pack --views 3`):
