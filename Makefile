@@ -40,7 +40,7 @@ TEST_SRC  := $(wildcard tests/test_*.c)
 CORE_OBJ  := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 PLAT_OBJ  := $(PLAT_SRC:%.c=$(BUILD)/obj/%.o)
 TOOL_OBJ  := $(TOOL_SRC:%.c=$(BUILD)/obj/%.o)
-TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%) $(BUILD)/tests/test_cxx
 TEST_SUPPORT := $(wildcard tests/support/*.c)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o)
 
@@ -74,6 +74,11 @@ $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+
+# The public headers from C++ (extern "C"): compiles and links against the core.
+$(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk.a
 
 tests: $(TEST_BIN) $(BUILD)/silk
 
