@@ -45,7 +45,7 @@ TEST_SUPPORT := $(wildcard tests/support/*.c)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o)
 
 .PHONY: all lib test test-fast check-nofloat demo install clean tests bench fuzz fuzz-build
-all: $(BUILD)/libsilk.a $(BUILD)/silk
+all: $(BUILD)/libsilk.a $(BUILD)/silk $(BUILD)/silk.1
 
 lib: $(BUILD)/libsilk.a
 
@@ -71,6 +71,10 @@ $(BUILD)/libsilk_platform.a: $(PLAT_OBJ)
 $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm
 
+# The manual page is the help text (tools/man.c).
+$(BUILD)/silk.1: $(BUILD)/silk
+	$(BUILD)/silk help --man >$@.tmp && mv $@.tmp $@
+
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
@@ -80,7 +84,7 @@ $(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk.a $(wildcard includ
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk.a
 
-tests: $(TEST_BIN) $(BUILD)/silk
+tests: $(TEST_BIN) $(BUILD)/silk $(BUILD)/silk.1
 
 # The core may not use floating point: compiled without FP/SIMD registers,
 # any float or double use is a compile error.
