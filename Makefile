@@ -80,9 +80,10 @@ $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BU
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
 
 # The public headers from C++ (extern "C"): compiles and links against the core.
-$(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
+$(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
 	@mkdir -p $(dir $@)
-	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk.a
+	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk_platform.a \
+	    $(BUILD)/libsilk.a $(PNG_LIBS)
 
 tests: $(TEST_BIN) $(BUILD)/silk $(BUILD)/silk.1
 
@@ -119,12 +120,22 @@ bench: $(BUILD)/silk
 demo: $(BUILD)/silk
 	sh tools/demo.sh $(BUILD)/silk out
 
-install: $(BUILD)/libsilk.a $(BUILD)/silk
-	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/silk $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 $(BUILD)/libsilk.a $(DESTDIR)$(PREFIX)/lib/
+# The core (silk.pc) and the host I/O around it (silk-platform.pc: the PNG
+# and PPM writers and readers of silk/platform.h), the command, its manual
+# page and the licence.
+VERSION  := 0.1.0
+INSTALL_DIRS := lib lib/pkgconfig include/silk bin share/man/man1 share/doc/silk
+install: $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(BUILD)/silk $(BUILD)/silk.1
+	install -d $(INSTALL_DIRS:%=$(DESTDIR)$(PREFIX)/%)
+	install -m 644 $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(DESTDIR)$(PREFIX)/lib/
 	install -m 644 include/silk/*.h $(DESTDIR)$(PREFIX)/include/silk/
 	install -m 755 $(BUILD)/silk $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|0.1.0|g' silk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/silk.pc
+	install -m 644 $(BUILD)/silk.1 $(DESTDIR)$(PREFIX)/share/man/man1/
+	install -m 644 LICENSE $(DESTDIR)$(PREFIX)/share/doc/silk/
+	for pc in silk silk-platform; do \
+	  sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@PNG_LIBS@|$(PNG_LIBS)|g' \
+	    $$pc.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/$$pc.pc || exit 1; \
+	done
 
 clean:
 	rm -rf build build-san build-fuzz out

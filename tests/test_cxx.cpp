@@ -1,6 +1,6 @@
-// test_cxx.cpp - the public headers from C++: silk/silk.h and silk/validate.h
-// compile as C++ and their functions link against libsilk.a (the headers
-// declare them extern "C").  It loads an octahedron, checks it, renders one
+// test_cxx.cpp - the public headers from C++: silk/silk.h, silk/validate.h
+// and silk/platform.h compile as C++ and their functions link against
+// libsilk.a and libsilk_platform.a (the headers declare them extern "C").  It loads an octahedron, checks it, renders one
 // smooth frame and counts the object's pixels.  Ends with "N passed, N failed"
 // like tests/check.h, which is C.
 #include <cstdio>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "silk/silk.h"
+#include "silk/platform.h"
 #include "silk/validate.h"
 
 static int passed, failed;
@@ -69,6 +70,7 @@ int main()
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) object += silk_target_get(&target, x, y) != ro.bg_rgb;
     check(st.tris_drawn >= 8 && object > 100, "the frame shows the octahedron");
+    check(silk_image_format_for_path("frame.png") == SILK_IMAGE_PNG, "silk/platform.h links too");
 
     std::printf("%d passed, %d failed\n", passed, failed);
     return failed != 0;
