@@ -53,8 +53,11 @@ $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(PNG_CFLAGS) -MMD -MP -c $< -o $@
 
-# The tool takes its defaults (image size, pixel format) from the board.
-$(TOOL_OBJ): ALL_CFLAGS += $(BOARD_CFLAGS)
+# The tool takes its defaults (image size, pixel format) from the board, and
+# `silk profile` the board's bands and views.
+BOARD_TOOL_CFLAGS := $(BOARD_CFLAGS) -DSILK_BOARD_NAME='"$(BOARD)"' -DSILK_BOARD_VIEWS=$(or $(BOARD_VIEWS),3)
+$(BUILD)/obj/tools/cmd_profile.o: BOARD_TOOL_CFLAGS += -DSILK_BOARD_BAND_ROWS=$(BOARD_BAND_ROWS)
+$(TOOL_OBJ): ALL_CFLAGS += $(BOARD_TOOL_CFLAGS)
 $(TOOL_OBJ): boards/$(BOARD)/board.mk
 ifeq ($(SDL2_OK),1)
 $(BUILD)/obj/tools/cmd_view.o: ALL_CFLAGS += -DSILK_HAVE_SDL2
@@ -203,11 +206,29 @@ deps:
 	$(SUDO) apt-get update
 	$(SUDO) apt-get install -y --no-install-recommends $(DEPS_PACKAGES)
 
-# Where every byte goes on a board: `make profile [PROFILE_BOARD=..] [PROFILE_MESH=..]`.
+# Where every byte goes on a board: `make profile [PROFILE_BOARD=..]
+# [PROFILE_MESH=..] [PROFILE_ARGS=--check]`, the table also as
+# BUILD/profile-MESH.csv.  Another board's profile runs in that board's
+# build; a firmware board's firmware is built for the mesh and run by
+# tools/profile_fw.sh with this board.mk's settings; any other board is
+# measured in-process by its own `silk profile`.
 PROFILE_BOARD ?= $(if $(BOARD_RULES),$(BOARD),mps2-an385)
 PROFILE_MESH  ?= $(or $(SILK_MESHES),../shared/meshes)/bunny-500.obj
+PROFILE_CSV   ?= $(BUILD)/profile-$(basename $(notdir $(PROFILE_MESH))).csv
+PROFILE_ARGS  ?=
+ifneq ($(PROFILE_BOARD),$(BOARD))
+profile:
+	$(MAKE) BOARD=$(PROFILE_BOARD) BUILD=build-$(PROFILE_BOARD) SAN= CFLAGS= PROFILE_MESH='$(PROFILE_MESH)' profile
+else ifdef BOARD_RULES
+profile:
+	$(MAKE) -s BOARD_MESHES='$(PROFILE_MESH)' firmware
+	BOARD='$(BOARD)' FW_DIR='$(FW_DIR)' BOARD_RUN='$(BOARD_RUN)' BOARD_CROSS='$(BOARD_CROSS)' \
+	  BOARD_FLASH_BYTES='$(BOARD_FLASH_BYTES)' BOARD_WIDTH='$(BOARD_WIDTH)' BOARD_HEIGHT='$(BOARD_HEIGHT)' \
+	  BOARD_BAND_ROWS='$(BOARD_BAND_ROWS)' PROFILE_CSV='$(PROFILE_CSV)' sh tools/profile_fw.sh '$(PROFILE_MESH)' $(PROFILE_ARGS)
+else
 profile: $(BUILD)/silk
-	$(BUILD)/silk profile $(PROFILE_MESH) --board $(PROFILE_BOARD)
+	$(BUILD)/silk profile '$(PROFILE_MESH)' --csv '$(PROFILE_CSV)' $(PROFILE_ARGS)
+endif
 
 # `make test` runs the firmware under QEMU (tests/cli_qemu.sh) when the ARM
 # toolchain is installed; in CI it must be.
