@@ -30,7 +30,7 @@ static const command commands[] = {
     { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
     { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },
     { "view", cmd_view, "view MESH [--fb /dev/fb0]", "look at it: a window (mouse, keys) or a framebuffer" },
-    { "profile", cmd_profile, "profile MESH --board NAME", "where every byte of RAM and flash goes on a board" },
+    { "profile", cmd_profile, "profile MESH", "where every byte of RAM goes on this board" },
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 
