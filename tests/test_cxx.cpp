@@ -1,10 +1,15 @@
 // test_cxx.cpp - the public headers from C++: silk/silk.h, silk/validate.h
 // and silk/platform.h compile as C++ and their functions link against
-// libsilk.a and libsilk_platform.a (the headers declare them extern "C").  It loads an octahedron, checks it, renders one
-// smooth frame and counts the object's pixels.  Ends with "N passed, N failed"
+// libsilk.a and libsilk_platform.a (the headers declare them extern "C").
+// It loads an octahedron, checks it, renders one smooth frame and counts the
+// object's pixels; with an argument PREFIX it also writes PREFIX.png and
+// PREFIX.ppm and reads the PNG back (tests/cli_install.sh builds it against
+// the installed library with pkg-config).  Ends with "N passed, N failed"
 // like tests/check.h, which is C.
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "silk/silk.h"
@@ -24,7 +29,7 @@ static void check(bool ok, const char *what)
     }
 }
 
-int main()
+int main(int argc, char **argv)
 {
     static const char obj[] =
         "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
@@ -71,6 +76,17 @@ int main()
         for (int x = 0; x < W; x++) object += silk_target_get(&target, x, y) != ro.bg_rgb;
     check(st.tris_drawn >= 8 && object > 100, "the frame shows the octahedron");
     check(silk_image_format_for_path("frame.png") == SILK_IMAGE_PNG, "silk/platform.h links too");
+    if (argc > 1) {
+        std::string png = std::string(argv[1]) + ".png", ppm = std::string(argv[1]) + ".ppm";
+        check(silk_png_write(&target, png.c_str(), &err) == SILK_OK, "silk_png_write");
+        check(silk_ppm_write(&target, ppm.c_str(), &err) == SILK_OK, "silk_ppm_write");
+        uint8_t *rgb = NULL;
+        int w = 0, h = 0;
+        bool read = silk_png_read(png.c_str(), &rgb, &w, &h, &err) == SILK_OK;
+        check(read && w == W && h == H && std::memcmp(rgb, pixels.data(), pixels.size()) == 0,
+              "silk_png_read gives the frame back");
+        std::free(rgb);
+    }
 
     std::printf("%d passed, %d failed\n", passed, failed);
     return failed != 0;
