@@ -116,8 +116,13 @@ static int open_video(void)
     int x11 = has_env("DISPLAY"), wayland = has_env("WAYLAND_DISPLAY");
     /* Only the drivers whose display is named (a Linux console, KMS, when
      * none is): SDL's probes of the others print their own complaints. */
-    if (!chosen)
+    if (!chosen) {
+#ifdef SDL_HINT_VIDEODRIVER   /* SDL 2.0.22 and later: a list */
         SDL_SetHint(SDL_HINT_VIDEODRIVER, wayland && x11 ? "wayland,x11" : wayland ? "wayland" : x11 ? "x11" : "KMSDRM");
+#else
+        setenv("SDL_VIDEODRIVER", x11 ? "x11" : wayland ? "wayland" : "KMSDRM", 1);
+#endif
+    }
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         int rc = chosen || x11 || wayland
                      ? cli_fail(CLI_EXIT_INPUT, "view: cannot open a window: %s (no display? try --fb or --benchmark)",
