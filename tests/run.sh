@@ -5,8 +5,10 @@
 #
 # Tests run SILK_TEST_JOBS at a time (default: the number of CPUs, at most
 # 2): each worker takes the next test nobody has claimed (a claim is an
-# atomic mkdir), so a long test does not hold up the others.  Every test
-# writes only its own log and temporary directory.
+# atomic mkdir), so a long test does not hold up the others; the tests that
+# took longest last time (BUILD/tests/NAME.secs) start first, so that the
+# run ends about when the longest one does.  Every test writes only its own
+# log and temporary directory.
 build=${1:-build}
 mkdir -p "$build/tests"
 work=$(mktemp -d "${TMPDIR:-/tmp}/silk-run.XXXXXX")
@@ -17,13 +19,19 @@ case "$jobs" in ''|*[!0-9]*) jobs=1 ;; esac
 [ -z "${SILK_TEST_JOBS:-}" ] && [ "$jobs" -gt 2 ] && jobs=2
 [ "$jobs" -lt 1 ] && jobs=1
 
-list=
+all=
 for t in "$build"/tests/test_* tests/cli_*.sh; do
   [ -e "$t" ] || continue
-  case "$t" in *.d|*.o|*.log|*.txt|*.png|*.ppm) continue;; esac
+  case "$t" in *.d|*.o|*.log|*.txt|*.png|*.ppm|*.secs) continue;; esac
   [ -d "$t" ] && continue
-  list="$list $t"
+  all="$all $t"
 done
+# Longest first (a test not timed yet counts as long); the report keeps
+# the usual order.
+list=$(for t in $all; do
+  s=$(cat "$build/tests/$(basename "$t").secs" 2>/dev/null || echo 1000)
+  echo "$s $t"
+done | sort -k1,1nr -s | cut -d' ' -f2-)
 
 # run_one TEST: its log, its result file ("passed failed status seconds"),
 # and its line on stdout.
@@ -37,6 +45,7 @@ run_one() {
     *) "$t" >"$log" 2>&1; rc=$? ;;
   esac
   secs=$(( $(date +%s) - start ))
+  echo "$secs" >"$build/tests/$name.secs"
   line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1)
   if [ -z "$line" ]; then
     { echo "$name: no result line (exit $rc)"; tail -n 20 "$log"; } >"$work/$name.out"
@@ -69,7 +78,7 @@ done
 wait
 
 passed=0; failed=0; broken=""
-for t in $list; do
+for t in $all; do
   name=$(basename "$t")
   if [ ! -e "$work/$name.result" ]; then
     failed=$((failed + 1)); broken="$broken $name"; continue
