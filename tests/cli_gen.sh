@@ -134,6 +134,8 @@ smooth_tube "documented knot" --p 3 --q 5 --tube 0.15 --segments 160
 check "silk help gen shows the documented knot" sh -c "'$SILK' help gen | grep -q -- '--p 3 --q 5 --tube 0.15 --segments 160'"
 want='--tube 0.3 is too thick: the tube would pass through itself \(at most 0\.[0-9]+' \
     expect_usage "knot tube through itself" gen knot --p 3 --q 5 --tube 0.3 -o "$tmp/k.obj"
+want='--segments 10 is too few: the tube.s straight pieces would pass through each other \(at least 12 ' \
+    expect_usage "knot too coarse: its polyline passes through itself" gen knot --segments 10 -o "$tmp/k.obj"
 want='--tube 1.1 is too thick for the curve.s tightest bend \(at most' \
     expect_usage "knot tube folds at a bend" gen knot --p 1 --q 8 --R 3 --r 1 --tube 1.1 -o "$tmp/k.obj"
 

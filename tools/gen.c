@@ -144,56 +144,94 @@ static int gcd(int a, int b)
     return a;
 }
 
+/* 1 if the closed polyline pts[0..n) passes within 2 * tube of itself
+ * between points farther apart along it than pi * tube (closer ones may be
+ * that close legitimately, where the curve bends). */
+static int passes_through_itself(const double (*pts)[3], int n, double tube)
+{
+    double len = 0;
+    for (int i = 0; i < n; i++) {
+        const double *a = pts[i], *b = pts[(i + 1) % n];
+        len += sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+    }
+    int near = (int)ceil(PI * tube / (len / n)) + 1;
+    for (int i = 0; i < n; i++)
+        for (int j = i + near; j < n && j - i <= n - near; j++) {
+            double dx = pts[i][0] - pts[j][0], dy = pts[i][1] - pts[j][1], dz = pts[i][2] - pts[j][2];
+            if (dx * dx + dy * dy + dz * dz < 4 * tube * tube) return 1;
+        }
+    return 0;
+}
+
+enum { KNOT_SAMPLES = 1440 };
+
 /* Why a tube of radius `tube` around the knot's curve would not be a clean
  * surface, or NULL.  Sampled: the tube must be thinner than the smallest
- * radius of curvature (else its inner side folds), and two points of the
- * curve that are far apart along it must be more than two tube radii apart
- * in space (else the tube passes through itself). */
-static const char *knot_problem(const gen_params *k, double tube)
+ * radius of curvature (else its inner side folds), and must not pass
+ * through itself.  With `segments` > 0 the tube is the mesh's: around the
+ * polyline through the rings' centres, whose straight pieces may cut
+ * through another part of the tube where the curve's would not. */
+static const char *knot_problem(const gen_params *k, double tube, int segments)
 {
-    enum { N = 1440 };
-    double (*pts)[3] = malloc(N * sizeof *pts);
+    int per = segments > 0 ? (KNOT_SAMPLES + segments - 1) / segments : 1;
+    int n = segments > 0 ? segments * per : KNOT_SAMPLES;
+    double (*pts)[3] = malloc((size_t)n * sizeof *pts);
     if (!pts) return "out of memory";
     const char *why = NULL;
-    double min_radius = INFINITY, len = 0;
-    for (int i = 0; i < N; i++) {
+    double min_radius = INFINITY;
+    for (int i = 0; i < KNOT_SAMPLES && segments <= 0; i++) {
         double T[3], Nn[3], B[3];
-        double kappa = knot_frame(k, TAU * i / N, pts[i], T, Nn, B);
+        double kappa = knot_frame(k, TAU * i / KNOT_SAMPLES, pts[i], T, Nn, B);
         if (!(kappa > 1e-12)) {
             free(pts);
             return "the knot's curve has a straight point (no Frenet frame)";
         }
         if (1 / kappa < min_radius) min_radius = 1 / kappa;
-        if (i) len += sqrt((pts[i][0] - pts[i - 1][0]) * (pts[i][0] - pts[i - 1][0]) +
-                           (pts[i][1] - pts[i - 1][1]) * (pts[i][1] - pts[i - 1][1]) +
-                           (pts[i][2] - pts[i - 1][2]) * (pts[i][2] - pts[i - 1][2]));
     }
-    if (tube >= 0.95 * min_radius) why = "is too thick for the curve's tightest bend";
-    /* Points closer than pi*tube along the curve may be closer than 2*tube in
-     * space legitimately (the curve bends); farther ones may not. */
-    int near = (int)ceil(PI * tube / (len / N)) + 1;
-    for (int i = 0; i < N && !why; i++)
-        for (int j = i + near; j < N && j - i <= N - near; j++) {
-            double dx = pts[i][0] - pts[j][0], dy = pts[i][1] - pts[j][1], dz = pts[i][2] - pts[j][2];
-            if (dx * dx + dy * dy + dz * dz < 4 * tube * tube) {
-                why = "is too thick: the tube would pass through itself";
-                break;
-            }
-        }
+    /* The polyline: each ring's centre, then points along the chord to the next. */
+    for (int i = 0; i < segments; i++) {
+        double c0[3], c1[3];
+        gen_knot_curve(k, TAU * i / segments, c0);
+        gen_knot_curve(k, TAU * (i + 1) / segments, c1);
+        for (int s = 0; s < per; s++)
+            for (int c = 0; c < 3; c++) pts[i * per + s][c] = c0[c] + (c1[c] - c0[c]) * s / per;
+    }
+    if (segments <= 0 && tube >= 0.95 * min_radius) why = "is too thick for the curve's tightest bend";
+    else if (passes_through_itself((const double (*)[3])pts, n, tube))
+        why = segments > 0 ? "is too few: the tube's straight pieces would pass through each other"
+                           : "is too thick: the tube would pass through itself";
     free(pts);
     return why;
 }
 
-/* The thickest tube knot_problem accepts, to 1%, below `bad`. */
+/* The thickest tube the curve takes, to 1%, below `bad`. */
 static double knot_max_tube(const gen_params *k, double bad)
 {
     double lo = 0, hi = bad;
     while (hi - lo > 0.01 * hi) {
         double mid = (lo + hi) / 2;
-        if (knot_problem(k, mid)) hi = mid;
+        if (knot_problem(k, mid, 0)) hi = mid;
         else lo = mid;
     }
     return lo;
+}
+
+/* The fewest segments, above `bad`, whose polyline tube is clean (0 if none
+ * up to the point where the polyline follows the curve). */
+static int knot_min_segments(const gen_params *k, int bad)
+{
+    int lo = bad, hi = bad;
+    do {
+        lo = hi;
+        hi *= 2;
+        if (hi >= KNOT_SAMPLES) return knot_problem(k, k->tube, KNOT_SAMPLES) ? 0 : KNOT_SAMPLES;
+    } while (knot_problem(k, k->tube, hi));
+    while (hi - lo > 1) {
+        int mid = lo + (hi - lo) / 2;
+        if (knot_problem(k, k->tube, mid)) lo = mid;
+        else hi = mid;
+    }
+    return hi;
 }
 
 const char *gen_check(const gen_params *p, char *buf, size_t n)
@@ -232,10 +270,16 @@ const char *gen_check(const gen_params *p, char *buf, size_t n)
         else if (gcd(p->p, p->q) != 1) why = "--p and --q must have no common factor (else the curve closes early)";
         else if (!(p->R > 0) || !(p->r > 0) || !(p->tube > 0)) why = "--R, --r and --tube must be positive";
         else if (!(p->r < p->R)) why = "--r must be smaller than --R";
-        else if ((why = knot_problem(p, p->tube)) && why[0] == 'i') {
+        else if ((why = knot_problem(p, p->tube, 0)) && why[0] == 'i') {
             /* "is too thick ...": say how thick it may be. */
             snprintf(buf, n, "--tube %g %s (at most %.3g for --p %d --q %d --R %g --r %g)", p->tube, why,
                      knot_max_tube(p, p->tube), p->p, p->q, p->R, p->r);
+            return buf;
+        } else if (!why && p->segments < KNOT_SAMPLES && (why = knot_problem(p, p->tube, p->segments)) &&
+                   why[0] == 'i') {
+            int least = knot_min_segments(p, p->segments);
+            if (least) snprintf(buf, n, "--segments %d %s (at least %d for this knot)", p->segments, why, least);
+            else snprintf(buf, n, "--segments %d %s (make --tube thinner)", p->segments, why);
             return buf;
         }
         break;
