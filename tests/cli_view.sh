@@ -171,14 +171,21 @@ shot() {
 
 xdotool key h; shot                                       # 1: smooth, no status line
 xdotool key 1; shot                                       # 2: flat
-xdotool mousemove --window "$wid" 160 100 mousedown 1 \
-    mousemove --window "$wid" 160 200 mouseup 1; shot     # 3: dragged 100 px down
+# One step at a time with pauses: on a loaded machine (tests run two at a
+# time) a press that arrives with the first move may not start the drag.
+drag() {
+    xdotool mousemove --window "$wid" --sync 160 100; sleep 0.2
+    xdotool mousedown 1; sleep 0.2
+    xdotool mousemove --window "$wid" --sync 160 200; sleep 0.2
+    xdotool mouseup 1; sleep 0.2
+}
+drag; shot                                                # 3: dragged 100 px down
 xdotool click --repeat 3 --delay 50 4; shot               # 4: three wheel notches in
 xdotool key 2 w; shot                                     # 5: smooth, wireframe
 xdotool key w l; shot                                     # 6: lines over the surface
 xdotool key l; shot                                       # 7: lines alone
 xdotool key l h; shot                                     # 8: status line
-xdotool windowsize "$wid" 400 300; sleep 0.5; shot        # 9: resized
+xdotool windowsize --sync "$wid" 400 300; sleep 0.5; shot # 9: resized
 xdotool key q
 for i in $(seq 50); do kill -0 "$view_pid" 2>/dev/null || break; sleep 0.1; done
 if kill -0 "$view_pid" 2>/dev/null; then
