@@ -88,7 +88,7 @@ $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BU
 # The public headers from C++ (extern "C"): compiles and links against the core.
 $(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
 	@mkdir -p $(dir $@)
-	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk_platform.a \
+	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(CXXFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk_platform.a \
 	    $(BUILD)/libsilk.a $(PNG_LIBS)
 
 tests: $(TEST_BIN) $(BUILD)/silk $(BUILD)/silk.1
