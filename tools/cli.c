@@ -178,19 +178,6 @@ int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path)
     return 0;
 }
 
-const char *cli_find_output(int argc, char **argv)
-{
-    const char *out = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
-            if (i + 1 < argc) out = argv[++i];
-        } else if (strncmp(argv[i], "--output=", 9) == 0) {
-            out = argv[i] + 9;
-        }
-    }
-    return out;
-}
-
 /* The option's name without "=value", for messages. */
 static const char *opt_name(const char *arg, char *buf, size_t n)
 {

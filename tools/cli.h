@@ -136,10 +136,6 @@ double cli_mesh_radius(const silk_mesh *m, double c[3]);
  * CLI_EXIT_USAGE. */
 int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path);
 
-/* The value of the last "-o"/"--output" in argv, or NULL: found before the
- * options are parsed, so that even a usage error removes a stale output. */
-const char *cli_find_output(int argc, char **argv);
-
 /* The subcommands: argv[0] is the subcommand's name; they return the exit
  * status. */
 int cmd_render(int argc, char **argv);

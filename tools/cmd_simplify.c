@@ -9,7 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
 #include "measure.h"
@@ -132,16 +131,6 @@ int simp_common_option(int argc, char **argv, int *i, simp_args *args)
     return 1;
 }
 
-/* A file at OUT after a failure would be an earlier run's - unless it is
- * the input itself. */
-void simp_remove_stale(const char *in, const char *out)
-{
-    if (!out || strcmp(out, "-") == 0) return;
-    struct stat si, so;
-    int same = in && stat(in, &si) == 0 && stat(out, &so) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino;
-    if (!same) silk_file_remove_stale(out);
-}
-
 static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale)
 {
     simp_mesh m;
@@ -208,7 +197,6 @@ int cmd_simplify(int argc, char **argv)
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
     so.target_tris = (uint32_t)args.target;
     if (rc) return rc;
-    rc = simplify(in, args.out, &so, args.scale);
-    if (rc) simp_remove_stale(in, args.out);
-    return rc;
+    /* A failed run leaves OUT as it was (written atomically). */
+    return simplify(in, args.out, &so, args.scale);
 }
