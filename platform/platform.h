@@ -19,8 +19,15 @@
 /* Largest file silk_file_read accepts (meshes are read whole into memory). */
 #define SILK_FILE_MAX ((size_t)1 << 30)
 
+/* "-" stands for standard input where a file is read and for standard
+ * output where one is written; messages then name them as below. */
+#define SILK_STDIN_NAME "<stdin>"
+#define SILK_STDOUT_NAME "<stdout>"
+int silk_path_is_stdio(const char *path);
+
 /* Read the whole file into a malloc'd buffer (free it with free()).  The
- * buffer has one extra NUL byte after the data, not counted in *len. */
+ * buffer has one extra NUL byte after the data, not counted in *len.  "-"
+ * reads standard input to its end. */
 silk_status silk_file_read(const char *path, uint8_t **data, size_t *len, silk_error *err);
 
 /* An output written atomically: the data goes to "PATH.tmpXXXXXX" in the
@@ -34,13 +41,14 @@ typedef struct silk_outfile {
 } silk_outfile;
 
 silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err);
+/* (PATH "-" writes to standard output: no temporary file, commit flushes.) */
 /* Flush, sync, close and rename into place.  On failure the temporary file
  * is removed and PATH is left as it was. */
 silk_status silk_outfile_commit(silk_outfile *o, silk_error *err);
 /* Close and remove the temporary file; harmless after commit or twice. */
 void silk_outfile_abort(silk_outfile *o);
 
-/* Remove PATH if it is a regular file: after a failed run the tool calls
+/* Remove PATH if it is a regular file ("-" never): after a failed run the tool calls
  * this, so that an image from an earlier run is never mistaken for the
  * result of this one.  Returns 1 if a file was removed. */
 int silk_file_remove_stale(const char *path);
@@ -71,7 +79,11 @@ silk_status silk_image_check_target(const silk_target *t, const char *path, silk
 /* Write a full-frame target (y0 == 0, rows == height) atomically. */
 silk_status silk_png_write(const silk_target *t, const char *path, silk_error *err);
 silk_status silk_ppm_write(const silk_target *t, const char *path, silk_error *err);
+/* A PNG with an alpha channel: alpha[y * width + x] for each pixel. */
+silk_status silk_png_write_alpha(const silk_target *t, const uint8_t *alpha, const char *path, silk_error *err);
 /* PNG or PPM by the extension of path; any other extension is an error. */
 silk_status silk_image_write(const silk_target *t, const char *path, silk_error *err);
+/* The same in the format given (for "-", which has no extension). */
+silk_status silk_image_write_as(const silk_target *t, const char *path, silk_image_format fmt, silk_error *err);
 
 #endif

@@ -25,7 +25,7 @@ help_has "silk --help" --help -- render info gen "Exit status" "help"
 help_has "silk help" help -- render info gen
 help_has "silk render --help" render --help -- --output --compare $scene rgb565 smooth
 help_has "silk help render" help render -- --output $scene
-help_has "silk info --help" info --help -- $scene
+help_has "silk info --help" info --help -- ${scene% --bg --wire}
 help_has "silk gen --help" gen --help -- sphere torus cone cylinder knot --segments --bands
 run_silk --version
 check "silk --version" grep -q '^silk [0-9]' "$out"

@@ -1,28 +1,30 @@
 /*
  * cmd_simplify.c - `silk simplify IN OUT --triangles N`: a coarse mesh from
  * a fine one by quadric-error edge collapse (tools/simplify.c), written as
- * OBJ.  The input is read by silk's own loader (so every format and every
- * error message is the renderer's), its Q16.16 positions widened to double.
+ * OBJ, or as ascii PLY when OUT ends in .ply.  The input is read by silk's
+ * own loader (so every format and every error message is the renderer's),
+ * its Q16.16 positions widened to double.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
-#include "measure.h"
+#include "commands.h"
+#include "progress.h"
 #include "simplify.h"
 #include "../platform/platform.h"
 
 static void help(FILE *f)
 {
     fprintf(f,
-            "usage: silk simplify IN OUT.obj --triangles N [options]\n"
+            "usage: silk simplify IN OUT.obj|OUT.ply --triangles N [options]\n"
             "\n"
-            "Simplify the mesh IN (OBJ or PLY) to N triangles by quadric-error edge\n"
-            "collapse (Garland-Heckbert) and write OUT as OBJ (atomically; - for stdout).\n"
+            "Simplify the mesh IN (OBJ or PLY; - for standard input) to N triangles by\n"
+            "quadric-error edge collapse (Garland-Heckbert) and write OUT atomically: as\n"
+            "ascii PLY when its name ends in .ply, else as OBJ (- for standard output).\n"
             "Boundary and crease edges are kept where possible; a closed manifold input\n"
             "gives a closed manifold output (no collapse that breaks the surface or turns\n"
             "a triangle over).  Prints one line:\n"
@@ -33,102 +35,125 @@ static void help(FILE *f)
             "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
             "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
             "  --scale S           multiply coordinates by S while reading (as silk render)\n"
+            "  --quiet             no progress line on a terminal\n"
             "\n"
-            "example:\n"
-            "  silk simplify bunny-fine.obj bunny-500.obj --triangles 500\n");
+            "examples:\n"
+            "  silk simplify bunny-fine.obj bunny-500.obj --triangles 500\n"
+            "  silk simplify bunny-fine.obj bunny-500.ply --triangles 500\n");
 }
 
 /* The mesh as silk loads it, positions widened to double. */
-static int load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
+static int load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold)
 {
-    uint8_t *data;
-    size_t len;
-    silk_error err;
     memset(out, 0, sizeof *out);
-    if (silk_file_read(path, &data, &len, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     silk_load_opts lo;
     silk_load_opts_default(&lo);
     lo.scale = scale;
-    size_t size = len * 16 + ((size_t)4 << 20);
-    void *buf = NULL;
-    silk_arena a;
-    silk_mesh m;
-    silk_status st = SILK_ERR_NOMEM;
-    for (int attempt = 0; attempt < 5 && st == SILK_ERR_NOMEM; attempt++, size *= 2) {
-        free(buf);
-        if (!(buf = malloc(size))) break;
-        silk_arena_init(&a, buf, size);
-        st = silk_load_mesh(data, len, path, &lo, &a, &m, &err);
-    }
-    free(data);
-    int rc = 0;
-    if (!buf) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", path);
-    else if (st != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
-    else {
-        out->nverts = m.nverts;
-        out->ntris = m.ntris;
-        out->pos = malloc(3 * (size_t)(m.nverts ? m.nverts : 1) * sizeof *out->pos);
-        out->tri = malloc(3 * (size_t)(m.ntris ? m.ntris : 1) * sizeof *out->tri);
+    cli_mesh lm;
+    int rc = cli_mesh_load(&lm, path, &lo, 0, 0, 0, 0, quiet);
+    const silk_mesh *m = &lm.mesh;
+    if (!rc) {
+        out->nverts = m->nverts;
+        out->ntris = m->ntris;
+        out->pos = malloc(3 * (size_t)(m->nverts ? m->nverts : 1) * sizeof *out->pos);
+        out->tri = malloc(3 * (size_t)(m->ntris ? m->ntris : 1) * sizeof *out->tri);
         if (!out->pos || !out->tri) {
-            rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", path);
+            rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", lm.name);
         } else {
-            for (uint32_t i = 0; i < m.nverts; i++) {
-                out->pos[3 * i] = cli_fx_to_double(m.pos[i].x);
-                out->pos[3 * i + 1] = cli_fx_to_double(m.pos[i].y);
-                out->pos[3 * i + 2] = cli_fx_to_double(m.pos[i].z);
+            for (uint32_t i = 0; i < m->nverts; i++) {
+                out->pos[3 * i] = cli_fx_to_double(m->pos[i].x);
+                out->pos[3 * i + 1] = cli_fx_to_double(m->pos[i].y);
+                out->pos[3 * i + 2] = cli_fx_to_double(m->pos[i].z);
             }
-            for (size_t i = 0; i < 3 * (size_t)m.ntris; i++) out->tri[i] = (uint32_t)m.tri[i];
-            *closed_manifold = m.nboundary_edges == 0 && m.nnonmanifold_edges == 0;
+            for (size_t i = 0; i < 3 * (size_t)m->ntris; i++) out->tri[i] = (uint32_t)m->tri[i];
+            *closed_manifold = m->nboundary_edges == 0 && m->nnonmanifold_edges == 0;
         }
     }
-    free(buf);
+    cli_mesh_free(&lm);
     return rc;
 }
 
-static int write_obj(const simp_mesh *m, const char *in, const char *path, uint32_t target)
+/* PLY for a name ending in .ply (any case), OBJ for anything else. */
+static int wants_ply(const char *path)
+{
+    size_t n = strlen(path);
+    if (n < 4 || path[n - 4] != '.') return 0;
+    char ext[4];
+    for (int k = 0; k < 3; k++) ext[k] = (char)(path[n - 3 + k] | 0x20);
+    ext[3] = 0;
+    return strcmp(ext, "ply") == 0;
+}
+
+/* OBJ (vertices and 1-based faces) or ascii PLY (a vertex element of x y z,
+ * a face element of index lists), coordinates to 9 significant digits. */
+static int write_mesh(const simp_mesh *m, const char *in, const char *path, uint32_t target)
 {
     silk_outfile o;
     silk_error err;
-    FILE *f = stdout;
-    int to_stdout = strcmp(path, "-") == 0;
-    if (!to_stdout) {
-        if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
-        f = o.fp;
-    }
-    fprintf(f, "# silk simplify %s --triangles %u: %u triangles, %u vertices\n", in, target, m->ntris, m->nverts);
+    if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    FILE *f = o.fp;
+    int ply = wants_ply(path);
+    if (ply)
+        fprintf(f, "ply\nformat ascii 1.0\ncomment silk simplify %s --triangles %u\nelement vertex %u\n"
+                   "property float x\nproperty float y\nproperty float z\nelement face %u\n"
+                   "property list uchar int vertex_indices\nend_header\n",
+                cli_input_name(in), target, m->nverts, m->ntris);
+    else
+        fprintf(f, "# silk simplify %s --triangles %u: %u triangles, %u vertices\n", cli_input_name(in), target,
+                m->ntris, m->nverts);
     for (uint32_t i = 0; i < m->nverts; i++)
-        fprintf(f, "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
-    for (uint32_t i = 0; i < m->ntris; i++)
-        fprintf(f, "f %u %u %u\n", m->tri[3 * i] + 1, m->tri[3 * i + 1] + 1, m->tri[3 * i + 2] + 1);
-    if (to_stdout) return fflush(stdout) == 0 ? 0 : cli_fail(CLI_EXIT_INPUT, "cannot write to stdout");
+        fprintf(f, ply ? "%.9g %.9g %.9g\n" : "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1],
+                m->pos[3 * i + 2]);
+    for (uint32_t i = 0; i < m->ntris; i++) {
+        uint32_t b = ply ? 0 : 1;
+        fprintf(f, ply ? "3 %u %u %u\n" : "f %u %u %u\n", m->tri[3 * i] + b, m->tri[3 * i + 1] + b, m->tri[3 * i + 2] + b);
+    }
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
 }
 
-static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale)
+static void on_collapse(void *user, uint32_t tris_in, uint32_t tris_left)
+{
+    const simp_opts *so = ((const simp_opts **)user)[0];
+    progress *p = ((progress **)user)[1];
+    /* the work is the triangles removed on the way to the target */
+    double todo = (double)tris_in - so->target_tris;
+    progress_update(p, (double)tris_in - tris_left, todo > 0 ? todo : 1);
+}
+
+static int simplify(const char *in, const char *out, const simp_opts *so_in, silk_decimal scale, int quiet)
 {
     simp_mesh m;
     int closed = 0, rc;
-    if ((rc = load(in, scale, &m, &closed)) != 0) {
+    if ((rc = load(in, scale, quiet, &m, &closed)) != 0) {
         simp_free(&m);
         return rc;
     }
+    simp_opts so_run = *so_in;
+    const simp_opts *so = &so_run;
+    progress pr;
+    progress_start(&pr, quiet, "simplify");
+    void *user[2] = { (void *)so_in, &pr };
+    so_run.progress = on_collapse;
+    so_run.progress_user = user;
     simp_stats st;
     simp_topology topo;
-    if (simp_run(&m, so, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
-    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    int run = simp_run(&m, so, &st);
+    progress_end(&pr);
+    if (run != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", cli_input_name(in));
+    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", cli_input_name(in));
     else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
         /* the checks in simplify.c should make this impossible */
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
                       "%u non-manifold vertices, %u misoriented edges); not written",
-                      in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
-    else if ((rc = write_obj(&m, in, out, so->target_tris)) == 0) {
-        if (strcmp(out, "-") != 0)
+                      cli_input_name(in), topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
+    else if ((rc = write_mesh(&m, in, out, so->target_tris)) == 0) {
+        if (!silk_path_is_stdio(out))
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
                    m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);
         if (m.ntris > so->target_tris + so->target_tris / 50)
             fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
-                            "surface\n", in, m.ntris);
+                            "surface\n", cli_input_name(in), m.ntris);
     }
     simp_free(&m);
     return rc;
@@ -141,12 +166,14 @@ int cmd_simplify(int argc, char **argv)
     simp_opts so;
     simp_opts_default(&so, 0);
     silk_decimal scale = { 1, 0 };
-    int rc = 0;
+    int rc = 0, quiet = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
+        } else if (strcmp(a, "--quiet") == 0) {
+            quiet = 1;
         } else if (cli_is(a, "--triangles")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_long("--triangles", v, 4, 100000000, &target))
                 rc = CLI_EXIT_USAGE;
@@ -177,11 +204,9 @@ int cmd_simplify(int argc, char **argv)
     if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
     so.target_tris = (uint32_t)target;
     if (rc) return rc;
-    rc = simplify(in, out, &so, scale);
+    rc = simplify(in, out, &so, scale, quiet);
     /* A file at OUT after a failure would be an earlier run's - unless it
      * is the input itself. */
-    struct stat si, so_;
-    int same = stat(in, &si) == 0 && stat(out, &so_) == 0 && si.st_dev == so_.st_dev && si.st_ino == so_.st_ino;
-    if (rc && strcmp(out, "-") != 0 && !same) silk_file_remove_stale(out);
+    if (rc && !silk_file_same(in, out)) silk_file_remove_stale(out);
     return rc;
 }

@@ -17,13 +17,13 @@
 #include <string.h>
 #include <time.h>
 
+#include "commands.h"
 #include "viewer.h"
 #include "font.h"
 #include "sheet.h"
 #include "../platform/platform.h"
 
-#define PI 3.14159265358979323846
-#define DEG (PI / 180)
+#define DEG CLI_DEG
 
 #define HUD_BG    0x202020u
 #define HUD_TEXT  0xF0F0F0u
@@ -72,6 +72,7 @@ static int update_camera(viewer *v)
         if (back < need) back = need;
     }
     o.have_eye = o.have_target = o.have_up = 1;
+    o.yaw = o.pitch = 0;   /* the orbit state took them in */
     for (int k = 0; k < 3; k++) {
         o.target[k] = v->target[k];
         o.eye[k] = v->target[k] + d[k] * back;
@@ -85,7 +86,7 @@ static int update_camera(viewer *v)
     if (rc) return rc;
     silk_error err;
     if (silk_view_init(&v->view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "view: %s", err.msg);
-    silk_phong_default(&v->phong, &v->view);
+    cli_phong(&v->o, &v->view, &v->phong);
     silk_hal_phong(&v->hal, &v->phong);
     return 0;
 }
@@ -499,8 +500,6 @@ static void help(FILE *f)
             "options:\n"
             "  -o, --output PATTERN  screenshot names; a %%d in it counts them\n"
             "                       (default silk-view-%%03d.png)\n"
-            "  --mode flat|smooth|blend|pn|pnL  the first mode (pnL: PN level L)\n"
-            "  --level L            PN level (1..%u)\n"
             "  --spin               start spinning\n"
             "  --frames N           quit after N frames, saving the last as a screenshot\n"
             "  --benchmark N        no window: render N frames, each turned 360/N degrees,\n"
@@ -510,12 +509,12 @@ static void help(FILE *f)
             "                       keys as above (space left right up down plus minus by\n"
             "                       name), drag:DX,DY  pan:DX,DY  wheel:N  size:WxH  shot:PATH\n",
 #ifdef SILK_HAVE_SDL2
-            "",
+            ""
 #else
-            " - not in this build (no SDL2)",
+            " - not in this build (no SDL2)"
 #endif
-            SILK_PN_MAX_LEVEL);
-    cli_print_scene_help(f);
+    );
+    cli_print_scene_help(f, CLI_OPT_ALL);
     fprintf(f,
             "\n"
             "examples:\n"
@@ -526,7 +525,7 @@ static void help(FILE *f)
             "docs/viewer.md has more.\n");
 }
 
-/* Does the command line ask for a framebuffer (tools/cmd_fbview.c)? */
+/* Does the command line ask for a framebuffer (tools/view_fb.c)? */
 static int wants_framebuffer(int argc, char **argv)
 {
     int headless = 0;
@@ -543,29 +542,19 @@ static int wants_framebuffer(int argc, char **argv)
 #endif
 }
 
-int cmd_view_desktop(int argc, char **argv)
+int cmd_view(int argc, char **argv)
 {
-    if (wants_framebuffer(argc, argv)) return -1;
+    if (wants_framebuffer(argc, argv)) return view_fb(argc, argv);
     cli_scene_opts o;
     cli_scene_opts_default(&o);
     const char *pattern = "silk-view-%03d.png", *events = NULL;
-    long frames = 0, bench = 0, level = 0;
-    int rc = 0, spin = 0, have_mode = 0;
-    silk_mode mode = SILK_MODE_SMOOTH;
-    uint32_t mode_level = 0;
+    long frames = 0, bench = 0;
+    int rc = 0, spin = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *val;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        }
-        /* --mode before the scene options: the viewer knows every mode. */
-        if (cli_is(a, "--mode")) {
-            if (!(val = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (sheet_parse_mode(val, &mode, &mode_level))
-                rc = cli_fail(CLI_EXIT_USAGE, "--mode must be flat, smooth, blend, pn or pnL (got \"%s\")", val);
-            have_mode = 1;
-            continue;
         }
         int r = cli_scene_option(&o, argc, argv, &i);
         if (r < 0) rc = CLI_EXIT_USAGE;
@@ -576,9 +565,6 @@ int cmd_view_desktop(int argc, char **argv)
                 rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: at most one %%d (and %%%% for a percent sign)", pattern);
             else if (silk_image_format_for_path(pattern) == SILK_IMAGE_NONE)
                 rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: unknown image format (use .png or .ppm)", pattern);
-        } else if (cli_is(a, "--level")) {
-            if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--level", val, 1, SILK_PN_MAX_LEVEL, &level))
-                rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--spin") == 0) {
             spin = 1;
         } else if (cli_is(a, "--frames")) {
@@ -601,9 +587,6 @@ int cmd_view_desktop(int argc, char **argv)
         return cli_fail(CLI_EXIT_USAGE, "view: this silk was built without SDL2, so it has no window; use --fb DEVICE, "
                         "--benchmark N or --events (install libsdl2-dev and rebuild for the window)");
 #endif
-    if (have_mode) o.render.mode = mode;
-    if (mode_level) o.render.level = mode_level;
-    if (level) o.render.level = (uint32_t)level;
 
     viewer *v = malloc(sizeof *v);
     if (!v) return cli_fail(CLI_EXIT_INPUT, "view: out of memory");
@@ -620,7 +603,7 @@ int cmd_view_desktop(int argc, char **argv)
 }
 
 #ifndef SILK_HAVE_SDL2
-/* Without SDL2 there is no window; cmd_view_desktop never gets here. */
+/* Without SDL2 there is no window; cmd_view never gets here. */
 int viewer_run_sdl(viewer *v, long frames)
 {
     (void)v;

@@ -7,12 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
-#include "measure.h"
-
-/* Small devices: tools/cmd_pack.c, cmd_profile.c, cmd_fbview.c. */
-int cmd_pack(int argc, char **argv);
-int cmd_view(int argc, char **argv);
-int cmd_profile(int argc, char **argv);
+#include "commands.h"
 
 typedef struct command {
     const char *name;

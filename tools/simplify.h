@@ -27,6 +27,9 @@ typedef struct simp_opts {
     uint32_t target_tris;    /* stop at this many triangles or fewer */
     double crease_deg;       /* dihedral angle above which an edge is a feature */
     double feature_weight;   /* constraint planes' weight against the faces' (area-weighted) */
+    /* called after each collapse with the triangles left (may be NULL) */
+    void (*progress)(void *user, uint32_t tris_in, uint32_t tris_left);
+    void *progress_user;
 } simp_opts;
 
 /* crease 60 degrees (as silk's loader), feature weight 100. */

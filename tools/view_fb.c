@@ -1,14 +1,14 @@
 /*
- * cmd_fbview.c - `silk view MESH --fb /dev/fb0`: the model turning on a
+ * view_fb.c - `silk view MESH --fb /dev/fb0`: the model turning on a
  * Linux framebuffer until Ctrl-C, rendered in bands straight into the
  * screen memory (silk_render_bands() with the platform/fb.h sink), as a
  * device without a second frame buffer would.
  *
  * `--fb-file PATH --fb-geometry WxHxBPP` does the same into a file-backed
  * framebuffer (the same code apart from the ioctls): how the tests and a
- * headless machine use it.  `view` is one subcommand for every display: it
- * dispatches on --fb / --fb-file here, and a desktop (SDL) viewer takes the
- * case where neither is given.
+ * headless machine use it.  `view` is one subcommand for every display:
+ * cmd_view (tools/cmd_view.c) hands --fb / --fb-file here and keeps the
+ * window (SDL) for itself.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -20,6 +20,7 @@
 #include <time.h>
 
 #include "cli.h"
+#include "commands.h"
 #include "viewer.h"
 #include "../platform/fb.h"
 
@@ -64,7 +65,7 @@ static void help(FILE *f)
             "", "", "",
 #endif
             VIEW_DEFAULT_SPIN, SILK_BOARD_BAND_ROWS);
-    cli_print_scene_help(f);
+    cli_print_scene_help(f, CLI_OPT_ALL);
     fprintf(f,
             "\n"
             "examples:\n"
@@ -109,7 +110,7 @@ typedef struct view_opts {
 static int turn_camera(cli_scene_opts *o, const silk_mesh *m, const silk_camera *c0, double deg,
                        silk_camera *cam)
 {
-    double a = deg * 3.14159265358979323846 / 180, ca = cos(a), sa = sin(a);
+    double a = deg * CLI_DEG, ca = cos(a), sa = sin(a);
     double t[3] = { cli_fx_to_double(c0->target.x), cli_fx_to_double(c0->target.y), cli_fx_to_double(c0->target.z) };
     double d[3] = { cli_fx_to_double(c0->eye.x) - t[0], cli_fx_to_double(c0->eye.y) - t[1],
                     cli_fx_to_double(c0->eye.z) - t[2] };
@@ -117,6 +118,7 @@ static int turn_camera(cli_scene_opts *o, const silk_mesh *m, const silk_camera 
     o->eye[1] = t[1] + d[1];
     o->eye[2] = t[2] - d[0] * sa + d[2] * ca;
     o->have_eye = 1;
+    o->yaw = o->pitch = 0;   /* c0 has them */
     return cli_camera(o, m, cam);
 }
 
@@ -180,7 +182,7 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
             rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
             break;
         }
-        silk_phong_default(&s.phong, &view);
+        cli_phong(o, &view, &s.phong);
         silk_hal_phong(&s.hal, &s.phong);
         silk_frame_stats fs;
         if (silk_render_bands(&s.arena, &s.mesh, &view, &s.hal, &o->render, &band, &sink, &fs, &err) != SILK_OK)
@@ -197,11 +199,8 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
     return rc;
 }
 
-int cmd_view(int argc, char **argv)
+int view_fb(int argc, char **argv)
 {
-    /* Without --fb / --fb-file: the window (tools/cmd_view.c). */
-    int desktop = cmd_view_desktop(argc, argv);
-    if (desktop >= 0) return desktop;
     cli_scene_opts o;
     cli_scene_opts_default(&o);
     view_opts v;
