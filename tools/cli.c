@@ -832,7 +832,13 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
     }
 }
 
-int cli_write_image(const silk_target *t, const char *path, silk_image_format fmt, int alpha, uint32_t bg_rgb)
+cli_alpha cli_alpha_for(const cli_scene_opts *o)
+{
+    if (!o->bg_none) return CLI_ALPHA_NONE;
+    return o->render.lines == SILK_LINES_ONLY ? CLI_ALPHA_COLOUR : CLI_ALPHA_COVERAGE;
+}
+
+int cli_write_image(const silk_target *t, const char *path, silk_image_format fmt, cli_alpha alpha, uint32_t bg_rgb)
 {
     silk_error err;
     if (!silk_path_is_stdio(path)) fmt = silk_image_format_for_path(path);
@@ -857,7 +863,7 @@ int cli_write_image(const silk_target *t, const char *path, silk_image_format fm
         silk_target_row_rgb888(t, y, row);
         for (int x = 0; x < t->width; x++) {
             size_t i = (size_t)y * (size_t)t->width + (size_t)x;
-            int depth = t->depth && t->depth[i] != 0;   /* cleared to 0, the farthest */
+            int depth = alpha == CLI_ALPHA_COVERAGE && t->depth && t->depth[i] != 0;   /* cleared to 0, the farthest */
             a[i] = depth || memcmp(row + 3 * x, bg, 3) != 0 ? 255 : 0;
         }
     }

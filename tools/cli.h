@@ -146,12 +146,21 @@ void cli_print_scene_help(FILE *f, unsigned groups);
  * lights. */
 void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p);
 
+/* What the alpha channel of an image shows (--bg none). */
+typedef enum cli_alpha {
+    CLI_ALPHA_NONE = 0,        /* no alpha channel */
+    CLI_ALPHA_COVERAGE,        /* 255 where the surface wrote depth or the colour is not bg_rgb */
+    CLI_ALPHA_COLOUR           /* 255 where the colour is not bg_rgb (--lines only: the surface is hidden) */
+} cli_alpha;
+
+/* The alpha the scene options ask for. */
+cli_alpha cli_alpha_for(const cli_scene_opts *o);
+
 /* Write t to path: PNG or PPM by the extension, or fmt for "-" (standard
- * output; SILK_IMAGE_NONE means PNG).  alpha: a PNG with an alpha channel,
- * 255 where the object covers the pixel (depth written, or a colour other
- * than bg_rgb: lines drawn alone) and 0 elsewhere.  Returns 0 or an exit
- * code after printing the error. */
-int cli_write_image(const silk_target *t, const char *path, silk_image_format fmt, int alpha, uint32_t bg_rgb);
+ * output; SILK_IMAGE_NONE means PNG); with alpha, a PNG whose alpha channel
+ * is 255 on the object and 0 elsewhere.  Returns 0 or an exit code after
+ * printing the error. */
+int cli_write_image(const silk_target *t, const char *path, silk_image_format fmt, cli_alpha alpha, uint32_t bg_rgb);
 
 /* A mesh file read whole and loaded into an arena of its own. */
 typedef struct cli_mesh {

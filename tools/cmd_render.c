@@ -127,7 +127,7 @@ static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt,
             image.depth = NULL;
             image.writes = NULL;
         }
-        int wrc = cli_write_image(&image, out, out_fmt, o->bg_none, o->render.bg_rgb);
+        int wrc = cli_write_image(&image, out, out_fmt, cli_alpha_for(o), o->render.bg_rgb);
         free(wide);
         cli_scene_free(&s);
         if (wrc) return wrc;
@@ -318,7 +318,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
                 rc = cli_fail(CLI_EXIT_USAGE, "render: output name too long: %s", out);
                 break;
             }
-            if ((rc = cli_write_image(&s->target, se->views > 1 ? path : out, out_fmt, o->bg_none,
+            if ((rc = cli_write_image(&s->target, se->views > 1 ? path : out, out_fmt, cli_alpha_for(o),
                                       o->render.bg_rgb)) != 0)
                 break;
             ++*written;
@@ -326,7 +326,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
     }
     progress_end(&pr);
     if (se->sheet && !rc) {
-        rc = cli_write_image(&sh.img, out, out_fmt, 0, 0);
+        rc = cli_write_image(&sh.img, out, out_fmt, CLI_ALPHA_NONE, 0);
     }
     sheet_free(&sh);
     return rc;
