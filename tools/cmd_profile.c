@@ -735,7 +735,7 @@ static int profile_host(const board *b, const char *mesh, const char *csv_path, 
 static void help(FILE *f)
 {
     fprintf(f,
-            "usage: silk profile MESH --board NAME [--csv FILE] [--no-build] [--check]\n"
+            "usage: silk profile MESH [--board NAME] [--csv FILE] [--no-build] [--check]\n"
             "\n"
             "Where every byte goes when board NAME (boards/NAME/board.mk) renders MESH:\n"
             "flash (code by module, the packed model by kind) and RAM (static data, the\n"

@@ -31,6 +31,7 @@ static void help(FILE *f)
             "  simplify IN OUT triangles=N vertices=N target=N collapses=N feature_edges=N\n"
             "\n"
             "options:\n"
+            "  -o, --output OUT    OUT as an option instead of the second argument\n"
             "  --triangles N       the triangle count to reach (at least 4)\n"
             "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
             "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
