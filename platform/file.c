@@ -88,18 +88,27 @@ silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err
     o->fp = NULL;
     o->path = path;
     o->tmp = NULL;
+    o->direct = 0;
     if (silk_path_is_stdio(path)) {
         /* Standard output cannot be written atomically: a failure is still
          * reported, but what was written has gone. */
         o->fp = stdout;
         o->path = SILK_STDOUT_NAME;
+        o->direct = 1;
         return SILK_OK;
     }
 
     /* rename() over a directory would fail only at the end; fail early. */
     struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+    int exists = stat(path, &st) == 0;
+    if (exists && S_ISDIR(st.st_mode))
         return silk_fail(err, SILK_ERR_IO, path, 0, "cannot write: %s", strerror(EISDIR));
+    if (exists && !S_ISREG(st.st_mode)) {
+        o->fp = fopen(path, "wb");
+        if (!o->fp) return silk_fail(err, SILK_ERR_IO, path, 0, "cannot write: %s", strerror(errno));
+        o->direct = 1;
+        return SILK_OK;
+    }
 
     static const char suffix[] = ".tmpXXXXXX";
     size_t n = strlen(path);
@@ -133,10 +142,13 @@ silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err
 
 silk_status silk_outfile_commit(silk_outfile *o, silk_error *err)
 {
-    if (o->fp == stdout && !o->tmp) {
+    if (o->direct) {
+        FILE *fp = o->fp;
         o->fp = NULL;
-        if (fflush(stdout) != 0 || ferror(stdout))
-            return silk_fail(err, SILK_ERR_IO, o->path, 0, "cannot write: %s", strerror(errno ? errno : EIO));
+        int bad = !fp || fflush(fp) != 0 || ferror(fp);
+        int e = errno ? errno : EIO;
+        if (fp && fp != stdout && fclose(fp) != 0 && !bad) bad = 1, e = errno ? errno : EIO;
+        if (bad) return silk_fail(err, SILK_ERR_IO, o->path, 0, "cannot write: %s", strerror(e));
         return SILK_OK;
     }
     if (!o->fp || !o->tmp) return silk_fail(err, SILK_ERR_IO, o->path, 0, "cannot write: not open");
@@ -158,8 +170,9 @@ silk_status silk_outfile_commit(silk_outfile *o, silk_error *err)
 
 void silk_outfile_abort(silk_outfile *o)
 {
-    if (o->fp == stdout && !o->tmp) {
-        fflush(stdout);
+    if (o->direct) {
+        if (o->fp && o->fp != stdout) fclose(o->fp);
+        else if (o->fp) fflush(o->fp);
         o->fp = NULL;
         return;
     }

@@ -38,10 +38,13 @@ typedef struct silk_outfile {
     FILE *fp;              /* write here between open and commit */
     const char *path;      /* the final name (not copied: keep it alive) */
     char *tmp;             /* the temporary name; NULL when none exists */
+    int direct;            /* writing straight to PATH: standard output, or a device or pipe */
 } silk_outfile;
 
 silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err);
-/* (PATH "-" writes to standard output: no temporary file, commit flushes.) */
+/* PATH "-" writes to standard output, and an existing PATH that is not a
+ * regular file (/dev/null, a pipe) is written as it is: no temporary file
+ * (a rename would replace the device), commit flushes. */
 /* Flush, sync, close and rename into place.  On failure the temporary file
  * is removed and PATH is left as it was. */
 silk_status silk_outfile_commit(silk_outfile *o, silk_error *err);

@@ -40,6 +40,15 @@ want='image-format' expect_usage "--image-format gif" render "$sphere" -o - --im
 want='image-format' expect_usage "--image-format against the name" render "$sphere" -o "$tmp/a.png" --image-format ppm
 check "no file named - appears" test ! -e ./- -a ! -e "$tmp/-"
 
+# An existing output that is not a regular file (a pipe, /dev/null) is
+# written as it is, never replaced by a renamed temporary file.
+mkfifo "$tmp/fifo.png"
+timeout 20 cat "$tmp/fifo.png" >"$tmp/from-fifo.png" &
+"$SILK" render "$sphere" -o "$tmp/fifo.png" $size
+wait
+check "render -o FIFO writes into the pipe" cmp -s "$tmp/file.png" "$tmp/from-fifo.png"
+check "the pipe is still a pipe" test -p "$tmp/fifo.png"
+
 # ---- pack to standard output --------------------------------------------------------------
 "$SILK" pack "$sphere" -o - >"$tmp/stdout.h"
 check "pack -o - writes the header to standard output" grep -q 'static inline void sphere_mesh' "$tmp/stdout.h"
