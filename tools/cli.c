@@ -723,6 +723,24 @@ static size_t load_bytes_needed(const cli_mesh *m, const silk_load_opts *lo, int
     return need;
 }
 
+/* silk_file_read, but standard input is read once and kept: a command that
+ * loads again into a larger arena gets the same bytes the second time. */
+static silk_status read_input(const char *path, uint8_t **data, size_t *len, silk_error *err)
+{
+    static uint8_t *stdin_data;
+    static size_t stdin_len;
+    if (!silk_path_is_stdio(path)) return silk_file_read(path, data, len, err);
+    if (!stdin_data) {
+        silk_status st = silk_file_read(path, &stdin_data, &stdin_len, err);
+        if (st != SILK_OK) return st;
+    }
+    /* a copy with the reader's trailing NUL, freed by the caller as usual */
+    if (!(*data = malloc(stdin_len + 1))) return silk_fail(err, SILK_ERR_IO, SILK_STDIN_NAME, 0, "out of memory");
+    memcpy(*data, stdin_data, stdin_len + 1);
+    *len = stdin_len;
+    return SILK_OK;
+}
+
 int cli_mesh_load(cli_mesh *m, const char *path, const silk_load_opts *lo, int vis, size_t fixed, size_t extra,
                   int doublings, int quiet)
 {
@@ -730,7 +748,7 @@ int cli_mesh_load(cli_mesh *m, const char *path, const silk_load_opts *lo, int v
     m->path = path;
     m->name = cli_input_name(path);
     silk_error err;
-    if (silk_file_read(path, &m->file, &m->file_len, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    if (read_input(path, &m->file, &m->file_len, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
 
     /* Large files take a while to parse: say so on a terminal. */
     progress pr;

@@ -629,8 +629,7 @@ static int profile_host(const board *b, const char *mesh, const char *csv_path, 
     size_t load_peak[SILK_MEM_COUNT];
     memcpy(load_peak, s.arena.peak_used, sizeof load_peak);
     for (int k = 0; !rc && k < views; k++) {
-        const double pi = 3.14159265358979323846;
-        double a = 2 * pi * k / views;
+        double a = 2 * CLI_PI * k / views;
         double t[3] = { cli_fx_to_double(c0.target.x), cli_fx_to_double(c0.target.y), cli_fx_to_double(c0.target.z) };
         double d[3] = { cli_fx_to_double(c0.eye.x) - t[0], cli_fx_to_double(c0.eye.y) - t[1],
                         cli_fx_to_double(c0.eye.z) - t[2] };
