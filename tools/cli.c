@@ -281,10 +281,21 @@ static unsigned group_of(const char *arg)
     return CLI_OPT_LOAD;
 }
 
+/* A material colour (components in [0, 1]) as 0xRRGGBB. */
+static uint32_t v3_to_rgb(silk_vec3 c)
+{
+    silk_fx v[3] = { c.x, c.y, c.z };
+    uint32_t rgb = 0;
+    for (int k = 0; k < 3; k++) rgb = rgb << 8 | (uint32_t)lround(cli_fx_to_double(v[k]) * 255);
+    return rgb;
+}
+
 void cli_print_scene_help(FILE *f, unsigned groups)
 {
     silk_render_opts ro;
     silk_render_opts_default(&ro);
+    silk_phong ph;
+    silk_phong_default(&ph, NULL);
     if (groups & CLI_OPT_LOAD)
         fprintf(f,
             "\n"
@@ -345,15 +356,16 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "                       the mesh's silhouette and feature edges (flat)\n"
             "  --lines-polygonal    the coarse mesh's silhouette and feature edges in any\n"
             "                       mode (pn and blend draw lines only so; alone: --lines over)\n"
-            "  --color RRGGBB       the object's colour (default a8b8d1)\n"
-            "  --ambient A          light everywhere, 0..1 (default 0.14)\n"
-            "  --specular S         strength of the highlights, 0..1 (default 0.35)\n"
-            "  --shininess N        sharpness of the highlights, 1..256 (default 24)\n"
+            "  --color RRGGBB       the object's colour (default %06x)\n"
+            "  --ambient A          light everywhere, 0..1 (default %.2f)\n"
+            "  --specular S         strength of the highlights, 0..1 (default %.2f)\n"
+            "  --shininess N        sharpness of the highlights, 1..256 (default %d)\n"
             "  --light [point:]x,y,z[:RRGGBB]  a white (or RRGGBB) light instead of the\n"
             "                       default two: directional from direction x,y,z (model\n"
             "                       axes, towards the light), or with point: at position\n"
             "                       x,y,z; repeat for up to %d lights\n",
-            (unsigned)ro.bg_rgb, SILK_MAX_LIGHTS);
+            (unsigned)ro.bg_rgb, (unsigned)v3_to_rgb(ph.mat.color), cli_fx_to_double(ph.mat.ambient),
+            cli_fx_to_double(ph.mat.specular), ph.mat.shininess, SILK_MAX_LIGHTS);
 }
 
 static int parse_fx(const char *opt, const char *s, double lo, double hi, silk_fx *out)
