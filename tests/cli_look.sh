@@ -66,6 +66,7 @@ check "--bg none: alpha 255 on the object, 0 elsewhere" \
 check "--bg none --lines only: alpha on the lines" \
     test "$(python3 "$stat_py" --alpha-matches "$tmp/lines.png" "$tmp/lines.ppm" ffffff)" = match
 want='PNG' expect_usage "--bg none to a PPM" render "$tmp/cone.obj" -o "$tmp/x.ppm" --bg none
+want='--bg none' expect_usage "view --bg none" view "$tmp/cone.obj" --bg none --benchmark 1
 
 # ---- the eye orbits the model ---------------------------------------------------------------
 # eye minus target of `silk info --json`, as "dx dy dz"

@@ -582,6 +582,7 @@ int cmd_view(int argc, char **argv)
     }
     if (rc) return rc;
     if (!o.mesh_path) return cli_fail(CLI_EXIT_USAGE, "view: no mesh given (silk view MESH)");
+    if (o.bg_none) return cli_fail(CLI_EXIT_USAGE, "view: --bg none is for images (silk render); give a colour");
     if (bench && events) return cli_fail(CLI_EXIT_USAGE, "view: --benchmark or --events, not both");
 #ifndef SILK_HAVE_SDL2
     if (!bench && !events)

@@ -242,6 +242,7 @@ int view_fb(int argc, char **argv)
     }
     if (rc) return rc;
     if (!o.mesh_path) return cli_fail(CLI_EXIT_USAGE, "view: no mesh given (silk view MESH --fb /dev/fb0)");
+    if (o.bg_none) return cli_fail(CLI_EXIT_USAGE, "view: --bg none is for images (silk render); give a colour");
     if (v.fb_dev && v.fb_file) return cli_fail(CLI_EXIT_USAGE, "view: give --fb or --fb-file, not both");
     if (v.fb_file && !v.have_geo)
         return cli_fail(CLI_EXIT_USAGE, "view: --fb-file needs --fb-geometry WxHxBPP, e.g. 320x240x16");
