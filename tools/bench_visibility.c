@@ -21,6 +21,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "progress.h"
 #include "../platform/platform.h"
 
 #define BENCH_VIEWS 36
@@ -45,7 +46,8 @@ static void help(FILE *f)
             "  --leaf N           largest cell not split [default of the library]\n"
             "  --only brute|gauss run one method only, 36 views x batches frames (for\n"
             "                     callgrind: valgrind --tool=callgrind silk bench ...)\n"
-            "  --projection perspective|parallel   only this projection [both]\n",
+            "  --projection perspective|parallel   only this projection [both]\n"
+            "  --quiet            no progress line on a terminal\n",
             BENCH_VIEWS);
 }
 
@@ -95,6 +97,7 @@ typedef struct bench_opts {
     silk_vis_opts vis;
     int only;                  /* 0 all, SILK_VIS_BRUTE or SILK_VIS_GAUSS */
     int proj;                  /* bit 0: perspective, bit 1: parallel */
+    int quiet;                 /* no progress line */
 } bench_opts;
 
 /* Projection p (0 perspective, 1 parallel) is to be measured. */
@@ -134,6 +137,10 @@ static int bench_mesh(const char *path, const bench_opts *o)
     }
     silk_arena a = lm.arena;
     silk_mesh m = lm.mesh;
+    progress pr;
+    char label[96];
+    snprintf(label, sizeof label, "bench --visibility %s", lm.name);
+    progress_start(&pr, o->quiet, label);
     uint8_t *vis = malloc(m.nnormals + 1);
     double brute[2][BENCH_VIEWS], gauss[2][BENCH_VIEWS], autot[2][BENCH_VIEWS], decided[2][BENCH_VIEWS];
     double visited[2][BENCH_VIEWS], onebyone[2][BENCH_VIEWS];
@@ -142,6 +149,7 @@ static int bench_mesh(const char *path, const bench_opts *o)
     if (o->only != SILK_VIS_GAUSS)
         for (int p = 0; p < 2; p++)
             for (int k = 0; k < BENCH_VIEWS && want(o, p); k++) {
+                progress_update(&pr, p * BENCH_VIEWS + k, 4 * BENCH_VIEWS);
                 bench_view(&m, k, p, &v);
                 brute[p][k] = o->only ? 0 : time_frame(&m, &v, SILK_VIS_BRUTE, vis, &a, o->batches, NULL);
                 if (o->only)
@@ -160,6 +168,7 @@ static int bench_mesh(const char *path, const bench_opts *o)
     }
     for (int p = 0; p < 2; p++)
         for (int k = 0; k < BENCH_VIEWS && want(o, p); k++) {
+            progress_update(&pr, (2 + p) * BENCH_VIEWS + k, 4 * BENCH_VIEWS);
             bench_view(&m, k, p, &v);
             if (o->only) {
                 for (int b = 0; b < o->batches; b++) silk_visibility(&m, &v, SILK_VIS_GAUSS, vis, &a, NULL);
@@ -186,6 +195,7 @@ static int bench_mesh(const char *path, const bench_opts *o)
            m.nnormals ? (double)m.vis->nnodes * sizeof(silk_vis_node) / m.nnormals : 0.0, build_ms);
     fflush(stdout);
 done:
+    progress_end(&pr);
     free(vis);
     cli_mesh_free(&lm);
     return rc;
@@ -206,6 +216,8 @@ int bench_visibility(int argc, char **argv)
             return 0;
         } else if (cli_is(arg, "--visibility")) {
             visibility = 1;
+        } else if (strcmp(arg, "--quiet") == 0) {
+            o.quiet = 1;
         } else if (cli_is(arg, "--batches")) {
             const char *val = cli_value(argc, argv, &i);
             if (!val || cli_parse_long("--batches", val, 1, 1000, &n)) return CLI_EXIT_USAGE;
@@ -243,7 +255,7 @@ int bench_visibility(int argc, char **argv)
         const char *arg = argv[i];
         if (arg[0] == '-' && arg[1]) {
             /* skip options and their values, parsed above */
-            if (!strchr(arg, '=') && !cli_is(arg, "--visibility")) i++;
+            if (!strchr(arg, '=') && !cli_is(arg, "--visibility") && strcmp(arg, "--quiet") != 0) i++;
             continue;
         }
         int r = bench_mesh(arg, &o);
