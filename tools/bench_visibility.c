@@ -86,10 +86,10 @@ static void bench_view(const silk_mesh *m, int k, int ortho, silk_view *v)
     double d[3] = { cos(el) * sin(az), sin(el), cos(el) * cos(az) };
     memset(v, 0, sizeof *v);
     v->cam.ortho = ortho;
-    v->cam.eye = silk_v3((silk_fx)lround((c[0] + 3 * r * d[0]) * 65536), (silk_fx)lround((c[1] + 3 * r * d[1]) * 65536),
-                         (silk_fx)lround((c[2] + 3 * r * d[2]) * 65536));
-    v->cam.target = silk_v3((silk_fx)lround(c[0] * 65536), (silk_fx)lround(c[1] * 65536), (silk_fx)lround(c[2] * 65536));
-    v->forward = silk_v3((silk_fx)lround(-d[0] * 65536), (silk_fx)lround(-d[1] * 65536), (silk_fx)lround(-d[2] * 65536));
+    v->cam.eye = silk_v3(cli_fx_from_double(c[0] + 3 * r * d[0]), cli_fx_from_double(c[1] + 3 * r * d[1]),
+                         cli_fx_from_double(c[2] + 3 * r * d[2]));
+    v->cam.target = silk_v3(cli_fx_from_double(c[0]), cli_fx_from_double(c[1]), cli_fx_from_double(c[2]));
+    v->forward = silk_v3(cli_fx_from_double(-d[0]), cli_fx_from_double(-d[1]), cli_fx_from_double(-d[2]));
 }
 
 typedef struct bench_opts {

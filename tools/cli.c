@@ -372,7 +372,7 @@ static int parse_fx(const char *opt, const char *s, double lo, double hi, silk_f
 {
     double v;
     if (cli_parse_double(opt, s, lo, hi, &v) != 0) return -1;
-    *out = (silk_fx)llround(v * 65536.0);
+    *out = cli_fx_from_double(v);
     return 0;
 }
 
@@ -551,7 +551,9 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
 
 double cli_fx_to_double(silk_fx v) { return v / 65536.0; }
 
-static silk_fx to_fx(double v) { return (silk_fx)llround(v * 65536.0); }
+silk_fx cli_fx_from_double(double v) { return (silk_fx)llround(v * 65536.0); }
+
+static silk_fx to_fx(double v) { return cli_fx_from_double(v); }
 
 static silk_vec3 to_v3(const double v[3]) { return silk_v3(to_fx(v[0]), to_fx(v[1]), to_fx(v[2])); }
 

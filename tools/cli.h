@@ -210,8 +210,10 @@ void cli_scene_free(cli_scene *s);
  * an exit code after printing the error. */
 int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam);
 
-/* Q16.16 to double, for printing. */
+/* Q16.16 to double, for printing; double to Q16.16, rounded to nearest
+ * (the caller checks the range). */
 double cli_fx_to_double(silk_fx v);
+silk_fx cli_fx_from_double(double v);
 
 /* The centre of the mesh's bounding box (into c) and the radius about it
  * that holds every vertex, 5% to spare; 1 for a mesh of one point. */

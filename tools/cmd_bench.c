@@ -790,7 +790,7 @@ int cmd_bench(int argc, char **argv)
             VALUE();
             double t;
             if (cli_parse_double("--tolerance", v, 0.25, 4, &t)) rc = CLI_EXIT_USAGE;
-            c.tolerance = (silk_fx)lround(t * 65536);
+            c.tolerance = cli_fx_from_double(t);
         } else if (cli_is(a, "--bg")) {
             VALUE();
             if (cli_parse_rgb("--bg", v, &c.bg)) rc = CLI_EXIT_USAGE;

@@ -343,7 +343,7 @@ static int orbit_eyes(const cli_scene_opts *o, const silk_mesh *m, int n, double
         for (int i = 0; i < 3; i++) {
             if (fabs(e[i]) > CLI_MAX_COORD)
                 return cli_fail(CLI_EXIT_USAGE, "pack: view %d would put the eye beyond +-%g", k, CLI_MAX_COORD);
-            eyes[k][i] = cli_fx_to_double((silk_fx)llround(e[i] * 65536.0));
+            eyes[k][i] = cli_fx_to_double(cli_fx_from_double(e[i]));
         }
     }
     return 0;

@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
 
 /* ---- boards/NAME/board.mk ----------------------------------------------------- */
 

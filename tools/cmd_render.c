@@ -174,7 +174,7 @@ static int zoom_camera(const cli_scene *s, double zoom, silk_camera *cam)
         if (best != SILK_FX_MIN) break;
     }
     if (cam->ortho) {
-        cam->ortho_half_height = (silk_fx)lround(cli_fx_to_double(cam->ortho_half_height) / zoom * 65536);
+        cam->ortho_half_height = cli_fx_from_double(cli_fx_to_double(cam->ortho_half_height) / zoom);
         if (cam->ortho_half_height < SILK_ZNEAR_MIN)
             return cli_fail(CLI_EXIT_USAGE, "--zoom %g: the view would be smaller than 1/1024 model units", zoom);
     } else {
@@ -183,7 +183,7 @@ static int zoom_camera(const cli_scene *s, double zoom, silk_camera *cam)
         if (fov < cli_fx_to_double(SILK_FOV_MIN))
             return cli_fail(CLI_EXIT_USAGE, "--zoom %g: the field of view would be %.2f degrees (at least %g)", zoom, fov,
                             cli_fx_to_double(SILK_FOV_MIN));
-        cam->fov_deg = (silk_fx)lround(fov * 65536);
+        cam->fov_deg = cli_fx_from_double(fov);
     }
     return 0;
 }
