@@ -553,9 +553,8 @@ double cli_fx_to_double(silk_fx v) { return v / 65536.0; }
 
 silk_fx cli_fx_from_double(double v) { return (silk_fx)llround(v * 65536.0); }
 
-static silk_fx to_fx(double v) { return cli_fx_from_double(v); }
 
-static silk_vec3 to_v3(const double v[3]) { return silk_v3(to_fx(v[0]), to_fx(v[1]), to_fx(v[2])); }
+static silk_vec3 to_v3(const double v[3]) { return silk_v3(cli_fx_from_double(v[0]), cli_fx_from_double(v[1]), cli_fx_from_double(v[2])); }
 
 static double len3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
@@ -675,12 +674,12 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
     cam->target = to_v3(target);
     cam->up = to_v3(up);
     cam->ortho = o->ortho;
-    cam->fov_deg = to_fx(o->fov);
+    cam->fov_deg = cli_fx_from_double(o->fov);
     double oh = o->ortho_auto ? (aspect < 1 ? r / aspect : r) : o->ortho_half;
     if (oh > CLI_MAX_COORD) oh = CLI_MAX_COORD;
-    cam->ortho_half_height = to_fx(o->ortho ? oh : 1.0);
-    cam->znear = to_fx(znear);
-    cam->zfar = to_fx(zfar);
+    cam->ortho_half_height = cli_fx_from_double(o->ortho ? oh : 1.0);
+    cam->znear = cli_fx_from_double(znear);
+    cam->zfar = cli_fx_from_double(zfar);
     cam->width = o->width;
     cam->height = o->height;
     return 0;
@@ -841,7 +840,7 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
 
 static silk_vec3 rgb_to_v3(uint32_t rgb)
 {
-    return silk_v3(to_fx(((rgb >> 16) & 255) / 255.0), to_fx(((rgb >> 8) & 255) / 255.0), to_fx((rgb & 255) / 255.0));
+    return silk_v3(cli_fx_from_double(((rgb >> 16) & 255) / 255.0), cli_fx_from_double(((rgb >> 8) & 255) / 255.0), cli_fx_from_double((rgb & 255) / 255.0));
 }
 
 void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
@@ -849,8 +848,8 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
     silk_phong_default(p, view);
     const cli_look *l = &o->look;
     if (l->have_color) p->mat.color = rgb_to_v3(l->color);
-    if (l->have_ambient) p->mat.ambient = to_fx(l->ambient);
-    if (l->have_specular) p->mat.specular = to_fx(l->specular);
+    if (l->have_ambient) p->mat.ambient = cli_fx_from_double(l->ambient);
+    if (l->have_specular) p->mat.specular = cli_fx_from_double(l->specular);
     if (l->shininess) p->mat.shininess = l->shininess;
     if (l->nlights) {
         p->nlights = l->nlights;
@@ -858,7 +857,7 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
             const cli_light *li = &l->light[i];
             double v[3] = { li->v[0], li->v[1], li->v[2] }, n = li->point ? 1 : len3(v);
             p->lights[i].kind = li->point ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
-            p->lights[i].vec = silk_v3(to_fx(v[0] / n), to_fx(v[1] / n), to_fx(v[2] / n));
+            p->lights[i].vec = silk_v3(cli_fx_from_double(v[0] / n), cli_fx_from_double(v[1] / n), cli_fx_from_double(v[2] / n));
             p->lights[i].color = rgb_to_v3(li->rgb);
         }
     }
