@@ -553,8 +553,10 @@ double cli_fx_to_double(silk_fx v) { return v / 65536.0; }
 
 silk_fx cli_fx_from_double(double v) { return (silk_fx)llround(v * 65536.0); }
 
-
-static silk_vec3 to_v3(const double v[3]) { return silk_v3(cli_fx_from_double(v[0]), cli_fx_from_double(v[1]), cli_fx_from_double(v[2])); }
+static silk_vec3 to_v3(const double v[3])
+{
+    return silk_v3(cli_fx_from_double(v[0]), cli_fx_from_double(v[1]), cli_fx_from_double(v[2]));
+}
 
 static double len3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
