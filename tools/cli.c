@@ -334,7 +334,8 @@ void cli_print_scene_help(FILE *f, unsigned groups)
         fprintf(f,
             "  --size WxH           image size in pixels, 1..%d each (default %dx%d)\n"
             "  --format rgb888|rgb565  pixel format silk renders in (default %s)\n",
-            CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT, SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888");
+            CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT,
+            SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888");
     if (groups & CLI_OPT_MODE)
         fprintf(f,
             "  --mode flat|smooth|pn|pnL|blend  coarse mesh as it is, smoothed silhouettes\n"
@@ -711,7 +712,8 @@ static size_t raster_bytes(const cli_scene_opts *o)
 static silk_status load_into(cli_mesh *m, const silk_load_opts *lo, int vis, size_t size, silk_error *err)
 {
     free(m->buf);
-    if (!(m->buf = malloc(size))) return silk_fail(err, SILK_ERR_NOMEM, m->name, 0, "cannot allocate an arena of %zu bytes", size);
+    if (!(m->buf = malloc(size)))
+        return silk_fail(err, SILK_ERR_NOMEM, m->name, 0, "cannot allocate an arena of %zu bytes", size);
     silk_arena_init(&m->arena, m->buf, size);
     silk_status st = silk_load_mesh(m->file, m->file_len, m->name, lo, &m->arena, &m->mesh, err);
     if (st == SILK_OK && vis) st = silk_vis_build(&m->mesh, NULL, &m->arena, err);
@@ -842,7 +844,8 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
 
 static silk_vec3 rgb_to_v3(uint32_t rgb)
 {
-    return silk_v3(cli_fx_from_double(((rgb >> 16) & 255) / 255.0), cli_fx_from_double(((rgb >> 8) & 255) / 255.0), cli_fx_from_double((rgb & 255) / 255.0));
+    double c[3] = { ((rgb >> 16) & 255) / 255.0, ((rgb >> 8) & 255) / 255.0, (rgb & 255) / 255.0 };
+    return to_v3(c);
 }
 
 void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
@@ -859,7 +862,8 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
             const cli_light *li = &l->light[i];
             double v[3] = { li->v[0], li->v[1], li->v[2] }, n = li->point ? 1 : len3(v);
             p->lights[i].kind = li->point ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
-            p->lights[i].vec = silk_v3(cli_fx_from_double(v[0] / n), cli_fx_from_double(v[1] / n), cli_fx_from_double(v[2] / n));
+            for (int k = 0; k < 3; k++) v[k] /= n;
+            p->lights[i].vec = to_v3(v);
             p->lights[i].color = rgb_to_v3(li->rgb);
         }
     }

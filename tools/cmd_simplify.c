@@ -107,7 +107,8 @@ static int write_mesh(const simp_mesh *m, const char *in, const char *path, uint
                 m->pos[3 * i + 2]);
     for (uint32_t i = 0; i < m->ntris; i++) {
         uint32_t b = ply ? 0 : 1;
-        fprintf(f, ply ? "3 %u %u %u\n" : "f %u %u %u\n", m->tri[3 * i] + b, m->tri[3 * i + 1] + b, m->tri[3 * i + 2] + b);
+        fprintf(f, ply ? "3 %u %u %u\n" : "f %u %u %u\n", m->tri[3 * i] + b, m->tri[3 * i + 1] + b,
+                m->tri[3 * i + 2] + b);
     }
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
@@ -142,12 +143,14 @@ static int simplify(const char *in, const char *out, const simp_opts *so_in, sil
     int run = simp_run(&m, so, &st);
     progress_end(&pr);
     if (run != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", cli_input_name(in));
-    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", cli_input_name(in));
+    else if (simp_topology_check(&m, &topo) != 0)
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", cli_input_name(in));
     else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
         /* the checks in simplify.c should make this impossible */
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
                       "%u non-manifold vertices, %u misoriented edges); not written",
-                      cli_input_name(in), topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
+                      cli_input_name(in), topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts,
+                      topo.misoriented_edges);
     else if ((rc = write_mesh(&m, in, out, so->target_tris)) == 0) {
         if (!silk_path_is_stdio(out))
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
