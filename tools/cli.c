@@ -610,6 +610,27 @@ static void orbit_dir(const double U[3], const double F[3], const double R[3], d
     for (int k = 0; k < 3; k++) d[k] = cos(el) * (cos(az) * F[k] + sin(az) * R[k]) + sin(el) * U[k];
 }
 
+void cli_orbit_dir(const cli_scene_opts *o, double az_deg, double el_deg, double d[3])
+{
+    double U[3], F[3], R[3];
+    model_frame(o, U, F, R);
+    orbit_dir(U, F, R, az_deg * CLI_DEG, el_deg * CLI_DEG, d);
+}
+
+void cli_orbit_angles(const cli_scene_opts *o, const double d[3], double *az_deg, double *el_deg)
+{
+    double U[3], F[3], R[3], len = len3(d);
+    model_frame(o, U, F, R);
+    *el_deg = len > 0 ? asin(fmax(-1, fmin(1, dot3(d, U) / len))) / CLI_DEG : 0;
+    *az_deg = atan2(dot3(d, R), dot3(d, F)) / CLI_DEG;
+}
+
+void cli_up_axis(const cli_scene_opts *o, double up[3])
+{
+    double F[3], R[3];
+    model_frame(o, up, F, R);
+}
+
 int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
 {
     const double deg = CLI_DEG;

@@ -210,6 +210,14 @@ void cli_scene_free(cli_scene *s);
  * an exit code after printing the error. */
 int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam);
 
+/* The orbit about the target in o's model frame (--up-axis): the direction
+ * from the target towards the eye at azimuth az (from the front towards the
+ * right) and elevation el, in degrees; the angles of a direction d; the up
+ * axis.  cli_camera places the default eye at az 30 + yaw, el 20 + pitch. */
+void cli_orbit_dir(const cli_scene_opts *o, double az_deg, double el_deg, double d[3]);
+void cli_orbit_angles(const cli_scene_opts *o, const double d[3], double *az_deg, double *el_deg);
+void cli_up_axis(const cli_scene_opts *o, double up[3]);
+
 /* Q16.16 to double, for printing; double to Q16.16, rounded to nearest
  * (the caller checks the range). */
 double cli_fx_to_double(silk_fx v);

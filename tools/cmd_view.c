@@ -61,7 +61,9 @@ static int update_camera(viewer *v)
     cli_scene_opts o = v->o;
     o.width = v->w;
     o.height = v->h;
-    double d[3] = { cos(v->el * DEG) * sin(v->az * DEG), sin(v->el * DEG), cos(v->el * DEG) * cos(v->az * DEG) };
+    double d[3], up[3];
+    cli_orbit_dir(&o, v->az, v->el, d);
+    cli_up_axis(&o, up);
     /* Orthographic: the view is as high as the perspective view at the
      * target, and the eye steps back out of the model. */
     double half = v->dist * tan(o.fov * DEG / 2), back = v->dist;
@@ -76,7 +78,7 @@ static int update_camera(viewer *v)
     for (int k = 0; k < 3; k++) {
         o.target[k] = v->target[k];
         o.eye[k] = v->target[k] + d[k] * back;
-        o.up[k] = k == 1;
+        o.up[k] = up[k];
     }
     o.ortho = v->ortho;
     o.ortho_auto = 0;
@@ -164,8 +166,7 @@ int viewer_open(viewer *v, const cli_scene_opts *o, const char *shot_pattern)
     memcpy(v->target, t, sizeof t);
     v->dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(v->dist > 0)) v->dist = 3 * v->radius;
-    v->el = asin(clampd(d[1] / v->dist, -1, 1)) / DEG;
-    v->az = atan2(d[0], d[2]) / DEG;
+    cli_orbit_angles(o, d, &v->az, &v->el);
     if (o->ortho) v->dist = cli_fx_to_double(cam.ortho_half_height) / tan(o->fov * DEG / 2);
     clamp_orbit(v);
     memcpy(v->home, v->target, sizeof v->target);

@@ -106,20 +106,13 @@ typedef struct view_opts {
     int have_size, have_format;
 } view_opts;
 
-/* The default eye, turned by deg about the vertical through the target. */
-static int turn_camera(cli_scene_opts *o, const silk_mesh *m, const silk_camera *c0, double deg,
-                       silk_camera *cam)
+/* The camera turned by deg about the up axis through the target: the
+ * scene's --yaw plus deg (cli_camera), so --eye, --pitch and --up-axis hold. */
+static int turn_camera(const cli_scene_opts *o, const silk_mesh *m, double deg, silk_camera *cam)
 {
-    double a = deg * CLI_DEG, ca = cos(a), sa = sin(a);
-    double t[3] = { cli_fx_to_double(c0->target.x), cli_fx_to_double(c0->target.y), cli_fx_to_double(c0->target.z) };
-    double d[3] = { cli_fx_to_double(c0->eye.x) - t[0], cli_fx_to_double(c0->eye.y) - t[1],
-                    cli_fx_to_double(c0->eye.z) - t[2] };
-    o->eye[0] = t[0] + d[0] * ca + d[2] * sa;
-    o->eye[1] = t[1] + d[1];
-    o->eye[2] = t[2] - d[0] * sa + d[2] * ca;
-    o->have_eye = 1;
-    o->yaw = o->pitch = 0;   /* c0 has them */
-    return cli_camera(o, m, cam);
+    cli_scene_opts t = *o;
+    t.yaw = fmod(o->yaw + deg, 360);
+    return cli_camera(&t, m, cam);
 }
 
 static double now_ms(void)
@@ -158,8 +151,6 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
     uint8_t *color = rc ? NULL : malloc(px * silk_pixfmt_bytes(o->fmt));
     uint32_t *depth = rc ? NULL : malloc(px * sizeof *depth);
     if (!rc && (!color || !depth)) rc = cli_fail(CLI_EXIT_INPUT, "out of memory for a band of %d rows", rows);
-    silk_camera c0;
-    if (!rc) rc = cli_camera(o, &s.mesh, &c0);
 
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -176,7 +167,7 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
     for (; !rc && !stop_requested && (v->frames == 0 || frames < v->frames); frames++) {
         silk_camera cam;
         silk_view view;
-        rc = turn_camera(o, &s.mesh, &c0, (double)frames * v->spin, &cam);
+        rc = turn_camera(o, &s.mesh, (double)frames * v->spin, &cam);
         if (rc) break;
         if (silk_view_init(&view, &cam, &err) != SILK_OK) {
             rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
