@@ -101,8 +101,8 @@ check "--up-axis z: the Z-up copy has the Y-up silhouette ($(cat "$out"))" grep 
 check "without --up-axis z it lies on its side" grep -qv 'differing=0 ' "$out"
 want='--up-axis' expect_usage "--up-axis x" render "$tmp/cone.obj" -o "$tmp/x.png" --up-axis x
 # the viewer orbits about the same up axis (arrow left: 15 degrees about it)
-(cd "$tmp" && "$SILK" view cone.obj --events "left shot:vy.png" $size >/dev/null 2>&1 &&
-    "$SILK" view cone-z.obj --up-axis z --events "left shot:vz.png" $size >/dev/null 2>&1)
+"$SILK" view "$tmp/cone.obj" --events "left shot:$tmp/vy.png" $size >/dev/null 2>&1
+"$SILK" view "$tmp/cone-z.obj" --up-axis z --events "left shot:$tmp/vz.png" $size >/dev/null 2>&1
 "$SILK" diff "$tmp/vy.png" "$tmp/vz.png" >"$out" 2>&1
 check "view --up-axis z orbits the Z-up copy as the Y-up model ($(cat "$out"))" grep -q 'differing=0 ' "$out"
 
