@@ -73,9 +73,24 @@ $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_TOOL_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+
+# Tests of host tools link the tools' objects they test; tests that draw
+# meshes made by `silk gen`'s generator link it.
+$(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
+$(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
+$(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
+$(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
+GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines
+$(GEN_TESTS): $(BUILD)/obj/tools/gen.o
+$(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
 
 tests: $(TEST_BIN) $(BUILD)/silk
+
+# Rewrite the golden frames (tests/golden/) that differ and list them.
+.PHONY: golden
+golden: $(BUILD)/tests/test_golden
+	$(BUILD)/tests/test_golden --update
 
 # The core may not use floating point: compiled without FP/SIMD registers,
 # any float or double use is a compile error.

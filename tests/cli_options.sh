@@ -18,6 +18,7 @@ gen|gen sphere
 bench|bench
 bench-visibility|bench --visibility
 simplify|simplify
+hull|hull
 diff|diff
 pack|pack
 view|view

@@ -17,7 +17,7 @@
 
 #include "check.h"
 #include "silk/silk.h"
-#include "../src/smooth.h"
+#include "../src/frame.h"
 #include "support/testmesh.h"
 #include "support/testvec.h"
 

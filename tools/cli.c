@@ -252,6 +252,7 @@ void cli_scene_opts_default(cli_scene_opts *o)
     o->fmt = SILK_BOARD_FORMAT;
     o->fov = CLI_DEFAULT_FOV;
     o->groups = CLI_OPT_ALL;
+    o->orient_note = 1;
     silk_render_opts_default(&o->render);
 }
 
@@ -305,6 +306,8 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "  --crease DEG         dihedral angle above which an edge is a sharp feature\n"
             "                       (0..180, default %g)\n"
             "  --normals compute|file  shading normals computed (default) or the file's\n"
+            "  --orient fix|keep    fix (default): wind the triangles consistently and\n"
+            "                       closed surfaces outward; keep: the file's winding\n"
             "  --visibility auto|brute|gauss  visibility of normals: auto builds the\n"
             "                       Gaussian-sphere hierarchy at load and uses it where it\n"
             "                       pays (default); brute tests every normal; gauss always\n"
@@ -427,6 +430,11 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
         else if (strcmp(v, "file") == 0) o->load.normals = SILK_NORMALS_FILE;
         else return cli_fail(-1, "--normals must be compute or file (got \"%s\")", v);
+    } else if (cli_is(arg, "--orient")) {
+        VALUE();
+        if (strcmp(v, "fix") == 0) o->load.orient = SILK_ORIENT_FIX;
+        else if (strcmp(v, "keep") == 0) o->load.orient = SILK_ORIENT_KEEP;
+        else return cli_fail(-1, "--orient must be fix or keep (got \"%s\")", v);
     } else if (cli_is(arg, "--visibility")) {
         VALUE();
         if (strcmp(v, "auto") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_AUTO;
@@ -711,6 +719,18 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
 
 /* ---- scene ----------------------------------------------------------------------- */
 
+void cli_orient_note(const char *path, const silk_mesh *m)
+{
+    if (m->nreoriented_tris)
+        fprintf(stderr, "silk: note: %s: %lu triangles turned round for a consistent, outward winding%s "
+                "(--orient keep leaves them)\n",
+                path, (unsigned long)m->nreoriented_tris,
+                m->nnonorientable_tris ? "; others are on a non-orientable surface, left as they are" : "");
+    else if (m->nnonorientable_tris)
+        fprintf(stderr, "silk: note: %s: %lu triangles are on a non-orientable surface; left as in the file\n",
+                path, (unsigned long)m->nnonorientable_tris);
+}
+
 /* Bytes the arena gets when --arena is not given.  Measured on the shared
  * OBJ meshes (docs/memory.md): the loaded mesh takes about 3x its file, a
  * smooth frame's scratch up to about 7x (240 bytes per triangle); 16x
@@ -842,6 +862,7 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
     s->mesh = lm.mesh;
     if (rc) return rc;
     s->load_bytes = s->arena.bottom;
+    if (o->orient_note) cli_orient_note(cli_input_name(o->mesh_path), &s->mesh);
 
     silk_error err;
     rc = cli_camera(o, &s->mesh, &s->cam);

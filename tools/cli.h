@@ -129,6 +129,7 @@ typedef struct cli_scene_opts {
     int vis_brute;             /* 1: no Gaussian-sphere hierarchy, every normal tested */
     size_t arena_bytes;        /* 0: from the file size */
     int arena_doublings;       /* without --arena: start from the estimate times 2^this */
+    int orient_note;           /* 1 (default): say on stderr when the load turned triangles round */
 } cli_scene_opts;
 
 void cli_scene_opts_default(cli_scene_opts *o);
@@ -198,8 +199,13 @@ typedef struct cli_scene {
     size_t load_bytes;         /* arena bottom after loading the mesh */
 } cli_scene;
 
-/* Read and load the mesh, allocate the arena, set up the camera, the target
- * (colour and depth from the arena, purpose RASTER) and the Phong stages.
+/* One line on stderr when loading turned triangles round, or found a
+ * surface it could not orient (silk_mesh.nreoriented_tris, ...). */
+void cli_orient_note(const char *path, const silk_mesh *m);
+
+/* Read and load the mesh (with the orientation note unless o->orient_note
+ * is 0), allocate the arena, set up the camera, the target (colour and
+ * depth from the arena, purpose RASTER) and the Phong stages.
  * Returns 0, or an exit code after printing the error; cli_scene_free
  * releases everything either way. */
 int cli_scene_load(cli_scene *s, const cli_scene_opts *o);

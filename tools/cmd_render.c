@@ -37,7 +37,7 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n"
             "\n"
-            "Render MESH (OBJ or PLY; - for standard input) to an image; the format\n"
+            "Render MESH (OBJ, PLY or STL; - for standard input) to an image; the format\n"
             "follows OUT's extension.\n"
             "\n"
             "  -o, --output OUT     the image to write (.png or .ppm); written atomically;\n"

@@ -22,8 +22,8 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk simplify IN OUT.obj|OUT.ply --triangles N [options]\n"
             "\n"
-            "Simplify the mesh IN (OBJ or PLY; - for standard input) to N triangles by\n"
-            "quadric-error edge collapse (Garland-Heckbert) and write OUT atomically: as\n"
+            "Simplify the mesh IN (OBJ, PLY or STL; - for standard input) to N triangles\n"
+            "by quadric-error edge collapse (Garland-Heckbert) and write OUT atomically: as\n"
             "ascii PLY when its name ends in .ply, else as OBJ (- for standard output).\n"
             "Boundary and crease edges are kept where possible; a closed manifold input\n"
             "gives a closed manifold output (no collapse that breaks the surface or turns\n"
@@ -43,8 +43,8 @@ static void help(FILE *f)
             "  silk simplify bunny-fine.obj bunny-500.ply --triangles 500\n");
 }
 
-/* The mesh as silk loads it, positions widened to double. */
-static int load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold)
+/* The mesh as silk loads it, positions widened to double (simplify.h). */
+int simp_load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold)
 {
     memset(out, 0, sizeof *out);
     silk_load_opts lo;
@@ -85,33 +85,68 @@ static int wants_ply(const char *path)
     return strcmp(ext, "ply") == 0;
 }
 
-/* OBJ (vertices and 1-based faces) or ascii PLY (a vertex element of x y z,
- * a face element of index lists), coordinates to 9 significant digits. */
-static int write_mesh(const simp_mesh *m, const char *in, const char *path, uint32_t target)
+int simp_write_mesh(const simp_mesh *m, const double *normals, const char *path, const char *comment)
 {
     silk_outfile o;
     silk_error err;
     if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     FILE *f = o.fp;
     int ply = wants_ply(path);
-    if (ply)
-        fprintf(f, "ply\nformat ascii 1.0\ncomment silk simplify %s --triangles %u\nelement vertex %u\n"
-                   "property float x\nproperty float y\nproperty float z\nelement face %u\n"
-                   "property list uchar int vertex_indices\nend_header\n",
-                cli_input_name(in), target, m->nverts, m->ntris);
-    else
-        fprintf(f, "# silk simplify %s --triangles %u: %u triangles, %u vertices\n", cli_input_name(in), target,
-                m->ntris, m->nverts);
-    for (uint32_t i = 0; i < m->nverts; i++)
-        fprintf(f, ply ? "%.9g %.9g %.9g\n" : "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1],
-                m->pos[3 * i + 2]);
+    if (ply) {
+        fprintf(f, "ply\nformat ascii 1.0\ncomment %s\nelement vertex %u\n"
+                   "property float x\nproperty float y\nproperty float z\n", comment, m->nverts);
+        if (normals) fprintf(f, "property float nx\nproperty float ny\nproperty float nz\n");
+        fprintf(f, "element face %u\nproperty list uchar int vertex_indices\nend_header\n", m->ntris);
+    } else {
+        fprintf(f, "# %s: %u triangles, %u vertices\n", comment, m->ntris, m->nverts);
+    }
+    for (uint32_t i = 0; i < m->nverts; i++) {
+        fprintf(f, ply ? "%.9g %.9g %.9g" : "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
+        if (ply && normals) fprintf(f, " %.6f %.6f %.6f", normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+        if (ply) fputc('\n', f);
+    }
+    if (normals && !ply)
+        for (uint32_t i = 0; i < m->nverts; i++)
+            fprintf(f, "vn %.6f %.6f %.6f\n", normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
     for (uint32_t i = 0; i < m->ntris; i++) {
-        uint32_t b = ply ? 0 : 1;
-        fprintf(f, ply ? "3 %u %u %u\n" : "f %u %u %u\n", m->tri[3 * i] + b, m->tri[3 * i + 1] + b,
-                m->tri[3 * i + 2] + b);
+        const uint32_t *t = &m->tri[3 * i];
+        if (ply)
+            fprintf(f, "3 %u %u %u\n", t[0], t[1], t[2]);
+        else if (normals)
+            fprintf(f, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1);
+        else
+            fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
     }
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
+}
+
+int simp_common_option(int argc, char **argv, int *i, simp_args *args)
+{
+    const char *a = argv[*i], *v, *end;
+    if (cli_is(a, "--triangles")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_long("--triangles", v, 4, 100000000, &args->target)) return -1;
+    } else if (cli_is(a, "--scale")) {
+        if (!(v = cli_value(argc, argv, i))) return -1;
+        if (silk_decimal_parse(v, &end, &args->scale) != 0 || *end || args->scale.mant <= 0) {
+            cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
+            return -1;
+        }
+    } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
+        if (!(args->out = cli_value(argc, argv, i))) return -1;
+    } else if (strcmp(a, "--quiet") == 0) {
+        args->quiet = 1;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* A file at OUT after a failure would be an earlier run's - unless it is
+ * the input itself. */
+void simp_remove_stale(const char *in, const char *out)
+{
+    if (out && !(in && silk_file_same(in, out))) silk_file_remove_stale(out);
 }
 
 static void on_collapse(void *user, uint32_t tris_in, uint32_t tris_left)
@@ -127,7 +162,10 @@ static int simplify(const char *in, const char *out, const simp_opts *so_in, sil
 {
     simp_mesh m;
     int closed = 0, rc;
-    if ((rc = load(in, scale, quiet, &m, &closed)) != 0) {
+    char comment[1024];
+    const char *name = cli_input_name(in);
+    snprintf(comment, sizeof comment, "silk simplify %s --triangles %u", name, so_in->target_tris);
+    if ((rc = simp_load(in, scale, quiet, &m, &closed)) != 0) {
         simp_free(&m);
         return rc;
     }
@@ -142,22 +180,21 @@ static int simplify(const char *in, const char *out, const simp_opts *so_in, sil
     simp_topology topo;
     int run = simp_run(&m, so, &st);
     progress_end(&pr);
-    if (run != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", cli_input_name(in));
-    else if (simp_topology_check(&m, &topo) != 0)
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", cli_input_name(in));
+    if (run != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", name);
+    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", name);
     else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
         /* the checks in simplify.c should make this impossible */
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
                       "%u non-manifold vertices, %u misoriented edges); not written",
-                      cli_input_name(in), topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts,
+                      name, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts,
                       topo.misoriented_edges);
-    else if ((rc = write_mesh(&m, in, out, so->target_tris)) == 0) {
+    else if ((rc = simp_write_mesh(&m, NULL, out, comment)) == 0) {
         if (!silk_path_is_stdio(out))
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
                    m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);
         if (m.ntris > so->target_tris + so->target_tris / 50)
             fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
-                            "surface\n", cli_input_name(in), m.ntris);
+                            "surface\n", name, m.ntris);
     }
     simp_free(&m);
     return rc;
@@ -165,52 +202,40 @@ static int simplify(const char *in, const char *out, const simp_opts *so_in, sil
 
 int cmd_simplify(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    long target = -1;
+    const char *in = NULL;
+    simp_args args = { NULL, -1, { 1, 0 }, 0 };
     simp_opts so;
     simp_opts_default(&so, 0);
-    silk_decimal scale = { 1, 0 };
-    int rc = 0, quiet = 0;
+    int rc = 0, k;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        } else if (strcmp(a, "--quiet") == 0) {
-            quiet = 1;
-        } else if (cli_is(a, "--triangles")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_long("--triangles", v, 4, 100000000, &target))
-                rc = CLI_EXIT_USAGE;
+        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
+            if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--crease")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--crease", v, 0, 180, &so.crease_deg))
                 rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--feature-weight")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
                 rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--scale")) {
-            const char *end;
-            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (silk_decimal_parse(v, &end, &scale) != 0 || *end || scale.mant <= 0)
-                rc = cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
-        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
             rc = cli_fail(CLI_EXIT_USAGE, "simplify: unknown option %s (try silk simplify --help)", a);
         } else if (!in) {
             in = a;
-        } else if (!out) {
-            out = a;
+        } else if (!args.out) {
+            args.out = a;
         } else {
             rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", a);
         }
     }
-    if (!rc && (!in || !out)) rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
-    if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
-    so.target_tris = (uint32_t)target;
+    if (!rc && (!in || !args.out))
+        rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
+    if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
+    so.target_tris = (uint32_t)args.target;
     if (rc) return rc;
-    rc = simplify(in, out, &so, scale, quiet);
-    /* A file at OUT after a failure would be an earlier run's - unless it
-     * is the input itself. */
-    if (rc && !silk_file_same(in, out)) silk_file_remove_stale(out);
+    rc = simplify(in, args.out, &so, args.scale, args.quiet);
+    if (rc) simp_remove_stale(in, args.out);
     return rc;
 }

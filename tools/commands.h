@@ -16,6 +16,7 @@ int cmd_diff(int argc, char **argv);
 int cmd_pack(int argc, char **argv);
 int cmd_view(int argc, char **argv);
 int cmd_profile(int argc, char **argv);
+int cmd_hull(int argc, char **argv);
 
 /* Parts: `silk bench --visibility` (tools/bench_visibility.c) and the
  * framebuffer side of `silk view` (tools/view_fb.c). */

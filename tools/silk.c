@@ -1,6 +1,6 @@
 /*
  * silk.c - the `silk` command: main and the dispatch to its subcommands
- * (render, info, gen, view, bench, diff, simplify, pack, profile, help),
+ * (render, info, gen, view, bench, diff, simplify, hull, pack, profile, help),
  * each in its own cmd_*.c file.
  */
 #include <stdio.h>
@@ -21,6 +21,7 @@ static const command commands[] = {
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
     { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility" },
     { "simplify", cmd_simplify, "simplify IN OUT --triangles N", "fewer triangles, by quadric edge collapse" },
+    { "hull", cmd_hull, "hull FINE -o HULL.obj", "a coarse mesh around FINE (--triangles N; --inner)" },
     { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
     { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },
     { "view", cmd_view, "view MESH [--fb /dev/fb0]", "look at it: a window (mouse, keys) or a framebuffer" },

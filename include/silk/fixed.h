@@ -20,7 +20,8 @@ typedef int32_t silk_fx;                   /* Q16.16 */
 #define SILK_FX_HALF  ((silk_fx)32768)
 #define SILK_FX_MAX   ((silk_fx)INT32_MAX)
 #define SILK_FX_MIN   ((silk_fx)-INT32_MAX)  /* symmetric, so negation never overflows */
-#define SILK_FX_PI    ((silk_fx)205887)      /* pi in Q16.16 */
+#define SILK_PI_Q30   INT64_C(3373259426)     /* pi in Q2.30: the one pi of the core */
+#define SILK_FX_PI    ((silk_fx)((SILK_PI_Q30 + 8192) >> 14))   /* pi in Q16.16, 205887 */
 
 /* Compile-time constants from integer ratios: SILK_FX_C(3, 2) is 1.5. */
 #define SILK_FX_C(num, den) ((silk_fx)(((int64_t)(num) * 65536) / (den)))
@@ -74,6 +75,8 @@ silk_fx silk_fx_div(silk_fx a, silk_fx b);
 silk_fx silk_fx_muldiv(silk_fx a, silk_fx b, silk_fx c);
 
 static inline silk_fx silk_fx_abs(silk_fx a) { return a < 0 ? -a : a; }
+/* |v| for any int64_t, INT64_MIN included (hence unsigned). */
+static inline uint64_t silk_abs64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 static inline silk_fx silk_fx_min(silk_fx a, silk_fx b) { return a < b ? a : b; }
 static inline silk_fx silk_fx_max(silk_fx a, silk_fx b) { return a > b ? a : b; }
 static inline silk_fx silk_fx_clamp(silk_fx a, silk_fx lo, silk_fx hi)

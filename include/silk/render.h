@@ -43,7 +43,9 @@ typedef enum silk_pn_normals { SILK_PN_QUADRATIC = 0, SILK_PN_LINEAR = 1 } silk_
 
 /* Pen-and-ink lines (src/lines.c): in SMOOTH mode the sampled silhouette
  * segments and the visible feature curves, exactly as the re-meshed surface
- * runs along them; in FLAT mode, or with lines_polygonal in any mode, the
+ * runs along them, and the contour of the drawn triangles (every side
+ * between two that face opposite ways), so the whole outline is drawn; in
+ * FLAT mode, or with lines_polygonal in any mode, the
  * coarse mesh's silhouette edges (between a front- and a back-facing
  * triangle) and its feature edges next to a front-facing triangle.  PN and
  * BLEND draw patches that bulge over those edges, so there lines without
