@@ -74,3 +74,20 @@ silk_status silk_image_read(const char *path, uint32_t bg_rgb, uint8_t **rgb, in
     free(data);
     return s;
 }
+
+silk_status silk_png_read(const char *path, uint8_t **rgb, int *width, int *height, silk_error *err)
+{
+    *rgb = NULL;
+    *width = *height = 0;
+    uint8_t *data;
+    size_t len;
+    silk_status s = silk_file_read(path, &data, &len, err);
+    if (s != SILK_OK) return s;
+    const char *name = silk_path_is_stdio(path) ? SILK_STDIN_NAME : path;
+    if (len < sizeof png_magic || memcmp(data, png_magic, sizeof png_magic) != 0)
+        s = silk_fail(err, SILK_ERR_PARSE, name, 0, "not a PNG file");
+    else
+        s = png_decode(data, len, name, 0, rgb, width, height, err);   /* alpha onto black */
+    free(data);
+    return s;
+}

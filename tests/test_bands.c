@@ -1,5 +1,5 @@
 /*
- * test_bands.c - band rendering (issue 6, part 1): silk_render_bands() must
+ * test_bands.c - band rendering: silk_render_bands() must
  * give exactly the pixels of silk_render() for any band height.
  *
  * Two shared meshes (bunny-500, torus-576) are drawn at 320x240 from

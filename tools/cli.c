@@ -195,19 +195,6 @@ const char *cli_input_name(const char *path)
     return silk_path_is_stdio(path) ? SILK_STDIN_NAME : path;
 }
 
-const char *cli_find_output(int argc, char **argv)
-{
-    const char *out = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
-            if (i + 1 < argc) out = argv[++i];
-        } else if (strncmp(argv[i], "--output=", 9) == 0) {
-            out = argv[i] + 9;
-        }
-    }
-    return out;
-}
-
 int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, int *n)
 {
     *n = 0;

@@ -244,8 +244,4 @@ void cli_json_string(FILE *f, const char *s);
 /* The name of an input for messages: path, or SILK_STDIN_NAME for "-". */
 const char *cli_input_name(const char *path);
 
-/* The value of the last "-o"/"--output" in argv, or NULL: found before the
- * options are parsed, so that even a usage error removes a stale output. */
-const char *cli_find_output(int argc, char **argv);
-
 #endif

@@ -115,7 +115,7 @@ int cmd_hull(int argc, char **argv)
     if (!rc && !args.out) rc = cli_fail(CLI_EXIT_USAGE, "hull: -o HULL.obj is needed");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "hull: --triangles N is needed");
     ho.target_tris = (uint32_t)args.target;
+    /* A failed run leaves OUT as it was (written atomically). */
     if (!rc) rc = hull(in, args.out, &ho, &args);
-    if (rc) simp_remove_stale(in, args.out ? args.out : cli_find_output(argc, argv));
     return rc;
 }

@@ -142,13 +142,6 @@ int simp_common_option(int argc, char **argv, int *i, simp_args *args)
     return 1;
 }
 
-/* A file at OUT after a failure would be an earlier run's - unless it is
- * the input itself. */
-void simp_remove_stale(const char *in, const char *out)
-{
-    if (out && !(in && silk_file_same(in, out))) silk_file_remove_stale(out);
-}
-
 static void on_collapse(void *user, uint32_t tris_in, uint32_t tris_left)
 {
     const simp_opts *so = ((const simp_opts **)user)[0];
@@ -235,7 +228,6 @@ int cmd_simplify(int argc, char **argv)
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
     so.target_tris = (uint32_t)args.target;
     if (rc) return rc;
-    rc = simplify(in, args.out, &so, args.scale, args.quiet);
-    if (rc) simp_remove_stale(in, args.out);
-    return rc;
+    /* A failed run leaves OUT as it was (written atomically). */
+    return simplify(in, args.out, &so, args.scale, args.quiet);
 }

@@ -89,8 +89,5 @@ typedef struct simp_args {
 } simp_args;
 int simp_common_option(int argc, char **argv, int *i, simp_args *args);
 
-/* After a failure: remove OUT (unless it is "-", NULL or the input itself),
- * so no earlier run's file stays behind. */
-void simp_remove_stale(const char *in, const char *out);
 
 #endif

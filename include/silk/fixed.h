@@ -13,6 +13,10 @@
 
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef int32_t silk_fx;                   /* Q16.16 */
 
 #define SILK_FX_SHIFT 16
@@ -169,5 +173,9 @@ silk_fx   silk_v3_length(silk_vec3 a);                 /* exact-rounded, saturat
 int       silk_v3_normalize(silk_vec3 a, silk_vec3 *out);
 /* a + (b-a)*t */
 silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -17,6 +17,10 @@
 #include "arena.h"
 #include "error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #ifndef SILK_INDEX_T
 #define SILK_INDEX_T uint32_t
 #endif
@@ -153,5 +157,9 @@ typedef struct silk_mesh_bytes {
     size_t total;
 } silk_mesh_bytes;
 void silk_mesh_bytes_used(const silk_mesh *m, silk_mesh_bytes *b);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

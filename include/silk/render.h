@@ -26,6 +26,10 @@
 #include "hal.h"
 #include "visibility.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum silk_mode {
     SILK_MODE_FLAT = 0,      /* the coarse mesh as it is, Phong shaded */
     SILK_MODE_SMOOTH = 1,    /* silhouette smoothing (paper section III) */
@@ -108,5 +112,9 @@ typedef struct silk_sink {
 silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
                               const silk_render_opts *o, silk_target *band, const silk_sink *sink,
                               silk_frame_stats *stats, silk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
