@@ -19,7 +19,7 @@ out=$3
 meshes=${SILK_MESHES:-../shared/meshes}
 
 rm -rf "$out"
-mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_stl" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" "$out/shapes"
+mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_stl" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" "$out/fuzz_ppm" "$out/shapes"
 
 # small generated shapes
 "$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
@@ -54,7 +54,9 @@ for f in "$out/shapes/"*.obj; do
         "$mkseed" "ply-$enc" "$f" "$out/fuzz_ply/$b-$enc.ply"
     done
 done
-for h in obj ply stl render pack math; do
+# fuzz_ppm: a small render as PPM, besides its regression inputs
+"$silk" render "$out/shapes/sphere.obj" -o "$out/fuzz_ppm/sphere.ppm" --size 8x6 >/dev/null
+for h in obj ply stl render pack math ppm; do
     if [ -d "tests/regress/$h" ]; then
         for f in tests/regress/"$h"/*; do
             [ -f "$f" ] && [ "${f%.expected}" = "$f" ] && cp "$f" "$out/fuzz_$h/"

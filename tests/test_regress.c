@@ -33,6 +33,9 @@
 #define FUZZ_ENTRY fuzz_math_entry
 #include "../fuzz/fuzz_math.c"
 #undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_ppm_entry
+#include "../fuzz/fuzz_ppm.c"
+#undef FUZZ_ENTRY
 
 typedef int (*entry_fn)(const uint8_t *data, size_t size);
 
@@ -132,6 +135,12 @@ TEST(regress_math)
     printf("  %d regression inputs\n", n);
 }
 
+TEST(regress_ppm)
+{
+    int n = run_dir("tests/regress/ppm", "", fuzz_ppm_entry);
+    CHECKF(n >= 5, "%d inputs", n);
+}
+
 int main(void)
 {
     RUN(regress_obj);
@@ -140,5 +149,6 @@ int main(void)
     RUN(regress_pack);
     RUN(regress_render);
     RUN(regress_math);
+    RUN(regress_ppm);
     return check_done();
 }

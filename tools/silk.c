@@ -7,14 +7,8 @@
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
 #include "man.h"
-#include "measure.h"
-
-/* Small devices: tools/cmd_pack.c, cmd_profile.c, cmd_fbview.c. */
-int cmd_pack(int argc, char **argv);
-int cmd_view(int argc, char **argv);
-int cmd_profile(int argc, char **argv);
-int cmd_hull(int argc, char **argv);   /* tools/cmd_hull.c */
 
 typedef struct command {
     const char *name;
