@@ -120,7 +120,7 @@ static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         f->smooth = silk_frame_smooth_stream(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->g) &&
                     (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
         if (f->smooth) {
-            silk_remesh_stream_stats(&f->sil, stats);
+            silk_remesh_stats(&f->sil, stats);
             f->geom.curves = f->g.curve;
             f->geom.offsets = f->sil.offset;
             return SILK_OK;
@@ -157,6 +157,7 @@ static void stream_part(frame *f, uint32_t t)
 {
     silk_frame_geom *g = &f->g;
     if (f->smooth) {
+        g->nvrec = g->ntri = g->ncurve = 0;
         silk_remesh_emit_tri(&f->sil, g, t);
     } else {
         for (uint32_t k = 0; k < 3; k++) g->vrec[k].a = 3 * t + k;
@@ -231,10 +232,8 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     else
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
     if (st != SILK_OK) return st;
-    if (o->lines && !smooth_lines && silk_lines_polygonal(a, m, v, o->mode == SILK_MODE_FLAT, &f->g) != SILK_OK) {
-        f->g.nlines = f->g.nline_vrec = 0;
-        stats->fell_back = 1;
-    }
+    if (o->lines && !smooth_lines && silk_lines_polygonal(a, m, v, o->mode == SILK_MODE_FLAT, &f->g) != SILK_OK)
+        silk_frame_fell_short(stats);
 
     f->geom.mesh = m;
     f->geom.curves = f->g.curve;
@@ -248,7 +247,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
      * contour of the drawn triangles closes it (it needs the vertex stage's
      * output; without room for it the frame says so). */
     if (smooth_lines && (!f->cache || silk_lines_contour(a, &f->g, f->cache, v->cam.width, v->cam.height) != SILK_OK))
-        stats->fell_back = 1;
+        silk_frame_fell_short(stats);
     f->line_cache = silk_arena_array_top(a, f->g.nline_vrec, sizeof *f->line_cache, SILK_MEM_FRAME);
     if (f->line_cache)
         for (uint32_t i = 0; i < f->g.nline_vrec; i++)
@@ -257,7 +256,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     /* Without their lift (no room for it or for the vertex cache it reads)
      * lines sink into the surface they lie on: the frame says so, as one
      * that could not smooth does. */
-    if (f->g.nline_vrec && f->g.line_src && !f->line_lift) stats->fell_back = 1;
+    if (f->g.nline_vrec && f->g.line_src && !f->line_lift) silk_frame_fell_short(stats);
     stats->tris_drawn = f->g.ntri;
     return SILK_OK;
 }
