@@ -61,10 +61,14 @@ typedef struct frame {
     silk_vertex_out *cache;   /* NULL when the arena could not hold it */
     silk_vertex_out *line_cache;   /* the same for the lines' records */
     uint32_t *line_lift;      /* per line record (lines.c), or NULL */
-    /* Streamed frames: g and cache hold one input triangle's share at a time. */
-    int stream, smooth;
+    /* A frame is drawn in nparts parts, part(f, k) filling g and cache
+     * with part k: a streamed frame's parts are its input triangles'
+     * shares, rebuilt one at a time; a stored frame is one part, all there. */
+    uint32_t nparts;
+    void (*part)(struct frame *f, uint32_t k);
+    int smooth;
     silk_sil_frame sil;       /* SMOOTH: the plan */
-    uint16_t *rows;           /* per input triangle: first and last row it can reach, or NULL */
+    uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -106,11 +110,14 @@ static int streamed(const silk_render_opts *o)
 
 static size_t aligned(size_t n) { return (n + SILK_ARENA_ALIGN - 1) & ~(size_t)(SILK_ARENA_ALIGN - 1); }
 
+static void stream_part(frame *f, uint32_t t);
+
 static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                   const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
                                   silk_error *err)
 {
-    f->stream = 1;
+    f->nparts = m->ntris;
+    f->part = stream_part;
     f->hal = h;
     f->geom.mesh = m;
     if (o->mode == SILK_MODE_SMOOTH) {
@@ -196,6 +203,13 @@ static void stream_rows(frame *f, silk_arena *a, int height)
     }
 }
 
+/* A stored frame's one part is there already. */
+static void stored_part(frame *f, uint32_t k)
+{
+    (void)f;
+    (void)k;
+}
+
 static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                  const silk_hal *h, const silk_render_opts *o,
                                  silk_frame_stats *stats, silk_error *err)
@@ -213,6 +227,8 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     memset(f, 0, sizeof *f);
     if (streamed(o)) return stream_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
+    f->nparts = 1;
+    f->part = stored_part;
     silk_status st;
     /* The smooth curves exist only in SMOOTH mode; FLAT outlines the coarse mesh it draws. */
     int smooth_lines = o->lines && !o->lines_polygonal && o->mode == SILK_MODE_SMOOTH;
@@ -282,18 +298,17 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     }
 }
 
-/* The frame's triangles (a stored frame at once, a streamed one input
- * triangle at a time, only those that reach into the band), then the lines. */
+/* The frame's triangles part by part (only the parts that reach into the
+ * band), then the lines. */
 static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[2];
     silk_target_clear(t, o->bg_rgb);
-    uint32_t nparts = f->stream ? f->geom.mesh->ntris : 1;
     for (int pass = 0; pass < (o->wire ? 3 : 1); pass++)
-        for (uint32_t k = 0; k < nparts; k++) {
+        for (uint32_t k = 0; k < f->nparts; k++) {
             if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
-            if (f->stream) stream_part(f, k);
+            f->part(f, k);
             draw_tris(f, o, t, pass);
         }
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
@@ -356,7 +371,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
     const int rows = band->rows;
-    if (st == SILK_OK && f.stream && rows < band->height) stream_rows(&f, a, band->height);
+    if (st == SILK_OK && f.nparts > 1 && rows < band->height) stream_rows(&f, a, band->height);
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
