@@ -153,22 +153,11 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg s;
         if (!(f->tri_state[t] & SILK_TS_SIL) || !silk_remesh_seg(f, t, &s)) continue;
-        uint32_t lone = f->tri_state[t] & SILK_TS_LONE, base = g->part_rec[t], end[2];
-        for (int i = 0; i < 2; i++) {
-            uint32_t k = i ? (lone + 2) % 3 : lone;
-            const silk_sil_edge *e = &f->edges[f->edge_slot[m->tri_edge[3 * t + k]]];
-            silk_sil_side sd;
-            silk_sil_side_attrs(m, t, k, &m->edge[e->edge], &sd);
-            end[i] = silk_remesh_corner_rec(f, t, k, base) + 1;
-            for (uint32_t p = 0; p < e->npairs; p++)
-                if (f->pairs[e->pair0 + p].n0 == sd.n0 && f->pairs[e->pair0 + p].n1 == sd.n1)
-                    end[i] += f->pairs[e->pair0 + p].chain;
-        }
-        uint32_t rec = silk_remesh_corner_rec(f, t, (lone + 2) % 3, base) + 1 +
-                       f->edges[f->edge_slot[m->tri_edge[3 * t + (lone + 2) % 3]]].nchain;
-        line_rec(g, end[0]);
-        for (uint32_t j = 1; j < s.n; j++) line_rec(g, rec + j - 1);
-        line_rec(g, end[1]);
+        uint32_t rec[3];
+        silk_remesh_seg_recs(f, t, g->part_rec[t], rec);
+        line_rec(g, rec[0]);
+        for (uint32_t j = 1; j < s.n; j++) line_rec(g, rec[2] + j - 1);
+        line_rec(g, rec[1]);
         line_end(g, 0);
     }
     /* Each visible feature edge through its ends and its chain, as its
@@ -438,9 +427,8 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
     uint32_t nhalf = 3 * g->ntri;
     rec_pos *pos = silk_arena_array_top(a, g->nvrec, sizeof *pos, SILK_MEM_FRAME);
     uint32_t *id = silk_arena_array_top(a, g->nvrec, sizeof *id, SILK_MEM_FRAME);
-    uint8_t *on_line = silk_arena_array_top(a, g->nvrec, 1, SILK_MEM_FRAME);
     half_edge *h = silk_arena_array_top(a, nhalf, sizeof *h, SILK_MEM_FRAME);
-    if (!pos || !id || !on_line || !h) return SILK_ERR_NOMEM;
+    if (!pos || !id || !h) return SILK_ERR_NOMEM;
 
     /* Each record's point: the first record at its position. */
     for (uint32_t r = 0; r < g->nvrec; r++) {
@@ -449,9 +437,6 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
     }
     heap_sort(pos, g->nvrec, sizeof *pos, pos_before);
     for (uint32_t i = 0; i < g->nvrec; i++) id[pos[i].r] = i && !pos_cmp(&pos[i - 1], &pos[i]) ? id[pos[i - 1].r] : i;
-    memset(on_line, 0, g->nvrec);
-    for (uint32_t i = 0; i < g->nline_vrec; i++)
-        if (g->line_src[i] < g->nvrec) on_line[id[g->line_src[i]]] = 1;
 
     for (uint32_t t = 0; t < g->ntri; t++) {
         int32_t facing = screen_facing(g, out, t, width, height);
@@ -469,7 +454,7 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
     heap_sort(h, nhalf, sizeof *h, half_before);
 
     /* A side shared by exactly two triangles facing opposite ways is on
-     * the contour, unless a line runs along it already. */
+     * the contour. */
     uint32_t ncont = 0;
     for (uint32_t i = 0; i + 1 < nhalf; i++) {
         const half_edge *e = &h[i], *o = &h[i + 1];

@@ -70,14 +70,17 @@ static const silk_sil_pair *side_pair(const silk_sil_frame *f, const silk_sil_ed
     return NULL;
 }
 
+static silk_vec3 mid3(silk_vec3 a, silk_vec3 b)
+{
+    return silk_v3(silk_fx_sat(((int64_t)a.x + b.x) / 2), silk_fx_sat(((int64_t)a.y + b.y) / 2),
+                   silk_fx_sat(((int64_t)a.z + b.z) / 2));
+}
+
 /* The sample of segment s closest to the bisector plane of the base edge
  * b1 -> b2: joined to both base vertices it gives the fattest middle triangle. */
 static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
 {
-    silk_vec3 dir = silk_v3_sub(b2, b1);
-    silk_vec3 mid = silk_v3(silk_fx_sat(((int64_t)b1.x + b2.x) / 2),
-                            silk_fx_sat(((int64_t)b1.y + b2.y) / 2),
-                            silk_fx_sat(((int64_t)b1.z + b2.z) / 2));
+    silk_vec3 dir = silk_v3_sub(b2, b1), mid = mid3(b1, b2);
     uint32_t best = s->n / 2;
     int64_t best_d = INT64_MAX;
     for (uint32_t i = 0; i <= s->n; i++) {
@@ -97,21 +100,22 @@ typedef struct sil_layout {
     int centre1, centre2;    /* the part around L / along the base needs a centre */
 } sil_layout;
 
-/* The silhouette point side k of t puts on its edge e. */
-static const silk_sil_pair *tri_pair(const silk_sil_frame *f, const silk_sil_edge *e, uint32_t t, uint32_t k)
+/* Index, in the edge's chain, of the silhouette point side k of t puts
+ * on its edge. */
+static uint32_t pair_chain(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
+    const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
     silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
-    return side_pair(f, e, &s);
+    return side_pair(f, e, &s)->chain;
 }
 
-/* Index, in triangle direction, of the silhouette point of side k. */
+/* The same in triangle direction. */
 static uint32_t pair_pos(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
-    const silk_sil_pair *p = tri_pair(f, e, t, k);
-    int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
-    return fwd ? p->chain : e->nchain - 1 - p->chain;
+    uint32_t c = pair_chain(f, t, k);
+    return f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0] ? c : e->nchain - 1 - c;
 }
 
 static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
@@ -129,43 +133,42 @@ static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
     l->centre2 = l->iA != l->iB1 - 1 || l->iB != l->iB2 + 1;
 }
 
-/* What one input triangle's share holds: output triangles, records
- * beyond its corners and side points, curves beyond its sides', its boundary
- * length, and all its records and curves. */
+/* What one input triangle's share holds: its output triangles, records
+ * and curves, and its boundary length. */
 typedef struct tri_count {
     uint32_t tris, recs, curves, poly;
-    uint32_t local_recs, local_curves;
 } tri_count;
 
 static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, tri_count *c)
 {
-    uint32_t np[3], sum = 0, nchained = 0;
+    uint32_t sum = 0, nchained = 0;
     for (uint32_t k = 0; k < 3; k++) {
-        np[k] = side_points(f, t, k);
-        sum += np[k];
-        nchained += np[k] > 0;
+        uint32_t np = side_points(f, t, k);
+        sum += np;
+        nchained += np > 0;
     }
+    /* the corners, the sides' points, one curve per side with points */
     c->poly = 3 + sum;
+    c->recs = 3 + sum;
+    c->curves = nchained;
     if (seg) {
         sil_layout l;
         layout(f, t, &l);
         uint32_t n = seg->n;
-        c->recs = n - 1;
-        c->curves = 1;
-        if (l.centre1) { c->tris = n + l.iA + l.len - l.iB; c->recs++; c->curves++; }
-        else c->tris = n;
-        if (l.centre2) { c->tris += n + l.iB - l.iA; c->recs++; c->curves++; }
-        else c->tris += n + 1 + (l.iB2 - l.iB1 - 1);
+        c->recs += n - 1;
+        c->curves++;
+        c->tris = 2 * n;
+        if (l.centre1) { c->tris += l.iA + l.len - l.iB; c->recs++; c->curves++; }
+        if (l.centre2) { c->tris += l.iB - l.iA; c->recs++; c->curves++; }
+        else c->tris += 1 + (l.iB2 - l.iB1 - 1);
         c->poly += n + 2;
     } else if (nchained == 1) {
-        c->tris = sum + 1; c->recs = 0; c->curves = 0;
+        c->tris = sum + 1;
     } else if (nchained >= 2) {
-        c->tris = sum + 3; c->recs = 1; c->curves = 1;
+        c->tris = sum + 3; c->recs++; c->curves++;
     } else {
-        c->tris = 1; c->recs = 0; c->curves = 0;
+        c->tris = 1;
     }
-    c->local_recs = 3 + sum + c->recs;
-    c->local_curves = nchained + c->curves;
 }
 
 int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
@@ -225,14 +228,14 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         }
         tri_count tc;
         tri_cost(f, t, s, &tc);
-        f->store_recs += tc.local_recs;
-        f->store_curves += tc.local_curves;
+        f->store_recs += tc.recs;
+        f->store_curves += tc.curves;
         f->out_tris += tc.tris - 1;
         if (tc.poly == 3) continue;     /* as it is: three corners, one triangle */
         if (tc.poly > f->max_poly) f->max_poly = tc.poly;
-        if (tc.local_recs > f->max_recs) f->max_recs = tc.local_recs;
+        if (tc.recs > f->max_recs) f->max_recs = tc.recs;
         if (tc.tris > f->max_tris) f->max_tris = tc.tris;
-        if (tc.local_curves > f->max_curves) f->max_curves = tc.local_curves;
+        if (tc.curves > f->max_curves) f->max_curves = tc.curves;
         if (s) {
             f->seg_samples += s->n - 1;
             if (s->concave) {
@@ -370,12 +373,6 @@ uint32_t silk_remesh_corner_rec(const silk_sil_frame *f, uint32_t t, uint32_t k,
     return base;
 }
 
-static silk_vec3 mid3(silk_vec3 a, silk_vec3 b)
-{
-    return silk_v3(silk_fx_sat(((int64_t)a.x + b.x) / 2), silk_fx_sat(((int64_t)a.y + b.y) / 2),
-                   silk_fx_sat(((int64_t)a.z + b.z) / 2));
-}
-
 static silk_vec2 mid2(silk_vec2 a, silk_vec2 b)
 {
     silk_vec2 r = { silk_fx_sat(((int64_t)a.x + b.x) / 2), silk_fx_sat(((int64_t)a.y + b.y) / 2) };
@@ -475,28 +472,6 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
 #undef SAMPLE
 }
 
-/* Fig. 12: points on the sides of a triangle the silhouette does not cross. */
-static void emit_fanned(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
-{
-    const silk_mesh *m = f->m;
-    uint32_t nchained = 0;
-    for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
-    uint32_t *cyc = f->poly;
-    uint32_t len = walk_boundary(f, g, t, cyc);
-    if (nchained == 1) {
-        /* from the opposite vertex over the side with points */
-        fan(g, cyc[0], cyc + 1, len - 1);
-        return;
-    }
-    /* the centre: two thirds along from corner 0 to the midpoint of the
-     * opposite side, so position, normal and uv are the corners' average */
-    silk_vec3 p[3], n[3];
-    silk_vec2 uv[3];
-    for (int k = 0; k < 3; k++) corner_attrs(m, 3 * t + k, &p[k], &n[k], &uv[k]);
-    fan_closed(g, put_centre(g, p[0], n[0], uv[0], mid3(p[1], p[2]), mean_normal(n[1], n[2]),
-                             mid2(uv[1], uv[2]), T_TWO_THIRDS), cyc, len);
-}
-
 void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
 {
     silk_sil_seg seg;
@@ -506,14 +481,27 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         emit_silhouette(f, g, t, &seg);     /* Fig. 11 */
         return;
     }
-    int chained = 0;
-    for (uint32_t k = 0; k < 3; k++) chained |= side_points(f, t, k) > 0;
-    if (chained) {
-        emit_fanned(f, g, t);               /* Fig. 12 */
+    uint32_t nchained = 0, corners[3];
+    for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
+    uint32_t *cyc = nchained ? f->poly : corners;
+    uint32_t len = walk_boundary(f, g, t, cyc);
+    if (nchained == 0) {
+        put_tri(g, cyc[0], cyc[1], cyc[2], 0);      /* as it is */
         return;
     }
-    uint32_t r0 = put_corner(f, g, 3 * t), r1 = put_corner(f, g, 3 * t + 1), r2 = put_corner(f, g, 3 * t + 2);
-    put_tri(g, r0, r1, r2, 0);
+    /* Fig. 12a: from the opposite vertex over the only side with points */
+    if (nchained == 1) {
+        fan(g, cyc[0], cyc + 1, len - 1);
+        return;
+    }
+    /* Fig. 12b: from the centre, two thirds along from corner 0 to the
+     * midpoint of the opposite side, so position, normal and uv are the
+     * corners' average */
+    silk_vec3 p[3], n[3];
+    silk_vec2 uv[3];
+    for (uint32_t k = 0; k < 3; k++) corner_attrs(f->m, 3 * t + k, &p[k], &n[k], &uv[k]);
+    fan_closed(g, put_centre(g, p[0], n[0], uv[0], mid3(p[1], p[2]), mean_normal(n[1], n[2]),
+                             mid2(uv[1], uv[2]), T_TWO_THIRDS), cyc, len);
 }
 
 int silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g)
@@ -528,6 +516,17 @@ int silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g)
     }
     g->part_rec[n] = g->nvrec;
     return 1;
+}
+
+void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, uint32_t rec[3])
+{
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
+    for (uint32_t i = 0; i < 2; i++) {
+        uint32_t k = (lone + 2 * i) % 3;
+        rec[i] = silk_remesh_corner_rec(f, t, k, base) + 1 + pair_chain(f, t, k);
+    }
+    /* the samples follow the boundary, whose last side is L+2's */
+    rec[2] = silk_remesh_corner_rec(f, t, (lone + 2) % 3, base) + 1 + side_points(f, t, (lone + 2) % 3);
 }
 
 void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats)

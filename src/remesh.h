@@ -27,6 +27,9 @@ int  silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g);
 /* The record of corner k in t's share, its share starting at record base;
  * side k's chain follows it, in the edge's order. */
 uint32_t silk_remesh_corner_rec(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t base);
+/* The records of silhouette triangle t's segment in its share (starting
+ * at record base): rec[0] A, rec[1] B, rec[2] its first interior sample. */
+void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, uint32_t rec[3]);
 void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats);   /* the frame's counts */
 
 #endif

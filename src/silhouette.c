@@ -260,7 +260,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     }
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
-        f->edges[w].side0 = nsides; nsides += f->edges[w].nsides; f->edges[w].nsides = 0;
+        f->edges[w].side0 = nsides; nsides += f->edges[w].nsides;
         f->edges[w].pair0 = npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
     }
     f->nsides = nsides;
@@ -269,36 +269,30 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     return f->pairs ? SILK_OK : SILK_ERR_NOMEM;
 }
 
-/* The sides on each carrying edge counted again, and one silhouette point
- * per distinct normal pair. */
-static void fill_sides(silk_sil_frame *f)
+/* One silhouette point per distinct normal pair on each edge a silhouette
+ * triangle's silhouette side lies on. */
+static void fill_pairs(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        if (!silk_sil_tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
+        if (!(st & SILK_TS_SIL)) continue;
+        uint32_t lone = st & SILK_TS_LONE;
         for (uint32_t k = 0; k < 3; k++) {
-            silk_index e = m->tri_edge[3 * t + k];
-            uint32_t w = f->edge_slot[e];
-            if (w == SILK_SIL_NONE) continue;
-            silk_sil_edge *we = &f->edges[w];
-            silk_sil_side side, *s = &side;
-            silk_sil_side_attrs(m, t, k, &m->edge[e], s);
-            we->nsides++;
-
-            if (!(st & SILK_TS_SIL)) continue;
-            uint32_t lone = st & SILK_TS_LONE;
             if (k != lone && k != (lone + 2) % 3) continue;
-            /* One silhouette point per distinct normal pair on the edge. */
-            uint32_t i;
-            for (i = 0; i < we->npairs; i++) {
-                const silk_sil_pair *p = &f->pairs[we->pair0 + i];
-                if (p->n0 == s->n0 && p->n1 == s->n1) break;
+            silk_index e = m->tri_edge[3 * t + k];
+            silk_sil_edge *we = &f->edges[f->edge_slot[e]];
+            silk_sil_side s;
+            silk_sil_side_attrs(m, t, k, &m->edge[e], &s);
+            uint32_t j;
+            for (j = 0; j < we->npairs; j++) {
+                const silk_sil_pair *p = &f->pairs[we->pair0 + j];
+                if (p->n0 == s.n0 && p->n1 == s.n1) break;
             }
-            if (i < we->npairs) continue;
+            if (j < we->npairs) continue;
             silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
-            p->n0 = s->n0;
-            p->n1 = s->n1;
+            p->n0 = s.n0;
+            p->n1 = s.n1;
         }
     }
 }
@@ -358,6 +352,6 @@ silk_status silk_sil_find(silk_sil_frame *f)
     silk_status st = find_triangles(f);
     if (st == SILK_OK) st = lay_out_edges(f);
     if (st != SILK_OK) return st;
-    fill_sides(f);
+    fill_pairs(f);
     return chain_points(f);
 }

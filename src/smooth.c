@@ -68,11 +68,8 @@ int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view 
                              silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local)
 {
     silk_arena_mark mark = silk_arena_top_mark(a);
-    if (tolerance_px <= 0 || !make_plan(f, a, m, v, tolerance_px, vis) ||
-        !silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves)) {
-        silk_arena_top_release(a, &mark);
-        memset(f, 0, sizeof *f);
-        return 0;
-    }
-    return 1;
+    if (make_plan(f, a, m, v, tolerance_px, vis) && silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves))
+        return 1;
+    silk_arena_top_release(a, &mark);
+    return 0;
 }
