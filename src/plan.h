@@ -66,7 +66,7 @@ typedef struct silk_sil_edge {
     silk_vec3 t0, t1;        /* tangents of the bridge or of the feature segment */
     uint32_t edge;           /* mesh edge index */
     uint32_t pair0, npairs;  /* silhouette points */
-    uint32_t side0, nsides;  /* triangle sides on this edge */
+    uint32_t side0, nsides;  /* triangle sides on this edge, and where they start in a list of all (lines.c) */
     uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
     uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
     uint8_t is_feature;
