@@ -289,6 +289,76 @@ TEST(shared_points_bit_identical_sphere) { shared_points("sphere-200.obj", 30, 0
 TEST(shared_points_bit_identical_torus) { shared_points("torus-576.obj", 30, 0); }
 TEST(shared_points_bit_identical_creases) { shared_points("cone-70.obj", 40, 1); shared_points("fandisk-128.obj", 40, 1); }
 
+/* Which point each record of a stored frame with lines is (rec_key, what
+ * the lines' depth lift groups by): every triangle has its own copy of an
+ * edge's points, and the copies of sides with the same normals and uvs are
+ * one point, so records with one key evaluate to the same position and
+ * normal; across a crease the copies keep keys of their own. */
+static uint32_t *key_of;
+static int cmp_by_key(const void *pa, const void *pb)
+{
+    uint32_t a = *(const uint32_t *)pa, b = *(const uint32_t *)pb;
+    if (key_of[a] != key_of[b]) return key_of[a] < key_of[b] ? -1 : 1;
+    return a < b ? -1 : a > b;
+}
+
+static void point_keys(const char *name, int nviews, int want_split)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    uint32_t shared = 0, differ = 0, split = 0, frames = 0;
+    for (int i = 0; i < nviews; i++) {
+        double dir[3];
+        random_dir(dir);
+        silk_view v;
+        if (!tf_view_around(&m, dir, 1.5 + check_uniform(0, 4), i & 1, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_frame_geom g;
+        silk_frame_stats st;
+        silk_error err;
+        if (silk_frame_smooth_lines(&a, &m, &v, SILK_FX_HALF, SILK_VIS_BRUTE, 1, &g, &st, &err) != SILK_OK ||
+            st.fell_back || !g.rec_key) {
+            CHECK(0);
+            silk_arena_top_release(&a, &mk);
+            return;
+        }
+        frames++;
+        silk_geom gg = { .mesh = &m, .curves = g.curve, .offsets = g.offset };
+        uint32_t *idx = malloc(g.nvrec * sizeof *idx);
+        silk_vertex_attr *at = malloc(g.nvrec * sizeof *at);
+        for (uint32_t r = 0; r < g.nvrec; r++) {
+            idx[r] = r;
+            silk_vrec_eval(&gg, &g.vrec[r], &at[r]);
+        }
+        key_of = g.rec_key;
+        qsort(idx, g.nvrec, sizeof *idx, cmp_by_key);
+        for (uint32_t j = 1; j < g.nvrec; j++) {
+            const silk_vertex_attr *x = &at[idx[j - 1]], *y = &at[idx[j]];
+            int same_pos = x->pos.x == y->pos.x && x->pos.y == y->pos.y && x->pos.z == y->pos.z;
+            int same_n = x->normal.x == y->normal.x && x->normal.y == y->normal.y && x->normal.z == y->normal.z;
+            int curves = g.vrec[idx[j]].kind == SILK_VREC_CURVE && g.vrec[idx[j - 1]].kind == SILK_VREC_CURVE;
+            if (key_of[idx[j - 1]] == key_of[idx[j]]) {
+                shared += curves;
+                if (!same_pos || (curves && !same_n)) differ++;
+            } else if (curves && same_pos && !same_n) {
+                split++;
+            }
+        }
+        free(idx);
+        free(at);
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %s: %u frames, %u edge-point copies sharing a key, %u crease copies apart\n", name, frames, shared,
+           split);
+    CHECKF(differ == 0, "%u records with one key differ", differ);
+    if (want_split) CHECKF(split > 0, "no crease copies with keys of their own");
+    else CHECKF(shared > 0, "no edge point shared by the two sides of its edge");
+}
+
+TEST(point_keys_sphere) { point_keys("sphere-200.obj", 10, 0); }
+TEST(point_keys_creases) { point_keys("cone-70.obj", 20, 1); point_keys("fandisk-128.obj", 20, 1); }
+
 /* Eq. 8 (read with h = the projected chord, see silhouette.c): the number of
  * intervals of every silhouette segment and every sampled feature segment
  * against a double reference; feature counts come from the edge alone. */
@@ -521,6 +591,8 @@ int main(void)
     RUN(sample_counts_eq8);
     RUN(sample_counts_monotone);
     RUN(uvs_interpolate_linearly_across_seams);
+    RUN(point_keys_sphere);
+    RUN(point_keys_creases);
     free(arena_buf);
     return check_done();
 }
