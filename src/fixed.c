@@ -69,7 +69,7 @@ silk_fx silk_fx_recip(silk_fx a) { return div_round_sat((int64_t)1 << 32, a); }
 
 /* 1/sqrt(M) in Q16 at the centre of each of 192 slices of M in [1, 4):
  * slice i covers [i/64, (i+1)/64) for i = 64..255. */
-static const uint16_t rsqrt_seed[192] = {
+const uint16_t silk_rsqrt_seed[192] = {
     65281, 64781, 64292, 63814, 63347, 62889, 62442, 62004, 61575, 61154, 60742, 60339,
     59943, 59555, 59175, 58801, 58435, 58075, 57722, 57376, 57035, 56700, 56372, 56049,
     55731, 55419, 55112, 54810, 54513, 54221, 53933, 53650, 53371, 53097, 52826, 52560,
@@ -94,7 +94,7 @@ static const uint16_t rsqrt_seed[192] = {
  * integer correction. */
 static uint32_t rsqrt_q31(uint32_t m)
 {
-    uint32_t y = (uint32_t)rsqrt_seed[(m >> 24) - 64] << 15;
+    uint32_t y = (uint32_t)silk_rsqrt_seed[(m >> 24) - 64] << 15;
     for (int i = 0; i < 2; i++) {
         uint32_t y2 = (uint32_t)(((uint64_t)y * y) >> 32);          /* Q30 */
         uint32_t my2 = (uint32_t)(((uint64_t)m * y2) >> 30);       /* Q30, ~1 */

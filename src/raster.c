@@ -137,14 +137,16 @@ void silk_target_clear(silk_target *t, uint32_t rgb)
 {
     int lo, hi;
     if (!band_rows(t, &lo, &hi)) return;
-    size_t bpp = silk_pixfmt_bytes(t->fmt);
+    size_t bpp = silk_pixfmt_bytes(t->fmt), wbytes = (size_t)t->width * bpp;
+    uint8_t *first = t->color ? t->color + (size_t)(lo - t->y0) * t->stride : NULL;
+    if (first) {
+        /* one pixel, then the row by doubling copies, then row copies */
+        store(t, first, rgb);
+        for (size_t n = bpp; n < wbytes; n *= 2) memcpy(first + n, first, n < wbytes - n ? n : wbytes - n);
+    }
     for (int y = lo; y < hi; y++) {
         size_t row = (size_t)(y - t->y0);
-        if (t->color) {
-            uint8_t *p = t->color + row * t->stride;
-            store(t, p, rgb);
-            for (int x = 1; x < t->width; x++) memcpy(p + (size_t)x * bpp, p, bpp);
-        }
+        if (first && y > lo) memcpy(t->color + row * t->stride, first, wbytes);
         if (t->depth) memset(t->depth + row * (size_t)t->width, 0, (size_t)t->width * sizeof(uint32_t));
         if (t->writes) memset(t->writes + row * (size_t)t->width, 0, (size_t)t->width * sizeof(uint16_t));
     }
@@ -322,7 +324,17 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     uint16_t *wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
     size_t bpp = silk_pixfmt_bytes(t->fmt);
     uint8_t *crow = t->color ? t->color + r * t->stride : NULL;
+    /* var_k = a0_k + (a1_k - a0_k) b1 + (a2_k - a0_k) b2 is a0 b0 + a1 b1 + a2 b2
+     * exactly (b0 = 1 - b1 - b2 is never clamped inside the triangle), with
+     * two products instead of three; |a_i - a0| < 2^32 and b1 + b2 <= 2^30
+     * keep the sum below 2^63. */
     const silk_fx *a0 = s->v[0]->var, *a1 = s->v[1]->var, *a2 = s->v[2]->var;
+    int64_t base[SILK_MAX_VARYINGS], d1[SILK_MAX_VARYINGS], d2[SILK_MAX_VARYINGS];
+    for (int k = 0; k < s->nvar; k++) {
+        base[k] = ((int64_t)a0[k] << 30) + ((int64_t)1 << 29);   /* rounds (halves up) */
+        d1[k] = (int64_t)a1[k] - a0[k];
+        d2[k] = (int64_t)a2[k] - a0[k];
+    }
     silk_fx var[SILK_MAX_VARYINGS];
 
     for (int x = xl; x < xr; x++) {
@@ -338,10 +350,12 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
                 } else {
                     weights(U, V, T, &b1, &b2);
                 }
-                int64_t b0 = ((int64_t)1 << 30) - b1 - b2;
-                if (b0 < 0) b0 = 0;
-                for (int k = 0; k < s->nvar; k++)
-                    var[k] = (silk_fx)silk_shr_round64(b0 * a0[k] + b1 * a1[k] + b2 * a2[k], 30);
+                int k = 0;
+                for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
+                    var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+                    var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
+                }
+                if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
                 uint32_t rgb = h->fragment(h, var);
                 if (crow) store(t, crow + (size_t)x * bpp, rgb);
             }
