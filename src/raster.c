@@ -290,6 +290,11 @@ typedef struct tri_setup {
     rstep dstep;                  /* depth per pixel in x */
     int64_t du, dv, dt;           /* U, V, T per pixel in x */
     int nvar;
+    /* var_k = a0_k + (a1_k - a0_k) b1 + (a2_k - a0_k) b2 is a0 b0 + a1 b1 + a2 b2
+     * exactly (b0 = 1 - b1 - b2 is never negative inside the triangle), with
+     * two products instead of three; |a_i - a0| < 2^32 and b1 + b2 <= 2^30
+     * keep the sum below 2^63.  vbase holds a0 in Q30 plus the rounding half. */
+    int64_t vbase[SILK_MAX_VARYINGS], vd1[SILK_MAX_VARYINGS], vd2[SILK_MAX_VARYINGS];
 } tri_setup;
 
 /* Depth at subpixel point (X, Y): D0 + (e1 dD1 + e2 dD2) / area, floored,
@@ -324,17 +329,7 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     uint16_t *wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
     size_t bpp = silk_pixfmt_bytes(t->fmt);
     uint8_t *crow = t->color ? t->color + r * t->stride : NULL;
-    /* var_k = a0_k + (a1_k - a0_k) b1 + (a2_k - a0_k) b2 is a0 b0 + a1 b1 + a2 b2
-     * exactly (b0 = 1 - b1 - b2 is never clamped inside the triangle), with
-     * two products instead of three; |a_i - a0| < 2^32 and b1 + b2 <= 2^30
-     * keep the sum below 2^63. */
-    const silk_fx *a0 = s->v[0]->var, *a1 = s->v[1]->var, *a2 = s->v[2]->var;
-    int64_t base[SILK_MAX_VARYINGS], d1[SILK_MAX_VARYINGS], d2[SILK_MAX_VARYINGS];
-    for (int k = 0; k < s->nvar; k++) {
-        base[k] = ((int64_t)a0[k] << 30) + ((int64_t)1 << 29);   /* rounds (halves up) */
-        d1[k] = (int64_t)a1[k] - a0[k];
-        d2[k] = (int64_t)a2[k] - a0[k];
-    }
+    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
     silk_fx var[SILK_MAX_VARYINGS];
 
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
@@ -408,6 +403,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
         const svert *a = s.v[(i + 1) % 3], *b = s.v[(i + 2) % 3];
         s.ea[i] = a->y - b->y;
         s.eb[i] = b->x - a->x;
+    }
+    for (int k = 0; h && h->fragment && k < nvar; k++) {
+        const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
+        s.vbase[k] = ((int64_t)a0[k] << 30) + ((int64_t)1 << 29);
+        s.vd1[k] = (int64_t)a1[k] - a0[k];
+        s.vd2[k] = (int64_t)a2[k] - a0[k];
     }
     silk_fx wmin = s.v[0]->w;
     for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;
