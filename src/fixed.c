@@ -502,23 +502,15 @@ silk_fx silk_v3_length(silk_vec3 a)
 
 int silk_v3_normalize(silk_vec3 a, silk_vec3 *out)
 {
-    silk_fx cx = fx_clean(a.x), cy = fx_clean(a.y), cz = fx_clean(a.z);
-    uint64_t ux = abs64(cx), uy = abs64(cy), uz = abs64(cz);
-    uint64_t ss = ux * ux + uy * uy + uz * uz;              /* < 3 * 2^62: fits */
-    if (ss == 0) { *out = silk_v3(0, 0, 0); return 0; }
-    /* Rescale: shifting ss left by an even e to [2^62, 2^64) scales the
-     * vector by 2^(e/2), so a vector of 1-ulp components keeps as many bits
-     * as a huge one.  Then 1/sqrt(ss) = y 2^(e/2 - 62), y from the top 32
-     * bits, with relative error below 3e-9: 2e-4 ulp on a unit component. */
-    int e = clz64(ss) & ~1;
-    uint32_t y = rsqrt_q31((uint32_t)((ss << e) >> 32));
-    int rs = 46 - e / 2;                                    /* 15 .. 46 */
-    uint64_t half = (uint64_t)1 << (rs - 1);
-    silk_fx nx = (silk_fx)((ux * y + half) >> rs);          /* ux * y < 2^62 */
-    silk_fx ny = (silk_fx)((uy * y + half) >> rs);
-    silk_fx nz = (silk_fx)((uz * y + half) >> rs);
-    *out = silk_v3(cx < 0 ? -nx : nx, cy < 0 ? -ny : ny, cz < 0 ? -nz : nz);
-    return 1;
+    /* silk_unit64 (silk/fixed.h): rescaling shifts ss left by an even e to
+     * [2^62, 2^64), which scales the vector by 2^(e/2), so a vector of 1-ulp
+     * components keeps as many bits as a huge one; then 1/sqrt(ss) from the
+     * top 32 bits with relative error below 3e-9: 2e-4 ulp on a unit
+     * component. */
+    int64_t u[3];
+    int ok = silk_unit64(fx_clean(a.x), fx_clean(a.y), fx_clean(a.z), u);
+    *out = silk_v3((silk_fx)u[0], (silk_fx)u[1], (silk_fx)u[2]);
+    return ok;
 }
 
 silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t)

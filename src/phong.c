@@ -71,7 +71,7 @@ static uint32_t channel(const silk_material *m, silk_fx base, silk_fx spec, int6
 }
 
 /* The per-pixel work runs on plain 64-bit integers: N and V are unit
- * vectors (silk_unit_fast), so every product below is bounded where it is
+ * vectors (silk_unit64), so every product below is bounded where it is
  * formed and needs no saturation; only the dot products round.  The error is a
  * few ulp of Q16.16, far below one level of an 8-bit channel
  * (tests/test_phong.c compares with a double-precision Phong).  R.V is
@@ -84,7 +84,7 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
 
     if (p->view && !p->view->cam.ortho) {
         silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-        if (!silk_unit_fast(d.x, d.y, d.z, v)) {
+        if (!silk_unit64(d.x, d.y, d.z, v)) {
             v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
         }
     } else if (p->view) {
@@ -93,7 +93,7 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
         v[0] = 0, v[1] = 0, v[2] = SILK_FX_ONE;
     }
     /* A zero normal (opposite normals interpolated) faces the viewer. */
-    if (!silk_unit_fast(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
+    if (!silk_unit64(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
         n[0] = v[0], n[1] = v[1], n[2] = v[2];
     /* Two-sided: a normal facing away from the eye is mirrored in the plane
      * perpendicular to V (its component along V changes sign).  Not plain
@@ -118,7 +118,7 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
         int64_t l[3] = { li->vec.x, li->vec.y, li->vec.z };
         if (li->kind == SILK_LIGHT_POINT) {
             silk_vec3 d = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-            if (!silk_unit_fast(d.x, d.y, d.z, l)) continue;
+            if (!silk_unit64(d.x, d.y, d.z, l)) continue;
         }
         int64_t ndl = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2] + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
         if (ndl <= 0) continue;

@@ -167,12 +167,13 @@ int       silk_v3_normalize(silk_vec3 a, silk_vec3 *out);
 /* 1/sqrt(M) in Q16 at the centre of each of 192 slices of M in [1, 4) (read-only). */
 extern const uint16_t silk_rsqrt_seed[192];
 
-/* Unit vector of (x, y, z), |components| < 2^31, for per-pixel shading:
- * silk_v3_normalize's method (table seed, two Newton steps, relative error
- * below 3e-9) on 64-bit integers, without its function call and struct
- * passing.  Inline: it runs twice per shaded pixel.  Returns 0 (and a
- * zero vector) for the zero vector. */
-static inline int silk_unit_fast(int64_t x, int64_t y, int64_t z, int64_t out[3])
+/* Unit vector of (x, y, z), |components| < 2^31, in Q16.16 (the work of
+ * silk_v3_normalize, which calls it): the sum of squares rescaled by an even
+ * shift, a table seed and two Newton steps for 1/sqrt (relative error below
+ * 3e-9), one product and rounding shift per component.  Inline: the default
+ * fragment stage calls it twice per shaded pixel.  Returns 0 (and a zero
+ * vector) for the zero vector. */
+static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
 {
     uint64_t ux = (uint64_t)(x < 0 ? -x : x), uy = (uint64_t)(y < 0 ? -y : y), uz = (uint64_t)(z < 0 ? -z : z);
     uint64_t ss = ux * ux + uy * uy + uz * uz;
