@@ -11,7 +11,9 @@ out=${1:-out}
 peers=${SILK_PEERS:-../shared/peers}
 [ -f "$peers/run.sh" ] || { echo "bench/peers.sh: skipping ($peers/run.sh not found)"; exit 0; }
 mkdir -p "$out/peers"
-sh "$peers/run.sh" . "$out/peers" > "$out/peers/pair.log"
+out=$(cd "$out" && pwd)     # run.sh builds in the peers' folder: absolute paths
+sh "$peers/run.sh" . "$out/peers" 2> "$out/peers/pair.log" > /dev/null
+grep -q '^PAIR' "$out/peers/pair.txt" || { echo "bench/peers.sh: no results (see $out/peers/pair.log)" >&2; exit 1; }
 awk '
 /^PAIR/ {
     for (i = 2; i <= NF; i++) { split($i, kv, "="); f[kv[1]] = kv[2] }

@@ -20,7 +20,6 @@ static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec 
     const silk_phong *p = (const silk_phong *)h->uniforms;
     silk_vertex_attr a;
     silk_vrec_eval(g, r, &a);
-    memset(out, 0, sizeof *out);
     if (p->view) {
         out->clip = silk_view_clip(p->view, a.pos);
     } else {
@@ -36,6 +35,7 @@ static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec 
     out->var[VAR_NORMAL + 0] = a.normal.x;
     out->var[VAR_NORMAL + 1] = a.normal.y;
     out->var[VAR_NORMAL + 2] = a.normal.z;
+    for (int k = VAR_COUNT; k < SILK_MAX_VARYINGS; k++) out->var[k] = 0;   /* not interpolated */
 }
 
 /* x^n for x in [0, 1] (Q16.16) by repeated squaring: at most 2 log2(n)
