@@ -151,9 +151,9 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
         return (uint32_t)((cr * 255 + SILK_FX_HALF) >> 16) << 16 | (uint32_t)((cg * 255 + SILK_FX_HALF) >> 16) << 8 |
                (uint32_t)((cb * 255 + SILK_FX_HALF) >> 16);
     }
-    return channel(m, m->color.x, (silk_fx)((spec * m->specular_color.x) >> 16), dr, sr) << 16 |
-           channel(m, m->color.y, (silk_fx)((spec * m->specular_color.y) >> 16), dg, sg) << 8 |
-           channel(m, m->color.z, (silk_fx)((spec * m->specular_color.z) >> 16), db, sb);
+    return channel(m, m->color.x, silk_fx_mul(m->specular, m->specular_color.x), dr, sr) << 16 |
+           channel(m, m->color.y, silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |
+           channel(m, m->color.z, silk_fx_mul(m->specular, m->specular_color.z), db, sb);
 }
 
 void silk_hal_phong(silk_hal *h, const silk_phong *p)

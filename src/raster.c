@@ -406,7 +406,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     }
     for (int k = 0; h && h->fragment && k < nvar; k++) {
         const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
-        s.vbase[k] = ((int64_t)a0[k] << 30) + ((int64_t)1 << 29);
+        s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
         s.vd1[k] = (int64_t)a1[k] - a0[k];
         s.vd2[k] = (int64_t)a2[k] - a0[k];
     }

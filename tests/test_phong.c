@@ -436,6 +436,33 @@ TEST(fragment_on_meshes)
     free(mem);
 }
 
+/* Any silk_fx in the varyings, lights and material: defined behaviour (the
+ * sanitizer build checks), and black to white only. */
+TEST(fragment_extremes)
+{
+    silk_camera c = cam(0);
+    silk_view v;
+    CHECK(silk_view_init(&v, &c, NULL) == SILK_OK);
+    int bad = 0;
+    for (int trial = 0; trial < 20000; trial++) {
+        silk_phong p;
+        silk_phong_default(&p, &v);
+        silk_fx *f[] = { &p.mat.ambient, &p.mat.diffuse, &p.mat.specular, &p.mat.color.x, &p.mat.color.z,
+                         &p.mat.specular_color.y, &p.lights[0].vec.x, &p.lights[0].color.y, &p.lights[1].vec.z,
+                         &p.lights[1].color.x };
+        for (int i = 0; i < 10; i++)
+            if (check_rand64() % 3 == 0) *f[i] = (silk_fx)(uint32_t)check_rand64();
+        p.lights[1].kind = check_rand64() & 1 ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
+        p.two_sided = (int)(check_rand64() & 1);
+        silk_hal h;
+        silk_hal_phong(&h, &p);
+        silk_fx var[8];
+        for (int k = 0; k < 8; k++) var[k] = check_rand64() & 1 ? (silk_fx)(uint32_t)check_rand64() : 0;
+        bad += h.fragment(&h, var) > 0xFFFFFF;
+    }
+    CHECK(bad == 0);
+}
+
 TEST(two_sided_and_saturation)
 {
     silk_camera c = cam(1);
@@ -523,6 +550,7 @@ int main(void)
     RUN(vertex_stage);
     RUN(fragment_vs_double);
     RUN(fragment_on_meshes);
+    RUN(fragment_extremes);
     RUN(two_sided_and_saturation);
     RUN(default_lighting);
     return check_done();
