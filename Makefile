@@ -47,7 +47,7 @@ TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%) $(BUILD)/tests/test_cxx
 TEST_SUPPORT := $(wildcard tests/support/*.c)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o)
 
-.PHONY: all lib test test-fast check-nofloat demo install clean tests bench fuzz fuzz-build
+.PHONY: all lib test test-fast check-nofloat demo install clean tests bench bench-peers fuzz fuzz-build
 all: $(BUILD)/libsilk.a $(BUILD)/silk $(BUILD)/silk.1
 
 lib: $(BUILD)/libsilk.a
@@ -137,6 +137,12 @@ test-fast: check-nofloat tests
 bench: $(BUILD)/silk
 	sh bench/visibility.sh $(BUILD)/silk out
 	sh bench/modes.sh $(BUILD)/silk out
+	if [ -d ../shared/peers ]; then $(MAKE) bench-peers; fi
+
+# silk against small3dlib and PortableGL, frames interleaved in one process
+# (bench/peers.sh, ../shared/peers): out/bench-peers.md.
+bench-peers: $(BUILD)/libsilk.a
+	sh bench/peers.sh out
 
 demo: $(BUILD)/silk
 	sh tools/demo.sh $(BUILD)/silk out

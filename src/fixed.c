@@ -68,7 +68,7 @@ silk_fx silk_fx_recip(silk_fx a) { return div_round_sat((int64_t)1 << 32, a); }
 
 /* 1/sqrt(M) in Q16 at the centre of each of 192 slices of M in [1, 4):
  * slice i covers [i/64, (i+1)/64) for i = 64..255. */
-static const uint16_t rsqrt_seed[192] = {
+const uint16_t silk_rsqrt_seed[192] = {
     65281, 64781, 64292, 63814, 63347, 62889, 62442, 62004, 61575, 61154, 60742, 60339,
     59943, 59555, 59175, 58801, 58435, 58075, 57722, 57376, 57035, 56700, 56372, 56049,
     55731, 55419, 55112, 54810, 54513, 54221, 53933, 53650, 53371, 53097, 52826, 52560,
@@ -93,7 +93,7 @@ static const uint16_t rsqrt_seed[192] = {
  * integer correction. */
 static uint32_t rsqrt_q31(uint32_t m)
 {
-    uint32_t y = (uint32_t)rsqrt_seed[(m >> 24) - 64] << 15;
+    uint32_t y = (uint32_t)silk_rsqrt_seed[(m >> 24) - 64] << 15;
     for (int i = 0; i < 2; i++) {
         uint32_t y2 = (uint32_t)(((uint64_t)y * y) >> 32);          /* Q30 */
         uint32_t my2 = (uint32_t)(((uint64_t)m * y2) >> 30);       /* Q30, ~1 */
@@ -500,23 +500,15 @@ silk_fx silk_v3_length(silk_vec3 a)
 
 int silk_v3_normalize(silk_vec3 a, silk_vec3 *out)
 {
-    silk_fx cx = fx_clean(a.x), cy = fx_clean(a.y), cz = fx_clean(a.z);
-    uint64_t ux = silk_abs64(cx), uy = silk_abs64(cy), uz = silk_abs64(cz);
-    uint64_t ss = ux * ux + uy * uy + uz * uz;              /* < 3 * 2^62: fits */
-    if (ss == 0) { *out = silk_v3(0, 0, 0); return 0; }
-    /* Rescale: shifting ss left by an even e to [2^62, 2^64) scales the
-     * vector by 2^(e/2), so a vector of 1-ulp components keeps as many bits
-     * as a huge one.  Then 1/sqrt(ss) = y 2^(e/2 - 62), y from the top 32
-     * bits, with relative error below 3e-9: 2e-4 ulp on a unit component. */
-    int e = clz64(ss) & ~1;
-    uint32_t y = rsqrt_q31((uint32_t)((ss << e) >> 32));
-    int rs = 46 - e / 2;                                    /* 15 .. 46 */
-    uint64_t half = (uint64_t)1 << (rs - 1);
-    silk_fx nx = (silk_fx)((ux * y + half) >> rs);          /* ux * y < 2^62 */
-    silk_fx ny = (silk_fx)((uy * y + half) >> rs);
-    silk_fx nz = (silk_fx)((uz * y + half) >> rs);
-    *out = silk_v3(cx < 0 ? -nx : nx, cy < 0 ? -ny : ny, cz < 0 ? -nz : nz);
-    return 1;
+    /* silk_unit64 (silk/fixed.h): rescaling shifts ss left by an even e to
+     * [2^62, 2^64), which scales the vector by 2^(e/2), so a vector of 1-ulp
+     * components keeps as many bits as a huge one; then 1/sqrt(ss) from the
+     * top 32 bits with relative error below 3e-9: 2e-4 ulp on a unit
+     * component. */
+    int64_t u[3];
+    int ok = silk_unit64(fx_clean(a.x), fx_clean(a.y), fx_clean(a.z), u);
+    *out = silk_v3((silk_fx)u[0], (silk_fx)u[1], (silk_fx)u[2]);
+    return ok;
 }
 
 silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t)

@@ -5,13 +5,14 @@
  * interpolated normal renormalised at every pixel.
  *
  * Not a paper equation: the paper renders with standard OpenGL lighting.
- * The varyings are world position (3), normal (3) and uv (2); lighting is
- * done in world space, so nothing needs the inverse view matrix.
+ * The varyings are world position (3) and normal (3), the only ones the
+ * fragment stage reads (the rasterizer interpolates h->nvaryings of them);
+ * lighting is done in world space, so nothing needs the inverse view matrix.
  */
 #include <string.h>
 #include "silk/hal.h"
 
-enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_UV = 6, VAR_COUNT = 8 };
+enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_COUNT = 6 };
 
 static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r,
                          silk_vertex_out *out)
@@ -19,7 +20,6 @@ static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec 
     const silk_phong *p = (const silk_phong *)h->uniforms;
     silk_vertex_attr a;
     silk_vrec_eval(g, r, &a);
-    memset(out, 0, sizeof *out);
     if (p->view) {
         out->clip = silk_view_clip(p->view, a.pos);
     } else {
@@ -35,85 +35,125 @@ static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec 
     out->var[VAR_NORMAL + 0] = a.normal.x;
     out->var[VAR_NORMAL + 1] = a.normal.y;
     out->var[VAR_NORMAL + 2] = a.normal.z;
-    out->var[VAR_UV + 0] = a.uv.x;
-    out->var[VAR_UV + 1] = a.uv.y;
+    for (int k = VAR_COUNT; k < SILK_MAX_VARYINGS; k++) out->var[k] = 0;   /* not interpolated */
 }
 
-/* x^n for x in [0, 1] by repeated squaring: at most 2 log2(n) products. */
-static silk_fx pow_int(silk_fx x, int n)
+/* x^n for x in [0, 1] (Q16.16) by repeated squaring: at most 2 log2(n)
+ * products, each rounded; x <= 1 keeps every product below 2^32. */
+static int64_t pow_unit(int64_t x, int n)
 {
-    silk_fx r = SILK_FX_ONE;
+    /* x^n <= 2^-n rounds to zero for x <= 1/2 and n > 16: most pixels */
+    if (x <= SILK_FX_HALF && n > 16) return 0;
+    int64_t r = SILK_FX_ONE;
     while (n > 0) {
-        if (n & 1) r = silk_fx_mul(r, x);
+        if (n & 1) r = (r * x + SILK_FX_HALF) >> 16;
         n >>= 1;
-        if (n) x = silk_fx_mul(x, x);
+        if (n) x = (x * x + SILK_FX_HALF) >> 16;
     }
     return r;
 }
 
 /* Q16.16 channel in [0, 1] (clamped) to 0..255, rounded. */
-static uint32_t to_byte(silk_fx c)
+static uint32_t to_byte(int64_t c)
 {
-    c = silk_fx_clamp(c, 0, SILK_FX_ONE);
-    return (uint32_t)(((int64_t)c * 255 + SILK_FX_HALF) >> 16);
+    c = c < 0 ? 0 : (c > SILK_FX_ONE ? SILK_FX_ONE : c);
+    return (uint32_t)((c * 255 + SILK_FX_HALF) >> 16);
 }
 
+static int64_t sat31(int64_t v) { return v > SILK_FX_MAX ? SILK_FX_MAX : (v < SILK_FX_MIN ? SILK_FX_MIN : v); }
+
+/* One channel: base (ambient + diffuse D) + specular S, each light sum
+ * saturated as a silk_fx; every product of two values below 2^31. */
+static uint32_t channel(const silk_material *m, silk_fx base, silk_fx spec, int64_t d, int64_t s)
+{
+    int64_t lit = sat31(m->ambient + ((m->diffuse * sat31(d)) >> 16));
+    return to_byte(((base * lit) >> 16) + ((spec * sat31(s)) >> 16));
+}
+
+/* The per-pixel work runs on plain 64-bit integers: N and V are unit
+ * vectors (silk_unit64), so every product below is bounded where it is
+ * formed and needs no saturation; only the dot products round.  The error is a
+ * few ulp of Q16.16, far below one level of an 8-bit channel
+ * (tests/test_phong.c compares with a double-precision Phong).  R.V is
+ * 2 (N.L)(N.V) - L.V, so the mirror direction R is never formed. */
 static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
 {
     const silk_phong *p = (const silk_phong *)h->uniforms;
     const silk_material *m = &p->mat;
-    silk_vec3 pos = silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]);
-    silk_vec3 n, v;
+    int64_t v[3], n[3];
 
     if (p->view && !p->view->cam.ortho) {
-        if (!silk_v3_normalize(silk_v3_sub(p->view->cam.eye, pos), &v)) v = silk_v3_neg(p->view->forward);
+        silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
+        if (!silk_unit64(d.x, d.y, d.z, v)) {
+            v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
+        }
     } else if (p->view) {
-        v = silk_v3_neg(p->view->forward);
+        v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
     } else {
-        v = silk_v3(0, 0, SILK_FX_ONE);
+        v[0] = 0, v[1] = 0, v[2] = SILK_FX_ONE;
     }
     /* A zero normal (opposite normals interpolated) faces the viewer. */
-    if (!silk_v3_normalize(silk_v3(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2]), &n))
-        n = v;
+    if (!silk_unit64(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
+        n[0] = v[0], n[1] = v[1], n[2] = v[2];
     /* Two-sided: a normal facing away from the eye is mirrored in the plane
      * perpendicular to V (its component along V changes sign).  Not plain
      * negation: near a silhouette the interpolated normals of front faces
      * face slightly away, and negating them would flip the lighting there
      * from one pixel to the next; the mirror is continuous at N.V = 0 and
-     * is -N for a surface seen squarely from behind. */
-    silk_fx ndv = silk_v3_dot(n, v);
-    if (p->two_sided && ndv < 0) n = silk_v3_sub(n, silk_v3_scale(v, 2 * ndv));
+     * is -N for a surface seen squarely from behind.  A reflection keeps N
+     * a unit vector. */
+    int64_t ndv = (n[0] * v[0] + n[1] * v[1] + n[2] * v[2] + SILK_FX_HALF) >> 16;
+    if (p->two_sided && ndv < 0) {
+        n[0] -= (2 * ndv * v[0]) >> 16;
+        n[1] -= (2 * ndv * v[1]) >> 16;
+        n[2] -= (2 * ndv * v[2]) >> 16;
+        ndv = -ndv;
+    }
 
     /* light reaching the surface, per channel: diffuse and specular parts */
-    int64_t dif[3] = { 0, 0, 0 }, spe[3] = { 0, 0, 0 };
+    int64_t dr = 0, dg = 0, db = 0, sr = 0, sg = 0, sb = 0;
     int nl = p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights);
     for (int i = 0; i < nl; i++) {
         const silk_light *li = &p->lights[i];
-        silk_vec3 l = li->vec;
-        if (li->kind == SILK_LIGHT_POINT && !silk_v3_normalize(silk_v3_sub(li->vec, pos), &l)) continue;
-        silk_fx ndl = silk_v3_dot(n, l);
-        if (ndl <= 0) continue;
-        /* R = 2 (N.L) N - L, the mirror direction of L */
-        silk_vec3 r = silk_v3_sub(silk_v3_scale(n, 2 * ndl), l);
-        silk_fx rdv = silk_v3_dot(r, v);
-        silk_fx s = rdv > 0 ? pow_int(silk_fx_min(rdv, SILK_FX_ONE), m->shininess) : 0;
-        silk_fx lc[3] = { li->color.x, li->color.y, li->color.z };
-        for (int k = 0; k < 3; k++) {
-            dif[k] += silk_fx_mul(ndl, lc[k]);
-            spe[k] += silk_fx_mul(s, lc[k]);
+        int64_t l[3] = { li->vec.x, li->vec.y, li->vec.z };
+        if (li->kind == SILK_LIGHT_POINT) {
+            silk_vec3 d = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
+            if (!silk_unit64(d.x, d.y, d.z, l)) continue;
         }
+        int64_t ndl = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2] + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
+        if (ndl <= 0) continue;
+        if (ndl > SILK_FX_MAX) ndl = SILK_FX_MAX;
+        int64_t rdv = ((2 * ndl * ndv) >> 16) - ((l[0] * v[0] + l[1] * v[1] + l[2] * v[2]) >> 16);
+        int64_t s = rdv > 0 ? pow_unit(rdv < SILK_FX_ONE ? rdv : SILK_FX_ONE, m->shininess) : 0;
+        dr += (ndl * li->color.x) >> 16;
+        dg += (ndl * li->color.y) >> 16;
+        db += (ndl * li->color.z) >> 16;
+        sr += (s * li->color.x) >> 16;
+        sg += (s * li->color.y) >> 16;
+        sb += (s * li->color.z) >> 16;
     }
 
-    silk_fx base[3] = { m->color.x, m->color.y, m->color.z };
-    silk_fx sc[3] = { m->specular_color.x, m->specular_color.y, m->specular_color.z };
-    uint32_t rgb = 0;
-    for (int k = 0; k < 3; k++) {
-        silk_fx lit = silk_fx_add(m->ambient, silk_fx_mul(m->diffuse, silk_fx_sat(dif[k])));
-        silk_fx c = silk_fx_add(silk_fx_mul(base[k], lit),
-                                silk_fx_mul(silk_fx_mul(m->specular, sc[k]), silk_fx_sat(spe[k])));
-        rgb = (rgb << 8) | to_byte(c);
+    int64_t spec = m->specular;
+    /* Usual case, one test: every light sum and material term in [0, 16):
+     * then no product nears 2^63 and no sum can leave the range, and only
+     * the final clamp to 1 remains. */
+    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | m->color.x |
+                              m->color.y | m->color.z | m->specular_color.x | m->specular_color.y |
+                              m->specular_color.z);
+    if (all < ((uint64_t)1 << 20)) {
+        int64_t amb = m->ambient, dif = m->diffuse;
+        int64_t cr = ((m->color.x * (amb + ((dif * dr) >> 16))) >> 16) + ((((spec * m->specular_color.x) >> 16) * sr) >> 16);
+        int64_t cg = ((m->color.y * (amb + ((dif * dg) >> 16))) >> 16) + ((((spec * m->specular_color.y) >> 16) * sg) >> 16);
+        int64_t cb = ((m->color.z * (amb + ((dif * db) >> 16))) >> 16) + ((((spec * m->specular_color.z) >> 16) * sb) >> 16);
+        cr = cr < SILK_FX_ONE ? cr : SILK_FX_ONE;
+        cg = cg < SILK_FX_ONE ? cg : SILK_FX_ONE;
+        cb = cb < SILK_FX_ONE ? cb : SILK_FX_ONE;
+        return (uint32_t)((cr * 255 + SILK_FX_HALF) >> 16) << 16 | (uint32_t)((cg * 255 + SILK_FX_HALF) >> 16) << 8 |
+               (uint32_t)((cb * 255 + SILK_FX_HALF) >> 16);
     }
-    return rgb;
+    return channel(m, m->color.x, silk_fx_mul(m->specular, m->specular_color.x), dr, sr) << 16 |
+           channel(m, m->color.y, silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |
+           channel(m, m->color.z, silk_fx_mul(m->specular, m->specular_color.z), db, sb);
 }
 
 void silk_hal_phong(silk_hal *h, const silk_phong *p)

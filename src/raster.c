@@ -137,14 +137,16 @@ void silk_target_clear(silk_target *t, uint32_t rgb)
 {
     int lo, hi;
     if (!band_rows(t, &lo, &hi)) return;
-    size_t bpp = silk_pixfmt_bytes(t->fmt);
+    size_t bpp = silk_pixfmt_bytes(t->fmt), wbytes = (size_t)t->width * bpp;
+    uint8_t *first = t->color ? t->color + (size_t)(lo - t->y0) * t->stride : NULL;
+    if (first) {
+        /* one pixel, then the row by doubling copies, then row copies */
+        store(t, first, rgb);
+        for (size_t n = bpp; n < wbytes; n *= 2) memcpy(first + n, first, n < wbytes - n ? n : wbytes - n);
+    }
     for (int y = lo; y < hi; y++) {
         size_t row = (size_t)(y - t->y0);
-        if (t->color) {
-            uint8_t *p = t->color + row * t->stride;
-            store(t, p, rgb);
-            for (int x = 1; x < t->width; x++) memcpy(p + (size_t)x * bpp, p, bpp);
-        }
+        if (first && y > lo) memcpy(t->color + row * t->stride, first, wbytes);
         if (t->depth) memset(t->depth + row * (size_t)t->width, 0, (size_t)t->width * sizeof(uint32_t));
         if (t->writes) memset(t->writes + row * (size_t)t->width, 0, (size_t)t->width * sizeof(uint16_t));
     }
@@ -297,6 +299,11 @@ typedef struct tri_setup {
     rstep dstep;                  /* depth per pixel in x */
     int64_t du, dv, dt;           /* U, V, T per pixel in x */
     int nvar;
+    /* var_k = a0_k + (a1_k - a0_k) b1 + (a2_k - a0_k) b2 is a0 b0 + a1 b1 + a2 b2
+     * exactly (b0 = 1 - b1 - b2 is never negative inside the triangle), with
+     * two products instead of three; |a_i - a0| < 2^32 and b1 + b2 <= 2^30
+     * keep the sum below 2^63.  vbase holds a0 in Q30 plus the rounding half. */
+    int64_t vbase[SILK_MAX_VARYINGS], vd1[SILK_MAX_VARYINGS], vd2[SILK_MAX_VARYINGS];
 } tri_setup;
 
 /* Depth at subpixel point (X, Y): D0 + (e1 dD1 + e2 dD2) / area, floored,
@@ -331,12 +338,15 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     uint16_t *wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
     size_t bpp = silk_pixfmt_bytes(t->fmt);
     uint8_t *crow = t->color ? t->color + r * t->stride : NULL;
-    const silk_fx *a0 = s->v[0]->var, *a1 = s->v[1]->var, *a2 = s->v[2]->var;
+    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
     silk_fx var[SILK_MAX_VARYINGS];
 
+    /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
+     * nothing there, wraps to the largest value: no pixel passes) */
+    uint32_t eq = t->depth_equal ? 1u : 0u;
     for (int x = xl; x < xr; x++) {
         uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
-        if (!zrow || z > zrow[x]) {
+        if (!zrow || z > zrow[x] - eq) {
             if (zrow) zrow[x] = z;
             if (wrow) wrow[x]++;
             if (h && h->fragment) {
@@ -347,10 +357,12 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
                 } else {
                     weights(U, V, T, &b1, &b2);
                 }
-                int64_t b0 = ((int64_t)1 << 30) - b1 - b2;
-                if (b0 < 0) b0 = 0;
-                for (int k = 0; k < s->nvar; k++)
-                    var[k] = (silk_fx)silk_shr_round64(b0 * a0[k] + b1 * a1[k] + b2 * a2[k], 30);
+                int k = 0;
+                for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
+                    var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+                    var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
+                }
+                if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
                 uint32_t rgb = h->fragment(h, var);
                 if (crow) store(t, crow + (size_t)x * bpp, rgb);
             }
@@ -400,6 +412,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
         const svert *a = s.v[(i + 1) % 3], *b = s.v[(i + 2) % 3];
         s.ea[i] = a->y - b->y;
         s.eb[i] = b->x - a->x;
+    }
+    for (int k = 0; h && h->fragment && k < nvar; k++) {
+        const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
+        s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
+        s.vd1[k] = (int64_t)a1[k] - a0[k];
+        s.vd2[k] = (int64_t)a2[k] - a0[k];
     }
     silk_fx wmin = s.v[0]->w;
     for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;

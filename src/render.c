@@ -284,11 +284,12 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
     /* Lines alone: the surface is drawn into the depth buffer only, to hide them. */
-    const silk_hal *shade = o->lines == SILK_LINES_ONLY ? NULL : f->hal;
-    for (uint32_t k = 0; k < g->ntri; k++) {
+    const silk_hal *shade = o->lines == SILK_LINES_ONLY || pass < 0 ? NULL : f->hal;
+    for (uint32_t i = 0; i < g->ntri; i++) {
+        uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];
         int added = g->tri_added && g->tri_added[k];
-        if (pass == 0)
+        if (pass <= 0)
             silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
                                  vertex_out(f, c[2], &tmp[2]));
         else if (added == pass - 1)
@@ -305,12 +306,22 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[2];
     silk_target_clear(t, o->bg_rgb);
-    for (int pass = 0; pass < (o->wire ? 3 : 1); pass++)
-        for (uint32_t k = 0; k < f->nparts; k++) {
+    /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
+     * near as the nearest, so each pixel is shaded once (docs/raster.md).
+     * In reverse order: of fragments at equal depth the first drawn keeps
+     * the pixel, as in a single pass.  It doubles the per-triangle work, so
+     * only where triangles are large (16 pixels on average or more). */
+    uint64_t ntri = f->part == stream_part ? f->geom.mesh->ntris : g->ntri;
+    int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height;
+    for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
+        for (uint32_t i = 0; i < f->nparts; i++) {
+            t->depth_equal = pass == 0 && depth_first;
+            uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
             if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
             f->part(f, k);
             draw_tris(f, o, t, pass);
         }
+    t->depth_equal = 0;
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
         uint32_t j = g->line_start[i], end = g->line_start[i + 1];

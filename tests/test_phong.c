@@ -8,7 +8,9 @@
 #include <stdio.h>
 #include <string.h>
 #include "check.h"
+#include <stdlib.h>
 #include "silk/silk.h"
+#include "support/scene.h"
 
 static silk_fx fxd(double v) { return (silk_fx)llround(v * 65536.0); }
 static double dfx(silk_fx v) { return v / 65536.0; }
@@ -238,7 +240,7 @@ TEST(vertex_stage)
     silk_phong_default(&p, &v);
     silk_hal h;
     silk_hal_phong(&h, &p);
-    CHECK(h.nvaryings == 8 && h.vertex && h.fragment && h.uniforms == &p);
+    CHECK(h.nvaryings == 6 && h.vertex && h.fragment && h.uniforms == &p);
     silk_geom g = { .mesh = &s.m };
     for (uint32_t a = 0; a < 6; a++) {
         silk_vrec r = { SILK_VREC_CORNER, a, 0, 0 };
@@ -248,7 +250,7 @@ TEST(vertex_stage)
         silk_vrec_eval(&g, &r, &at);
         silk_vec4 cl = silk_view_clip(&v, at.pos);
         CHECK(memcmp(&o.clip, &cl, sizeof cl) == 0);
-        silk_fx want[8] = { at.pos.x, at.pos.y, at.pos.z, at.normal.x, at.normal.y, at.normal.z, at.uv.x, at.uv.y };
+        silk_fx want[6] = { at.pos.x, at.pos.y, at.pos.z, at.normal.x, at.normal.y, at.normal.z };
         CHECK(memcmp(o.var, want, sizeof want) == 0);
     }
 }
@@ -352,6 +354,115 @@ TEST(fragment_vs_double)
     CHECKF(worst <= 3 && hist[2] + hist[3] < 60, "fragment differs by up to %d", worst);
 }
 
+/* Every shaded pixel of whole frames: the default fragment stage wrapped so
+ * that each fragment is also shaded by dphong from the same varyings. */
+typedef struct probe { const silk_hal *inner; const silk_phong *phong; int worst; long n; } probe;
+
+static uint32_t probe_fragment(const silk_hal *h, const silk_fx *var)
+{
+    probe *pr = (probe *)(uintptr_t)h->uniforms;
+    uint32_t got = pr->inner->fragment(pr->inner, var);
+    int d = chan_diff(got, dphong(pr->phong, var));
+    if (d > pr->worst) pr->worst = d;
+    pr->n++;
+    return got;
+}
+
+static void probe_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out)
+{
+    const probe *pr = (const probe *)h->uniforms;
+    pr->inner->vertex(pr->inner, g, r, out);
+}
+
+TEST(fragment_on_meshes)
+{
+    size_t size = (size_t)64 << 20;
+    unsigned char *mem = malloc(size);
+    silk_arena a;
+    silk_arena_init(&a, mem, size);
+    /* a closed sphere, and an open wavy sheet seen from both sides */
+    ts_mesh sph = { 0 }, sheet = { 0 };
+    ts_sphere(&sph, 14, 9, 1.0, 0, 0, 0);
+    for (int j = 0; j <= 8; j++)
+        for (int i = 0; i <= 8; i++)
+            ts_vertex(&sheet, i / 4.0 - 1, 0.25 * sin(i * 0.9) * cos(j * 0.7), j / 4.0 - 1);
+    for (int j = 0; j < 8; j++)
+        for (int i = 0; i < 8; i++) {
+            uint32_t c = (uint32_t)(j * 9 + i);
+            ts_tri(&sheet, c, c + 9, c + 1);
+            ts_tri(&sheet, c + 1, c + 9, c + 10);
+        }
+    const ts_mesh *meshes[2] = { &sph, &sheet };
+    const double eyes[4][3] = { { 0.5, 0.8, 3.2 }, { -2.5, 1.5, -1.5 }, { 1.0, -2.8, 0.6 }, { 0.2, 3.0, 0.1 } };
+    int worst = 0;
+    long n = 0;
+    for (int mi = 0; mi < 2; mi++)
+        for (int e = 0; e < 4; e++)
+            for (int mode = 0; mode < 2; mode++) {
+                silk_arena_init(&a, mem, size);
+                silk_mesh m;
+                silk_error err;
+                if (ts_build(meshes[mi], &a, &m, &err) != SILK_OK) { CHECKF(0, "%s", err.msg); continue; }
+                double target[3] = { 0, 0, 0 };
+                silk_camera cam = ts_camera(eyes[e], target, e == 3 ? -1.3 : 45, 0.1, 20, 96, 72);
+                silk_view v;
+                if (silk_view_init(&v, &cam, &err) != SILK_OK) { CHECKF(0, "%s", err.msg); continue; }
+                silk_phong p;
+                silk_phong_default(&p, &v);
+                silk_hal inner, h;
+                silk_hal_phong(&inner, &p);
+                probe pr = { &inner, &p, 0, 0 };
+                h = inner;
+                h.vertex = probe_vertex;
+                h.fragment = probe_fragment;
+                h.uniforms = &pr;
+                silk_render_opts o;
+                silk_render_opts_default(&o);
+                o.mode = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+                static uint8_t rgb[96 * 72 * 3];
+                static uint32_t depth[96 * 72];
+                silk_target t;
+                silk_target_init(&t, 96, 72, 0, 72, SILK_PIX_RGB888, rgb, depth);
+                silk_target_clear(&t, 0xFFFFFF);
+                CHECK(silk_render(&a, &m, &v, &h, &o, &t, NULL, &err) == SILK_OK);
+                CHECKF(pr.n > 200, "mesh %d view %d: only %ld fragments", mi, e, pr.n);
+                if (pr.worst > worst) worst = pr.worst;
+                n += pr.n;
+            }
+    printf("  %ld fragments of whole frames against double Phong: worst %d/255\n", n, worst);
+    CHECKF(worst <= 2, "a pixel differs by %d levels", worst);
+    ts_mesh_free(&sph);
+    ts_mesh_free(&sheet);
+    free(mem);
+}
+
+/* Any silk_fx in the varyings, lights and material: defined behaviour (the
+ * sanitizer build checks), and black to white only. */
+TEST(fragment_extremes)
+{
+    silk_camera c = cam(0);
+    silk_view v;
+    CHECK(silk_view_init(&v, &c, NULL) == SILK_OK);
+    int bad = 0;
+    for (int trial = 0; trial < 20000; trial++) {
+        silk_phong p;
+        silk_phong_default(&p, &v);
+        silk_fx *f[] = { &p.mat.ambient, &p.mat.diffuse, &p.mat.specular, &p.mat.color.x, &p.mat.color.z,
+                         &p.mat.specular_color.y, &p.lights[0].vec.x, &p.lights[0].color.y, &p.lights[1].vec.z,
+                         &p.lights[1].color.x };
+        for (int i = 0; i < 10; i++)
+            if (check_rand64() % 3 == 0) *f[i] = (silk_fx)(uint32_t)check_rand64();
+        p.lights[1].kind = check_rand64() & 1 ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
+        p.two_sided = (int)(check_rand64() & 1);
+        silk_hal h;
+        silk_hal_phong(&h, &p);
+        silk_fx var[8];
+        for (int k = 0; k < 8; k++) var[k] = check_rand64() & 1 ? (silk_fx)(uint32_t)check_rand64() : 0;
+        bad += h.fragment(&h, var) > 0xFFFFFF;
+    }
+    CHECK(bad == 0);
+}
+
 TEST(two_sided_and_saturation)
 {
     silk_camera c = cam(1);
@@ -371,7 +482,7 @@ TEST(two_sided_and_saturation)
     silk_hal h;
     silk_hal_phong(&h, &p);
     silk_fx front[8] = { 0, 0, 0, 0, 0, SILK_FX_ONE, 0, 0 }, back[8] = { 0, 0, 0, 0, 0, -SILK_FX_ONE, 0, 0 };
-    CHECK(h.fragment(&h, front) == 0xFF8000);
+    CHECKF(h.fragment(&h, front) == 0xFF8000, "got %06x", h.fragment(&h, front));
     CHECK(h.fragment(&h, back) == 0x000000);                /* one-sided: the back is unlit */
     p.two_sided = 1;
     CHECK(h.fragment(&h, back) == 0xFF8000);                /* seen squarely from behind: lit as the front */
@@ -438,6 +549,8 @@ int main(void)
     RUN(vrec_curve);
     RUN(vertex_stage);
     RUN(fragment_vs_double);
+    RUN(fragment_on_meshes);
+    RUN(fragment_extremes);
     RUN(two_sided_and_saturation);
     RUN(default_lighting);
     return check_done();

@@ -171,6 +171,43 @@ silk_fx   silk_v3_length(silk_vec3 a);                 /* exact-rounded, saturat
  * components of 1 ulp): it rescales before taking the length.  The zero
  * vector gives the zero vector; returns 0 then, 1 otherwise. */
 int       silk_v3_normalize(silk_vec3 a, silk_vec3 *out);
+/* 1/sqrt(M) in Q16 at the centre of each of 192 slices of M in [1, 4) (read-only). */
+extern const uint16_t silk_rsqrt_seed[192];
+
+/* Unit vector of (x, y, z), |components| < 2^31, in Q16.16 (the work of
+ * silk_v3_normalize, which calls it): the sum of squares rescaled by an even
+ * shift, a table seed and two Newton steps for 1/sqrt (relative error below
+ * 3e-9), one product and rounding shift per component.  Inline: the default
+ * fragment stage calls it twice per shaded pixel.  Returns 0 (and a zero
+ * vector) for the zero vector. */
+static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
+{
+    uint64_t ux = (uint64_t)(x < 0 ? -x : x), uy = (uint64_t)(y < 0 ? -y : y), uz = (uint64_t)(z < 0 ? -z : z);
+    uint64_t ss = ux * ux + uy * uy + uz * uz;
+    if (ss == 0) { out[0] = out[1] = out[2] = 0; return 0; }
+#if defined(__GNUC__)
+    int e = __builtin_clzll(ss) & ~1;
+#else
+    int e = 0;
+    while (!(ss << e >> 62)) e += 2;
+#endif
+    uint32_t m = (uint32_t)((ss << e) >> 32);
+    uint32_t r = (uint32_t)silk_rsqrt_seed[(m >> 24) - 64] << 15;
+    for (int i = 0; i < 2; i++) {       /* Newton: r' = r (3 - M r^2) / 2 */
+        uint32_t r2 = (uint32_t)(((uint64_t)r * r) >> 32);
+        uint32_t mr2 = (uint32_t)(((uint64_t)m * r2) >> 30);
+        r = (uint32_t)(((uint64_t)r * (3u * (1u << 30) - mr2)) >> 31);
+    }
+    int rs = 46 - e / 2;
+    uint64_t half = (uint64_t)1 << (rs - 1);
+    int64_t nx = (int64_t)((ux * r + half) >> rs), ny = (int64_t)((uy * r + half) >> rs),
+            nz = (int64_t)((uz * r + half) >> rs);
+    out[0] = x < 0 ? -nx : nx;
+    out[1] = y < 0 ? -ny : ny;
+    out[2] = z < 0 ? -nz : nz;
+    return 1;
+}
+
 /* a + (b-a)*t */
 silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t);
 

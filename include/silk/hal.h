@@ -129,7 +129,7 @@ typedef struct silk_phong {
     int two_sided;           /* light back faces with the flipped normal */
 } silk_phong;
 
-/* varyings: world position (3), normal (3), uv (2) */
+/* varyings: world position (3), normal (3) */
 void silk_phong_default(silk_phong *p, const silk_view *view); /* a key light and a fill light */
 void silk_hal_phong(silk_hal *h, const silk_phong *p);
 

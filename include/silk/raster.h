@@ -34,6 +34,9 @@ typedef struct silk_target {
     uint32_t *depth;         /* rows * width; larger is nearer: (w - z) / w in Q1.31, which is
                                 2 znear / w in perspective (docs/raster.md); NULL: no depth test */
     uint16_t *writes;        /* optional (tests): rows * width counters of fragment writes */
+    int depth_equal;         /* 0: draw where nearer than the depth buffer; 1: where as near, for the
+                                shading pass after a depth-only pass (silk_render), so that each
+                                pixel is shaded once */
 } silk_target;
 
 /* Output of the vertex stage. */
