@@ -27,7 +27,10 @@
  * the line would break up.  So each line vertex is lifted towards the eye
  * by what the triangles through it rise over one pixel (their depth slope,
  * at most their depth extent): a polygon offset scaled by slope, as
- * glPolygonOffset does, but only by the triangles the line lies on; and
+ * glPolygonOffset does, but only by the triangles the line lies on (where
+ * one of them is narrower than a pixel, as the slivers re-meshing fans
+ * from a vertex to the silhouette samples are, by the triangles beyond
+ * it, on which the line's pixels lie); and
  * by 1/LINE_NEAR of its depth, for the surface half a pixel inside a
  * silhouette, whose depth rises like the square root of the distance from
  * it, faster than any triangle's slope at the line.
@@ -274,6 +277,34 @@ static int64_t depth_slope(const spt *a, const spt *b, const spt *c)
     return (gx + gy) / (area2 >> 8);
 }
 
+/* Whether triangle abc is narrower than a pixel: twice its area under 256
+ * times (1/256 px) its longest side, measured |dx| + |dy| (generous by
+ * at most sqrt 2). */
+static int sliver(const spt *a, const spt *b, const spt *c)
+{
+    const spt *p[3] = { a, b, c };
+    int64_t side = 0;
+    for (int i = 0; i < 3; i++) {
+        int64_t l = (int64_t)silk_abs64(p[(i + 1) % 3]->x - p[i]->x) + (int64_t)silk_abs64(p[(i + 1) % 3]->y - p[i]->y);
+        if (l > side) side = l;
+    }
+    int64_t area2 = (int64_t)silk_abs64((b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y));
+    return area2 < 256 * side;
+}
+
+/* Triangle k of g: its corners' points and screen points; 0 when a
+ * record is out of range or a corner is off screen (see screen_point). */
+static int tri_points(const silk_mesh *m, const silk_frame_geom *g, const silk_vertex_out *out, int width, int height,
+                      uint32_t k, uint32_t c[3], spt p[3])
+{
+    const uint32_t *t = &g->tri[3 * k];
+    for (int j = 0; j < 3; j++) {
+        if (t[j] >= g->nvrec || !screen_point(&out[t[j]], width, height, &p[j])) return 0;
+        c[j] = point_key(m, g, t[j]);
+    }
+    return 1;
+}
+
 uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_geom *g, const silk_vertex_out *out,
                           int width, int height)
 {
@@ -283,8 +314,11 @@ uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_ge
     /* the line vertices at each point: first[key], then same[i] */
     uint32_t *first = silk_arena_array_top(a, nkeys, sizeof *first, SILK_MEM_FRAME);
     uint32_t *same = silk_arena_array_top(a, g->nline_vrec, sizeof *same, SILK_MEM_FRAME);
-    if (!lift || !first || !same) return NULL;
+    /* each point's own lift, line or not */
+    uint32_t *own = silk_arena_array_top(a, nkeys, sizeof *own, SILK_MEM_FRAME);
+    if (!lift || !first || !same || !own) return NULL;
     memset(first, 0xFF, (size_t)nkeys * sizeof *first);
+    memset(own, 0, (size_t)nkeys * sizeof *own);
     for (uint32_t i = 0; i < g->nline_vrec; i++) {
         uint32_t r = g->line_src[i];
         same[i] = SILK_LINE_NO_SRC;
@@ -293,24 +327,37 @@ uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_ge
         same[i] = first[key];
         first[key] = i;
     }
+    /* Every point by the triangles through it. */
     for (uint32_t k = 0; k < g->ntri; k++) {
-        const uint32_t *t = &g->tri[3 * k];
-        if (t[0] >= g->nvrec || t[1] >= g->nvrec || t[2] >= g->nvrec) continue;
-        uint32_t c[3] = { point_key(m, g, t[0]), point_key(m, g, t[1]), point_key(m, g, t[2]) };
-        if (first[c[0]] == SILK_LINE_NO_SRC && first[c[1]] == SILK_LINE_NO_SRC && first[c[2]] == SILK_LINE_NO_SRC)
-            continue;
+        uint32_t c[3];
         spt p[3];
-        if (!screen_point(&out[t[0]], width, height, &p[0]) || !screen_point(&out[t[1]], width, height, &p[1]) ||
-            !screen_point(&out[t[2]], width, height, &p[2]))
-            continue;
+        if (!tri_points(m, g, out, width, height, k, c, p)) continue;
         int64_t slope = depth_slope(&p[0], &p[1], &p[2]);
         for (int j = 0; j < 3; j++) {
-            if (first[c[j]] == SILK_LINE_NO_SRC) continue;
             /* one pixel of slope, but never more than the triangle rises */
             int64_t rise = 0;
             for (int i = 0; i < 3; i++)
                 if (p[i].d - p[j].d > rise) rise = p[i].d - p[j].d;
             int64_t l = slope < rise ? slope : rise;
+            if (l > UINT32_MAX) l = UINT32_MAX;
+            if ((uint32_t)l > own[c[j]]) own[c[j]] = (uint32_t)l;
+        }
+    }
+    for (uint32_t i = 0; i < g->nline_vrec; i++)
+        lift[i] = g->line_src[i] < g->nvrec ? own[point_key(m, g, g->line_src[i])] : 0;
+    /* A line point on a triangle narrower than a pixel (the re-meshing fans
+     * such slivers from a mesh vertex to the silhouette samples): the
+     * line's pixels lie on the triangles beyond the sliver, which rise past
+     * its corners, so the line is lifted as far as they are and by what
+     * the sliver rises to them. */
+    for (uint32_t k = 0; k < g->ntri; k++) {
+        uint32_t c[3];
+        spt p[3];
+        if (!tri_points(m, g, out, width, height, k, c, p) || !sliver(&p[0], &p[1], &p[2])) continue;
+        for (int j = 0; j < 3; j++) {
+            int64_t l = 0;
+            for (int i = 0; i < 3; i++)
+                if (i != j && p[i].d - p[j].d + own[c[i]] > l) l = p[i].d - p[j].d + own[c[i]];
             if (l > UINT32_MAX) l = UINT32_MAX;
             for (uint32_t i = first[c[j]]; i != SILK_LINE_NO_SRC; i = same[i])
                 if ((uint32_t)l > lift[i]) lift[i] = (uint32_t)l;

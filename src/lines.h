@@ -30,8 +30,8 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
 /* How far to lift each line vertex towards the eye so that the triangles
  * it lies on do not hide it: per line record, in units of 2^-24 of the
  * rasterizer's depth (w - z) / w, from the depth slopes of the triangles
- * through its source point (out: the vertex stage's output for every
- * record of g).  NULL when the arena has no room (the lines then get only
+ * through its source point, and of those beyond the ones narrower than a
+ * pixel (out: the vertex stage's output for every record of g).  NULL when the arena has no room (the lines then get only
  * silk_raster_line's own bias). */
 uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_geom *g, const silk_vertex_out *out,
                           int width, int height);
