@@ -171,9 +171,28 @@ const char *cli_value(int argc, char **argv, int *i)
     return argv[++*i];
 }
 
+int cli_help(const char *arg, void (*help)(FILE *))
+{
+    if (strcmp(arg, "--help") != 0 && strcmp(arg, "-h") != 0) return 0;
+    help(stdout);
+    return 1;
+}
+
+int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc)
+{
+    int r = cli_scene_option(o, argc, argv, i);
+    if (r < 0) *rc = CLI_EXIT_USAGE;
+    return r != 0;
+}
+
+int cli_unknown_option(const char *cmd, const char *arg)
+{
+    return cli_fail(CLI_EXIT_USAGE, "%s: unknown option %s (try silk %s --help)", cmd, arg, cmd);
+}
+
 int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path)
 {
-    if (arg[0] == '-' && arg[1]) return cli_fail(CLI_EXIT_USAGE, "%s: unknown option %s (try silk %s --help)", cmd, arg, cmd);
+    if (arg[0] == '-' && arg[1]) return cli_unknown_option(cmd, arg);
     if (*mesh_path) return cli_fail(CLI_EXIT_USAGE, "%s: one mesh at a time (got %s and %s)", cmd, *mesh_path, arg);
     *mesh_path = arg;
     return 0;

@@ -233,6 +233,15 @@ silk_fx cli_fx_from_double(double v);
  * that holds every vertex, 5% to spare; 1 for a mesh of one point. */
 double cli_mesh_radius(const silk_mesh *m, double c[3]);
 
+/* The head of every command's option loop.  cli_help: whether arg is
+ * --help or -h, after printing help(stdout) (the command then exits 0).
+ * cli_scene_arg: whether argv[*i] was a scene option of o (consumed; *rc
+ * set to CLI_EXIT_USAGE when its value was bad).  cli_unknown_option: the
+ * usage error for an option no one took. */
+int cli_help(const char *arg, void (*help)(FILE *));
+int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
+int cli_unknown_option(const char *cmd, const char *arg);
+
 /* An argument of `silk CMD` that no option took: the one mesh (*mesh_path),
  * or the usage error of an unknown option or a second mesh.  Returns 0 or
  * CLI_EXIT_USAGE. */
