@@ -13,6 +13,7 @@
 silk_status silk_frame_flat_room(silk_arena *a, uint32_t ntris, size_t extra_bytes, void **extra,
                                  silk_frame_geom *g, silk_error *err)
 {
+    memset(g, 0, sizeof *g);
     if (ntris > UINT32_MAX / 3)
         return silk_fail(err, SILK_ERR_RANGE, "frame", 0, "too many triangles (%lu)", (unsigned long)ntris);
     uint32_t n = 3 * ntris;
@@ -20,33 +21,31 @@ silk_status silk_frame_flat_room(silk_arena *a, uint32_t ntris, size_t extra_byt
     g->vrec = silk_arena_array_top(a, n, sizeof *g->vrec, SILK_MEM_FRAME);
     g->tri = silk_arena_array_top(a, n, sizeof *g->tri, SILK_MEM_FRAME);
     g->tri_added = silk_arena_array_top(a, ntris, 1, SILK_MEM_FRAME);
-    if (extra) *extra = g->vrec && g->tri && g->tri_added ? silk_arena_array_top(a, 1, extra_bytes, SILK_MEM_FRAME)
-                                                         : NULL;
+    if (extra) *extra = silk_arena_array_top(a, 1, extra_bytes, SILK_MEM_FRAME);
     if (!g->vrec || !g->tri || !g->tri_added || (extra && !*extra)) {
         /* the least any frame can do with: these arrays, aligned as the
          * arena hands them out */
-        const uint64_t al = SILK_ARENA_ALIGN - 1;
-        uint64_t need = (((uint64_t)n * sizeof *g->vrec + al) & ~al) + (((uint64_t)n * sizeof *g->tri + al) & ~al) +
-                        (((uint64_t)ntris + al) & ~al) + (extra ? ((uint64_t)extra_bytes + al) & ~al : 0);
+        const uint64_t bytes[4] = { (uint64_t)n * sizeof *g->vrec, (uint64_t)n * sizeof *g->tri, ntris,
+                                    extra ? extra_bytes : 0 };
+        uint64_t need = 0;
+        for (int i = 0; i < 4; i++) need += (bytes[i] + SILK_ARENA_ALIGN - 1) & ~(uint64_t)(SILK_ARENA_ALIGN - 1);
         return silk_fail(err, SILK_ERR_NOMEM, "frame", 0,
                          "arena too small for the frame: even the unsmoothed frame needs %llu bytes, %llu are free",
                          (unsigned long long)need, (unsigned long long)free_bytes);
     }
-    g->nvrec = g->ntri = 0;
     return SILK_OK;
 }
 
 void silk_frame_flat_emit_tri(silk_frame_geom *g, uint32_t t)
 {
+    /* Records come zero-filled from the arena (silk_frame_flat_room) and
+     * only this emitter writes them: kind CORNER, b 0, t 0; only the corner
+     * index is set. */
     for (uint32_t k = 0; k < 3; k++) {
-        silk_vrec *r = &g->vrec[g->nvrec];
-        r->kind = SILK_VREC_CORNER;
-        r->a = 3 * t + k;
-        r->b = 0;
-        r->t = 0;
+        g->vrec[g->nvrec].a = 3 * t + k;
         g->tri[3 * g->ntri + k] = g->nvrec++;
     }
-    g->tri_added[g->ntri++] = 0;
+    g->ntri++;
 }
 
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err)
@@ -54,9 +53,6 @@ silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *
     silk_status st = silk_frame_flat_room(a, m->ntris, 0, NULL, g, err);
     if (st != SILK_OK) return st;
     for (uint32_t t = 0; t < m->ntris; t++) silk_frame_flat_emit_tri(g, t);
-    g->curve = NULL; g->ncurve = 0;
-    g->offset = NULL; g->noffset = 0;
-    g->patch = NULL; g->npatch = 0;
     return SILK_OK;
 }
 
@@ -66,7 +62,6 @@ silk_status silk_frame_fall_back(silk_arena *a, const silk_mesh *m, const silk_a
                                  silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
 {
     silk_arena_top_release(a, mark);
-    memset(g, 0, sizeof *g);
     silk_status st = silk_frame_flat(a, m, g, err);
     if (st != SILK_OK) return st;
     silk_frame_stats_fell_back(stats, g->ntri);

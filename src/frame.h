@@ -47,7 +47,7 @@ int64_t silk_raster_row(const silk_vec4 *c, int height);
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err);
 /* Room in g (from the top of the arena) for the shares of ntris input
  * triangles as they are, and when extra is not NULL extra_bytes more for
- * the caller in *extra; g holds no share yet.  SILK_ERR_NOMEM, saying what
+ * the caller in *extra; g is emptied (no share, no curves or patches).  SILK_ERR_NOMEM, saying what
  * the least frame needs, when it does not fit. */
 silk_status silk_frame_flat_room(silk_arena *a, uint32_t ntris, size_t extra_bytes, void **extra,
                                  silk_frame_geom *g, silk_error *err);

@@ -133,7 +133,6 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         }
         /* the plan does not fit: the coarse mesh, as a stored frame falls back */
         silk_arena_top_release(a, &mark);
-        memset(&f->g, 0, sizeof f->g);
         f->cache = NULL;
         silk_frame_stats_fell_back(stats, m->ntris);
     }
