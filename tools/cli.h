@@ -58,6 +58,8 @@ int cli_fail(int code, const char *fmt, ...)
  * return -1.  Numbers must be complete ("12x" is not 12), finite and in
  * [lo, hi]. */
 int cli_parse_long(const char *opt, const char *s, long lo, long hi, long *out);
+/* s as one of two words: *out 0 for a, 1 for b ("OPT must be A or B"). */
+int cli_parse_choice(const char *opt, const char *s, const char *a, const char *b, int *out);
 int cli_parse_double(const char *opt, const char *s, double lo, double hi, double *out);
 int cli_parse_vec3(const char *opt, const char *s, double lim, double out[3]);
 int cli_parse_size(const char *opt, const char *s, int *w, int *h);

@@ -373,10 +373,9 @@ int cmd_render(int argc, char **argv)
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--image-format")) {
             const char *v = cli_value(argc, argv, &i);
-            if (!v) rc = CLI_EXIT_USAGE;
-            else if (strcmp(v, "png") == 0) out_fmt = SILK_IMAGE_PNG;
-            else if (strcmp(v, "ppm") == 0) out_fmt = SILK_IMAGE_PPM;
-            else rc = cli_fail(CLI_EXIT_USAGE, "--image-format must be png or ppm (got \"%s\")", v);
+            int ppm;
+            if (!v || cli_parse_choice("--image-format", v, "png", "ppm", &ppm)) rc = CLI_EXIT_USAGE;
+            else out_fmt = ppm ? SILK_IMAGE_PPM : SILK_IMAGE_PNG;
         } else if (strcmp(a, "--compare") == 0) {
             compare = 1;
         } else if (cli_is(a, "--turntable")) {
