@@ -45,6 +45,15 @@ int64_t silk_raster_row(const silk_vec4 *c, int height);
 
 /* The coarse mesh as it is: one CORNER record per triangle corner. */
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err);
+/* Room in g (from the top of the arena) for the shares of ntris input
+ * triangles as they are, and when extra is not NULL extra_bytes more for
+ * the caller in *extra; g is emptied (no share, no curves or patches).  SILK_ERR_NOMEM, saying what
+ * the least frame needs, when it does not fit. */
+silk_status silk_frame_flat_room(silk_arena *a, uint32_t ntris, size_t extra_bytes, void **extra,
+                                 silk_frame_geom *g, silk_error *err);
+/* Input triangle t's share of a FLAT frame appended to g: its three
+ * CORNER records and one triangle over them. */
+void silk_frame_flat_emit_tri(silk_frame_geom *g, uint32_t t);
 
 /* The one policy for a frame that does not fit (flat.c): release the top
  * of the arena to mark, draw the coarse mesh into g, and say so in stats

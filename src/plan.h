@@ -21,8 +21,8 @@
  * The plan is all a frame keeps between its stages: the carrying edges,
  * their points, the perturbation.  One emitter, silk_remesh_emit_tri,
  * builds one input triangle's share of the frame from it (its own copies
- * of the records and curves it uses).  The renderer streams the shares,
- * rebuilding each whenever a band needs it (silk_frame_smooth_stream); a
+ * of the records and curves it uses).  The renderer draws share by share,
+ * rebuilding each whenever a band needs it (silk_frame_smooth_plan); a
  * stored frame (silk_frame_smooth, which lines need) is every share
  * appended into one buffer.  The records evaluate to the same bits and the
  * triangles come in the same order either way, so the pictures are
@@ -92,7 +92,7 @@ typedef struct silk_sil_frame {
     silk_vis_method vis;
 
     uint8_t *visible;        /* nnormals */
-    uint8_t *tri_state;      /* ntris, SILK_TS_* */
+    uint8_t *tri_state;      /* ntris, SILK_TS_*; read only after silhouette.c */
     uint32_t *edge_slot;     /* nedges: index into edges[], or SILK_SIL_NONE */
     uint32_t nsil;
 

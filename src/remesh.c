@@ -34,7 +34,7 @@
  * share of the frame (its corner records, its own copies of the records
  * and curves of its sides' chains, its segment's samples and centres, its
  * triangles), rebuilt from the plan alone (segments are recomputed from the
- * edges' points).  A streamed frame refills one share at a time; a stored
+ * edges' points).  The renderer refills one share at a time; a stored
  * frame is the shares of all input triangles appended into one buffer.
  * The plan counts what both cost (the largest share, the sum of all of
  * them), so that smooth.c can tell before emitting whether it fits; when it
@@ -206,11 +206,12 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
 silk_status silk_remesh_plan(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
-    /* What the frame costs: the most one input triangle becomes (a
-     * streamed frame's share), all of them (a stored frame), the
-     * perturbation's slots.  Segments (III-D) are made here and again
-     * where they are needed; a triangle without one is no silhouette
-     * triangle from here on. */
+    /* What the frame costs: the most one input triangle becomes (one
+     * share, what a frame drawn share by share holds), all of them (a
+     * stored frame), the perturbation's slots.  Segments (III-D) are made
+     * here and again where they are needed; silhouette.c gave every
+     * silhouette triangle the points its segment needs, and tri_state is
+     * only read from here on. */
     f->store_recs = 0;
     f->store_curves = 0;
     f->nsegs = 0;
@@ -222,9 +223,9 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     f->out_tris = m->ntris;
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg tmp, *s = NULL;
-        if (f->tri_state[t] & SILK_TS_SIL) {
-            if (silk_remesh_seg(f, t, &tmp)) { s = &tmp; f->nsegs++; }
-            else f->tri_state[t] = 0;
+        if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &tmp)) {
+            s = &tmp;
+            f->nsegs++;
         }
         tri_count tc;
         tri_cost(f, t, s, &tc);

@@ -10,9 +10,10 @@
  * memory is taken from the top of the arena and released before returning,
  * so frames can be rendered forever from one arena.
  *
- * FLAT and SMOOTH frames without lines are streamed instead (see "Streamed
- * frames" below): nothing but the silhouette plan is kept, and each input
- * triangle's share of the frame is rebuilt whenever a band needs it.
+ * FLAT and SMOOTH frames without lines are drawn share by share instead
+ * (see "Frames drawn share by share" below): nothing but the silhouette plan
+ * is kept, and each input triangle's share of the frame is rebuilt whenever
+ * a band needs it.
  *
  * A device that draws only FLAT and SMOOTH frames may build the core with
  * -DSILK_NO_REFERENCE_MODES: PN and BLEND (the comparison methods of
@@ -62,7 +63,7 @@ typedef struct frame {
     silk_vertex_out *line_cache;   /* the same for the lines' records */
     uint32_t *line_lift;      /* per line record (lines.c), or NULL */
     /* A frame is drawn in nparts parts, part(f, k) filling g and cache
-     * with part k: a streamed frame's parts are its input triangles'
+     * with part k: a frame drawn share by share has its input triangles'
      * shares, rebuilt one at a time; a stored frame is one part, all there. */
     uint32_t nparts;
     void (*part)(struct frame *f, uint32_t k);
@@ -89,7 +90,7 @@ static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
     silk_lines_apply_lift(out, f->line_lift ? f->line_lift[i] : 0);
 }
 
-/* ---- Streamed frames ------------------------------------------------------------
+/* ---- Frames drawn share by share ------------------------------------------------
  *
  * A FLAT or SMOOTH frame without lines is never stored.  The silhouette plan
  * (plan.h: carrying edges, their points, the perturbation) is made once
@@ -103,28 +104,26 @@ static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
  * the rows each input triangle can reach, and a band rebuilds only the
  * triangles that reach into it. */
 
-static int streamed(const silk_render_opts *o)
+static int by_shares(const silk_render_opts *o)
 {
     return o->lines == SILK_LINES_NONE && (o->mode == SILK_MODE_FLAT || o->mode == SILK_MODE_SMOOTH);
 }
 
-static size_t aligned(size_t n) { return (n + SILK_ARENA_ALIGN - 1) & ~(size_t)(SILK_ARENA_ALIGN - 1); }
+static void share_part(frame *f, uint32_t t);
 
-static void stream_part(frame *f, uint32_t t);
-
-static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
+static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                   const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
                                   silk_error *err)
 {
     f->nparts = m->ntris;
-    f->part = stream_part;
+    f->part = share_part;
     f->hal = h;
     f->geom.mesh = m;
     if (o->mode == SILK_MODE_SMOOTH) {
         if (o->tolerance_px <= 0)
             return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_smooth: tolerance must be positive");
         silk_arena_mark mark = silk_arena_top_mark(a);
-        f->smooth = silk_frame_smooth_stream(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->g) &&
+        f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->g) &&
                     (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
         if (f->smooth) {
             silk_remesh_stats(&f->sil, stats);
@@ -134,41 +133,25 @@ static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         }
         /* the plan does not fit: the coarse mesh, as a stored frame falls back */
         silk_arena_top_release(a, &mark);
-        memset(&f->g, 0, sizeof f->g);
         f->cache = NULL;
         silk_frame_stats_fell_back(stats, m->ntris);
     }
-    /* the coarse mesh: three CORNER records (zero-filled: kind CORNER) and one triangle at a time */
-    size_t free_bytes = silk_arena_free_bytes(a);
-    silk_frame_geom *g = &f->g;
-    g->vrec = silk_arena_array_top(a, 3, sizeof *g->vrec, SILK_MEM_FRAME);
-    g->tri = silk_arena_array_top(a, 3, sizeof *g->tri, SILK_MEM_FRAME);
-    g->tri_added = silk_arena_array_top(a, 1, 1, SILK_MEM_FRAME);
-    f->cache = silk_arena_array_top(a, 3, sizeof *f->cache, SILK_MEM_FRAME);
-    if (!g->vrec || !g->tri || !g->tri_added || !f->cache) {
-        size_t need = aligned(3 * sizeof *g->vrec) + aligned(3 * sizeof *g->tri) + aligned(1) +
-                      aligned(3 * sizeof *f->cache);
-        return silk_fail(err, SILK_ERR_NOMEM, "frame", 0,
-                         "arena too small for the frame: even the unsmoothed frame needs %lu bytes, %lu are free",
-                         (unsigned long)need, (unsigned long)free_bytes);
-    }
-    for (uint32_t k = 0; k < 3; k++) g->tri[k] = k;
-    g->nvrec = 3;
-    g->ntri = 1;
+    /* the coarse mesh, one input triangle's three CORNER records at a time */
+    void *cache;
+    silk_status st = silk_frame_flat_room(a, 1, 3 * sizeof *f->cache, &cache, &f->g, err);
+    if (st != SILK_OK) return st;
+    f->cache = cache;
     stats->tris_drawn = m->ntris;
     return SILK_OK;
 }
 
 /* Input triangle t's share into g, through the vertex stage into cache. */
-static void stream_part(frame *f, uint32_t t)
+static void share_part(frame *f, uint32_t t)
 {
     silk_frame_geom *g = &f->g;
-    if (f->smooth) {
-        g->nvrec = g->ntri = g->ncurve = 0;
-        silk_remesh_emit_tri(&f->sil, g, t);
-    } else {
-        for (uint32_t k = 0; k < 3; k++) g->vrec[k].a = 3 * t + k;
-    }
+    g->nvrec = g->ntri = g->ncurve = 0;
+    if (f->smooth) silk_remesh_emit_tri(&f->sil, g, t);
+    else silk_frame_flat_emit_tri(g, t);
     for (uint32_t i = 0; i < g->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
 }
 
@@ -178,12 +161,12 @@ static void stream_part(frame *f, uint32_t t)
  * subpixels.  A record behind the eye plane (w <= 0) may reach anywhere.
  * Without room for the rows every band rebuilds every triangle: slower,
  * the same pixels. */
-static void stream_rows(frame *f, silk_arena *a, int height)
+static void share_rows(frame *f, silk_arena *a, int height)
 {
     uint32_t n = f->geom.mesh->ntris;
     f->rows = silk_arena_array_top(a, 2 * (size_t)n, sizeof *f->rows, SILK_MEM_FRAME);
     for (uint32_t t = 0; f->rows && t < n; t++) {
-        stream_part(f, t);
+        share_part(f, t);
         int64_t lo = height, hi = -1;
         for (uint32_t i = 0; i < f->g.nvrec; i++) {
             const silk_vec4 *c = &f->cache[i].clip;
@@ -225,7 +208,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
                          "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
                          "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
     memset(f, 0, sizeof *f);
-    if (streamed(o)) return stream_prepare(f, a, m, v, h, o, stats, err);
+    if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
     f->nparts = 1;
     f->part = stored_part;
@@ -382,7 +365,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
     const int rows = band->rows;
-    if (st == SILK_OK && f.nparts > 1 && rows < band->height) stream_rows(&f, a, band->height);
+    if (st == SILK_OK && f.nparts > 1 && rows < band->height) share_rows(&f, a, band->height);
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;

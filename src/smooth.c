@@ -2,10 +2,11 @@
  * smooth.c - one frame of silhouette smoothing (paper section III, Fig. 7):
  * the plan - visibility and silhouette triangles, bridges and silhouette
  * points (silhouette.c), segments and what they cost (remesh.c), vertex
- * perturbation (perturb.c) - and then the emission (remesh.c), streamed one
- * input triangle at a time (silk_frame_smooth_stream, what the renderer
- * uses) or stored for the whole frame (silk_frame_smooth, for lines and for
- * callers that want the geometry; plan.h).
+ * perturbation (perturb.c) - and then the emission (remesh.c), one input
+ * triangle's share at a time (silk_frame_smooth_plan keeps the plan and
+ * room for one share, what the renderer uses) or stored for the whole
+ * frame (silk_frame_smooth, for lines and for callers that want the
+ * geometry; plan.h).
  *
  * Memory runs out gracefully, the same way for every frame: a plan (or a
  * stored frame's output) that does not fit turns the frame into the coarse
@@ -64,8 +65,8 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
     return SILK_OK;
 }
 
-int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                             silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local)
+int silk_frame_smooth_plan(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
+                           silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local)
 {
     silk_arena_mark mark = silk_arena_top_mark(a);
     if (make_plan(f, a, m, v, tolerance_px, vis) && silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves))

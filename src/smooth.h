@@ -1,6 +1,6 @@
 /*
- * smooth.h - internal: running the SMOOTH stages (smooth.c) for a streamed
- * frame.  silk_frame_smooth, the stored frame, is declared in frame.h.  Not
+ * smooth.h - internal: running the SMOOTH stages (smooth.c) for a frame
+ * drawn one input triangle's share at a time.  silk_frame_smooth, the stored frame, is declared in frame.h.  Not
  * installed.
  */
 #ifndef SILK_SMOOTH_H
@@ -8,12 +8,12 @@
 
 #include "plan.h"
 
-/* The plan of a streamed frame into f and room for one input triangle's
+/* The plan of a frame into f and room for one input triangle's
  * share in local, all from the top of the arena (the caller releases it;
  * silk_remesh_stats gives the frame's counts).  tolerance_px > 0 (the
  * caller checks it).  Returns 0 when it does not fit: then nothing is
  * left allocated and the caller draws the coarse mesh. */
-int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                             silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local);
+int silk_frame_smooth_plan(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
+                           silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local);
 
 #endif

@@ -171,9 +171,35 @@ const char *cli_value(int argc, char **argv, int *i)
     return argv[++*i];
 }
 
+int cli_parse_choice(const char *opt, const char *s, const char *a, const char *b, int *out)
+{
+    *out = strcmp(s, b) == 0;
+    if (*out || strcmp(s, a) == 0) return 0;
+    return cli_fail(-1, "%s must be %s or %s (got \"%s\")", opt, a, b, s);
+}
+
+int cli_help(const char *arg, void (*help)(FILE *))
+{
+    if (strcmp(arg, "--help") != 0 && strcmp(arg, "-h") != 0) return 0;
+    help(stdout);
+    return 1;
+}
+
+int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc)
+{
+    int r = cli_scene_option(o, argc, argv, i);
+    if (r < 0) *rc = CLI_EXIT_USAGE;
+    return r != 0;
+}
+
+int cli_unknown_option(const char *cmd, const char *arg)
+{
+    return cli_fail(CLI_EXIT_USAGE, "%s: unknown option %s (try silk %s --help)", cmd, arg, cmd);
+}
+
 int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path)
 {
-    if (arg[0] == '-' && arg[1]) return cli_fail(CLI_EXIT_USAGE, "%s: unknown option %s (try silk %s --help)", cmd, arg, cmd);
+    if (arg[0] == '-' && arg[1]) return cli_unknown_option(cmd, arg);
     if (*mesh_path) return cli_fail(CLI_EXIT_USAGE, "%s: one mesh at a time (got %s and %s)", cmd, *mesh_path, arg);
     *mesh_path = arg;
     return 0;
@@ -396,7 +422,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
 {
     char name[40];
     const char *arg = argv[*i], *opt = opt_name(arg, name, sizeof name), *v;
-    int r = 0;
+    int r = 0, c;
     if (!(group_of(arg) & o->groups)) return 0;   /* not this command's: it says "unknown option" */
 #define VALUE() do { if (!(v = cli_value(argc, argv, i))) return -1; } while (0)
     if (cli_is(arg, "--quiet")) {
@@ -414,14 +440,11 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         r = parse_fx(opt, v, 0, 180, &o->load.crease_deg);
     } else if (cli_is(arg, "--normals")) {
         VALUE();
-        if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
-        else if (strcmp(v, "file") == 0) o->load.normals = SILK_NORMALS_FILE;
-        else return cli_fail(-1, "--normals must be compute or file (got \"%s\")", v);
+        if (!(r = cli_parse_choice(opt, v, "compute", "file", &c)))
+            o->load.normals = c ? SILK_NORMALS_FILE : SILK_NORMALS_COMPUTE;
     } else if (cli_is(arg, "--orient")) {
         VALUE();
-        if (strcmp(v, "fix") == 0) o->load.orient = SILK_ORIENT_FIX;
-        else if (strcmp(v, "keep") == 0) o->load.orient = SILK_ORIENT_KEEP;
-        else return cli_fail(-1, "--orient must be fix or keep (got \"%s\")", v);
+        if (!(r = cli_parse_choice(opt, v, "fix", "keep", &c))) o->load.orient = c ? SILK_ORIENT_KEEP : SILK_ORIENT_FIX;
     } else if (cli_is(arg, "--visibility")) {
         VALUE();
         if (strcmp(v, "auto") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_AUTO;
@@ -463,9 +486,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         r = cli_parse_size(opt, v, &o->width, &o->height);
     } else if (cli_is(arg, "--format")) {
         VALUE();
-        if (strcmp(v, "rgb888") == 0) o->fmt = SILK_PIX_RGB888;
-        else if (strcmp(v, "rgb565") == 0) o->fmt = SILK_PIX_RGB565;
-        else return cli_fail(-1, "--format must be rgb888 or rgb565 (got \"%s\")", v);
+        if (!(r = cli_parse_choice(opt, v, "rgb888", "rgb565", &c))) o->fmt = c ? SILK_PIX_RGB565 : SILK_PIX_RGB888;
     } else if (cli_is(arg, "--mode")) {
         VALUE();
         uint32_t level;
@@ -480,9 +501,8 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         if (!r) o->render.level = (uint32_t)l;
     } else if (cli_is(arg, "--pn-normals")) {
         VALUE();
-        if (strcmp(v, "quadratic") == 0) o->render.pn_normals = SILK_PN_QUADRATIC;
-        else if (strcmp(v, "linear") == 0) o->render.pn_normals = SILK_PN_LINEAR;
-        else return cli_fail(-1, "--pn-normals must be quadratic or linear (got \"%s\")", v);
+        if (!(r = cli_parse_choice(opt, v, "quadratic", "linear", &c)))
+            o->render.pn_normals = c ? SILK_PN_LINEAR : SILK_PN_QUADRATIC;
     } else if (cli_is(arg, "--beta")) {
         VALUE();
         r = parse_fx(opt, v, 0, 1, &o->render.blend_beta);
@@ -497,9 +517,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         o->render.wire = 1;
     } else if (cli_is(arg, "--lines")) {
         VALUE();
-        if (strcmp(v, "over") == 0) o->render.lines = SILK_LINES_OVER;
-        else if (strcmp(v, "only") == 0) o->render.lines = SILK_LINES_ONLY;
-        else return cli_fail(-1, "--lines must be over or only (got \"%s\")", v);
+        if (!(r = cli_parse_choice(opt, v, "over", "only", &c))) o->render.lines = c ? SILK_LINES_ONLY : SILK_LINES_OVER;
     } else if (strcmp(arg, "--lines-polygonal") == 0) {
         o->render.lines_polygonal = 1;
         if (!o->render.lines) o->render.lines = SILK_LINES_OVER;
@@ -511,9 +529,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         r = cli_parse_double(opt, v, -90, 90, &o->pitch);
     } else if (cli_is(arg, "--up-axis")) {
         VALUE();
-        if (strcmp(v, "y") == 0) o->up_axis_z = 0;
-        else if (strcmp(v, "z") == 0) o->up_axis_z = 1;
-        else return cli_fail(-1, "--up-axis must be y or z (got \"%s\")", v);
+        if (!(r = cli_parse_choice(opt, v, "y", "z", &c))) o->up_axis_z = c;
     } else if (cli_is(arg, "--color")) {
         VALUE();
         r = cli_parse_rgb(opt, v, &o->look.color);

@@ -58,6 +58,8 @@ int cli_fail(int code, const char *fmt, ...)
  * return -1.  Numbers must be complete ("12x" is not 12), finite and in
  * [lo, hi]. */
 int cli_parse_long(const char *opt, const char *s, long lo, long hi, long *out);
+/* s as one of two words: *out 0 for a, 1 for b ("OPT must be A or B"). */
+int cli_parse_choice(const char *opt, const char *s, const char *a, const char *b, int *out);
 int cli_parse_double(const char *opt, const char *s, double lo, double hi, double *out);
 int cli_parse_vec3(const char *opt, const char *s, double lim, double out[3]);
 int cli_parse_size(const char *opt, const char *s, int *w, int *h);
@@ -232,6 +234,15 @@ silk_fx cli_fx_from_double(double v);
 /* The centre of the mesh's bounding box (into c) and the radius about it
  * that holds every vertex, 5% to spare; 1 for a mesh of one point. */
 double cli_mesh_radius(const silk_mesh *m, double c[3]);
+
+/* The head of every command's option loop.  cli_help: whether arg is
+ * --help or -h, after printing help(stdout) (the command then exits 0).
+ * cli_scene_arg: whether argv[*i] was a scene option of o (consumed; *rc
+ * set to CLI_EXIT_USAGE when its value was bad).  cli_unknown_option: the
+ * usage error for an option no one took. */
+int cli_help(const char *arg, void (*help)(FILE *));
+int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
+int cli_unknown_option(const char *cmd, const char *arg);
 
 /* An argument of `silk CMD` that no option took: the one mesh (*mesh_path),
  * or the usage error of an unknown option or a second mesh.  Returns 0 or

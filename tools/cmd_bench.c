@@ -815,7 +815,7 @@ int cmd_bench(int argc, char **argv)
             VALUE();
             c.dump = v;
         } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "bench: unknown option %s (try silk bench --help)", a);
+            rc = cli_unknown_option("bench", a);
         } else {
             coarse[n++] = a;
         }

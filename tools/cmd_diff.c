@@ -128,17 +128,15 @@ int cmd_diff(int argc, char **argv)
     uint32_t bg = 0xFFFFFF;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        } else if (cli_is(a, "--bg")) {
+        if (cli_help(a, help)) return 0;
+        if (cli_is(a, "--bg")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_rgb("--bg", v, &bg)) rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--json") == 0) {
             json = 1;
         } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "diff: unknown option %s (try silk diff --help)", a);
+            rc = cli_unknown_option("diff", a);
         } else if (nfiles == 2) {
             rc = cli_fail(CLI_EXIT_USAGE, "diff: two images only (got a third, %s)", a);
         } else {

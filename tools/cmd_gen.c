@@ -121,7 +121,7 @@ static int gen(int argc, char **argv)
         const gen_option *g = NULL;
         for (size_t k = 0; k < sizeof gen_options / sizeof gen_options[0]; k++)
             if (cli_is(a, gen_options[k].name)) g = &gen_options[k];
-        if (!g) return cli_fail(CLI_EXIT_USAGE, "gen: unknown option %s (try silk gen --help)", a);
+        if (!g) return cli_unknown_option("gen", a);
         if (!(g->shapes & BIT(shape)))
             return cli_fail(CLI_EXIT_USAGE, "gen: %s does not apply to a %s", g->name, gen_shape_name(shape));
         if (!(v = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;

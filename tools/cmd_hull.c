@@ -96,15 +96,13 @@ int cmd_hull(int argc, char **argv)
     int rc = 0, k;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
+        if (cli_help(a, help)) return 0;
+        if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
             if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--inner") == 0) {
             ho.inner = 1;
         } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "hull: unknown option %s (try silk hull --help)", a);
+            rc = cli_unknown_option("hull", a);
         } else if (!in) {
             in = a;
         } else {

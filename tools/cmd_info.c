@@ -190,17 +190,12 @@ int cmd_info(int argc, char **argv)
     int rc = 0, json = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        }
+        if (cli_help(a, help)) return 0;
         if (strcmp(a, "--json") == 0) {
             json = 1;
             continue;
         }
-        int r = cli_scene_option(&o, argc, argv, &i);
-        if (r < 0) rc = CLI_EXIT_USAGE;
-        if (r != 0) continue;
+        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
         rc = cli_mesh_arg("info", a, &o.mesh_path);
     }
     if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "info: no mesh given (silk info MESH)");

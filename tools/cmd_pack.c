@@ -359,10 +359,7 @@ int cmd_pack(int argc, char **argv)
     int neyes = 0, nviews = 0, rc = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        }
+        if (cli_help(a, help)) return 0;
         if (cli_is(a, "--eye")) {
             /* Each --eye is one camera; the scene option keeps only the last. */
             if (neyes == PACK_MAX_EYES) {
@@ -374,9 +371,7 @@ int cmd_pack(int argc, char **argv)
             neyes++;
             continue;
         }
-        int r = cli_scene_option(&o, argc, argv, &i);
-        if (r < 0) rc = CLI_EXIT_USAGE;
-        if (r != 0) continue;
+        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
         if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--views")) {

@@ -248,10 +248,7 @@ int cmd_profile(int argc, char **argv)
     int check = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        }
+        if (cli_help(a, help)) return 0;
         if (cli_is(a, "--board")) {
             if (!(v = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
             if (strcmp(v, SILK_BOARD_NAME) != 0)

@@ -367,21 +367,15 @@ int cmd_render(int argc, char **argv)
     se.views = 1;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        }
-        int r = cli_scene_option(&o, argc, argv, &i);
-        if (r < 0) rc = CLI_EXIT_USAGE;
-        if (r != 0) continue;
+        if (cli_help(a, help)) return 0;
+        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
         if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--image-format")) {
             const char *v = cli_value(argc, argv, &i);
-            if (!v) rc = CLI_EXIT_USAGE;
-            else if (strcmp(v, "png") == 0) out_fmt = SILK_IMAGE_PNG;
-            else if (strcmp(v, "ppm") == 0) out_fmt = SILK_IMAGE_PPM;
-            else rc = cli_fail(CLI_EXIT_USAGE, "--image-format must be png or ppm (got \"%s\")", v);
+            int ppm;
+            if (!v || cli_parse_choice("--image-format", v, "png", "ppm", &ppm)) rc = CLI_EXIT_USAGE;
+            else out_fmt = ppm ? SILK_IMAGE_PPM : SILK_IMAGE_PNG;
         } else if (strcmp(a, "--compare") == 0) {
             compare = 1;
         } else if (cli_is(a, "--turntable")) {

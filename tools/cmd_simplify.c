@@ -202,10 +202,8 @@ int cmd_simplify(int argc, char **argv)
     int rc = 0, k;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
+        if (cli_help(a, help)) return 0;
+        if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
             if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--crease")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--crease", v, 0, 180, &so.crease_deg))
@@ -214,7 +212,7 @@ int cmd_simplify(int argc, char **argv)
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
                 rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "simplify: unknown option %s (try silk simplify --help)", a);
+            rc = cli_unknown_option("simplify", a);
         } else if (!in) {
             in = a;
         } else if (!args.out) {

@@ -554,13 +554,8 @@ int cmd_view(int argc, char **argv)
     int rc = 0, spin = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *val;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        }
-        int r = cli_scene_option(&o, argc, argv, &i);
-        if (r < 0) rc = CLI_EXIT_USAGE;
-        if (r != 0) continue;
+        if (cli_help(a, help)) return 0;
+        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
         if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(pattern = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
             else if (pattern_check(pattern) < 0)

@@ -350,55 +350,66 @@ static void join_rings(gen_mesh *m, uint32_t r0, uint32_t r1, int n)
     }
 }
 
-/* North pole, rings from north to south (theta down the sphere), south pole. */
+/* A closed surface of revolution around the y axis: a pole at height
+ * top_y, rings 0..nrings-1 (ring k: radius and height from ring(p, k)), a
+ * pole at bottom_y, joined in that order; s scales the vertices as
+ * put_vertex does. */
+typedef void ring_fn(const gen_params *p, int k, double *radius, double *y);
+
+static void lathe(const gen_params *p, gen_mesh *m, double top_y, double bottom_y, double s, int nrings,
+                  ring_fn *ring)
+{
+    int n = p->segments;
+    uint32_t top = put_vertex(m, 0, top_y, 0, s), prev = 0;
+    for (int k = 0; k < nrings; k++) {
+        double r, y;
+        ring(p, k, &r, &y);
+        uint32_t cur = put_circle(m, n, r, y, s);
+        if (k == 0) join_point_ring(m, top, cur, n);
+        else join_rings(m, prev, cur, n);
+        prev = cur;
+    }
+    uint32_t bottom = put_vertex(m, 0, bottom_y, 0, s);
+    join_ring_point(m, prev, bottom, n);
+}
+
+/* Sphere: rings from north to south (theta down the sphere). */
+static void sphere_ring(const gen_params *p, int k, double *r, double *y)
+{
+    double R = p->radius, th = PI * (k + 1) / p->bands;
+    *r = R * sin(th);
+    *y = R * cos(th);
+}
+
 static void build_sphere(const gen_params *p, gen_mesh *m)
 {
-    double R = p->radius;
-    int n = p->segments, b = p->bands;
-    uint32_t north = put_vertex(m, 0, R, 0, R), prev = 0;
-    for (int k = 1; k < b; k++) {
-        double th = PI * k / b;
-        uint32_t ring = put_circle(m, n, R * sin(th), R * cos(th), R);
-        if (k == 1) join_point_ring(m, north, ring, n);
-        else join_rings(m, prev, ring, n);
-        prev = ring;
-    }
-    uint32_t south = put_vertex(m, 0, -R, 0, R);
-    join_ring_point(m, prev, south, n);
+    lathe(p, m, p->radius, -p->radius, p->radius, p->bands - 1, sphere_ring);
 }
 
-/* Apex, side rings down to the rim, base centre: the rim ring is shared by
- * the side and the base, which meet there at a sharp angle. */
+/* Cone: apex, side rings down to the rim, base centre: the rim ring is
+ * shared by the side and the base, which meet there at a sharp angle. */
+static void cone_ring(const gen_params *p, int k, double *r, double *y)
+{
+    double f = (double)(k + 1) / p->bands;   /* 0 at the apex, 1 at the rim */
+    *r = p->radius * f;
+    *y = p->height * (1 - f);
+}
+
 static void build_cone(const gen_params *p, gen_mesh *m)
 {
-    double R = p->radius, H = p->height, s = fmax(R, H);
-    int n = p->segments, b = p->bands;
-    uint32_t apex = put_vertex(m, 0, H, 0, s), prev = 0;
-    for (int k = 1; k <= b; k++) {
-        double f = (double)k / b;   /* 0 at the apex, 1 at the rim */
-        uint32_t ring = put_circle(m, n, R * f, H * (1 - f), s);
-        if (k == 1) join_point_ring(m, apex, ring, n);
-        else join_rings(m, prev, ring, n);
-        prev = ring;
-    }
-    uint32_t base = put_vertex(m, 0, 0, 0, s);
-    join_ring_point(m, prev, base, n);
+    lathe(p, m, p->height, 0, fmax(p->radius, p->height), p->bands, cone_ring);
 }
 
-/* Top centre, top rim, side rings, bottom rim, bottom centre. */
+/* Cylinder: top centre, top rim, side rings, bottom rim, bottom centre. */
+static void cylinder_ring(const gen_params *p, int k, double *r, double *y)
+{
+    *r = p->radius;
+    *y = p->height * (p->bands - k) / p->bands;
+}
+
 static void build_cylinder(const gen_params *p, gen_mesh *m)
 {
-    double R = p->radius, H = p->height, s = fmax(R, H);
-    int n = p->segments, b = p->bands;
-    uint32_t top = put_vertex(m, 0, H, 0, s), prev = 0;
-    for (int k = 0; k <= b; k++) {
-        uint32_t ring = put_circle(m, n, R, H * (b - k) / b, s);
-        if (k == 0) join_point_ring(m, top, ring, n);
-        else join_rings(m, prev, ring, n);
-        prev = ring;
-    }
-    uint32_t bottom = put_vertex(m, 0, 0, 0, s);
-    join_ring_point(m, prev, bottom, n);
+    lathe(p, m, p->height, 0, fmax(p->radius, p->height), p->bands + 1, cylinder_ring);
 }
 
 /* Rings around the y axis, one per angle theta around the tube; y = -r sin

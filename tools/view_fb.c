@@ -201,15 +201,10 @@ int view_fb(int argc, char **argv)
     int rc = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *val;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        }
+        if (cli_help(a, help)) return 0;
         if (cli_is(a, "--size")) v.have_size = 1;
         if (cli_is(a, "--format")) v.have_format = 1;
-        int r = cli_scene_option(&o, argc, argv, &i);
-        if (r < 0) rc = CLI_EXIT_USAGE;
-        if (r != 0) continue;
+        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
         if (cli_is(a, "--fb")) {
             if (!(v.fb_dev = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--fb-file")) {
