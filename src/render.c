@@ -294,7 +294,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
      * In reverse order: of fragments at equal depth the first drawn keeps
      * the pixel, as in a single pass.  It doubles the per-triangle work, so
      * only where triangles are large (16 pixels on average or more). */
-    uint64_t ntri = f->part == stream_part ? f->geom.mesh->ntris : g->ntri;
+    uint64_t ntri = f->part == share_part ? f->geom.mesh->ntris : g->ntri;
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height;
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
