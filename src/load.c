@@ -18,7 +18,7 @@ void silk_load_opts_default(silk_load_opts *o)
     o->scale.mant = 1;
     o->scale.exp10 = 0;
     o->crease_deg = SILK_DEFAULT_CREASE_DEG;
-    o->normals = SILK_NORMALS_COMPUTE;
+    o->normals = SILK_NORMALS_AUTO;
 }
 
 silk_status silk_load_mesh(const void *data, size_t len, const char *name,

@@ -248,7 +248,7 @@ static void file_normals(const silk_mesh *m, const silk_mesh_input *in, const si
 
 static int have_file_normals(const silk_mesh_input *in, const silk_load_opts *opts)
 {
-    if (opts->normals != SILK_NORMALS_FILE || !in->file_normal || !in->tri_file_normal || in->nfile_normals == 0)
+    if (opts->normals == SILK_NORMALS_COMPUTE || !in->file_normal || !in->tri_file_normal || in->nfile_normals == 0)
         return 0;
     for (uint32_t c = 0; c < 3 * in->ntris; c++)
         if (in->tri_file_normal[c] == SILK_NO_INDEX) return 0;
@@ -265,6 +265,7 @@ silk_status silk_build_normals(const silk_mesh_input *in, const silk_load_opts *
     }
     uint32_t nc = 3 * m->ntris, nv = m->nverts;
     int from_file = have_file_normals(in, opts);
+    m->normals_used = from_file ? SILK_NORMALS_FILE : SILK_NORMALS_COMPUTE;
     silk_status st = SILK_OK;
     silk_arena_mark mark = silk_arena_top_mark(a);
 

@@ -225,7 +225,9 @@ void cli_print_scene_help(FILE *f)
             "                       model coordinates must end up within +-1024)\n"
             "  --crease DEG         dihedral angle above which an edge is a sharp feature\n"
             "                       (0..180, default %g)\n"
-            "  --normals compute|file  shading normals computed (default) or the file's\n"
+            "  --normals auto|compute|file  shading normals: auto (default) the file's\n"
+            "                       where every corner has one, computed otherwise;\n"
+            "                       compute always computed; file the same as auto\n"
             "  --visibility auto|brute|gauss  visibility of normals: auto builds the\n"
             "                       Gaussian-sphere hierarchy at load and uses it where it\n"
             "                       pays (default); brute tests every normal; gauss always\n"
@@ -289,9 +291,10 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         r = parse_fx(opt, v, 0, 180, &o->load.crease_deg);
     } else if (cli_is(arg, "--normals")) {
         VALUE();
-        if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
+        if (strcmp(v, "auto") == 0) o->load.normals = SILK_NORMALS_AUTO;
+        else if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
         else if (strcmp(v, "file") == 0) o->load.normals = SILK_NORMALS_FILE;
-        else return cli_fail(-1, "--normals must be compute or file (got \"%s\")", v);
+        else return cli_fail(-1, "--normals must be auto, compute or file (got \"%s\")", v);
     } else if (cli_is(arg, "--visibility")) {
         VALUE();
         if (strcmp(v, "auto") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_AUTO;

@@ -14,6 +14,7 @@
 #include "cli.h"
 #include "measure.h"
 #include "simplify.h"
+#include "surface.h"
 #include "../platform/platform.h"
 
 static void help(FILE *f)
@@ -32,6 +33,10 @@ static void help(FILE *f)
             "  --triangles N       the triangle count to reach (at least 4)\n"
             "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
             "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
+            "  --for flat|smooth   flat: quadric-optimal vertex placement [default];\n"
+            "                      smooth: the mesh smooth mode wants: every vertex stays a\n"
+            "                      vertex of IN (on its surface), and OUT carries IN's\n"
+            "                      normals there (vn), split along feature edges\n"
             "  --scale S           multiply coordinates by S while reading (as silk render)\n"
             "\n"
             "example:\n"
@@ -85,7 +90,7 @@ static int load(const char *path, silk_decimal scale, simp_mesh *out, int *close
     return rc;
 }
 
-static int write_obj(const simp_mesh *m, const char *in, const char *path, uint32_t target)
+static int write_obj(const simp_mesh *m, const surf_normals *sn, const char *in, const char *path, uint32_t target)
 {
     silk_outfile o;
     silk_error err;
@@ -95,11 +100,22 @@ static int write_obj(const simp_mesh *m, const char *in, const char *path, uint3
         if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         f = o.fp;
     }
-    fprintf(f, "# silk simplify %s --triangles %u: %u triangles, %u vertices\n", in, target, m->ntris, m->nverts);
+    fprintf(f, "# silk simplify %s --triangles %u%s: %u triangles, %u vertices\n", in, target,
+            sn ? " --for smooth" : "", m->ntris, m->nverts);
     for (uint32_t i = 0; i < m->nverts; i++)
         fprintf(f, "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
-    for (uint32_t i = 0; i < m->ntris; i++)
-        fprintf(f, "f %u %u %u\n", m->tri[3 * i] + 1, m->tri[3 * i + 1] + 1, m->tri[3 * i + 2] + 1);
+    if (sn)
+        for (uint32_t i = 0; i < sn->nnormals; i++)
+            fprintf(f, "vn %.9g %.9g %.9g\n", sn->normal[3 * i], sn->normal[3 * i + 1], sn->normal[3 * i + 2]);
+    for (uint32_t i = 0; i < m->ntris; i++) {
+        const uint32_t *t = &m->tri[3 * i];
+        if (sn) {
+            const uint32_t *n = &sn->tri_normal[3 * i];
+            fprintf(f, "f %u//%u %u//%u %u//%u\n", t[0] + 1, n[0] + 1, t[1] + 1, n[1] + 1, t[2] + 1, n[2] + 1);
+        } else {
+            fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
+        }
+    }
     if (to_stdout) return fflush(stdout) == 0 ? 0 : cli_fail(CLI_EXIT_INPUT, "cannot write to stdout");
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
@@ -115,14 +131,21 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
     }
     simp_stats st;
     simp_topology topo;
-    if (simp_run(&m, so, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
+    simp_mesh fine = { 0 };
+    surf_normals sn = { 0 };
+    if (so->subset && simp_copy(&m, &fine) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    else if (simp_run(&m, so, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
     else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
-    else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
+    else if (so->subset && surf_normals_compute(&fine, &m, so->crease_deg, &sn) != 0)
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    if (rc) {
+        /* reported */
+    } else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
         /* the checks in simplify.c should make this impossible */
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
                       "%u non-manifold vertices, %u misoriented edges); not written",
                       in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
-    else if ((rc = write_obj(&m, in, out, so->target_tris)) == 0) {
+    else if ((rc = write_obj(&m, so->subset ? &sn : NULL, in, out, so->target_tris)) == 0) {
         if (strcmp(out, "-") != 0)
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
                    m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);
@@ -131,6 +154,8 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
                             "surface\n", in, m.ntris);
     }
     simp_free(&m);
+    simp_free(&fine);
+    surf_normals_free(&sn);
     return rc;
 }
 
@@ -156,6 +181,11 @@ int cmd_simplify(int argc, char **argv)
         } else if (cli_is(a, "--feature-weight")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
                 rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--for")) {
+            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+            else if (strcmp(v, "smooth") == 0) so.subset = 1;
+            else if (strcmp(v, "flat") == 0) so.subset = 0;
+            else rc = cli_fail(CLI_EXIT_USAGE, "--for must be flat or smooth (got \"%s\")", v);
         } else if (cli_is(a, "--scale")) {
             const char *end;
             if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;

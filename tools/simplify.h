@@ -11,6 +11,11 @@
  * over or squashed to a sliver, and a closed edge never pinching two
  * boundary vertices together.  A closed manifold input stays closed and
  * manifold; every collapse then removes exactly two triangles.
+ *
+ * With subset placement (simp_opts.subset, `silk simplify --for smooth`)
+ * an edge collapses onto whichever end has the smaller quadric error, never
+ * to a new point: every output vertex is an input vertex, so it lies on
+ * the detailed surface exactly and simp_mesh.origin names it there.
  */
 #ifndef SILK_TOOLS_SIMPLIFY_H
 #define SILK_TOOLS_SIMPLIFY_H
@@ -21,12 +26,14 @@ typedef struct simp_mesh {
     uint32_t nverts, ntris;
     double *pos;             /* 3 * nverts, malloc'd */
     uint32_t *tri;           /* 3 * ntris, malloc'd, counter-clockwise from outside */
+    uint32_t *origin;        /* after simp_run: each vertex's index in the input, malloc'd */
 } simp_mesh;
 
 typedef struct simp_opts {
     uint32_t target_tris;    /* stop at this many triangles or fewer */
     double crease_deg;       /* dihedral angle above which an edge is a feature */
     double feature_weight;   /* constraint planes' weight against the faces' (area-weighted) */
+    int subset;              /* collapse only onto one of the edge's ends (vertices stay input vertices) */
 } simp_opts;
 
 /* crease 60 degrees (as silk's loader), feature weight 100. */
@@ -57,6 +64,9 @@ typedef struct simp_topology {
 } simp_topology;
 int simp_topology_check(const simp_mesh *m, simp_topology *t);
 
+/* A copy of m's positions and triangles (origin left NULL): 0, or -1 when
+ * out of memory. */
+int simp_copy(const simp_mesh *m, simp_mesh *out);
 void simp_free(simp_mesh *m);
 
 #endif

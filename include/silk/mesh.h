@@ -55,6 +55,14 @@ typedef struct silk_feature_seg {
 
 struct silk_vis;   /* Gaussian-sphere hierarchy, silk/visibility.h */
 
+/* Where the shading normals come from (silk_load_opts.normals) and, in
+ * silk_mesh.normals_used, where they came from. */
+typedef enum silk_normals_source {
+    SILK_NORMALS_AUTO = 0,    /* the file's where every corner has one, computed otherwise (default) */
+    SILK_NORMALS_COMPUTE,     /* angle-weighted, split at feature edges (paper III-B) */
+    SILK_NORMALS_FILE         /* the file's vn / nx ny nz: the same rule as AUTO, its older name */
+} silk_normals_source;
+
 typedef struct silk_mesh {
     uint32_t nverts, ntris, nnormals, nuvs, nedges;
     uint32_t nfeature_edges, nboundary_edges, nnonmanifold_edges, ndegenerate_tris;
@@ -82,12 +90,9 @@ typedef struct silk_mesh {
     const struct silk_vis *vis;    /* visibility hierarchy, or NULL (built on request) */
 
     silk_vec3 bbox_min, bbox_max;
+    silk_normals_source normals_used;   /* COMPUTE or FILE: what the loader did */
 } silk_mesh;
 
-typedef enum silk_normals_source {
-    SILK_NORMALS_COMPUTE = 0, /* angle-weighted, split at feature edges (paper III-B) */
-    SILK_NORMALS_FILE         /* the file's vn / nx ny nz, where every corner has one */
-} silk_normals_source;
 
 typedef struct silk_load_opts {
     silk_decimal scale;       /* coordinates are multiplied by this before rounding; {1,0} = none */
