@@ -9,6 +9,7 @@
  */
 #include <string.h>
 #include "load.h"
+#include "silk/model.h"
 
 /* The dihedral angle above which an edge is a crease (docs/formats.md). */
 const silk_fx SILK_DEFAULT_CREASE_DEG = SILK_FX_C(60, 1);
@@ -25,6 +26,7 @@ silk_status silk_load_mesh(const void *data, size_t len, const char *name,
                            const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err)
 {
     const unsigned char *p = data;
+    if (silk_is_model(data, len)) return silk_load_model(data, len, name, opts, a, out, err);
     if (len >= 4 && memcmp(p, "ply", 3) == 0 && (p[3] == '\n' || p[3] == '\r'))
         return silk_load_ply(data, len, name, opts, a, out, err);
     return silk_load_obj(data, len, name, opts, a, out, err);

@@ -44,7 +44,7 @@ static void help(FILE *f)
 }
 
 /* The mesh as silk loads it, positions widened to double. */
-static int load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
+int simplify_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
 {
     uint8_t *data;
     size_t len;
@@ -125,7 +125,7 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
 {
     simp_mesh m;
     int closed = 0, rc;
-    if ((rc = load(in, scale, &m, &closed)) != 0) {
+    if ((rc = simplify_load(in, scale, &m, &closed)) != 0) {
         simp_free(&m);
         return rc;
     }

@@ -10,6 +10,7 @@
 
 int cmd_diff(int argc, char **argv);
 int cmd_simplify(int argc, char **argv);
+int cmd_prepare(int argc, char **argv);
 int cmd_bench_modes(int argc, char **argv);
 
 #endif

@@ -25,6 +25,8 @@ static const command commands[] = {
     { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
     { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility" },
+    { "prepare", cmd_prepare, "prepare FINE -o MODEL.silk --triangles N",
+      "a detailed mesh made into a prepared model for silk" },
     { "simplify", cmd_simplify, "simplify IN OUT --triangles N", "fewer triangles, by quadric edge collapse" },
     { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
     { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },

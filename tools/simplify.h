@@ -21,6 +21,7 @@
 #define SILK_TOOLS_SIMPLIFY_H
 
 #include <stdint.h>
+#include "silk/fixed.h"
 
 typedef struct simp_mesh {
     uint32_t nverts, ntris;
@@ -68,5 +69,10 @@ int simp_topology_check(const simp_mesh *m, simp_topology *t);
  * out of memory. */
 int simp_copy(const simp_mesh *m, simp_mesh *out);
 void simp_free(simp_mesh *m);
+
+/* tools/cmd_simplify.c: the mesh at path as silk's loader reads it (any
+ * format, --scale applied), positions widened to double; whether it is
+ * closed and manifold.  0, or the exit status after a one-line error. */
+int simplify_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold);
 
 #endif

@@ -110,7 +110,8 @@ silk_status silk_load_obj(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
 silk_status silk_load_ply(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
-/* Picks the format from the content ("ply\n" magic) and falls back to OBJ. */
+/* Picks the format from the content (a prepared model's signature, see
+ * silk/model.h; "ply\n"; otherwise OBJ). */
 silk_status silk_load_mesh(const void *data, size_t len, const char *name,
                            const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
 
