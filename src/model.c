@@ -258,7 +258,12 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
         }
         for (uint32_t c = 0; c < 3 * l.ntris; c++) in.tri_file_normal[c] = (silk_index)rd32(d + l.tri_normal + 4 * (size_t)c);
     }
-    st = silk_mesh_build(&in, name, opts, a, out, err);
+    /* The model's normals say where the detailed surface has creases (an
+     * edge across which they differ is a feature); the coarse dihedral
+     * angle, large wherever the coarse mesh is coarse, is not consulted. */
+    silk_load_opts own = *opts;
+    if (want_n) own.crease_deg = SILK_FX_C(180, 1);
+    st = silk_mesh_build(&in, name, &own, a, out, err);
     silk_arena_top_release(a, &mark);
     if (st != SILK_OK) {
         silk_ld_arena_restore(a, &saved);

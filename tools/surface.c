@@ -64,9 +64,73 @@ static uint32_t corner_of(const simp_mesh *m, uint32_t f, uint32_t v)
     return 3 * f;
 }
 
+/* The crease groups of the fine faces around fine vertex f (at most
+ * SURF_MAX_FAN of them, the rest left in their own group): faces joined
+ * across an edge at f whose dihedral angle stays below the crease angle.
+ * grp[i] names the group of face vface[start + i]; dir[3 * g] sums the
+ * angle-weighted unit normals of group g.  Returns the number of faces. */
+#define SURF_MAX_FAN 64
+static uint32_t fine_groups(const simp_mesh *fine, const uint32_t *vstart, const uint32_t *vface, uint32_t f,
+                            double cos_crease, uint32_t grp[SURF_MAX_FAN], double dir[3 * SURF_MAX_FAN])
+{
+    uint32_t n = vstart[f + 1] - vstart[f];
+    if (n > SURF_MAX_FAN) n = SURF_MAX_FAN;
+    double nrm[3 * SURF_MAX_FAN];
+    int ok[SURF_MAX_FAN];
+    for (uint32_t i = 0; i < n; i++) {
+        grp[i] = i;
+        ok[i] = face_unit(fine, vface[vstart[f] + i] / 3, &nrm[3 * i]);
+    }
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = i + 1; j < n; j++) {
+            if (!ok[i] || !ok[j] || dot3(&nrm[3 * i], &nrm[3 * j]) < cos_crease) continue;
+            const uint32_t *p = &fine->tri[vface[vstart[f] + i] / 3 * 3], *q = &fine->tri[vface[vstart[f] + j] / 3 * 3];
+            int shared = 0;   /* a second vertex in both: the faces meet along an edge at f */
+            for (int x = 0; x < 3; x++)
+                for (int y = 0; y < 3; y++) shared |= p[x] != f && p[x] == q[y];
+            if (!shared) continue;
+            uint32_t ri = group_root(grp, i), rj = group_root(grp, j);
+            if (ri != rj) grp[ri > rj ? ri : rj] = ri < rj ? ri : rj;
+        }
+    for (uint32_t i = 0; i < 3 * n; i++) dir[i] = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        grp[i] = group_root(grp, i);
+        if (!ok[i]) continue;
+        uint32_t fc = vface[vstart[f] + i];
+        double w = corner_angle(fine, fc / 3, (int)(fc % 3));
+        for (int k = 0; k < 3; k++) dir[3 * grp[i] + k] += w * nrm[3 * i + k];
+    }
+    return n;
+}
+
+/* For every coarse corner, the fine crease group at its vertex that its
+ * face faces most nearly (the index of that group's root face). */
+static void corner_fine_groups(const simp_mesh *fine, const simp_mesh *c, const double *fn, const uint32_t *vstart,
+                               const uint32_t *vface, const uint32_t *cstart, const uint32_t *vcorner,
+                               double cos_crease, uint32_t *cgrp)
+{
+    uint32_t grp[SURF_MAX_FAN];
+    double dir[3 * SURF_MAX_FAN];
+    for (uint32_t v = 0; v < c->nverts; v++) {
+        uint32_t n = fine_groups(fine, vstart, vface, c->origin[v], cos_crease, grp, dir);
+        for (uint32_t i = cstart[v]; i < cstart[v + 1]; i++) {
+            uint32_t corner = vcorner[i], best_g = 0;
+            double best = -INFINITY;
+            for (uint32_t g = 0; g < n; g++) {
+                if (grp[g] != g) continue;
+                double l = len3(&dir[3 * g]);
+                double d = l > 0 ? dot3(&dir[3 * g], &fn[3 * (corner / 3)]) / l : -2;
+                if (d > best) best = d, best_g = g;
+            }
+            cgrp[corner] = best_g;
+        }
+    }
+}
+
 /* Corners of the coarse mesh joined across every edge with exactly two
- * faces whose dihedral angle stays below the crease angle. */
-static int group_corners(const simp_mesh *c, const double *fn, double cos_crease, uint32_t *parent)
+ * faces, unless the detailed surface has a crease along it: at both of
+ * its ends the two faces fall into different fine crease groups. */
+static int group_corners(const simp_mesh *c, const uint32_t *cgrp, uint32_t *parent)
 {
     size_t nc = 3 * (size_t)c->ntris;
     side *h = malloc((nc ? nc : 1) * sizeof *h);
@@ -82,10 +146,12 @@ static int group_corners(const simp_mesh *c, const double *fn, double cos_crease
         while (j < nc && h[j].a == h[i].a && h[j].b == h[i].b) j++;
         if (j - i == 2) {
             uint32_t f0 = h[i].corner / 3, f1 = h[i + 1].corner / 3;
-            if (dot3(&fn[3 * f0], &fn[3 * f1]) >= cos_crease)
+            uint32_t a0 = corner_of(c, f0, h[i].a), a1 = corner_of(c, f1, h[i].a);
+            uint32_t b0 = corner_of(c, f0, h[i].b), b1 = corner_of(c, f1, h[i].b);
+            int crease = cgrp[a0] != cgrp[a1] && cgrp[b0] != cgrp[b1];
+            if (!crease)
                 for (int end = 0; end < 2; end++) {
-                    uint32_t v = end ? h[i].b : h[i].a;
-                    uint32_t r0 = group_root(parent, corner_of(c, f0, v)), r1 = group_root(parent, corner_of(c, f1, v));
+                    uint32_t r0 = group_root(parent, end ? b0 : a0), r1 = group_root(parent, end ? b1 : a1);
                     if (r0 != r1) parent[r0 < r1 ? r1 : r0] = r0 < r1 ? r0 : r1;
                 }
         }
@@ -104,20 +170,19 @@ int surf_normals_compute(const simp_mesh *fine, const simp_mesh *coarse, double 
     double *fsum = calloc((nc ? nc : 1) * 3, sizeof *fsum);
     uint32_t *parent = malloc((nc ? nc : 1) * sizeof *parent);
     uint32_t *vstart = calloc(nfv + 1, sizeof *vstart), *vface = malloc((3 * (size_t)fine->ntris + 1) * sizeof *vface);
-    uint32_t *cstart = calloc((size_t)coarse->nverts + 1, sizeof *cstart), *vcorner = malloc((nc ? nc : 1) * sizeof *vcorner);
-    uint32_t *gindex = malloc((nc ? nc : 1) * sizeof *gindex);
+    uint32_t *cstart = calloc((size_t)coarse->nverts + 1, sizeof *cstart);
+    uint32_t *vcorner = calloc(nc ? nc : 1, sizeof *vcorner);
+    uint32_t *gindex = malloc((nc ? nc : 1) * sizeof *gindex), *cgrp = malloc((nc ? nc : 1) * sizeof *cgrp);
     out->tri_normal = malloc((nc ? nc : 1) * sizeof *out->tri_normal);
     out->normal = malloc((nc ? nc : 1) * 3 * sizeof *out->normal);
     int rc = -1;
-    if (!fn || !gsum || !fsum || !parent || !vstart || !vface || !cstart || !vcorner || !gindex || !out->tri_normal ||
+    if (!fn || !gsum || !fsum || !parent || !vstart || !vface || !cstart || !vcorner || !gindex || !cgrp || !out->tri_normal ||
         !out->normal)
         goto done;
 
     for (uint32_t t = 0; t < coarse->ntris; t++)
         if (!face_unit(coarse, t, &fn[3 * t])) fn[3 * t] = fn[3 * t + 1] = fn[3 * t + 2] = 0;
-    double cos_crease = cos((crease_deg + SURF_CREASE_MARGIN_DEG) * 3.14159265358979323846 / 180);
-    if (crease_deg + SURF_CREASE_MARGIN_DEG >= 180) cos_crease = -2;   /* nothing is a crease */
-    if (group_corners(coarse, fn, cos_crease, parent)) goto done;
+    double cos_crease = crease_deg >= 180 ? -2 : cos(crease_deg * 3.14159265358979323846 / 180);
 
     /* fine vertex -> faces, and coarse vertex -> corners (CSR) */
     for (size_t i = 0; i < 3 * (size_t)fine->ntris; i++) vstart[fine->tri[i] + 1]++;
@@ -130,6 +195,8 @@ int surf_normals_compute(const simp_mesh *fine, const simp_mesh *coarse, double 
     for (size_t i = 0; i < nc; i++) vcorner[cstart[coarse->tri[i]]++] = (uint32_t)i;
     for (uint32_t v = coarse->nverts; v > 0; v--) cstart[v] = cstart[v - 1];
     cstart[0] = 0;
+    corner_fine_groups(fine, coarse, fn, vstart, vface, cstart, vcorner, cos_crease, cgrp);
+    if (group_corners(coarse, cgrp, parent)) goto done;
 
     /* Each group's coarse direction: its faces' normals, angle-weighted. */
     for (size_t i = 0; i < nc; i++) {
@@ -174,7 +241,7 @@ int surf_normals_compute(const simp_mesh *fine, const simp_mesh *coarse, double 
     out->nnormals = ng;
     rc = 0;
 done:
-    free(fn), free(gsum), free(fsum), free(parent), free(vstart), free(vface), free(cstart), free(vcorner), free(gindex);
+    free(fn), free(gsum), free(fsum), free(parent), free(vstart), free(vface), free(cstart), free(vcorner), free(gindex), free(cgrp);
     if (rc) surf_normals_free(out);
     return rc;
 }
