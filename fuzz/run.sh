@@ -1,6 +1,6 @@
 #!/bin/sh
 # run.sh FUZZ_BUILD SECONDS [HARNESS...] - run each libFuzzer harness for
-# SECONDS (all four when none is named), one after the other, from the
+# SECONDS (all of them when none is named), one after the other, from the
 # seeds (FUZZ_BUILD/seeds, see fuzz/seeds.sh) and the corpus kept from
 # earlier runs (FUZZ_BUILD/corpus/NAME).  Prints one line per harness:
 # executions, executions per second, coverage (libFuzzer's cov: and ft:)
@@ -13,7 +13,7 @@ set -u
 fb=$1
 secs=$2
 shift 2
-harnesses=${*:-fuzz_obj fuzz_ply fuzz_pack fuzz_render fuzz_math}
+harnesses=${*:-fuzz_obj fuzz_ply fuzz_pack fuzz_render fuzz_math fuzz_model}
 status=0
 mkdir -p "$fb/artifacts"
 for h in $harnesses; do

@@ -1,7 +1,7 @@
 #!/bin/sh
 # seeds.sh SILK MKSEED OUT - the seed corpora of the fuzz harnesses, written
-# into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_render, OUT/fuzz_pack and
-# OUT/fuzz_math from:
+# into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_render, OUT/fuzz_pack,
+# OUT/fuzz_math and OUT/fuzz_model from:
 #   - the malformed-input corpus tests/bad/ (each file one error path),
 #   - the regression inputs tests/regress/HARNESS/ (every finding so far),
 #   - small meshes from `silk gen` (every shape, few triangles) and a few
@@ -18,7 +18,8 @@ out=$3
 meshes=${SILK_MESHES:-../shared/meshes}
 
 rm -rf "$out"
-mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" "$out/shapes"
+mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" "$out/fuzz_model" \
+    "$out/shapes"
 
 # small generated shapes
 "$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
@@ -86,4 +87,9 @@ for sel in 0 1 2 3 4 5; do
     { printf "\\00$sel"; tail -c 400 "$out/fuzz_ply/knot-le.ply"; } >"$out/fuzz_math/case-$sel-mesh"
 done
 printf '\001-1024.00002e0 3E+2 .5e-3 18446744073709551616' >"$out/fuzz_math/text"
+# fuzz_model: the closed shapes prepared (silk prepare), and tests/bad/*.silk
+for b in sphere torus cylinder knot; do
+    "$silk" prepare "$out/shapes/$b.obj" -o "$out/fuzz_model/$b.silk" --triangles 24 >/dev/null
+done
+cp tests/bad/*.silk "$out/fuzz_model/"
 rm -rf "$out/shapes"

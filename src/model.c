@@ -186,7 +186,10 @@ static silk_status mesh_check(const silk_model_section *s, const mesh_layout *l,
     for (uint32_t i = 0; i < l->nnormals; i++) {
         silk_vec3 n = silk_v3(rd32s(d + l->normal + 12 * (size_t)i), rd32s(d + l->normal + 12 * (size_t)i + 4),
                               rd32s(d + l->normal + 12 * (size_t)i + 8));
-        int64_t n2 = silk_v3_dot64(n, n);
+        /* components checked first, so the square cannot overflow */
+        const silk_fx lim = 2 * SILK_FX_ONE;
+        int big = n.x > lim || n.x < -lim || n.y > lim || n.y < -lim || n.z > lim || n.z < -lim;
+        int64_t n2 = big ? 0 : silk_v3_dot64(n, n);
         if (n2 < ((int64_t)1 << 32) - UNIT_SLACK || n2 > ((int64_t)1 << 32) + UNIT_SLACK)
             return BAD("MESH section: normal %lu is not of unit length", UL(i));
     }

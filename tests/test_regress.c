@@ -2,7 +2,7 @@
  * test_regress.c - every input the fuzz harnesses ever found a problem
  * with (tests/regress/HARNESS/, see tests/regress/README.md), run again
  * through the same harness code, plus the malformed-input corpus
- * tests/bad/ through the OBJ and PLY harnesses.
+ * tests/bad/ through the OBJ, PLY and prepared-model harnesses.
  *
  * The harnesses (fuzz/fuzz_*.c) are compiled in here without libFuzzer,
  * each under its own entry name; their checks abort with a "fuzz: ..."
@@ -29,6 +29,9 @@
 #undef FUZZ_ENTRY
 #define FUZZ_ENTRY fuzz_math_entry
 #include "../fuzz/fuzz_math.c"
+#undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_model_entry
+#include "../fuzz/fuzz_model.c"
 #undef FUZZ_ENTRY
 
 typedef int (*entry_fn)(const uint8_t *data, size_t size);
@@ -121,6 +124,14 @@ TEST(regress_math)
     printf("  %d regression inputs\n", n);
 }
 
+TEST(regress_model)
+{
+    int n = run_dir("tests/regress/model", "", fuzz_model_entry);
+    int bad = run_dir("tests/bad", ".silk", fuzz_model_entry);
+    CHECKF(bad >= 10, "only %d prepared models in tests/bad", bad);
+    printf("  %d regression inputs, %d malformed files\n", n, bad);
+}
+
 int main(void)
 {
     RUN(regress_obj);
@@ -128,5 +139,6 @@ int main(void)
     RUN(regress_pack);
     RUN(regress_render);
     RUN(regress_math);
+    RUN(regress_model);
     return check_done();
 }
