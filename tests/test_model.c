@@ -1,0 +1,208 @@
+/*
+ * test_model.c - prepared models (src/model.c, tools/model_file.c,
+ * `silk prepare`'s pipeline): a model written and read back gives the
+ * mesh it was made of, through silk_load_mesh's format detection too; the
+ * container takes sections it does not know unless they are required, and
+ * refuses every damaged byte it relies on; and the shared detailed models
+ * prepared at 500 triangles give closed manifold meshes within 2% of the
+ * target whose every vertex lies on the detailed surface (a vertex of it,
+ * bit for bit, so within any tolerance of it) with the file's normals.
+ * Malformed files are the .silk files of tests/bad/ (tests/cli_bad.sh) and fuzzed
+ * by fuzz/fuzz_model.c.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "silk/silk.h"
+#include "silk/validate.h"
+#include "support/testmesh.h"
+#include "../tools/model_file.c"
+#include "../tools/simplify.c"
+#include "../tools/surface.c"
+
+static uint8_t arena_buf[1 << 22];
+
+/* A unit cube's corners and twelve triangles, one normal per corner. */
+static const silk_vec3 cube_pos[8] = {
+    { 0, 0, 0 }, { 65536, 0, 0 }, { 65536, 65536, 0 }, { 0, 65536, 0 },
+    { 0, 0, 65536 }, { 65536, 0, 65536 }, { 65536, 65536, 65536 }, { 0, 65536, 65536 },
+};
+static const uint32_t cube_tri[36] = { 0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                       1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7 };
+
+/* The cube with one file normal per vertex (the corner's direction from
+ * the centre, so the file's normals, not computed ones, show). */
+static uint8_t *cube_model(size_t *len, uint32_t extra_type, uint32_t extra_flags)
+{
+    silk_vec3 n[8];
+    for (int i = 0; i < 8; i++) {
+        int32_t s = 37837;   /* 1/sqrt 3 */
+        n[i] = silk_v3(cube_pos[i].x ? s : -s, cube_pos[i].y ? s : -s, cube_pos[i].z ? s : -s);
+    }
+    model_out m = { 0 };
+    if (extra_type) CHECK(model_add(&m, extra_type, extra_flags, "hello", 5) == 0);
+    CHECK(model_add_mesh(&m, 8, cube_pos, 8, n, 12, cube_tri, cube_tri) == 0);
+    uint8_t *b = model_bytes(&m, len);
+    model_free(&m);
+    return b;
+}
+
+static silk_status load(const uint8_t *b, size_t len, const silk_load_opts *o, silk_mesh *m, silk_error *err)
+{
+    silk_arena a;
+    silk_arena_init(&a, arena_buf, sizeof arena_buf);
+    return silk_load_mesh(b, len, "m.silk", o, &a, m, err);
+}
+
+TEST(round_trip)
+{
+    size_t len;
+    uint8_t *b = cube_model(&len, 0, 0);
+    CHECK(silk_is_model(b, len) && len % 4 == 0);
+    silk_mesh m;
+    silk_error err;
+    CHECKF(load(b, len, NULL, &m, &err) == SILK_OK, "%s", err.msg);
+    CHECK(m.nverts == 8 && m.ntris == 12 && m.nnormals == 8 && m.normals_used == SILK_NORMALS_FILE);
+    for (int i = 0; i < 8; i++) CHECK(m.pos[i].x == cube_pos[i].x && m.pos[i].y == cube_pos[i].y && m.pos[i].z == cube_pos[i].z);
+    for (int i = 0; i < 36; i++) CHECK(m.tri[i] == cube_tri[i]);
+    /* one normal per vertex: no split, so no feature edge, although every
+     * cube edge is sharp - the model's normals say where creases are */
+    CHECK(m.nfeature_edges == 0 && m.nboundary_edges == 0);
+    CHECK(silk_mesh_validate(&m, "m", &err) == SILK_OK);
+    /* computed normals on request: split at the cube's edges */
+    silk_load_opts o;
+    silk_load_opts_default(&o);
+    o.normals = SILK_NORMALS_COMPUTE;
+    CHECK(load(b, len, &o, &m, &err) == SILK_OK && m.normals_used == SILK_NORMALS_COMPUTE && m.nnormals == 24);
+    /* a scale is refused: the model was scaled when prepared */
+    silk_load_opts_default(&o);
+    o.scale.mant = 2;
+    CHECK(load(b, len, &o, &m, &err) == SILK_ERR_ARG && strstr(err.msg, "silk prepare"));
+    free(b);
+}
+
+TEST(container)
+{
+    size_t len;
+    silk_mesh m;
+    silk_error err;
+    /* an unknown optional section in front is skipped */
+    uint8_t *b = cube_model(&len, SILK_SECTION_TYPE('N', 'E', 'X', 'T'), 0);
+    CHECKF(load(b, len, NULL, &m, &err) == SILK_OK && m.ntris == 12, "%s", err.msg);
+    silk_model md;
+    silk_model_section s;
+    CHECK(silk_model_open(b, len, "m", &md, &err) == SILK_OK && md.nsections == 2);
+    CHECK(silk_model_find(&md, SILK_SECTION_MESH, &s) && s.size == 16 + 12 * 8 + 12 * 8 + 24 * 12);
+    CHECK(!silk_model_find(&md, SILK_SECTION_TYPE('H', 'U', 'L', 'L'), &s));
+    /* a higher minor version is read */
+    b[10] = 7;
+    CHECK(load(b, len, NULL, &m, &err) == SILK_OK);
+    free(b);
+    /* an unknown required one is refused */
+    b = cube_model(&len, SILK_SECTION_TYPE('N', 'E', 'X', 'T'), SILK_SECTION_REQUIRED);
+    CHECK(load(b, len, NULL, &m, &err) == SILK_ERR_PARSE && strstr(err.msg, "section 0 (NEXT) is required"));
+    free(b);
+    /* every single-byte change past the magic is refused (the checksums
+     * see the data), except of the minor version, which a reader may not
+     * know; the arena is restored after failures */
+    b = cube_model(&len, 0, 0);
+    int refused = 0;
+    for (size_t i = 8; i < len; i++) {
+        uint8_t keep = b[i];
+        b[i] ^= 0x10;
+        silk_arena a;
+        silk_arena_init(&a, arena_buf, sizeof arena_buf);
+        silk_status st = silk_load_mesh(b, len, "m.silk", NULL, &a, &m, &err);
+        if (st == SILK_OK) CHECK(silk_mesh_validate(&m, "m", &err) == SILK_OK);
+        else {
+            refused++;
+            CHECK(a.bottom == 0 && a.top == 0 && strncmp(err.msg, "m.silk: ", 8) == 0);
+        }
+        b[i] = keep;
+    }
+    CHECKF(refused == (int)len - 8 - 2, "%d of %zu changed bytes refused", refused, len - 8);
+    free(b);
+    /* the CRC is the usual one (zlib, PNG) */
+    CHECK(silk_crc32(0, "123456789", 9) == 0xCBF43926u);
+}
+
+/* `silk prepare`'s pipeline on the shared models, as cmd_prepare.c runs it. */
+static void prepared(const char *name, uint32_t target)
+{
+    size_t big = (size_t)64 << 20;
+    uint8_t *fine_buf = malloc(big);
+    silk_arena fa;
+    silk_arena_init(&fa, fine_buf, big);
+    silk_mesh fm;
+    if (!tm_load_shared(&fa, name, &fm)) {
+        printf("skip: %s not found\n", name);
+        free(fine_buf);
+        return;
+    }
+    CHECK(fm.nboundary_edges == 0 && fm.nnonmanifold_edges == 0);
+    simp_mesh fine = { fm.nverts, fm.ntris, malloc(3 * sizeof(double) * fm.nverts), malloc(3 * sizeof(uint32_t) * fm.ntris),
+                       NULL },
+              coarse;
+    for (uint32_t i = 0; i < fm.nverts; i++)
+        fine.pos[3 * i] = fm.pos[i].x / 65536.0, fine.pos[3 * i + 1] = fm.pos[i].y / 65536.0,
+        fine.pos[3 * i + 2] = fm.pos[i].z / 65536.0;
+    for (uint32_t i = 0; i < 3 * fm.ntris; i++) fine.tri[i] = fm.tri[i];
+    free(fine_buf);
+    CHECK(simp_copy(&fine, &coarse) == 0);
+    simp_opts so;
+    simp_opts_default(&so, target);
+    so.subset = 1;
+    simp_stats st;
+    surf_normals sn;
+    CHECK(simp_run(&coarse, &so, &st) == 0 && surf_normals_compute(&fine, &coarse, so.crease_deg, &sn) == 0);
+    silk_vec3 *pos = malloc(coarse.nverts * sizeof *pos), *nrm = malloc(sn.nnormals * sizeof *nrm);
+    for (uint32_t i = 0; i < coarse.nverts; i++)
+        pos[i] = silk_v3((silk_fx)llround(coarse.pos[3 * i] * 65536), (silk_fx)llround(coarse.pos[3 * i + 1] * 65536),
+                         (silk_fx)llround(coarse.pos[3 * i + 2] * 65536));
+    for (uint32_t i = 0; i < sn.nnormals; i++)
+        nrm[i] = silk_v3((silk_fx)llround(sn.normal[3 * i] * 65536), (silk_fx)llround(sn.normal[3 * i + 1] * 65536),
+                         (silk_fx)llround(sn.normal[3 * i + 2] * 65536));
+    model_out mo = { 0 };
+    CHECK(model_add_mesh(&mo, coarse.nverts, pos, sn.nnormals, nrm, coarse.ntris, coarse.tri, sn.tri_normal) == 0);
+    size_t len;
+    uint8_t *b = model_bytes(&mo, &len);
+    silk_mesh m;
+    silk_error err;
+    CHECKF(load(b, len, NULL, &m, &err) == SILK_OK, "%s", err.msg);
+    CHECKF(fabs((double)m.ntris - target) <= 0.02 * target, "%s: %u triangles for %u", name, m.ntris, target);
+    CHECKF(m.nboundary_edges == 0 && m.nnonmanifold_edges == 0, "%s: %u boundary, %u non-manifold edges", name,
+           m.nboundary_edges, m.nnonmanifold_edges);
+    CHECK(m.normals_used == SILK_NORMALS_FILE && m.nnormals == sn.nnormals);
+    /* every vertex is the fine vertex it came from, exactly */
+    uint32_t off = 0;
+    for (uint32_t v = 0; v < m.nverts; v++) {
+        const double *p = &fine.pos[3 * coarse.origin[v]];
+        off += m.pos[v].x != (silk_fx)llround(p[0] * 65536) || m.pos[v].y != (silk_fx)llround(p[1] * 65536) ||
+               m.pos[v].z != (silk_fx)llround(p[2] * 65536);
+    }
+    CHECKF(off == 0, "%s: %u vertices off the detailed surface", name, off);
+    printf("  %s -> %u triangles, %u vertices, %u normals, %u feature edges, %zu bytes\n", name, m.ntris, m.nverts,
+           m.nnormals, m.nfeature_edges, len);
+    free(b), free(pos), free(nrm);
+    model_free(&mo);
+    surf_normals_free(&sn);
+    simp_free(&fine);
+    simp_free(&coarse);
+}
+
+TEST(prepared_shared_models)
+{
+    prepared("bunny-fine.obj", 500);
+    prepared("armadillo-fine.obj", 500);
+    prepared("spot-fine.obj", 500);
+    prepared("feline-fine.obj", 500);
+}
+
+int main(void)
+{
+    RUN(round_trip);
+    RUN(container);
+    RUN(prepared_shared_models);
+    return check_done();
+}
