@@ -19,7 +19,7 @@ run_silk info "$tmp/sphere.silk" --size 64x64 --normals compute
 check "--normals compute: computed" grep -q "^normals from: *computed" "$out"
 for mode in flat smooth pn blend; do
     run_silk render "$tmp/sphere.silk" -o "$tmp/$mode.png" --size 96x64 --mode "$mode"
-    check "render --mode $mode" [ "$rc" -eq 0 ] -a -s "$tmp/$mode.png"
+    check "render --mode $mode" test "$rc" -eq 0 -a -s "$tmp/$mode.png"
 done
 run_silk pack "$tmp/sphere.silk" -o "$tmp/sphere.h"
 check "pack" grep -q "sphere_mesh" "$tmp/sphere.h"
