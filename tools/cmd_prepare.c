@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "fit.h"
 #include "measure.h"
 #include "model_file.h"
 #include "simplify.h"
@@ -36,6 +37,8 @@ static void help(FILE *f)
             "  --triangles N       triangles of the coarse mesh (at least 4)\n"
             "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
             "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
+            "  --fit               move each normal (up to 30 degrees) so that the curves\n"
+            "                      smooth mode builds over its edges follow FINE closer\n"
             "  --scale S           multiply coordinates by S while reading (as silk render)\n"
             "\n"
             "example:\n"
@@ -78,12 +81,13 @@ done:
     return rc;
 }
 
-static int prepare(const char *in, const char *out, const simp_opts *so, silk_decimal scale)
+static int prepare(const char *in, const char *out, const simp_opts *so, silk_decimal scale, int fit)
 {
     simp_mesh m, fine = { 0 };
     surf_normals sn = { 0 };
     simp_stats st;
     simp_topology topo;
+    fit_stats fs = { 0, 0, 0 };
     int closed = 0, rc;
     size_t bytes = 0;
     if ((rc = simplify_load(in, scale, &m, &closed)) != 0) {
@@ -93,11 +97,15 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
     if (simp_copy(&m, &fine) != 0 || simp_run(&m, so, &st) != 0 || simp_topology_check(&m, &topo) != 0 ||
         surf_normals_compute(&fine, &m, so->crease_deg, &sn) != 0)
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while preparing", in);
+    else if (fit && fit_normals(&fine, &m, &sn, &fs) != 0)
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while fitting normals", in);
     else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
         rc = cli_fail(CLI_EXIT_INPUT, "%s: the coarse mesh is not a closed manifold; not written", in);
     else if ((rc = write_model(&m, &sn, out, &bytes)) == 0) {
-        printf("prepare %s %s triangles=%u vertices=%u normals=%u bytes=%zu\n", in, out, m.ntris, m.nverts,
+        printf("prepare %s %s triangles=%u vertices=%u normals=%u bytes=%zu", in, out, m.ntris, m.nverts,
                sn.nnormals, bytes);
+        if (fit) printf(" fitted=%u fit_rms_before=%.3g fit_rms_after=%.3g", fs.moved, sqrt(fs.before), sqrt(fs.after));
+        printf("\n");
         if (m.ntris > so->target_tris + so->target_tris / 50)
             fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
                             "surface\n", in, m.ntris);
@@ -116,7 +124,7 @@ int cmd_prepare(int argc, char **argv)
     simp_opts_default(&so, 0);
     so.subset = 1;
     silk_decimal scale = { 1, 0 };
-    int rc = 0;
+    int rc = 0, fit = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -131,6 +139,8 @@ int cmd_prepare(int argc, char **argv)
         } else if (cli_is(a, "--feature-weight")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
                 rc = CLI_EXIT_USAGE;
+        } else if (strcmp(a, "--fit") == 0) {
+            fit = 1;
         } else if (cli_is(a, "--scale")) {
             const char *end;
             if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
@@ -152,7 +162,7 @@ int cmd_prepare(int argc, char **argv)
     if (rc) return rc;
     so.target_tris = (uint32_t)target;
     if (silk_file_same(in, out)) return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
-    rc = prepare(in, out, &so, scale);
+    rc = prepare(in, out, &so, scale, fit);
     if (rc) silk_file_remove_stale(out);
     return rc;
 }
