@@ -16,6 +16,7 @@
 #include "../platform/platform.h"
 #include "../tools/simplify.c"
 #include "../tools/surface.c"
+#include "../tools/closest.c"
 
 /* Load with silk's loader, as the command does. */
 static int load(const char *name, simp_mesh *out)
@@ -54,49 +55,6 @@ static int load(const char *name, simp_mesh *out)
     }
     free(buf);
     return st == SILK_OK ? 0 : -1;
-}
-
-/* Squared distance from p to triangle abc (closest point by regions,
- * Ericson, Real-Time Collision Detection 5.1.5). */
-static double point_tri_d2(const double *p, const double *a, const double *b, const double *c)
-{
-    double ab[3], ac[3], ap[3], q[3];
-    sub3(b, a, ab), sub3(c, a, ac), sub3(p, a, ap);
-    double d1 = dot3(ab, ap), d2 = dot3(ac, ap), v, w;
-    if (d1 <= 0 && d2 <= 0) { memcpy(q, a, sizeof q); goto out; }
-    double bp[3];
-    sub3(p, b, bp);
-    double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
-    if (d3 >= 0 && d4 <= d3) { memcpy(q, b, sizeof q); goto out; }
-    double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        v = d1 / (d1 - d3);
-        for (int k = 0; k < 3; k++) q[k] = a[k] + v * ab[k];
-        goto out;
-    }
-    double cp[3];
-    sub3(p, c, cp);
-    double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
-    if (d6 >= 0 && d5 <= d6) { memcpy(q, c, sizeof q); goto out; }
-    double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        w = d2 / (d2 - d6);
-        for (int k = 0; k < 3; k++) q[k] = a[k] + w * ac[k];
-        goto out;
-    }
-    double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-        w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int k = 0; k < 3; k++) q[k] = b[k] + w * (c[k] - b[k]);
-        goto out;
-    }
-    double den = 1 / (va + vb + vc);
-    v = vb * den, w = vc * den;
-    for (int k = 0; k < 3; k++) q[k] = a[k] + ab[k] * v + ac[k] * w;
-out:;
-    double d[3];
-    sub3(p, q, d);
-    return dot3(d, d);
 }
 
 typedef struct dist { double mean, max; } dist;

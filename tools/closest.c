@@ -131,7 +131,9 @@ static double box_d2(const cp_node *n, const double p[3])
     return s;
 }
 
-double cp_dist2(const cp_tree *t, const double p[3])
+double cp_dist2(const cp_tree *t, const double p[3]) { return cp_nearest(t, p, NULL); }
+
+double cp_nearest(const cp_tree *t, const double p[3], uint32_t *tri)
 {
     uint32_t stack[128];
     int sp = 0;
@@ -144,7 +146,10 @@ double cp_dist2(const cp_tree *t, const double p[3])
             for (uint32_t i = n->first; i < n->first + n->count; i++) {
                 const uint32_t *v = &t->tri[3 * t->order[i]];
                 double d = point_tri_d2(p, &t->pos[3 * v[0]], &t->pos[3 * v[1]], &t->pos[3 * v[2]]);
-                if (d < best) best = d;
+                if (d < best) {
+                    best = d;
+                    if (tri) *tri = t->order[i];
+                }
             }
         } else if (sp + 2 <= 128) {
             /* the nearer child last, so it is searched first */

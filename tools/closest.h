@@ -29,8 +29,10 @@ typedef struct cp_tree {
 
 /* 0, or -1 when out of memory.  pos and tri must outlive the tree. */
 int cp_build(cp_tree *t, const double *pos, const uint32_t *tri, uint32_t ntris);
-/* Squared distance from p to the nearest triangle. */
+/* Squared distance from p to the nearest triangle; its index in *tri when
+ * tri is not NULL. */
 double cp_dist2(const cp_tree *t, const double p[3]);
+double cp_nearest(const cp_tree *t, const double p[3], uint32_t *tri);
 void cp_free(cp_tree *t);
 
 #endif

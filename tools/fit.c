@@ -30,7 +30,9 @@ static void bridge_tangent(const double c[3], const double n[3], double t[3])
 }
 
 /* Squared distances from the detailed surface of the curve p0 -> p1 at
- * u = 1/4, 1/2, 3/4, summed. */
+ * u = 1/4, 1/2, 3/4, plus (FIT_NORMAL_WEIGHT |chord|)^2 times the squared
+ * difference between the normal interpolated there (eq. 6) and the normal
+ * of the nearest detailed triangle, summed. */
 static double curve_cost(const cp_tree *tree, const double *p0, const double *n0, const double *p1, const double *n1)
 {
     double c[3], t0[3], t1[3];
@@ -42,7 +44,20 @@ static double curve_cost(const cp_tree *tree, const double *p0, const double *n0
         double u = i / 4.0, u2 = u * u, u3 = u2 * u;
         double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2, q[3];
         for (int k = 0; k < 3; k++) q[k] = h00 * p0[k] + h10 * t0[k] + h01 * p1[k] + h11 * t1[k];
-        s += cp_dist2(tree, q);
+        uint32_t ft = 0;
+        s += cp_nearest(tree, q, &ft);
+        {
+            double fn[3], m[3];
+            const uint32_t *v = &tree->tri[3 * ft];
+            tri_normal(&tree->pos[3 * v[0]], &tree->pos[3 * v[1]], &tree->pos[3 * v[2]], fn);
+            double l = len3(fn);
+            if (l > 0) {
+                for (int k = 0; k < 3; k++) m[k] = (1 - u) * n0[k] + u * n1[k];
+                double lm = len3(m), e[3];
+                for (int k = 0; k < 3; k++) e[k] = m[k] / lm - fn[k] / l;
+                s += FIT_NORMAL_WEIGHT * FIT_NORMAL_WEIGHT * dot3(c, c) * dot3(e, e);
+            }
+        }
     }
     return s;
 }

@@ -11,7 +11,13 @@
  * the detailed surface: coordinate descent on the sum of squared distances
  * from the detailed surface of the curves' points at u = 1/4, 1/2, 3/4,
  * each curve built exactly as curve.c builds it, the other end's normal
- * held.  Host-side, double precision.
+ * held.  The silhouette point on a curve is where the normal interpolated
+ * along it (eq. 6) turns away from the eye, so that normal should also be
+ * the detailed surface's there: a second term, weighted by
+ * FIT_NORMAL_WEIGHT times the chord's length, adds how far it is from the
+ * normal of the nearest detailed triangle.  (Positions alone made smooth
+ * mode worse on bunny and feline; 0.1 was the best of 0.05, 0.1, 0.3 on
+ * bunny and feline.)  Host-side, double precision.
  */
 #ifndef SILK_TOOLS_FIT_H
 #define SILK_TOOLS_FIT_H
@@ -20,6 +26,7 @@
 #include "surface.h"
 
 #define FIT_MAX_DEG 30.0
+#define FIT_NORMAL_WEIGHT 0.1
 
 typedef struct fit_stats {
     double before, after;    /* the objective: mean squared distance of the sampled curve points */
