@@ -23,6 +23,8 @@ for mode in flat smooth pn blend; do
 done
 run_silk pack "$tmp/sphere.silk" -o "$tmp/sphere.h"
 check "pack" grep -q "sphere_mesh" "$tmp/sphere.h"
+run_silk prepare "$tmp/sphere.obj" -o "$tmp/fit.silk" --triangles 120 --fit
+check "prepare --fit" grep -qE "^prepare .* triangles=120 .* fitted=[0-9]+ fit_rms_before=.* fit_rms_after=" "$out"
 run_silk prepare "$tmp/torus.obj" -o "$tmp/torus.silk" --triangles 200
 check "torus: 200 triangles" grep -q "triangles=200 " "$out"
 run_silk bench "$tmp/torus.silk" --views 1 --reps 1 --modes flat,smooth --size 64x48

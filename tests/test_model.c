@@ -21,6 +21,8 @@
 #include "../tools/model_file.c"
 #include "../tools/simplify.c"
 #include "../tools/surface.c"
+#include "../tools/closest.c"
+#include "../tools/fit.c"
 
 static uint8_t arena_buf[1 << 22];
 
@@ -203,6 +205,37 @@ static void prepared(const char *name, uint32_t target)
     simp_free(&coarse);
 }
 
+/* --fit on bunny: the objective falls, every normal stays a unit vector
+ * within FIT_MAX_DEG of the detailed surface's, split normals stay. */
+TEST(fitted_normals)
+{
+    simp_mesh fine, coarse;
+    size_t len;
+    uint8_t *b = prepare_shared("bunny-fine.obj", 500, &len, &fine, &coarse);
+    if (!b) return;
+    free(b);
+    surf_normals sn, orig;
+    CHECK(surf_normals_compute(&fine, &coarse, 60, &sn) == 0 && surf_normals_compute(&fine, &coarse, 60, &orig) == 0);
+    fit_stats st;
+    CHECK(fit_normals(&fine, &coarse, &sn, &st) == 0);
+    CHECKF(st.after < 0.8 * st.before && st.moved > coarse.nverts / 2, "objective %.3g -> %.3g, %u moved", st.before,
+           st.after, st.moved);
+    double worst = 0;
+    int bad = 0;
+    for (uint32_t g = 0; g < sn.nnormals; g++) {
+        bad += fabs(len3(&sn.normal[3 * g]) - 1) > 1e-12;
+        double a = acos(fmin(1, dot3(&sn.normal[3 * g], &orig.normal[3 * g]))) * 180 / 3.14159265358979323846;
+        if (a > worst) worst = a;
+    }
+    CHECK(bad == 0 && worst <= FIT_MAX_DEG + 1e-9);
+    printf("  bunny: objective %.3g -> %.3g, %u normals moved, at most %.1f degrees\n", st.before, st.after, st.moved,
+           worst);
+    surf_normals_free(&sn);
+    surf_normals_free(&orig);
+    simp_free(&fine);
+    simp_free(&coarse);
+}
+
 TEST(prepared_shared_models)
 {
     prepared("bunny-fine.obj", 500);
@@ -309,6 +342,7 @@ int main(void)
     RUN(round_trip);
     RUN(container);
     RUN(prepared_shared_models);
+    RUN(fitted_normals);
     RUN(no_bulges_on_very_coarse_meshes);
     return check_done();
 }

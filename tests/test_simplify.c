@@ -212,6 +212,35 @@ static void on_surface(const char *fine_name, const char *ref_name, uint32_t tar
     simp_free(&ref);
 }
 
+/* The box hierarchy (tools/closest.c) against brute force: the same
+ * squared distance, bit for bit, from points near and far from bunny-fine. */
+TEST(closest_point_tree)
+{
+    simp_mesh fine;
+    if (load("bunny-fine.obj", &fine)) return;
+    cp_tree t;
+    CHECK(cp_build(&t, fine.pos, fine.tri, fine.ntris) == 0);
+    int bad = 0;
+    for (int i = 0; i < 200; i++) {
+        const double *v = &fine.pos[3 * ((uint32_t)i * 2654435761u % fine.nverts)];
+        double s = i < 150 ? 0.02 : 1.5, p[3] = { v[0] + s * check_uniform(-1, 1), v[1] + s * check_uniform(-1, 1),
+                                                   v[2] + s * check_uniform(-1, 1) };
+        double best = INFINITY;
+        for (uint32_t f = 0; f < fine.ntris; f++) {
+            const uint32_t *tr = &fine.tri[3 * f];
+            double d = point_tri_d2(p, &fine.pos[3 * tr[0]], &fine.pos[3 * tr[1]], &fine.pos[3 * tr[2]]);
+            if (d < best) best = d;
+        }
+        uint32_t ft;
+        double got = cp_nearest(&t, p, &ft);
+        const uint32_t *tr = &fine.tri[3 * ft];
+        bad += got != best || point_tri_d2(p, &fine.pos[3 * tr[0]], &fine.pos[3 * tr[1]], &fine.pos[3 * tr[2]]) != got;
+    }
+    CHECKF(bad == 0, "%d of 200 distances differ from brute force", bad);
+    cp_free(&t);
+    simp_free(&fine);
+}
+
 TEST(bunny_on_surface) { on_surface("bunny-fine.obj", "bunny-500.obj", 500, 1); }
 TEST(fandisk_on_surface) { on_surface("fandisk-fine.obj", "fandisk-128.obj", 128, 1); }
 TEST(sphere_on_surface) { on_surface("sphere-fine.obj", "sphere-200.obj", 200, 0); }
@@ -324,6 +353,7 @@ int main(void)
     RUN(bunny_to_500);
     RUN(sphere_to_200);
     RUN(fandisk_to_128);
+    RUN(closest_point_tree);
     RUN(bunny_on_surface);
     RUN(fandisk_on_surface);
     RUN(sphere_on_surface);
