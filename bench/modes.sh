@@ -6,8 +6,9 @@
 # skipped when absent), and bunny-fine simplified to 500 triangles by
 # `silk simplify`.  Writes OUTDIR/bench.md, bench.csv and bench.png.
 # Then the shipped coarse scans against the same detailed models made into
-# prepared models by `silk prepare` (500 triangles, default options), flat,
-# smooth and pn3: OUTDIR/bench-prepared.md and bench-prepared.csv.
+# prepared models by `silk prepare` (500 triangles, default options, and
+# with --fit), flat, smooth and pn3: OUTDIR/bench-prepared.md and
+# bench-prepared.csv.
 # BENCH_VIEWS, BENCH_SIZE and BENCH_REPS override the defaults.
 set -eu
 silk=${1:-build/silk}
@@ -55,7 +56,8 @@ for m in bunny armadillo spot feline; do
   c=$meshes/$m-500.obj f=$meshes/$m-fine.obj
   if [ -f "$c" ] && [ -f "$f" ]; then
     "$silk" prepare "$f" -o "$work/$m-prepared-500.silk" --triangles 500 >/dev/null
-    pairs="$pairs --pair $c:$f --pair $work/$m-prepared-500.silk:$f"
+    "$silk" prepare "$f" -o "$work/$m-prepared-fit-500.silk" --triangles 500 --fit >/dev/null
+    pairs="$pairs --pair $c:$f --pair $work/$m-prepared-500.silk:$f --pair $work/$m-prepared-fit-500.silk:$f"
   else
     echo "bench/modes.sh: skipping $m (not in $meshes)"
   fi
