@@ -105,18 +105,29 @@ static void closed_manifold(const simp_mesh *m, int euler, const char *what)
     CHECKF(t.euler == euler, "%s: Euler characteristic %d, the input's %d", what, t.euler, euler);
 }
 
+/* The fine mesh, the reference made from it and a copy of the fine one to
+ * simplify; the fine mesh's Euler characteristic.  -1 (skipped) when the
+ * shared meshes are not there. */
+static int load_pair(const char *fine_name, const char *ref_name, simp_mesh *fine, simp_mesh *ref, simp_mesh *out,
+                     int *euler)
+{
+    if (load(fine_name, fine)) return -1;
+    if (load(ref_name, ref)) {
+        simp_free(fine);
+        return -1;
+    }
+    simp_topology t;
+    CHECK(simp_topology_check(fine, &t) == 0);
+    *euler = t.euler;
+    CHECK(simp_copy(fine, out) == 0);
+    return 0;
+}
+
 static void simplify_like_reference(const char *fine_name, const char *ref_name, uint32_t target)
 {
     simp_mesh fine, out, ref;
-    if (load(fine_name, &fine)) return;
-    if (load(ref_name, &ref)) {
-        simp_free(&fine);
-        return;
-    }
-    simp_topology t;
-    CHECK(simp_topology_check(&fine, &t) == 0);
-    int euler = t.euler;
-    CHECK(simp_copy(&fine, &out) == 0);
+    int euler;
+    if (load_pair(fine_name, ref_name, &fine, &ref, &out, &euler)) return;
     simp_opts o;
     simp_opts_default(&o, target);
     simp_stats st;
@@ -148,21 +159,15 @@ TEST(fandisk_to_128) { simplify_like_reference("fandisk-fine.obj", "fandisk-128.
 static void on_surface(const char *fine_name, const char *ref_name, uint32_t target, int want_splits)
 {
     simp_mesh fine, out, ref;
-    if (load(fine_name, &fine)) return;
-    if (load(ref_name, &ref)) {
-        simp_free(&fine);
-        return;
-    }
-    simp_topology t;
-    CHECK(simp_topology_check(&fine, &t) == 0);
-    CHECK(simp_copy(&fine, &out) == 0);
+    int euler;
+    if (load_pair(fine_name, ref_name, &fine, &ref, &out, &euler)) return;
     simp_opts o;
     simp_opts_default(&o, target);
     o.subset = 1;
     simp_stats st;
     CHECK(simp_run(&out, &o, &st) == 0);
     CHECKF(fabs((double)out.ntris - target) <= 0.02 * target, "%s: %u triangles for %u", fine_name, out.ntris, target);
-    closed_manifold(&out, t.euler, fine_name);
+    closed_manifold(&out, euler, fine_name);
     uint32_t moved = 0;
     for (uint32_t v = 0; v < out.nverts; v++)
         moved += memcmp(&out.pos[3 * v], &fine.pos[3 * out.origin[v]], 3 * sizeof(double)) != 0;

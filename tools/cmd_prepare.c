@@ -83,36 +83,20 @@ done:
 
 static int prepare(const char *in, const char *out, const simp_opts *so, silk_decimal scale, int fit)
 {
-    simp_mesh m, fine = { 0 };
-    surf_normals sn = { 0 };
-    simp_stats st;
-    simp_topology topo;
+    simp_result r;
     fit_stats fs = { 0, 0, 0 };
-    int closed = 0, rc;
     size_t bytes = 0;
-    if ((rc = simplify_load(in, scale, &m, &closed)) != 0) {
-        simp_free(&m);
-        return rc;
-    }
-    if (simp_copy(&m, &fine) != 0 || simp_run(&m, so, &st) != 0 || simp_topology_check(&m, &topo) != 0 ||
-        surf_normals_compute(&fine, &m, so->crease_deg, &sn) != 0)
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while preparing", in);
-    else if (fit && fit_normals(&fine, &m, &sn, &fs) != 0)
+    int rc = simplify_pipeline(in, so, scale, &r);
+    if (rc == 0 && fit && fit_normals(&r.fine, &r.mesh, &r.normals, &fs) != 0)
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while fitting normals", in);
-    else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: the coarse mesh is not a closed manifold; not written", in);
-    else if ((rc = write_model(&m, &sn, out, &bytes)) == 0) {
-        printf("prepare %s %s triangles=%u vertices=%u normals=%u bytes=%zu", in, out, m.ntris, m.nverts,
-               sn.nnormals, bytes);
+    if (rc == 0 && (rc = write_model(&r.mesh, &r.normals, out, &bytes)) == 0) {
+        printf("prepare %s %s triangles=%u vertices=%u normals=%u bytes=%zu", in, out, r.mesh.ntris, r.mesh.nverts,
+               r.normals.nnormals, bytes);
         if (fit) printf(" fitted=%u fit_rms_before=%.3g fit_rms_after=%.3g", fs.moved, sqrt(fs.before), sqrt(fs.after));
         printf("\n");
-        if (m.ntris > so->target_tris + so->target_tris / 50)
-            fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
-                            "surface\n", in, m.ntris);
+        simplify_warn_short(in, &r.mesh, so->target_tris);
     }
-    simp_free(&m);
-    simp_free(&fine);
-    surf_normals_free(&sn);
+    simp_result_free(&r);
     return rc;
 }
 
@@ -124,28 +108,16 @@ int cmd_prepare(int argc, char **argv)
     simp_opts_default(&so, 0);
     so.subset = 1;
     silk_decimal scale = { 1, 0 };
-    int rc = 0, fit = 0;
+    int rc = 0, fit = 0, r;
     for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i], *v;
+        const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        } else if (cli_is(a, "--triangles")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_long("--triangles", v, 4, 100000000, &target))
-                rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--crease")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--crease", v, 0, 180, &so.crease_deg))
-                rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--feature-weight")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
-                rc = CLI_EXIT_USAGE;
+        } else if ((r = simplify_option(argc, argv, &i, &so, &target, &scale)) >= 0) {
+            rc = r;
         } else if (strcmp(a, "--fit") == 0) {
             fit = 1;
-        } else if (cli_is(a, "--scale")) {
-            const char *end;
-            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (silk_decimal_parse(v, &end, &scale) != 0 || *end || scale.mant <= 0)
-                rc = cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
         } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {

@@ -121,41 +121,72 @@ static int write_obj(const simp_mesh *m, const surf_normals *sn, const char *in,
     return 0;
 }
 
+int simplify_pipeline(const char *in, const simp_opts *so, silk_decimal scale, simp_result *r)
+{
+    memset(r, 0, sizeof *r);
+    int closed = 0, rc;
+    simp_topology topo;
+    if ((rc = simplify_load(in, scale, &r->mesh, &closed)) != 0) return rc;
+    if (so->subset && simp_copy(&r->mesh, &r->fine) != 0) return cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    if (simp_run(&r->mesh, so, &r->stats) != 0 || simp_topology_check(&r->mesh, &topo) != 0 ||
+        (so->subset && surf_normals_compute(&r->fine, &r->mesh, so->crease_deg, &r->normals) != 0))
+        return cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
+    if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
+        /* the checks in simplify.c should make this impossible */
+        return cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
+                        "%u non-manifold vertices, %u misoriented edges); not written",
+                        in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
+    return 0;
+}
+
+void simplify_warn_short(const char *in, const simp_mesh *m, uint32_t target)
+{
+    if (m->ntris > target + target / 50)
+        fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
+                        "surface\n", in, m->ntris);
+}
+
+void simp_result_free(simp_result *r)
+{
+    simp_free(&r->mesh);
+    simp_free(&r->fine);
+    surf_normals_free(&r->normals);
+}
+
+int simplify_option(int argc, char **argv, int *i, simp_opts *so, long *target, silk_decimal *scale)
+{
+    const char *a = argv[*i], *v;
+    if (cli_is(a, "--triangles")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_long("--triangles", v, 4, 100000000, target))
+            return CLI_EXIT_USAGE;
+    } else if (cli_is(a, "--crease")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--crease", v, 0, 180, &so->crease_deg))
+            return CLI_EXIT_USAGE;
+    } else if (cli_is(a, "--feature-weight")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so->feature_weight))
+            return CLI_EXIT_USAGE;
+    } else if (cli_is(a, "--scale")) {
+        const char *end;
+        if (!(v = cli_value(argc, argv, i))) return CLI_EXIT_USAGE;
+        if (silk_decimal_parse(v, &end, scale) != 0 || *end || scale->mant <= 0)
+            return cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
 static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale)
 {
-    simp_mesh m;
-    int closed = 0, rc;
-    if ((rc = simplify_load(in, scale, &m, &closed)) != 0) {
-        simp_free(&m);
-        return rc;
-    }
-    simp_stats st;
-    simp_topology topo;
-    simp_mesh fine = { 0 };
-    surf_normals sn = { 0 };
-    if (so->subset && simp_copy(&m, &fine) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
-    else if (simp_run(&m, so, &st) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", in);
-    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
-    else if (so->subset && surf_normals_compute(&fine, &m, so->crease_deg, &sn) != 0)
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
-    if (rc) {
-        /* reported */
-    } else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
-        /* the checks in simplify.c should make this impossible */
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
-                      "%u non-manifold vertices, %u misoriented edges); not written",
-                      in, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts, topo.misoriented_edges);
-    else if ((rc = write_obj(&m, so->subset ? &sn : NULL, in, out, so->target_tris)) == 0) {
+    simp_result r;
+    int rc = simplify_pipeline(in, so, scale, &r);
+    if (rc == 0 && (rc = write_obj(&r.mesh, so->subset ? &r.normals : NULL, in, out, so->target_tris)) == 0) {
         if (strcmp(out, "-") != 0)
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
-                   m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);
-        if (m.ntris > so->target_tris + so->target_tris / 50)
-            fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
-                            "surface\n", in, m.ntris);
+                   r.mesh.ntris, r.mesh.nverts, so->target_tris, r.stats.collapses, r.stats.feature_edges);
+        simplify_warn_short(in, &r.mesh, so->target_tris);
     }
-    simp_free(&m);
-    simp_free(&fine);
-    surf_normals_free(&sn);
+    simp_result_free(&r);
     return rc;
 }
 
@@ -166,31 +197,19 @@ int cmd_simplify(int argc, char **argv)
     simp_opts so;
     simp_opts_default(&so, 0);
     silk_decimal scale = { 1, 0 };
-    int rc = 0;
+    int rc = 0, r;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        } else if (cli_is(a, "--triangles")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_long("--triangles", v, 4, 100000000, &target))
-                rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--crease")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--crease", v, 0, 180, &so.crease_deg))
-                rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--feature-weight")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
-                rc = CLI_EXIT_USAGE;
+        } else if ((r = simplify_option(argc, argv, &i, &so, &target, &scale)) >= 0) {
+            rc = r;
         } else if (cli_is(a, "--for")) {
             if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
             else if (strcmp(v, "smooth") == 0) so.subset = 1;
             else if (strcmp(v, "flat") == 0) so.subset = 0;
             else rc = cli_fail(CLI_EXIT_USAGE, "--for must be flat or smooth (got \"%s\")", v);
-        } else if (cli_is(a, "--scale")) {
-            const char *end;
-            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (silk_decimal_parse(v, &end, &scale) != 0 || *end || scale.mant <= 0)
-                rc = cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
         } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
