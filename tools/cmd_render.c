@@ -36,7 +36,8 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n"
             "\n"
-            "Render MESH (OBJ or PLY) to an image; the format follows OUT's extension.\n"
+            "Render MESH (OBJ, PLY or a prepared .silk model) to an image; the format\n"
+            "follows OUT's extension.\n"
             "\n"
             "  -o, --output OUT     the image to write (.png or .ppm); written atomically\n"
             "  --compare            flat and smooth side by side (an image twice as wide)\n"

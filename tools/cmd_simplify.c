@@ -22,7 +22,7 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk simplify IN OUT.obj --triangles N [options]\n"
             "\n"
-            "Simplify the mesh IN (OBJ or PLY) to N triangles by quadric-error edge\n"
+            "Simplify the mesh IN (OBJ, PLY, .silk) to N triangles by quadric-error edge\n"
             "collapse (Garland-Heckbert) and write OUT as OBJ (atomically; - for stdout).\n"
             "Boundary and crease edges are kept where possible; a closed manifold input\n"
             "gives a closed manifold output (no collapse that breaks the surface or turns\n"

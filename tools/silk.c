@@ -21,7 +21,7 @@ typedef struct command {
 } command;
 
 static const command commands[] = {
-    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY) to PNG or PPM" },
+    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY, .silk) to PNG or PPM" },
     { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
     { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility" },
