@@ -90,7 +90,7 @@ typedef struct silk_mesh {
     const struct silk_vis *vis;    /* visibility hierarchy, or NULL (built on request) */
 
     silk_vec3 bbox_min, bbox_max;
-    silk_normals_source normals_used;   /* COMPUTE or FILE: what the loader did */
+    silk_normals_source normals_used;   /* COMPUTE or FILE: what the loader did (0, AUTO, when no loader set it) */
 } silk_mesh;
 
 
