@@ -89,7 +89,7 @@ done
 printf '\001-1024.00002e0 3E+2 .5e-3 18446744073709551616' >"$out/fuzz_math/text"
 # fuzz_model: the closed shapes prepared (silk prepare), and tests/bad/*.silk
 for b in sphere torus cylinder knot; do
-    "$silk" prepare "$out/shapes/$b.obj" -o "$out/fuzz_model/$b.silk" --triangles 24 >/dev/null
+    "$silk" prepare "$out/shapes/$b.obj" -o "$out/fuzz_model/$b.silk" --triangles 64 >/dev/null
 done
 cp tests/bad/*.silk "$out/fuzz_model/"
 rm -rf "$out/shapes"
