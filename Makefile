@@ -18,6 +18,9 @@ ALL_CFLAGS = $(CFLAGS_BASE) $(SANFLAGS) $(CFLAGS)
 LDFLAGS  ?=
 # The board: the silk tool's defaults for this target (boards/*/board.mk).
 BOARD    ?= host
+# The shared reference meshes (tests, demo, firmware models); the build and
+# the tests go on without them.
+MESHES_DIR := $(or $(SILK_MESHES),../shared/meshes)
 include boards/$(BOARD)/board.mk
 PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
@@ -40,12 +43,12 @@ TEST_SRC  := $(wildcard tests/test_*.c)
 CORE_OBJ  := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 PLAT_OBJ  := $(PLAT_SRC:%.c=$(BUILD)/obj/%.o)
 TOOL_OBJ  := $(TOOL_SRC:%.c=$(BUILD)/obj/%.o)
-TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%) $(BUILD)/tests/test_cxx
 TEST_SUPPORT := $(wildcard tests/support/*.c)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o)
 
 .PHONY: all lib test test-fast check-nofloat demo install clean tests bench fuzz fuzz-build
-all: $(BUILD)/libsilk.a $(BUILD)/silk
+all: $(BUILD)/libsilk.a $(BUILD)/silk $(BUILD)/silk.1
 
 lib: $(BUILD)/libsilk.a
 
@@ -53,8 +56,11 @@ $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(PNG_CFLAGS) -MMD -MP -c $< -o $@
 
-# The tool takes its defaults (image size, pixel format) from the board.
-$(TOOL_OBJ): ALL_CFLAGS += $(BOARD_CFLAGS)
+# The tool takes its defaults (image size, pixel format) from the board, and
+# `silk profile` the board's bands and views.
+BOARD_TOOL_CFLAGS := $(BOARD_CFLAGS) -DSILK_BOARD_NAME='"$(BOARD)"' -DSILK_BOARD_VIEWS=$(or $(BOARD_VIEWS),3)
+$(BUILD)/obj/tools/cmd_profile.o: BOARD_TOOL_CFLAGS += -DSILK_BOARD_BAND_ROWS=$(BOARD_BAND_ROWS)
+$(TOOL_OBJ): ALL_CFLAGS += $(BOARD_TOOL_CFLAGS)
 $(TOOL_OBJ): boards/$(BOARD)/board.mk
 ifeq ($(SDL2_OK),1)
 $(BUILD)/obj/tools/cmd_view.o: ALL_CFLAGS += -DSILK_HAVE_SDL2
@@ -71,11 +77,36 @@ $(BUILD)/libsilk_platform.a: $(PLAT_OBJ)
 $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm
 
+# The manual page is the help text (tools/man.c).
+$(BUILD)/silk.1: $(BUILD)/silk
+	$(BUILD)/silk help --man >$@.tmp && mv $@.tmp $@
+
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_TOOL_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
 
-tests: $(TEST_BIN) $(BUILD)/silk
+# Tests of host tools link the tools' objects they test; tests that draw
+# meshes made by `silk gen`'s generator link it.
+$(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
+$(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
+$(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
+$(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
+GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines
+$(GEN_TESTS): $(BUILD)/obj/tools/gen.o
+$(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
+
+# The public headers from C++ (extern "C"): compiles and links against the core.
+$(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(CXXFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk_platform.a \
+	    $(BUILD)/libsilk.a $(PNG_LIBS)
+
+tests: $(TEST_BIN) $(BUILD)/silk $(BUILD)/silk.1
+
+# Rewrite the golden frames (tests/golden/) that differ and list them.
+.PHONY: golden
+golden: $(BUILD)/tests/test_golden
+	$(BUILD)/tests/test_golden --update
 
 # The core may not use floating point: compiled without FP/SIMD registers,
 # any float or double use is a compile error.
@@ -110,12 +141,22 @@ bench: $(BUILD)/silk
 demo: $(BUILD)/silk
 	sh tools/demo.sh $(BUILD)/silk out
 
-install: $(BUILD)/libsilk.a $(BUILD)/silk
-	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/silk $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 $(BUILD)/libsilk.a $(DESTDIR)$(PREFIX)/lib/
+# The core (silk.pc) and the host I/O around it (silk-platform.pc: the PNG
+# and PPM writers and readers of silk/platform.h), the command, its manual
+# page and the licence.
+VERSION  := 0.1.0
+INSTALL_DIRS := lib lib/pkgconfig include/silk bin share/man/man1 share/doc/silk
+install: $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(BUILD)/silk $(BUILD)/silk.1
+	install -d $(INSTALL_DIRS:%=$(DESTDIR)$(PREFIX)/%)
+	install -m 644 $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(DESTDIR)$(PREFIX)/lib/
 	install -m 644 include/silk/*.h $(DESTDIR)$(PREFIX)/include/silk/
 	install -m 755 $(BUILD)/silk $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|0.1.0|g' silk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/silk.pc
+	install -m 644 $(BUILD)/silk.1 $(DESTDIR)$(PREFIX)/share/man/man1/
+	install -m 644 LICENSE $(DESTDIR)$(PREFIX)/share/doc/silk/
+	for pc in silk silk-platform; do \
+	  sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@PNG_LIBS@|$(PNG_LIBS)|g' \
+	    $$pc.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/$$pc.pc || exit 1; \
+	done
 
 clean:
 	rm -rf build build-san build-fuzz out
@@ -183,11 +224,29 @@ deps:
 	$(SUDO) apt-get update
 	$(SUDO) apt-get install -y --no-install-recommends $(DEPS_PACKAGES)
 
-# Where every byte goes on a board: `make profile [PROFILE_BOARD=..] [PROFILE_MESH=..]`.
+# Where every byte goes on a board: `make profile [PROFILE_BOARD=..]
+# [PROFILE_MESH=..] [PROFILE_ARGS=--check]`, the table also as
+# BUILD/profile-MESH.csv.  Another board's profile runs in that board's
+# build; a firmware board's firmware is built for the mesh and run by
+# tools/profile_fw.sh with this board.mk's settings; any other board is
+# measured in-process by its own `silk profile`.
 PROFILE_BOARD ?= $(if $(BOARD_RULES),$(BOARD),mps2-an385)
-PROFILE_MESH  ?= $(or $(SILK_MESHES),../shared/meshes)/bunny-500.obj
+PROFILE_MESH  ?= $(MESHES_DIR)/bunny-500.obj
+PROFILE_CSV   ?= $(BUILD)/profile-$(basename $(notdir $(PROFILE_MESH))).csv
+PROFILE_ARGS  ?=
+ifneq ($(PROFILE_BOARD),$(BOARD))
+profile:
+	$(MAKE) BOARD=$(PROFILE_BOARD) BUILD=build-$(PROFILE_BOARD) SAN= CFLAGS= PROFILE_MESH='$(PROFILE_MESH)' profile
+else ifdef BOARD_RULES
+profile:
+	$(MAKE) -s BOARD_MESHES='$(PROFILE_MESH)' firmware
+	BOARD='$(BOARD)' FW_DIR='$(FW_DIR)' BOARD_RUN='$(BOARD_RUN)' BOARD_CROSS='$(BOARD_CROSS)' \
+	  BOARD_FLASH_BYTES='$(BOARD_FLASH_BYTES)' BOARD_WIDTH='$(BOARD_WIDTH)' BOARD_HEIGHT='$(BOARD_HEIGHT)' \
+	  BOARD_BAND_ROWS='$(BOARD_BAND_ROWS)' PROFILE_CSV='$(PROFILE_CSV)' sh tools/profile_fw.sh '$(PROFILE_MESH)' $(PROFILE_ARGS)
+else
 profile: $(BUILD)/silk
-	$(BUILD)/silk profile $(PROFILE_MESH) --board $(PROFILE_BOARD)
+	$(BUILD)/silk profile '$(PROFILE_MESH)' --csv '$(PROFILE_CSV)' $(PROFILE_ARGS)
+endif
 
 # `make test` runs the firmware under QEMU (tests/cli_qemu.sh) when the ARM
 # toolchain is installed; in CI it must be.
@@ -196,8 +255,11 @@ ifeq ($(BOARD)$(HAVE_ARM),host1)
 ifneq ($(SAN),1)
 tests: firmware-for-tests
 .PHONY: firmware-for-tests
+# Its models are shared meshes: without them tests/cli_qemu.sh skips.
 firmware-for-tests:
-	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k
+	@if [ -d '$(MESHES_DIR)' ]; then \
+	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k; \
+	else echo "silk: $(MESHES_DIR) is missing: no firmware for the tests (its models are shared meshes)"; fi
 endif
 endif
 

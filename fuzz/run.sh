@@ -13,13 +13,14 @@ set -u
 fb=$1
 secs=$2
 shift 2
-harnesses=${*:-fuzz_obj fuzz_ply fuzz_pack fuzz_render fuzz_math fuzz_model}
+harnesses=${*:-fuzz_obj fuzz_ply fuzz_stl fuzz_pack fuzz_render fuzz_math fuzz_model}
 status=0
 mkdir -p "$fb/artifacts"
 for h in $harnesses; do
     case $h in
         fuzz_obj) dict=fuzz/obj.dict; max=12000 ;;
         fuzz_ply) dict=fuzz/ply.dict; max=12000 ;;
+        fuzz_stl) dict=fuzz/stl.dict; max=12000 ;;
         *) dict=fuzz/obj.dict; max=16000 ;;
     esac
     mkdir -p "$fb/corpus/$h"

@@ -1,12 +1,13 @@
 #!/bin/sh
 # seeds.sh SILK MKSEED OUT - the seed corpora of the fuzz harnesses, written
-# into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_render, OUT/fuzz_pack,
-# OUT/fuzz_math and OUT/fuzz_model from:
+# into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_stl, OUT/fuzz_render,
+# OUT/fuzz_pack, OUT/fuzz_math and OUT/fuzz_model from:
 #   - the malformed-input corpus tests/bad/ (each file one error path),
 #   - the regression inputs tests/regress/HARNESS/ (every finding so far),
 #   - small meshes from `silk gen` (every shape, few triangles) and a few
-#     of the smallest shared meshes, as OBJ and as PLY in all three
-#     encodings (mkseed), and a handful of hand-written hard cases,
+#     of the smallest shared meshes, as OBJ, as PLY in all three
+#     encodings (mkseed) and as ascii and binary STL
+#     (tests/stl_from_obj.awk), and a handful of hand-written hard cases,
 #   - for fuzz_render and fuzz_pack, those meshes behind a scene header or
 #     edit list (the formats are described at the top of each harness),
 #   - for fuzz_math, each of its six cases with fixed operand bytes.
@@ -18,8 +19,8 @@ out=$3
 meshes=${SILK_MESHES:-../shared/meshes}
 
 rm -rf "$out"
-mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" "$out/fuzz_model" \
-    "$out/shapes"
+mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_stl" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" \
+    "$out/fuzz_model" "$out/shapes"
 
 # small generated shapes
 "$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
@@ -42,13 +43,19 @@ printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\nf 1 2 3 4\nf 1 2 5\nf 2
 cp tests/bad/*.obj "$out/fuzz_obj/"
 cp tests/bad/*.ply "$out/fuzz_ply/"
 cp "$out/shapes/"*.obj "$out/fuzz_obj/"
+cp tests/bad/*.stl "$out/fuzz_stl/"
+for f in "$out/shapes/"*.obj; do
+    b=$(basename "$f" .obj)
+    awk -v fmt=ascii -f tests/stl_from_obj.awk "$f" >"$out/fuzz_stl/$b-ascii.stl"
+    printf "$(awk -v fmt=binary -f tests/stl_from_obj.awk "$f")" >"$out/fuzz_stl/$b-binary.stl"
+done
 for f in "$out/shapes/"*.obj; do
     b=$(basename "$f" .obj)
     for enc in ascii le be; do
         "$mkseed" "ply-$enc" "$f" "$out/fuzz_ply/$b-$enc.ply"
     done
 done
-for h in obj ply render pack math; do
+for h in obj ply stl render pack math; do
     if [ -d "tests/regress/$h" ]; then
         for f in tests/regress/"$h"/*; do
             [ -f "$f" ] && [ "${f%.expected}" = "$f" ] && cp "$f" "$out/fuzz_$h/"

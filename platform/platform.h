@@ -1,77 +1,11 @@
 /*
- * platform.h - host-side I/O for the silk tool and tests: reading a whole
- * file, writing an output atomically, and the image sinks (PNG via libpng,
- * binary PPM without it).  Not part of the core: this code uses stdio,
- * malloc and POSIX, so a device port replaces it rather than links it.
- *
- * Errors are reported like the core's: a silk_error whose message names the
- * file, e.g. "x.obj: cannot open: No such file or directory".
+ * platform.h - the host-side I/O of the tool and tests: file reading, atomic
+ * output, the image writers and readers.  Declared in the public header
+ * silk/platform.h, which `make install` installs with libsilk_platform.a.
  */
-#ifndef SILK_PLATFORM_H
-#define SILK_PLATFORM_H
+#ifndef SILK_PLATFORM_INTERNAL_H
+#define SILK_PLATFORM_INTERNAL_H
 
-#include <stddef.h>
-#include <stdint.h>
-#include <stdio.h>
-#include "silk/error.h"
-#include "silk/raster.h"
-
-/* Largest file silk_file_read accepts (meshes are read whole into memory). */
-#define SILK_FILE_MAX ((size_t)1 << 30)
-
-/* Read the whole file into a malloc'd buffer (free it with free()).  The
- * buffer has one extra NUL byte after the data, not counted in *len. */
-silk_status silk_file_read(const char *path, uint8_t **data, size_t *len, silk_error *err);
-
-/* An output written atomically: the data goes to "PATH.tmpXXXXXX" in the
- * same directory, which replaces PATH by rename() only once everything was
- * written and flushed.  Until then PATH is untouched, and on any failure the
- * temporary file is removed, so a reader never sees a partial file. */
-typedef struct silk_outfile {
-    FILE *fp;              /* write here between open and commit */
-    const char *path;      /* the final name (not copied: keep it alive) */
-    char *tmp;             /* the temporary name; NULL when none exists */
-} silk_outfile;
-
-silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err);
-/* Flush, sync, close and rename into place.  On failure the temporary file
- * is removed and PATH is left as it was. */
-silk_status silk_outfile_commit(silk_outfile *o, silk_error *err);
-/* Close and remove the temporary file; harmless after commit or twice. */
-void silk_outfile_abort(silk_outfile *o);
-
-/* Remove PATH if it is a regular file: after a failed run the tool calls
- * this, so that an image from an earlier run is never mistaken for the
- * result of this one.  Returns 1 if a file was removed. */
-int silk_file_remove_stale(const char *path);
-
-/* 1 if both paths name the same existing file (device and inode). */
-int silk_file_same(const char *a, const char *b);
-
-/* ---- images ---------------------------------------------------------------- */
-
-typedef enum silk_image_format {
-    SILK_IMAGE_NONE = 0,   /* not a known image extension */
-    SILK_IMAGE_PNG,
-    SILK_IMAGE_PPM
-} silk_image_format;
-
-/* From the extension of path, case-insensitive: ".png" or ".ppm". */
-silk_image_format silk_image_format_for_path(const char *path);
-
-/* Row y (0-based, within the target's band) of t as 8-bit R, G, B triples
- * (3 * t->width bytes); RGB565 is widened by bit replication, so 0x1f maps
- * to 0xff and 0 to 0. */
-void silk_target_row_rgb888(const silk_target *t, int y, uint8_t *out);
-
-/* What both sinks check before creating anything: a full frame in a known
- * pixel format. */
-silk_status silk_image_check_target(const silk_target *t, const char *path, silk_error *err);
-
-/* Write a full-frame target (y0 == 0, rows == height) atomically. */
-silk_status silk_png_write(const silk_target *t, const char *path, silk_error *err);
-silk_status silk_ppm_write(const silk_target *t, const char *path, silk_error *err);
-/* PNG or PPM by the extension of path; any other extension is an error. */
-silk_status silk_image_write(const silk_target *t, const char *path, silk_error *err);
+#include "silk/platform.h"
 
 #endif

@@ -119,11 +119,11 @@ silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view 
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_fx *alpha = silk_arena_array_top(a, m->nedges, sizeof *alpha, SILK_MEM_FRAME);
     uint8_t *nseg = silk_arena_array_top(a, m->nedges, sizeof *nseg, SILK_MEM_FRAME);
-    if (!alpha || !nseg) return silk_patch_fall_back(a, m, &mark, g, stats, err);
+    if (!alpha || !nseg) return silk_frame_fall_back(a, m, &mark, g, stats, err);
     /* Face normals are needed only for eq. 1: scratch, gone before the output. */
     silk_arena_mark scratch = silk_arena_top_mark(a);
     silk_vec3 *fn = silk_arena_array_top(a, m->ntris, sizeof *fn, SILK_MEM_FRAME);
-    if (!fn) return silk_patch_fall_back(a, m, &mark, g, stats, err);
+    if (!fn) return silk_frame_fall_back(a, m, &mark, g, stats, err);
     for (uint32_t t = 0; t < m->ntris; t++) fn[t] = silk_mesh_face_normal(m, t);
     for (uint32_t e = 0; e < m->nedges; e++) {
         alpha[e] = edge_alpha(m, v, e, fn, beta);
@@ -154,7 +154,7 @@ silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view 
     g->tri = silk_arena_array_top(a, (size_t)ntri * 3, sizeof *g->tri, SILK_MEM_FRAME);
     g->tri_added = silk_arena_array_top(a, (size_t)ntri, 1, SILK_MEM_FRAME);
     if (!g->patch || !g->vrec || !g->tri || !g->tri_added)
-        return silk_patch_fall_back(a, m, &mark, g, stats, err);
+        return silk_frame_fall_back(a, m, &mark, g, stats, err);
 
     uint32_t r = 0, nt = 0, p = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {

@@ -39,7 +39,6 @@ typedef struct wvec {
     int e;
 } wvec;
 
-static uint64_t abs64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 
 static int bit_length(uint64_t v)
 {
@@ -51,9 +50,9 @@ static int bit_length(uint64_t v)
 
 static uint64_t max3_abs(const int64_t c[3])
 {
-    uint64_t m = abs64(c[0]);
-    if (abs64(c[1]) > m) m = abs64(c[1]);
-    if (abs64(c[2]) > m) m = abs64(c[2]);
+    uint64_t m = silk_abs64(c[0]);
+    if (silk_abs64(c[1]) > m) m = silk_abs64(c[1]);
+    if (silk_abs64(c[2]) > m) m = silk_abs64(c[2]);
     return m;
 }
 
@@ -271,14 +270,14 @@ silk_fx silk_silhouette_param(silk_vec3 n0, silk_vec3 d0, silk_vec3 n1, silk_vec
 
     if (A == 0) return 0;
     if (C == 0) return SILK_FX_ONE;
-    if ((A < 0) == (C < 0)) return abs64(A) <= abs64(C) ? 0 : SILK_FX_ONE;
+    if ((A < 0) == (C < 0)) return silk_abs64(A) <= silk_abs64(C) ? 0 : SILK_FX_ONE;
     if (A > 0) { A = -A; B = -B; C = -C; }            /* h rises through its root */
 
     /* One common scale for the coefficients.  Rounding must not lose the
      * sign change at the ends, so A stays <= -1 and C >= 1. */
-    uint64_t m = abs64(A);
-    if (abs64(B) > m) m = abs64(B);
-    if (abs64(C) > m) m = abs64(C);
+    uint64_t m = silk_abs64(A);
+    if (silk_abs64(B) > m) m = silk_abs64(B);
+    if (silk_abs64(C) > m) m = silk_abs64(C);
     int s = bit_length(m) - COEF_BITS;
     if (s > 0) {
         A = silk_shr_round64(A, s);

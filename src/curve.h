@@ -71,4 +71,12 @@ silk_fx silk_silhouette_param(silk_vec3 n0, silk_vec3 d0, silk_vec3 n1, silk_vec
 #define SILK_MAX_SAMPLES 64
 uint32_t silk_sample_count(silk_fx h_px, silk_fx cos_alpha, silk_fx tol_px);
 
+/* Sample i of n (0 <= i <= n) along a curve sampled with n equal intervals
+ * (eq. 8): the parameter i/n, rounded once.  Silhouette segments and
+ * feature segments are sampled alike. */
+static inline silk_fx silk_sample_param(uint32_t i, uint32_t n)
+{
+    return silk_fx_sat(((int64_t)i * SILK_FX_ONE + n / 2) / n);
+}
+
 #endif

@@ -30,7 +30,6 @@ static int clz64(uint64_t x)            /* x != 0 */
     return (x >> 32) ? clz32((uint32_t)(x >> 32)) : 32 + clz32((uint32_t)x);
 }
 
-static uint64_t abs64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 
 /* INT32_MIN is outside the symmetric silk_fx range; mapping it to SILK_FX_MIN
  * keeps every product below 2^62 and every negation defined. */
@@ -53,7 +52,7 @@ static int64_t mul_q30(int64_t a, int64_t b) { return silk_shr_round64(a * b, 30
 static silk_fx div_round_sat(int64_t n, int64_t d)
 {
     if (d == 0) return n > 0 ? SILK_FX_MAX : (n < 0 ? SILK_FX_MIN : 0);
-    uint64_t un = abs64(n), ud = abs64(d);
+    uint64_t un = silk_abs64(n), ud = silk_abs64(d);
     uint64_t q = (un + ud / 2) / ud;
     if (q > (uint64_t)SILK_FX_MAX) q = (uint64_t)SILK_FX_MAX;
     return ((n < 0) != (d < 0)) ? -(silk_fx)q : (silk_fx)q;
@@ -182,10 +181,9 @@ silk_fx silk_fx_rsqrt(silk_fx a)
 #define PHASE_PER_RAD_Q16 UINT64_C(44798133900177)   /* 2^48 / (2 pi) */
 #define PHASE_PER_DEG_Q16 UINT64_C(781874935307)     /* 2^48 / 360 */
 
-#define TWO_PI_Q30  INT64_C(6746518852)
-#define PI_Q30      INT64_C(3373259426)
-#define HALF_PI_Q30 INT64_C(1686629713)
-#define QUARTER_PI_Q30 INT64_C(843314857)
+#define TWO_PI_Q30  (2 * SILK_PI_Q30)
+#define HALF_PI_Q30 (SILK_PI_Q30 / 2)
+#define QUARTER_PI_Q30 ((SILK_PI_Q30 + 2) / 4)
 #define TAN_PI_8_Q30   INT64_C(444758426)
 
 /* sin and cos of a phase (Q64 turns).  Reduced to the nearest quarter turn,
@@ -253,7 +251,7 @@ static int64_t atan_q30(int64_t u)
  * atan(t) = pi/4 + atan((t - 1) / (t + 1)) so the series argument stays small. */
 static int64_t atan2_q30(int64_t y, int64_t x)
 {
-    uint64_t ay = abs64(y), ax = abs64(x);
+    uint64_t ay = silk_abs64(y), ax = silk_abs64(x);
     if (ax == 0 && ay == 0) return 0;
     uint64_t lo = ay < ax ? ay : ax, hi = ay < ax ? ax : ay;
     int64_t a;
@@ -266,7 +264,7 @@ static int64_t atan2_q30(int64_t y, int64_t x)
         a = QUARTER_PI_Q30 + atan_q30(a);
     }
     if (ay > ax) a = HALF_PI_Q30 - a;
-    if (x < 0) a = PI_Q30 - a;
+    if (x < 0) a = SILK_PI_Q30 - a;
     return y < 0 ? -a : a;
 }
 
@@ -389,7 +387,7 @@ silk_decimal silk_decimal_mul(silk_decimal a, silk_decimal b)
 {
     silk_decimal r = { 0, 0 };
     if (a.mant == 0 || b.mant == 0) return r;
-    u128 p = mul_64x64(abs64(a.mant), abs64(b.mant));
+    u128 p = mul_64x64(silk_abs64(a.mant), silk_abs64(b.mant));
     int64_t e = (int64_t)a.exp10 + b.exp10;
     unsigned last = 0;
     while (p.hi != 0 || p.lo >= DEC_LIMIT) { last = div10_u128(&p); e++; }
@@ -434,7 +432,7 @@ static int decimal_to_q16(uint64_t m, int64_t e, uint32_t *q)
 int silk_decimal_to_fx(silk_decimal d, silk_fx *out)
 {
     uint32_t q;
-    if (decimal_to_q16(abs64(d.mant), d.exp10, &q) != 0) return -2;
+    if (decimal_to_q16(silk_abs64(d.mant), d.exp10, &q) != 0) return -2;
     *out = d.mant < 0 ? -(silk_fx)q : (silk_fx)q;
     return 0;
 }
@@ -495,7 +493,7 @@ silk_vec3 silk_v3_cross(silk_vec3 a, silk_vec3 b)
 
 silk_fx silk_v3_length(silk_vec3 a)
 {
-    uint64_t x = abs64(a.x), y = abs64(a.y), z = abs64(a.z);
+    uint64_t x = silk_abs64(a.x), y = silk_abs64(a.y), z = silk_abs64(a.z);
     uint32_t r = isqrt64_round(x * x + y * y + z * z);     /* < 3 * 2^62: fits */
     return r > (uint32_t)SILK_FX_MAX ? SILK_FX_MAX : (silk_fx)r;
 }
@@ -503,7 +501,7 @@ silk_fx silk_v3_length(silk_vec3 a)
 int silk_v3_normalize(silk_vec3 a, silk_vec3 *out)
 {
     silk_fx cx = fx_clean(a.x), cy = fx_clean(a.y), cz = fx_clean(a.z);
-    uint64_t ux = abs64(cx), uy = abs64(cy), uz = abs64(cz);
+    uint64_t ux = silk_abs64(cx), uy = silk_abs64(cy), uz = silk_abs64(cz);
     uint64_t ss = ux * ux + uy * uy + uz * uz;              /* < 3 * 2^62: fits */
     if (ss == 0) { *out = silk_v3(0, 0, 0); return 0; }
     /* Rescale: shifting ss left by an even e to [2^62, 2^64) scales the

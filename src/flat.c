@@ -1,9 +1,11 @@
 /*
  * flat.c - the coarse mesh as it is: one CORNER vertex record per triangle
  * corner (the records of paper Fig. 16 with no re-meshing at all).  This is
- * FLAT mode, and the reference SMOOTH mode is compared against.
+ * FLAT mode, the reference SMOOTH mode is compared against, and what every
+ * mode falls back to when the arena runs out (silk_frame_fall_back).
  */
-#include "smooth.h"
+#include <string.h>
+#include "frame.h"
 
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err)
 {
@@ -36,4 +38,25 @@ silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *
     g->offset = NULL; g->noffset = 0;
     g->patch = NULL; g->npatch = 0;
     return SILK_OK;
+}
+
+/* The one fall-back of every mode: what was allocated since mark is
+ * released and the coarse mesh drawn instead, counted as such. */
+silk_status silk_frame_fall_back(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
+                                 silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
+{
+    silk_arena_top_release(a, mark);
+    memset(g, 0, sizeof *g);
+    silk_status st = silk_frame_flat(a, m, g, err);
+    if (st != SILK_OK) return st;
+    silk_frame_stats_fell_back(stats, g->ntri);
+    return SILK_OK;
+}
+
+void silk_frame_stats_fell_back(silk_frame_stats *stats, uint32_t tris_drawn)
+{
+    if (!stats) return;
+    stats->silhouette_tris = stats->bridges = stats->samples = stats->moved_vertices = 0;
+    stats->tris_drawn = tris_drawn;
+    stats->fell_back = 1;
 }

@@ -44,7 +44,6 @@ static uint32_t ceil_sqrt64(uint64_t v)
     return (uint64_t)s * s < v ? s + 1 : s;
 }
 
-static int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 
 /* N.(E - V), exact: the brute pass's test (see visibility.c). */
 static int64_t persp_dot64(silk_vec3 n, silk_vec3 p, silk_vec3 e)
@@ -344,7 +343,7 @@ silk_status silk_vis_build(silk_mesh *m, const silk_vis_opts *opts, silk_arena *
                          : silk_v3(0, 0, 0);
     int64_t wmax = 0;
     for (uint32_t i = 0; i < n; i++) {
-        int64_t d = abs64(persp_dot64(m->normal[i], centre, m->pos[m->normal_vertex[i]]));
+        int64_t d = (int64_t)silk_abs64(persp_dot64(m->normal[i], centre, m->pos[m->normal_vertex[i]]));
         if (d > wmax) wmax = d;
     }
     int scale_log2 = 0;                     /* s = 2^scale_log2 Q16.16 units = 2^(scale_log2+16) in Q32.32 */
@@ -430,7 +429,7 @@ size_t silk_vis_bytes(const silk_vis *v)
 static int unit4(const int64_t q_in[4], int32_t g[4])
 {
     int64_t q[4], big = 0;
-    for (int k = 0; k < 4; k++) if (abs64(q_in[k]) > big) big = abs64(q_in[k]);
+    for (int k = 0; k < 4; k++) if ((int64_t)silk_abs64(q_in[k]) > big) big = (int64_t)silk_abs64(q_in[k]);
     if (big == 0) { memset(g, 0, 4 * sizeof *g); return 0; }
     int sh = 0;
     while ((big >> sh) >= ((int64_t)1 << 30)) sh++;

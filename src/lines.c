@@ -8,6 +8,12 @@
  * The records are copies of the ones the re-meshed triangles use, so a line
  * runs exactly along the triangle edges that make the drawn outline: at
  * the silhouette it is the boundary of the rendered object, bit for bit.
+ * The outline also runs where no segment is: along a mesh edge the surface
+ * folds over (the two triangles on it face opposite ways), round a cone's
+ * apex.  So after the vertex stage the contour of the drawn triangles -
+ * every side shared by two triangles that face opposite ways on screen,
+ * the records matched by their clip positions - is added as silhouette
+ * lines (silk_lines_contour).
  *
  * The polygonal outline of the coarse mesh, FLAT mode's outline and, on
  * request, a comparison in any mode: every edge between a front-facing and
@@ -21,10 +27,13 @@
  * the line would break up.  So each line vertex is lifted towards the eye
  * by what the triangles through it rise over one pixel (their depth slope,
  * at most their depth extent): a polygon offset scaled by slope, as
- * glPolygonOffset does, but only by the triangles the line lies on.
+ * glPolygonOffset does, but only by the triangles the line lies on; and
+ * by 1/LINE_NEAR of its depth, for the surface half a pixel inside a
+ * silhouette, whose depth rises like the square root of the distance from
+ * it, faster than any triangle's slope at the line.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "lines.h"
 
 /* Room for nlines polylines over nrec records, from the top of the arena. */
 static int lines_alloc(silk_arena *a, silk_frame_geom *g, uint32_t nlines, uint64_t nrec)
@@ -57,12 +66,6 @@ static void line_end(silk_frame_geom *g, int feature)
 
 /* ---- SMOOTH mode ------------------------------------------------------------- */
 
-/* Whether silhouette segment s was drawn re-meshed (its part not dropped). */
-static int seg_drawn(const silk_sil_frame *f, const silk_sil_seg *s)
-{
-    return !f->edges[s->comp].rejected;
-}
-
 /* The corner record of side s at edge.v[0] (end 0) or edge.v[1] (end 1):
  * record 3t+k is corner k of triangle t in every SMOOTH frame (CORNER, or
  * MOVED at a perturbed vertex). */
@@ -79,7 +82,6 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
     uint32_t nlines = 0;
     uint64_t nrec = 0;
     for (uint32_t i = 0; i < f->nsegs; i++) {
-        if (!seg_drawn(f, &f->segs[i])) continue;
         nlines++;
         nrec += f->segs[i].n + 1;
     }
@@ -93,14 +95,13 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
 
     for (uint32_t i = 0; i < f->nsegs; i++) {
         const silk_sil_seg *s = &f->segs[i];
-        if (!seg_drawn(f, s)) continue;
         line_rec(g, s->rec_a);
         for (uint32_t j = 1; j < s->n; j++) line_rec(g, s->rec + j - 1);
         line_rec(g, s->rec_b);
         line_end(g, 0);
     }
-    /* A feature edge whose part was dropped, or that needed no samples, is
-     * drawn straight between its corners, and so is its line. */
+    /* A feature edge that needed no samples is drawn straight between its
+     * corners, and so is its line. */
     for (uint32_t w = 0; w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;
@@ -117,16 +118,6 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
 }
 
 /* ---- the coarse mesh's outline -------------------------------------------------- */
-
-/* Front-facing by the face normal, as silhouette.c decides it for feature
- * triangles; a zero-area or broken triangle faces nowhere. */
-static int tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
-{
-    for (int k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] >= m->nverts) return 0;
-    silk_vec3 fn = silk_mesh_face_normal(m, t);
-    return silk_v3_dot64(fn, silk_view_to_eye(v, m->pos[m->tri[3 * t]])) > 0;
-}
 
 /* What edge e is in the outline: 0 nothing, 1 silhouette, 2 feature.  A
  * feature edge is a feature line even where it is also the silhouette, as
@@ -156,7 +147,7 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
     if (!m->edge || !m->tri) return SILK_OK;
     uint8_t *front = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
     if (!front) return SILK_ERR_NOMEM;
-    for (uint32_t t = 0; t < m->ntris; t++) front[t] = (uint8_t)tri_front(m, v, t);
+    for (uint32_t t = 0; t < m->ntris; t++) front[t] = (uint8_t)silk_sil_tri_front(m, v, t);
     uint32_t nlines = 0;
     for (uint32_t e = 0; e < m->nedges; e++) nlines += edge_kind(m, front, e) != 0;
     if (!lines_alloc(a, g, nlines, 2 * (uint64_t)nlines)) return SILK_ERR_NOMEM;
@@ -191,6 +182,7 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
 typedef struct spt { int64_t x, y, d; } spt;
 
 #define GUARD 64   /* clip x, y within +-GUARD w */
+#define LINE_NEAR 128   /* lines are drawn this fraction of their depth nearer */
 
 static int screen_point(const silk_vertex_out *o, int width, int height, spt *p)
 {
@@ -204,8 +196,6 @@ static int screen_point(const silk_vertex_out *o, int width, int height, spt *p)
     return 1;
 }
 
-static int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-
 /* What triangle abc rises over one pixel in depth (2^-24): the size of its
  * depth gradient, over-estimated by |gx| + |gy|; a triangle seen exactly
  * edge-on gives INT64_MAX. */
@@ -215,8 +205,8 @@ static int64_t depth_slope(const spt *a, const spt *b, const spt *c)
     int64_t bd = b->d - a->d, cd = c->d - a->d;
     /* |coordinates| < 2^28 (1/256 px, within the guard band), |depth| <
      * 2^27: every product below 2^56 */
-    int64_t area2 = abs64(bx * cy - cx * by);
-    int64_t gx = abs64(bd * cy - cd * by), gy = abs64(cd * bx - bd * cx);
+    int64_t area2 = (int64_t)silk_abs64(bx * cy - cx * by);
+    int64_t gx = (int64_t)silk_abs64(bd * cy - cd * by), gy = (int64_t)silk_abs64(cd * bx - bd * cx);
     /* per 1/256 px: (gx + gy) / area2; per pixel 256 times that.  A sliver
      * below 1/256 px^2 counts as edge-on. */
     if (area2 < 256) return INT64_MAX;
@@ -280,7 +270,170 @@ uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_ge
 
 void silk_lines_apply_lift(silk_vertex_out *o, uint32_t lift)
 {
-    /* depth (w - z) / w grows by lift / 2^24: z falls by lift w / 2^24 */
-    int64_t dz = silk_shr_round64((int64_t)lift * o->clip.w, 24);
+    /* depth (w - z) / w grows by lift / 2^24: z falls by lift w / 2^24;
+     * and by a further 1/LINE_NEAR of itself, for the surface next to a
+     * silhouette, whose depth rises like a square root of the distance
+     * from it: half a pixel inside, the triangles there are nearer than
+     * their slope at the line says */
+    int64_t dz = silk_shr_round64((int64_t)lift * o->clip.w, 24) + ((int64_t)o->clip.w - o->clip.z) / LINE_NEAR;
     o->clip.z = silk_fx_sat((int64_t)o->clip.z - dz);
+}
+
+/* ---- the contour of the drawn triangles --------------------------------------------- */
+
+/* Records are matched by where the vertex stage put them: the records of
+ * one point (a vertex's corners, the copies of an edge point on the two
+ * sides of a crease) have the same clip position, bit for bit. */
+typedef struct rec_pos {
+    silk_vec4 c;
+    uint32_t r;
+} rec_pos;
+
+static int pos_cmp(const rec_pos *a, const rec_pos *b)
+{
+    if (a->c.x != b->c.x) return a->c.x < b->c.x ? -1 : 1;
+    if (a->c.y != b->c.y) return a->c.y < b->c.y ? -1 : 1;
+    if (a->c.z != b->c.z) return a->c.z < b->c.z ? -1 : 1;
+    if (a->c.w != b->c.w) return a->c.w < b->c.w ? -1 : 1;
+    return 0;
+}
+
+/* Sorting orders: by the key, then by the place in the input, so the order
+ * is the same on every libc (and no qsort is linked into a device). */
+static int pos_before(const void *pa, const void *pb)
+{
+    const rec_pos *a = pa, *b = pb;
+    int c = pos_cmp(a, b);
+    return c ? c < 0 : a->r < b->r;
+}
+
+/* One side of a drawn triangle: its two points (smaller first), its
+ * records, which way its triangle faces on screen (+1, -1; 0 unknown), and
+ * its place in the input (3 t + side). */
+typedef struct half_edge {
+    uint32_t k0, k1, r0, r1, at;
+    int32_t facing;
+} half_edge;
+
+static int half_cmp(const half_edge *a, const half_edge *b)
+{
+    if (a->k0 != b->k0) return a->k0 < b->k0 ? -1 : 1;
+    if (a->k1 != b->k1) return a->k1 < b->k1 ? -1 : 1;
+    return 0;
+}
+
+static int half_before(const void *pa, const void *pb)
+{
+    const half_edge *a = pa, *b = pb;
+    int c = half_cmp(a, b);
+    return c ? c < 0 : a->at < b->at;
+}
+
+static void swap_bytes(uint8_t *a, uint8_t *b, size_t size)
+{
+    for (size_t i = 0; i < size; i++) {
+        uint8_t x = a[i];
+        a[i] = b[i];
+        b[i] = x;
+    }
+}
+
+/* Heapsort of n elements of size bytes by the strict order `before`: no
+ * memory beyond the array, O(n log n) always. */
+static void heap_sort(void *base, uint32_t n, size_t size, int (*before)(const void *, const void *))
+{
+    uint8_t *b = base;
+    for (uint32_t end = n, start = n / 2; end > 1;) {
+        if (start > 0) start--;
+        else swap_bytes(b, b + (size_t)--end * size, size);
+        for (uint32_t i = start;;) {
+            uint32_t c = 2 * i + 1;
+            if (c >= end) break;
+            if (c + 1 < end && before(b + (size_t)c * size, b + (size_t)(c + 1) * size)) c++;
+            if (!before(b + (size_t)i * size, b + (size_t)c * size)) break;
+            swap_bytes(b + (size_t)i * size, b + (size_t)c * size, size);
+            i = c;
+        }
+    }
+}
+
+/* Which way triangle t of g faces on screen: +1, -1, or 0 (edge-on, or a
+ * corner behind the eye or far outside the view). */
+static int32_t screen_facing(const silk_frame_geom *g, const silk_vertex_out *out, uint32_t t, int width, int height)
+{
+    const uint32_t *c = &g->tri[3 * t];
+    spt p[3];
+    for (int k = 0; k < 3; k++)
+        if (!screen_point(&out[c[k]], width, height, &p[k])) return 0;
+    int64_t area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+    return area2 > 0 ? 1 : area2 < 0 ? -1 : 0;
+}
+
+silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_vertex_out *out, int width, int height)
+{
+    if (!g->nlines) return SILK_OK;
+    if (g->ntri > UINT32_MAX / 3) return SILK_ERR_NOMEM;
+    uint32_t nhalf = 3 * g->ntri;
+    rec_pos *pos = silk_arena_array_top(a, g->nvrec, sizeof *pos, SILK_MEM_FRAME);
+    uint32_t *id = silk_arena_array_top(a, g->nvrec, sizeof *id, SILK_MEM_FRAME);
+    uint8_t *on_line = silk_arena_array_top(a, g->nvrec, 1, SILK_MEM_FRAME);
+    half_edge *h = silk_arena_array_top(a, nhalf, sizeof *h, SILK_MEM_FRAME);
+    if (!pos || !id || !on_line || !h) return SILK_ERR_NOMEM;
+
+    /* Each record's point: the first record at its position. */
+    for (uint32_t r = 0; r < g->nvrec; r++) {
+        pos[r].c = out[r].clip;
+        pos[r].r = r;
+    }
+    heap_sort(pos, g->nvrec, sizeof *pos, pos_before);
+    for (uint32_t i = 0; i < g->nvrec; i++) id[pos[i].r] = i && !pos_cmp(&pos[i - 1], &pos[i]) ? id[pos[i - 1].r] : i;
+    memset(on_line, 0, g->nvrec);
+    for (uint32_t i = 0; i < g->nline_vrec; i++)
+        if (g->line_src[i] < g->nvrec) on_line[id[g->line_src[i]]] = 1;
+
+    for (uint32_t t = 0; t < g->ntri; t++) {
+        int32_t facing = screen_facing(g, out, t, width, height);
+        for (uint32_t j = 0; j < 3; j++) {
+            half_edge *e = &h[3 * t + j];
+            e->r0 = g->tri[3 * t + j];
+            e->r1 = g->tri[3 * t + (j + 1) % 3];
+            e->at = 3 * t + j;
+            uint32_t ka = id[e->r0], kb = id[e->r1];
+            e->k0 = ka < kb ? ka : kb;
+            e->k1 = ka < kb ? kb : ka;
+            e->facing = facing;
+        }
+    }
+    heap_sort(h, nhalf, sizeof *h, half_before);
+
+    /* A side shared by exactly two triangles facing opposite ways is on
+     * the contour, unless a line runs along it already. */
+    uint32_t ncont = 0;
+    for (uint32_t i = 0; i + 1 < nhalf; i++) {
+        const half_edge *e = &h[i], *o = &h[i + 1];
+        int two = !half_cmp(e, o) && (i + 2 >= nhalf || half_cmp(o, &h[i + 2])) && (i == 0 || half_cmp(&h[i - 1], e));
+        if (two && e->k0 != e->k1 && e->facing * o->facing < 0)
+            h[ncont++] = *e;
+    }
+
+    /* The lines again: the silhouette lines, the contour, the feature lines. */
+    silk_frame_geom old = *g;
+    if (!lines_alloc(a, g, old.nlines + ncont, (uint64_t)old.nline_vrec + 2 * (uint64_t)ncont)) {
+        *g = old;
+        return SILK_ERR_NOMEM;
+    }
+    for (uint8_t feature = 0; feature < 2; feature++) {
+        for (uint32_t i = 0; i < old.nlines; i++) {
+            if (old.line_feature[i] != feature) continue;
+            for (uint32_t j = old.line_start[i]; j < old.line_start[i + 1]; j++)
+                line_point(g, &old.line_vrec[j], old.line_src[j]);
+            line_end(g, feature);
+        }
+        for (uint32_t i = 0; !feature && i < ncont; i++) {
+            line_rec(g, h[i].r0);
+            line_rec(g, h[i].r1);
+            line_end(g, 0);
+        }
+    }
+    return SILK_OK;
 }

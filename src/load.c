@@ -20,15 +20,106 @@ void silk_load_opts_default(silk_load_opts *o)
     o->scale.exp10 = 0;
     o->crease_deg = SILK_DEFAULT_CREASE_DEG;
     o->normals = SILK_NORMALS_AUTO;
+    o->orient = SILK_ORIENT_FIX;
+}
+
+/* ---- choosing the reader --------------------------------------------------- */
+
+static int starts_with(const unsigned char *p, size_t len, const char *magic, size_t n)
+{
+    return len >= n && memcmp(p, magic, n) == 0;
+}
+
+/* Whether the text [p, p+len) contains word (a short ASCII string). */
+static int contains(const unsigned char *p, size_t len, const char *word)
+{
+    size_t n = strlen(word);
+    for (size_t i = 0; i + n <= len; i++)
+        if (p[i] == (unsigned char)word[0] && memcmp(p + i, word, n) == 0) return 1;
+    return 0;
+}
+
+/* OFF's first keyword: [ST][C][N][4][n]OFF, e.g. OFF, COFF, NOFF, STCOFF. */
+static int is_off(const unsigned char *p, size_t len)
+{
+    static const char prefix[] = "STCN4n";
+    size_t i = 0, k = 0;
+    while (i < len && k < sizeof prefix - 1) {
+        if (p[i] == (unsigned char)prefix[k]) i++;
+        k++;
+    }
+    if (!starts_with(p + i, len - i, "OFF", 3)) return 0;
+    i += 3;
+    return i == len || p[i] == ' ' || p[i] == '\t' || p[i] == '\r' || p[i] == '\n';
+}
+
+/* Written after the name of a mesh format silk does not read. */
+#define CONVERT " is not supported: convert it to OBJ, PLY or STL"
+
+static const char binary_data[] = "not a mesh file (binary data); silk reads OBJ, PLY and STL";
+
+/* The line for a file in a format silk does not read, told by its first
+ * bytes, or NULL. */
+static const char *unsupported(const unsigned char *p, size_t len)
+{
+    static const struct { const char *magic; size_t n; const char *what; } magic[] = {
+        { "glTF", 4, "binary glTF (GLB)" CONVERT },
+        { "Kaydara FBX Binary", 18, "FBX" CONVERT },
+        { "; FBX", 5, "FBX" CONVERT },
+        { "\x1f\x8b", 2, "the file is gzip-compressed: decompress it first" },
+        { "PK\x03\x04", 4, "the file is a zip archive: extract the mesh from it first" },
+        { "PK\x05\x06", 4, "the file is an empty zip archive" },
+        { "\xfd" "7zXZ\x00", 6, "the file is xz-compressed: decompress it first" },
+        { "\x28\xb5\x2f\xfd", 4, "the file is zstd-compressed: decompress it first" },
+        { "7z\xbc\xaf\x27\x1c", 6, "the file is a 7z archive: extract the mesh from it first" },
+    };
+    for (size_t i = 0; i < sizeof magic / sizeof magic[0]; i++)
+        if (starts_with(p, len, magic[i].magic, magic[i].n)) return magic[i].what;
+    if (len >= 4 && p[0] == 'B' && p[1] == 'Z' && p[2] == 'h' && p[3] >= '1' && p[3] <= '9')
+        return "the file is bzip2-compressed: decompress it first";
+    /* A 3DS file is one main chunk, id 0x4D4D, whose length covers the file. */
+    if (len >= 6 && p[0] == 0x4D && p[1] == 0x4D) {
+        uint32_t n = (uint32_t)p[2] | (uint32_t)p[3] << 8 | (uint32_t)p[4] << 16 | (uint32_t)p[5] << 24;
+        if (n >= 6 && n <= len) return "3DS" CONVERT;
+    }
+    size_t i = 0;
+    if (starts_with(p, len, "\xEF\xBB\xBF", 3)) i = 3;
+    while (i < len && (p[i] == ' ' || p[i] == '\t' || p[i] == '\r' || p[i] == '\n')) i++;
+    if (i < len && p[i] == '{')
+        return contains(p + i, len - i, "\"asset\"") ? "glTF" CONVERT : "JSON" CONVERT;
+    if (is_off(p + i, len - i)) return "OFF" CONVERT;
+    /* Binary data on the first line: no text mesh starts so. */
+    for (size_t j = 0; j < len && j < 512 && p[j] != '\n'; j++)
+        if (!silk_ld_text_byte(p[j])) return binary_data;
+    return NULL;
+}
+
+static int name_ends_stl(const char *name)
+{
+    size_t n = name ? strlen(name) : 0;
+    return n >= 4 && name[n - 4] == '.' && (name[n - 3] | 0x20) == 's' && (name[n - 2] | 0x20) == 't' &&
+           (name[n - 1] | 0x20) == 'l';
 }
 
 silk_status silk_load_mesh(const void *data, size_t len, const char *name,
                            const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err)
 {
     const unsigned char *p = data;
+    if (!data) return silk_load_obj(data, len, name, opts, a, out, err);   /* reports it */
     if (silk_is_model(data, len)) return silk_load_model(data, len, name, opts, a, out, err);
     if (len >= 4 && memcmp(p, "ply", 3) == 0 && (p[3] == '\n' || p[3] == '\r'))
         return silk_load_ply(data, len, name, opts, a, out, err);
+    /* A binary STL has exactly the size its header gives; an OBJ of that
+     * size would need its bytes 80..83, read as that count, to match. */
+    if (silk_ld_stl_binary_size(data, len) || silk_ld_stl_solid(data, len))
+        return silk_load_stl(data, len, name, opts, a, out, err);
+    /* Binary data named .stl is taken for a damaged binary STL. */
+    const char *what = unsupported(p, len);
+    if (what == binary_data && name_ends_stl(name)) return silk_load_stl(data, len, name, opts, a, out, err);
+    if (what) {
+        if (out) memset(out, 0, sizeof *out);
+        return silk_fail(err, SILK_ERR_PARSE, name ? name : "mesh", 0, "%s", what);
+    }
     return silk_load_obj(data, len, name, opts, a, out, err);
 }
 
@@ -435,6 +526,20 @@ silk_status silk_ld_parse_decimal(const char *t, size_t n, silk_decimal *d,
 }
 
 /* ---- messages and memory ------------------------------------------------------- */
+
+silk_status silk_ld_start(const char *fn, const void *data, size_t len, const char **name,
+                          const silk_load_opts **opts, silk_load_opts *defaults, silk_arena *a, silk_mesh *out,
+                          silk_error *err)
+{
+    if (!*name) *name = "mesh";
+    if (!*opts) { silk_load_opts_default(defaults); *opts = defaults; }
+    if (!a || !out || (!data && len))
+        return silk_fail(err, SILK_ERR_ARG, *name, 0, "%s: missing buffer, arena or output", fn);
+    if ((*opts)->scale.mant <= 0)
+        return silk_fail(err, SILK_ERR_ARG, *name, 0, "scale must be positive");
+    memset(out, 0, sizeof *out);
+    return SILK_OK;
+}
 
 const char *silk_ld_quote(const char *s, size_t n, char *buf, size_t bufsize)
 {

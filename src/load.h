@@ -61,6 +61,15 @@ int silk_ld_dec_cmp(silk_decimal a, silk_decimal b);          /* -1, 0, 1 */
 /* Up to `sig` significant digits, "5000.0", "0.001", "1.5e+30". */
 char *silk_ld_dec_format(silk_decimal d, int sig, char *buf, size_t n);
 
+/* Where a text reader is: the rest of the buffer, the line last read (for
+ * messages), the file's name and the error to fill. */
+typedef struct silk_ld_text {
+    const char *p, *end;
+    uint32_t line;
+    const char *name;
+    silk_error *err;
+} silk_ld_text;
+
 /* Next whitespace-separated token of the text [*p, e) as [*tb, *tb + *tn);
  * a token starting with '#' comments out the rest.  Returns 0 at the end. */
 int silk_ld_token(const char **p, const char *e, const char **tb, size_t *tn);
@@ -72,6 +81,21 @@ silk_status silk_ld_parse_decimal(const char *t, size_t n, silk_decimal *d,
 
 /* Quote at most 32 bytes of a token for an error message. */
 const char *silk_ld_quote(const char *s, size_t n, char *buf, size_t bufsize);
+
+/* STL (stl.c): whether the buffer has exactly the size of the binary STL
+ * its header describes (84 + 50 n bytes), and whether a byte may appear in
+ * a text file (the mesh readers' test for binary data). */
+int silk_ld_stl_binary_size(const void *data, size_t len);
+/* Whether the buffer starts (after blanks) with the keyword "solid". */
+int silk_ld_stl_solid(const void *data, size_t len);
+int silk_ld_text_byte(unsigned char ch);
+
+/* What every reader checks first: a name ("mesh" for NULL), options (the
+ * defaults, in *defaults, for NULL), a buffer, an arena and an output
+ * (fn names the reader in that error), a positive scale.  Clears *out. */
+silk_status silk_ld_start(const char *fn, const void *data, size_t len, const char **name,
+                          const silk_load_opts **opts, silk_load_opts *defaults, silk_arena *a, silk_mesh *out,
+                          silk_error *err);
 
 /* Arena bytes an array of count*size takes (aligned), added to *total with
  * overflow check.  Returns 0 on overflow. */

@@ -6,8 +6,9 @@
  * half-edges, so the result and the "first two triangles" of an edge depend
  * only on the input order), the triangle->edge and vertex->edge links, the
  * BOUNDARY / NONMANIFOLD / DEGENERATE flags and the bounding box, then hands
- * over to normals.c (crease flags and split shading normals, paper III-B)
- * and features.c (feature segments, paper III-A, eqs. 1 and 4).
+ * over to orient.c (consistent, outward winding), normals.c (crease flags
+ * and split shading normals, paper III-B) and features.c (feature
+ * segments, paper III-A, eqs. 1 and 4).
  *
  * A zero-length edge (a triangle that repeats an index) is kept, so that
  * every triangle has three valid tri_edge links; it has v[0] == v[1] and
@@ -266,6 +267,12 @@ silk_status silk_mesh_build(const silk_mesh_input *in, const char *name, const s
     silk_arena_top_release(a, &mark);
     if (st != SILK_OK) return st;
     mark_degenerate(m);
+
+    if (opts->orient != SILK_ORIENT_KEEP) {
+        st = silk_orient(in, name, a, m, err);
+        silk_arena_top_release(a, &mark);
+        if (st != SILK_OK) return st;
+    }
 
     st = build_vertex_edges(name, a, m, err);
     silk_arena_top_release(a, &mark);

@@ -4,6 +4,7 @@
  *
  *   mesh_build.c  edges, triangle->edge and vertex->edge links, degenerate
  *                 triangles, bounding box; then calls the two stages below
+ *   orient.c      consistent, outward triangle winding (before the normals)
  *   normals.c     crease / smoothing-group flags and the split shading
  *                 normals (paper III-B, Fig. 8)
  *   features.c    feature polylines and their Hermite tangents (paper III-A)
@@ -22,6 +23,13 @@ void silk_tri_cross64(const silk_mesh *m, uint32_t t, int64_t c[3]);
  * is irrelevant: it is shifted into 32 bits first).  Returns 0 and leaves
  * *out as the zero vector for the zero vector. */
 int silk_v3_normalize64(const int64_t v[3], silk_vec3 *out);
+
+/* Needs m->pos, tri, edge (with BOUNDARY / NONMANIFOLD flags), tri_edge.
+ * Flips triangles (tri, tri_edge and in's uv / file normal corners) so that
+ * each component is wound consistently and each closed one outward; counts
+ * them in m->nreoriented_tris and m->nnonorientable_tris.  Top scratch,
+ * released by the caller. */
+silk_status silk_orient(const silk_mesh_input *in, const char *name, silk_arena *a, silk_mesh *m, silk_error *err);
 
 /* Needs m->pos, tri, edge (with BOUNDARY / NONMANIFOLD / DEGENERATE flags),
  * tri_edge.  Adds CREASE and GROUPS flags to m->edge[] and fills normal,

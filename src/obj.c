@@ -17,12 +17,7 @@ typedef struct obj_counts {
     int any_s;                   /* there is an `s` statement */
 } obj_counts;
 
-typedef struct obj_reader {
-    const char *p, *end;         /* rest of the buffer */
-    uint32_t line;               /* number of the line last returned */
-    const char *name;
-    silk_error *err;
-} obj_reader;
+typedef silk_ld_text obj_reader;
 
 /* Next line as [*b, *e) without its end ("\n", "\r\n" or a lone "\r"). */
 static int next_line(obj_reader *r, const char **b, const char **e)
@@ -272,13 +267,8 @@ silk_status silk_load_obj(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err)
 {
     silk_load_opts defaults;
-    if (!name) name = "mesh";
-    if (!opts) { silk_load_opts_default(&defaults); opts = &defaults; }
-    if (!a || !out || (!data && len))
-        return silk_fail(err, SILK_ERR_ARG, name, 0, "silk_load_obj: missing buffer, arena or output");
-    if (opts->scale.mant <= 0)
-        return silk_fail(err, SILK_ERR_ARG, name, 0, "scale must be positive");
-    memset(out, 0, sizeof *out);
+    silk_status st0 = silk_ld_start("silk_load_obj", data, len, &name, &opts, &defaults, a, out, err);
+    if (st0) return st0;
 
     obj_reader r = { data, (const char *)data + len, 0, name, err };
     if (len >= 3 && memcmp(data, "\xEF\xBB\xBF", 3) == 0) r.p += 3;   /* UTF-8 byte order mark */

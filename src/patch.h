@@ -18,7 +18,7 @@
 #ifndef SILK_PATCH_H
 #define SILK_PATCH_H
 
-#include "smooth.h"
+#include "frame.h"
 
 /* l_ij = (2 p_i + p_j) / 3, the inner control point of the straight edge
  * written as a cubic (eq. 6), rounded once. */
@@ -52,10 +52,6 @@ void silk_patch_build(const silk_mesh *m, uint32_t t, const silk_fx *alpha, silk
  * shading normals and edges (every mesh silk_mesh_build made has). */
 silk_status silk_patch_check_mesh(const silk_mesh *m, const char *who, silk_error *err);
 
-/* The coarse mesh in place of a frame that did not fit: releases the top of
- * the arena to mark, emits silk_frame_flat and sets stats->fell_back. */
-silk_status silk_patch_fall_back(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
-                                 silk_frame_geom *g, silk_frame_stats *stats, silk_error *err);
 
 /* ---- blend.c ---------------------------------------------------------------- */
 

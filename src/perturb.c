@@ -32,7 +32,8 @@
  * becomes a MOVED record with it, so the vertex moves as one.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "perturb.h"
+#include "remesh.h"
 
 #define MIN_COS ((int64_t)1 << 30)     /* 1/4 in Q32.32 */
 #define RISE_CAP (2 * SILK_FX_ONE)      /* times the segment's rise */
@@ -136,7 +137,7 @@ void silk_perturb(silk_sil_frame *f)
             silk_sil_seg tmp;
             const silk_sil_seg *s = f->segs ? &f->segs[i] : (silk_remesh_seg(f, t, &tmp) ? &tmp : NULL);
             i++;
-            if (!s || !s->concave || f->edges[s->comp].rejected) continue;
+            if (!s || !s->concave) continue;
             visit_near(f, s, pass * ns + i, pass);
         }
         if (pass == 0)

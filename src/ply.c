@@ -580,13 +580,8 @@ silk_status silk_load_ply(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err)
 {
     silk_load_opts defaults;
-    if (!name) name = "mesh";
-    if (!opts) { silk_load_opts_default(&defaults); opts = &defaults; }
-    if (!a || !out || (!data && len))
-        return silk_fail(err, SILK_ERR_ARG, name, 0, "silk_load_ply: missing buffer, arena or output");
-    if (opts->scale.mant <= 0)
-        return silk_fail(err, SILK_ERR_ARG, name, 0, "scale must be positive");
-    memset(out, 0, sizeof *out);
+    silk_status st0 = silk_ld_start("silk_load_ply", data, len, &name, &opts, &defaults, a, out, err);
+    if (st0) return st0;
     const char *c = data;
     if (len < 4 || memcmp(c, "ply", 3) != 0 || (c[3] != '\n' && c[3] != '\r'))
         return silk_fail(err, SILK_ERR_PARSE, name, 1, "not a PLY file (the first line is not 'ply')");

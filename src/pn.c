@@ -229,17 +229,6 @@ silk_status silk_patch_check_mesh(const silk_mesh *m, const char *who, silk_erro
     return SILK_OK;
 }
 
-silk_status silk_patch_fall_back(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
-                                 silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
-{
-    silk_arena_top_release(a, mark);
-    memset(g, 0, sizeof *g);
-    silk_status st = silk_frame_flat(a, m, g, err);
-    if (st != SILK_OK) return st;
-    if (stats) stats->fell_back = 1;
-    return SILK_OK;
-}
-
 /* Grid point (i, j) of a level-L patch: rows of constant i, j ascending. */
 static uint32_t grid_index(uint32_t i, uint32_t j, uint32_t L)
 {
@@ -272,7 +261,7 @@ silk_status silk_frame_pn(silk_arena *a, const silk_mesh *m, uint32_t level, sil
     g->tri = silk_arena_array_top(a, (size_t)ntri * 3, sizeof *g->tri, SILK_MEM_FRAME);
     g->tri_added = silk_arena_array_top(a, (size_t)ntri, 1, SILK_MEM_FRAME);
     if (!g->patch || !g->vrec || !g->tri || !g->tri_added)
-        return silk_patch_fall_back(a, m, &mark, g, stats, err);
+        return silk_frame_fall_back(a, m, &mark, g, stats, err);
 
     uint32_t *tri = g->tri;
     for (uint32_t t = 0; t < m->ntris; t++) {

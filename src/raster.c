@@ -242,6 +242,15 @@ typedef struct svert {
 /* n / d rounded to nearest (halves up), d > 0 */
 static int64_t round_div(int64_t n, int64_t d) { return floor_div(2 * n + d, 2 * d); }
 
+/* y' = (1 - y/w) H/2 in subpixels (w > 0); below 2^50 within the guard
+ * band, below 2^55 for any clip point. */
+static int64_t screen_y(const silk_vec4 *c, int height)
+{
+    return round_div(((int64_t)c->w - c->y) * height * SUB, 2 * (int64_t)c->w);
+}
+
+int64_t silk_raster_row(const silk_vec4 *c, int height) { return floor_div(screen_y(c, height), SUB); }
+
 static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
 {
     const silk_vec4 *c = &v->clip;
@@ -249,7 +258,7 @@ static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
     /* ndc -> pixels: x' = (x/w + 1) W/2, y' = (1 - y/w) H/2; with the guard band
      * the products stay below 2^50 */
     s->x = round_div(((int64_t)c->x + c->w) * t->width * SUB, w2);
-    s->y = round_div(((int64_t)c->w - c->y) * t->height * SUB, w2);
+    s->y = screen_y(c, t->height);
     int64_t num = (int64_t)c->w - c->z;
     if (num <= 0) {
         s->d = 0;

@@ -30,18 +30,17 @@
  * triangle but has points on its sides is fanned from the opposite vertex
  * when one side has points (Fig. 12a), else from its centre (Fig. 12b).
  *
- * Memory: every part of the frame that is re-meshed together (edges joined by
- * re-meshed triangles: a union-find over edges) has a cost in records,
- * triangles and curves.  When the output does not fit, smooth.c drops parts
- * from the last one back (silk_remesh_reject_last); a dropped part is drawn
- * as the coarse mesh, which is crack-free because no edge is shared between
- * parts.  In STREAM mode (silhouette.h) nothing is dropped and nothing is
- * stored: segments are rebuilt from the edges' points when needed, and
- * silk_remesh_emit_tri runs the same emission for one input triangle into
- * a small share with its own copies of the corner and side records.
+ * Memory: the plan counts what the frame costs - a stored frame's records,
+ * triangles and curves, the largest share of one input triangle - so that
+ * smooth.c can tell before emitting whether it fits; when it does not, the
+ * frame is the coarse mesh (silk_frame_fall_back).  In STREAM mode (plan.h)
+ * nothing is stored: segments are rebuilt from the edges' points when
+ * needed, and silk_remesh_emit_tri runs the same emission for one input
+ * triangle into a small share with its own copies of the corner and side
+ * records.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "remesh.h"
 #include "curve.h"
 
 #define T_TWO_THIRDS ((silk_fx)43691)
@@ -52,12 +51,11 @@ static silk_sil_edge *edge_at(const silk_sil_frame *f, uint32_t t, uint32_t k)
     return w == SILK_SIL_NONE ? NULL : &f->edges[w];
 }
 
-/* Points on side k of t this frame (0 when the side's part was dropped). */
+/* Points on side k of t this frame. */
 static uint32_t side_points(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
-    if (!e || f->edges[e->parent].rejected) return 0;
-    return e->nchain;
+    return e ? e->nchain : 0;
 }
 
 /* The silhouette point side s puts on edge e: the one of its normal pair. */
@@ -71,11 +69,6 @@ static const silk_sil_pair *side_pair(const silk_sil_frame *f, const silk_sil_ed
     return NULL;
 }
 
-static silk_fx sample_t(uint32_t i, uint32_t n)
-{
-    return silk_fx_sat(((int64_t)i * SILK_FX_ONE + n / 2) / n);
-}
-
 /* The sample of segment s closest to the bisector plane of the base edge
  * b1 -> b2: joined to both base vertices it gives the fattest middle triangle. */
 static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
@@ -87,20 +80,11 @@ static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
     uint32_t best = s->n / 2;
     int64_t best_d = INT64_MAX;
     for (uint32_t i = 0; i <= s->n; i++) {
-        int64_t d = silk_v3_dot64(silk_v3_sub(silk_hermite_point(&s->c, sample_t(i, s->n)), mid), dir);
+        int64_t d = silk_v3_dot64(silk_v3_sub(silk_hermite_point(&s->c, silk_sample_param(i, s->n)), mid), dir);
         if (d < 0) d = -d;
         if (d < best_d) { best_d = d; best = i; }
     }
     return best;
-}
-
-static void unite(silk_sil_frame *f, silk_sil_edge *x, silk_sil_edge *y)
-{
-    uint32_t rx = silk_sil_find_root(f->edges, (uint32_t)(x - f->edges));
-    uint32_t ry = silk_sil_find_root(f->edges, (uint32_t)(y - f->edges));
-    /* the smaller index is the root, so parts are numbered in mesh order */
-    if (rx < ry) f->edges[ry].parent = rx;
-    else if (ry < rx) f->edges[rx].parent = ry;
 }
 
 /* Where things are on the boundary of silhouette triangle t, walked from L:
@@ -145,7 +129,7 @@ static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
 }
 
 /* What one input triangle becomes: output triangles, records and curves
- * beyond its corners and side points (STORED mode's costs), its boundary
+ * beyond its corners and side points (what it adds to a stored frame), its boundary
  * length, and all the records and curves of its own copy (STREAM mode). */
 typedef struct tri_count {
     uint32_t tris, recs, curves, poly;
@@ -212,7 +196,6 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     if (!silk_v3_normalize(silk_v3_lerp(nA, nB, SILK_FX_HALF), &s->nm)) s->concave = 0;
     s->rise = silk_fx_max(silk_fx_max(silk_v3_dot(silk_v3_sub(A, s->m), s->nm),
                                       silk_v3_dot(silk_v3_sub(B, s->m), s->nm)), 0);
-    s->comp = ea->parent;
     return 1;
 }
 
@@ -222,41 +205,31 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     silk_arena *a = f->a;
     if (!f->stream) {
         f->segs = silk_arena_array_top(a, f->nsil, sizeof *f->segs, SILK_MEM_FRAME);
-        f->cost = silk_arena_array_top(a, f->nedges, sizeof *f->cost, SILK_MEM_FRAME);
-        if (!f->segs || !f->cost) return SILK_ERR_NOMEM;
+        if (!f->segs) return SILK_ERR_NOMEM;
     }
 
-    /* Segments (III-D) and the parts of the frame. */
+    /* Segments (III-D). */
     f->nsegs = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        uint8_t st = f->tri_state[t];
-        silk_sil_edge *e3[3];
-        for (uint32_t k = 0; k < 3; k++) e3[k] = edge_at(f, t, k);
-        if (st & SILK_TS_SIL) {
-            uint32_t lone = st & SILK_TS_LONE, kb = (lone + 2) % 3;
-            silk_sil_edge *ea = e3[lone], *eb = e3[kb];
-            silk_sil_seg tmp, *s = f->segs ? &f->segs[f->nsegs] : &tmp;
-            if (!silk_remesh_seg(f, t, s)) { f->tri_state[t] = 0; continue; }
-            f->nsegs++;
-            unite(f, ea, eb);
-            if (e3[(lone + 1) % 3] && e3[(lone + 1) % 3]->nchain) unite(f, ea, e3[(lone + 1) % 3]);
-        } else {
-            silk_sil_edge *first = NULL;
-            for (uint32_t k = 0; k < 3; k++) {
-                if (!e3[k] || !e3[k]->nchain) continue;
-                if (first) unite(f, first, e3[k]); else first = e3[k];
-            }
-        }
+        silk_sil_seg tmp, *s = f->segs ? &f->segs[f->nsegs] : &tmp;
+        if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
+        if (silk_remesh_seg(f, t, s)) f->nsegs++;
+        else f->tri_state[t] = 0;
     }
-    for (uint32_t w = 0; w < f->nedges; w++) f->edges[w].parent = silk_sil_find_root(f->edges, w);
 
-    /* What each part costs (STORED mode: the sides share records). */
-    for (uint32_t w = 0; f->cost && w < f->nedges; w++) {
+    /* What the frame costs: a stored frame's records, triangles and
+     * curves (its sides share records), the most one input triangle
+     * becomes (a streamed frame's share), the perturbation's slots. */
+    f->store_recs = 3 * (uint64_t)m->ntris;
+    f->store_tris = m->ntris;
+    f->store_curves = 0;
+    for (uint32_t w = 0; f->sides && w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];
-        if (!e->nchain) continue;
-        silk_sil_cost *c = &f->cost[e->parent];
-        for (uint32_t i = 0; i < e->nsides; i++)
-            if (f->sides[e->side0 + i].owner == e->side0 + i) { c->recs += e->nchain; c->curves++; }
+        for (uint32_t i = 0; e->nchain && i < e->nsides; i++)
+            if (f->sides[e->side0 + i].owner == e->side0 + i) {
+                f->store_recs += e->nchain;
+                f->store_curves++;
+            }
     }
     uint32_t si = 0;
     f->max_poly = 0;
@@ -271,27 +244,18 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
             if (f->segs) s = &f->segs[si++];
             else if (silk_remesh_seg(f, t, &tmp)) s = &tmp;
         }
-        uint32_t root = SILK_SIL_NONE;
-        for (uint32_t k = 0; k < 3 && root == SILK_SIL_NONE; k++) {
-            const silk_sil_edge *e = edge_at(f, t, k);
-            if (e && e->nchain) root = e->parent;
-        }
-        if (root == SILK_SIL_NONE) continue;
+        if (!side_points(f, t, 0) && !side_points(f, t, 1) && !side_points(f, t, 2)) continue;
         tri_count tc;
         tri_cost(f, t, s, &tc);
-        silk_sil_cost *c = f->cost ? &f->cost[root] : NULL;
-        if (c) {
-            c->tris += tc.tris - 1;
-            c->recs += tc.recs;
-            c->curves += tc.curves;
-        }
+        f->store_tris += tc.tris - 1;
+        f->store_recs += tc.recs;
+        f->store_curves += tc.curves;
         f->out_tris += tc.tris - 1;
         if (tc.poly > f->max_poly) f->max_poly = tc.poly;
         if (tc.local_recs > f->max_recs) f->max_recs = tc.local_recs;
         if (tc.tris > f->max_tris) f->max_tris = tc.tris;
         if (tc.local_curves > f->max_curves) f->max_curves = tc.local_curves;
         if (s) {
-            s->comp = root;
             f->seg_samples += s->n - 1;
             if (s->concave) {
                 /* the triangle's corners and everything one edge away */
@@ -300,7 +264,6 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
                     silk_index vtx = m->tri[3 * t + k];
                     near += m->vert_edge_start[vtx + 1] - m->vert_edge_start[vtx];
                 }
-                if (c) c->near += near;
                 f->near_total = f->near_total > UINT32_MAX - near ? UINT32_MAX : f->near_total + near;
             }
         }
@@ -308,48 +271,14 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     return SILK_OK;
 }
 
-int silk_remesh_reject_last(silk_sil_frame *f)
-{
-    for (uint32_t w = f->nedges; w-- > 0;) {
-        silk_sil_edge *e = &f->edges[w];
-        if (e->parent != w || e->rejected) continue;
-        const silk_sil_cost *c = &f->cost[w];
-        if (!c->recs && !c->tris && !c->curves && !c->near) continue;
-        e->rejected = 1;
-        return 1;
-    }
-    return 0;
-}
-
-/* Totals over the parts still accepted. */
-static void totals(const silk_sil_frame *f, uint64_t *recs, uint64_t *tris, uint64_t *curves,
-                   uint64_t *near)
-{
-    *recs = 3 * (uint64_t)f->m->ntris;
-    *tris = f->m->ntris;
-    *curves = 0;
-    *near = 0;
-    for (uint32_t w = 0; w < f->nedges; w++) {
-        const silk_sil_edge *e = &f->edges[w];
-        if (e->parent != w || e->rejected) continue;
-        *recs += f->cost[w].recs;
-        *tris += f->cost[w].tris;
-        *curves += f->cost[w].curves;
-        *near += f->cost[w].near;
-    }
-}
-
 uint32_t silk_remesh_near_bound(const silk_sil_frame *f)
 {
-    uint64_t r, t, c, n = f->near_total;
-    if (f->cost) totals(f, &r, &t, &c, &n);
-    return n > f->m->nverts ? f->m->nverts : (uint32_t)n;
+    return f->near_total > f->m->nverts ? f->m->nverts : f->near_total;
 }
 
 int silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g)
 {
-    uint64_t recs, tris, curves, near;
-    totals(f, &recs, &tris, &curves, &near);
+    uint64_t recs = f->store_recs, tris = f->store_tris, curves = f->store_curves;
     if (recs > UINT32_MAX || 3 * tris > UINT32_MAX) return 0;
     silk_arena *a = f->a;
     g->vrec = silk_arena_array_top(a, (size_t)recs, sizeof *g->vrec, SILK_MEM_FRAME);
@@ -506,7 +435,7 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, s
     s->curve = g->ncurve++;
     g->curve[s->curve] = s->c;
     s->rec = g->nvrec;
-    for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, s->curve, sample_t(i, s->n));
+    for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, s->curve, silk_sample_param(i, s->n));
     s->rec_a = cyc[l.iA];
     s->rec_b = cyc[l.iB];
 #define SAMPLE(i) ((i) == 0 ? cyc[l.iA] : (i) == s->n ? cyc[l.iB] : s->rec + (i) - 1)
@@ -593,7 +522,7 @@ static void emit_fanned(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
  * as it is. */
 static void emit_one(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, silk_sil_seg *s)
 {
-    if (s && !f->edges[s->comp].rejected) {
+    if (s) {
         emit_silhouette(f, g, t, s);
         return;
     }
@@ -617,7 +546,7 @@ void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *s
     uint32_t samples = 0, bridges = 0;
     for (uint32_t w = 0; w < f->nedges; w++) {
         silk_sil_edge *e = &f->edges[w];
-        if (!e->nchain || f->edges[e->parent].rejected) continue;
+        if (!e->nchain) continue;
         bridges += e->npairs;
         samples += e->nchain;
         for (uint32_t i = 0; i < e->nsides; i++) {
@@ -633,7 +562,7 @@ void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *s
     uint32_t si = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
-        if (s && !f->edges[s->comp].rejected) samples += s->n - 1;
+        if (s) samples += s->n - 1;
         emit_one(f, g, t, s);
     }
 

@@ -20,7 +20,9 @@
  * asking for them is SILK_ERR_ARG.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "smooth.h"
+#include "remesh.h"
+#include "lines.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -80,13 +82,13 @@ static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 {
     if (f->line_cache) *out = f->line_cache[i];
     else f->hal->vertex(f->hal, &f->geom, &f->g.line_vrec[i], out);
-    if (f->line_lift) silk_lines_apply_lift(out, f->line_lift[i]);
+    silk_lines_apply_lift(out, f->line_lift ? f->line_lift[i] : 0);
 }
 
 /* ---- Streamed frames ------------------------------------------------------------
  *
  * A FLAT or SMOOTH frame without lines is never stored.  The silhouette plan
- * (silhouette.h: carrying edges, their points, the perturbation) is made once
+ * (plan.h: carrying edges, their points, the perturbation) is made once
  * per frame; an input triangle's share of the frame - its records, curves
  * and triangles, what a stored frame holds for it, in the same order - is
  * rebuilt and put through the vertex stage whenever a band needs it, so the
@@ -127,7 +129,7 @@ static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         silk_arena_top_release(a, &mark);
         memset(&f->g, 0, sizeof f->g);
         f->cache = NULL;
-        stats->fell_back = 1;
+        silk_frame_stats_fell_back(stats, m->ntris);
     }
     /* the coarse mesh: three CORNER records (zero-filled: kind CORNER) and one triangle at a time */
     size_t free_bytes = silk_arena_free_bytes(a);
@@ -162,14 +164,6 @@ static void stream_part(frame *f, uint32_t t)
     for (uint32_t i = 0; i < g->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
 }
 
-/* The row of a frame `height` rows high where the rasterizer puts clip
- * point c, y' = (1 - y/w) height/2, floored (w > 0). */
-static int64_t clip_row(const silk_vec4 *c, int height)
-{
-    int64_t n = ((int64_t)c->w - c->y) * height, d = 2 * (int64_t)c->w;
-    return n >= 0 ? n / d : -((-n + d - 1) / d);
-}
-
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
  * lowest row; one row more on each side covers the rasterizer's rounding to
@@ -190,7 +184,7 @@ static void stream_rows(frame *f, silk_arena *a, int height)
                 hi = height - 1;
                 break;
             }
-            int64_t y = clip_row(c, height);
+            int64_t y = silk_raster_row(c, height);
             if (y - 1 < lo) lo = y - 1;
             if (y + 1 > hi) hi = y + 1;
         }
@@ -250,6 +244,11 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     f->cache = silk_arena_array_top(a, f->g.nvrec, sizeof *f->cache, SILK_MEM_FRAME);
     if (f->cache)
         for (uint32_t i = 0; i < f->g.nvrec; i++) h->vertex(h, &f->geom, &f->g.vrec[i], &f->cache[i]);
+    /* Smooth lines: where the outline leaves the silhouette segments, the
+     * contour of the drawn triangles closes it (it needs the vertex stage's
+     * output; without room for it the frame says so). */
+    if (smooth_lines && (!f->cache || silk_lines_contour(a, &f->g, f->cache, v->cam.width, v->cam.height) != SILK_OK))
+        stats->fell_back = 1;
     f->line_cache = silk_arena_array_top(a, f->g.nline_vrec, sizeof *f->line_cache, SILK_MEM_FRAME);
     if (f->line_cache)
         for (uint32_t i = 0; i < f->g.nline_vrec; i++)

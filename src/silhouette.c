@@ -12,10 +12,10 @@
  *
  * Everything placed on an edge is computed here once per edge and frame and
  * collected into the edge's chain of parameters, which every triangle on the
- * edge then walks (see silhouette.h), so neighbours agree bit for bit.
+ * edge then walks (see plan.h), so neighbours agree bit for bit.
  */
 #include <string.h>
-#include "silhouette.h"
+#include "plan.h"
 #include "curve.h"
 
 /* ---- small helpers ---------------------------------------------------------- */
@@ -41,11 +41,12 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     else { s->uv0 = SILK_NO_INDEX; s->uv1 = SILK_NO_INDEX; }
 }
 
-static int is_front(const silk_mesh *m, const silk_view *v, uint32_t t)
+int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
+    for (int k = 0; k < 3; k++)
+        if (m->tri[3 * t + k] >= m->nverts) return 0;
     silk_vec3 fn = silk_mesh_face_normal(m, t);
-    silk_vec3 d = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
-    return silk_v3_dot64(fn, d) > 0;
+    return silk_v3_dot64(fn, silk_view_to_eye(v, m->pos[m->tri[3 * t]])) > 0;
 }
 
 /* Triangles whose three normals and corners are usable; anything else is
@@ -57,14 +58,6 @@ static int tri_ok(const silk_mesh *m, uint32_t t)
             !edge_ok(m, m->tri_edge[3 * t + k]))
             return 0;
     return 1;
-}
-
-uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i)
-{
-    uint32_t r = i;
-    while (edges[r].parent != r) r = edges[r].parent;
-    while (edges[i].parent != r) { uint32_t nx = edges[i].parent; edges[i].parent = r; i = nx; }
-    return r;
 }
 
 const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
@@ -187,7 +180,10 @@ static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
     if (f->edge_slot[e] == SILK_SIL_NONE) f->edge_slot[e] = (*n)++;
 }
 
-silk_status silk_sil_find(silk_sil_frame *f)
+/* Visibility of the normals (III-B), the silhouette triangles and the
+ * front-facing triangles next to a feature edge (tri_state), and a slot for
+ * every edge that carries points this frame (edge_slot; f->nedges of them). */
+static silk_status find_triangles(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
     const silk_view *v = f->v;
@@ -225,7 +221,7 @@ silk_status silk_sil_find(silk_sil_frame *f)
             int has_feature = 0;
             for (int k = 0; k < 3; k++)
                 if (m->edge[m->tri_edge[3 * t + k]].flags & SILK_EDGE_FEATURE) has_feature = 1;
-            if (has_feature && is_front(m, v, t)) {
+            if (has_feature && silk_sil_tri_front(m, v, t)) {
                 st |= SILK_TS_FRONT;
                 for (int k = 0; k < 3; k++) {
                     silk_index e = m->tri_edge[3 * t + k];
@@ -235,15 +231,23 @@ silk_status silk_sil_find(silk_sil_frame *f)
         }
         f->tri_state[t] = st;
     }
-
     f->nedges = nwork;
+    return SILK_OK;
+}
+
+/* The carrying edges, and room for their sides and silhouette points:
+ * each edge's run of sides and of points laid out edge by edge. */
+static silk_status lay_out_edges(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
+    silk_arena *a = f->a;
+    uint32_t nwork = f->nedges;
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
     for (uint32_t e = 0; e < m->nedges; e++) {
         uint32_t w = f->edge_slot[e];
         if (w == SILK_SIL_NONE) continue;
         f->edges[w].edge = e;
-        f->edges[w].parent = w;
         f->edges[w].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
     }
 
@@ -275,7 +279,14 @@ silk_status silk_sil_find(silk_sil_frame *f)
     f->sides = f->stream ? NULL : silk_arena_array_top(a, nsides, sizeof *f->sides, SILK_MEM_FRAME);
     f->pairs = silk_arena_array_top(a, npairs, sizeof *f->pairs, SILK_MEM_FRAME);
     if ((!f->sides && !f->stream) || !f->pairs) return SILK_ERR_NOMEM;
+    return SILK_OK;
+}
 
+/* Every side on a carrying edge (with the side whose records it shares, in
+ * STORED mode) and one silhouette point per distinct normal pair. */
+static void fill_sides(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
     for (uint32_t t = 0; t < m->ntris; t++) {
         if (!tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
@@ -313,7 +324,16 @@ silk_status silk_sil_find(silk_sil_frame *f)
             p->n1 = s->n1;
         }
     }
+}
 
+/* Per edge: its curve, its silhouette points (eqs. 6-7), its feature
+ * sampling (eq. 8), then the chain of all its parameters. */
+static silk_status chain_points(silk_sil_frame *f)
+{
+    const silk_mesh *m = f->m;
+    const silk_view *v = f->v;
+    silk_arena *a = f->a;
+    uint32_t nwork = f->nedges;
     /* Per edge: its curve, its silhouette points (eqs. 6-7), its feature
      * sampling (eq. 8), then the chain of all its parameters. */
     uint32_t nchain = 0;
@@ -342,7 +362,7 @@ silk_status silk_sil_find(silk_sil_frame *f)
         silk_fx *c = &f->chain[nchain];
         uint32_t n = 0;
         for (uint32_t i = 1; i < we->nfeat; i++)
-            c[n++] = silk_fx_sat(((int64_t)i * SILK_FX_ONE + we->nfeat / 2) / we->nfeat);
+            c[n++] = silk_sample_param(i, we->nfeat);
         for (uint32_t i = 0; i < we->npairs; i++) chain_insert(c, &n, f->pairs[we->pair0 + i].u);
         for (uint32_t i = 0; i < we->npairs; i++) {
             silk_sil_pair *p = &f->pairs[we->pair0 + i];
@@ -354,4 +374,13 @@ silk_status silk_sil_find(silk_sil_frame *f)
     }
     f->nchain = nchain;
     return SILK_OK;
+}
+
+silk_status silk_sil_find(silk_sil_frame *f)
+{
+    silk_status st = find_triangles(f);
+    if (st == SILK_OK) st = lay_out_edges(f);
+    if (st != SILK_OK) return st;
+    fill_sides(f);
+    return chain_points(f);
 }

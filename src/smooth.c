@@ -5,30 +5,18 @@
  * vertex perturbation (perturb.c), and the vertex records for the HAL -
  * stored for the whole frame (silk_frame_smooth), or planned only and
  * streamed one input triangle at a time (silk_frame_smooth_stream, what the
- * renderer uses; silhouette.h).
+ * renderer uses; plan.h).
  *
- * Memory runs out gracefully: scratch that does not fit turns the frame into
- * the coarse mesh; output that does not fit drops re-meshed parts from the
- * last one back until it does.  Either way stats->fell_back is set and the
- * frame is still drawn.
+ * Memory runs out gracefully, the same way for every frame: a plan (or a
+ * stored frame's output) that does not fit turns the frame into the coarse
+ * mesh (silk_frame_fall_back, flat.c), stats->fell_back is set and the frame
+ * is still drawn.
  */
 #include <string.h>
-#include "silhouette.h"
-
-static silk_status fall_back_flat(silk_arena *a, const silk_mesh *m, const silk_arena_mark *mark,
-                                  silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
-{
-    silk_arena_top_release(a, mark);
-    memset(g, 0, sizeof *g);
-    silk_status st = silk_frame_flat(a, m, g, err);
-    if (st != SILK_OK) return st;
-    if (stats) {
-        stats->silhouette_tris = stats->bridges = stats->samples = stats->moved_vertices = 0;
-        stats->tris_drawn = g->ntri;
-        stats->fell_back = 1;
-    }
-    return SILK_OK;
-}
+#include "smooth.h"
+#include "remesh.h"
+#include "perturb.h"
+#include "lines.h"
 
 silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view *v,
                               silk_fx tolerance_px, silk_vis_method vis,
@@ -45,6 +33,21 @@ static void lines_fell_back(silk_frame_geom *g, silk_frame_stats *stats)
     if (stats) stats->fell_back = 1;
 }
 
+/* The plan of a frame (silhouette.c, remesh.c, perturb.c) into f, from the
+ * top of the arena; 0 when it does not fit. */
+static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
+                     silk_fx tolerance_px, silk_vis_method vis, int stream)
+{
+    memset(f, 0, sizeof *f);
+    f->a = a;
+    f->m = m;
+    f->v = v;
+    f->tol = tolerance_px;
+    f->vis = vis;
+    f->stream = stream;
+    return silk_sil_find(f) == SILK_OK && silk_remesh_plan(f) == SILK_OK && silk_perturb_alloc(f);
+}
+
 silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const silk_view *v,
                                     silk_fx tolerance_px, silk_vis_method vis, int lines,
                                     silk_frame_geom *g, silk_frame_stats *stats, silk_error *err)
@@ -58,30 +61,13 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_sil_frame f;
-    memset(&f, 0, sizeof f);
-    f.a = a;
-    f.m = m;
-    f.v = v;
-    f.tol = tolerance_px;
-    f.vis = vis;
-
-    silk_status st = SILK_OK;
-    int flat = silk_sil_find(&f) != SILK_OK || silk_remesh_plan(&f) != SILK_OK;
-    while (!flat) {
-        silk_arena_mark try_mark = silk_arena_top_mark(a);
-        if (silk_perturb_alloc(&f) && silk_remesh_alloc(&f, g)) break;
-        silk_arena_top_release(a, &try_mark);
-        f.fell_back = 1;
-        flat = !silk_remesh_reject_last(&f);
-    }
-    if (flat) {
-        st = fall_back_flat(a, m, &mark, g, stats, err);
+    if (!make_plan(&f, a, m, v, tolerance_px, vis, 0) || !silk_remesh_alloc(&f, g)) {
+        silk_status st = silk_frame_fall_back(a, m, &mark, g, stats, err);
         if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) lines_fell_back(g, stats);
         return st;
     }
     silk_perturb(&f);
     silk_remesh_emit(&f, g, stats);
-    if (stats) stats->fell_back = f.fell_back;
     if (lines && silk_lines_smooth(&f, g) != SILK_OK) lines_fell_back(g, stats);
     return SILK_OK;
 }
@@ -90,15 +76,7 @@ int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view 
                              silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local)
 {
     silk_arena_mark mark = silk_arena_top_mark(a);
-    memset(f, 0, sizeof *f);
-    f->a = a;
-    f->m = m;
-    f->v = v;
-    f->tol = tolerance_px;
-    f->vis = vis;
-    f->stream = 1;
-    if (tolerance_px <= 0 || silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK ||
-        !silk_perturb_alloc(f) || !silk_remesh_stream_alloc(f, local)) {
+    if (tolerance_px <= 0 || !make_plan(f, a, m, v, tolerance_px, vis, 1) || !silk_remesh_stream_alloc(f, local)) {
         silk_arena_top_release(a, &mark);
         memset(f, 0, sizeof *f);
         return 0;

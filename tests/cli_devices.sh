@@ -10,6 +10,13 @@
 
 meshes=${SILK_MESHES:-../shared/meshes}
 mesh=$meshes/bunny-500.obj
+ntris=500
+if [ ! -e "$mesh" ]; then
+    echo "note: $mesh is missing; the generated torus stands in for it"
+    mesh=$tmp/torus.obj
+    ntris=576
+    "$SILK" gen torus -o "$mesh" >/dev/null
+fi
 CC=${CC:-cc}
 # The library under test may be built with sanitizers; the scene must link it.
 SANFLAGS=
@@ -21,7 +28,7 @@ hdr=$tmp/fwmodel.h
 run_silk pack "$mesh" -o "$hdr" --name fwmodel --size 160x120 --format rgb565 --views 3
 ok=0; [ "$rc" -eq 0 ] && [ ! -s "$err" ] && [ "$(wc -l <"$out")" -eq 1 ] && ok=1
 check "pack: exit 0, one summary line" [ "$ok" -eq 1 ]
-check "pack: summary names the model data" grep -q 'model data (bytes):.*triangles 6000' "$out"
+check "pack: summary names the model data" grep -q "model data (bytes):.*triangles $((ntris * 12))" "$out"
 check "pack: three cameras recorded" [ "$(grep -c 'camera [0-9]*: --eye ' "$hdr")" -eq 3 ]
 
 printf '#include "fwmodel.h"\nint main(void) { silk_mesh m; fwmodel_mesh(&m); return fwmodel_camera(2) == 0; }\n' >"$tmp/use.c"
@@ -63,7 +70,7 @@ fi
 echo stale >"$tmp/stale.h"
 expect_usage "pack: no output" pack "$mesh"
 want='--eye or --views' expect_usage "pack: --eye with --views" pack "$mesh" -o "$tmp/stale.h" --eye 0,0,3 --views 2
-check "pack: a failed run removes the old header" [ ! -e "$tmp/stale.h" ]
+check "pack: a failed run keeps an earlier header" test "$(cat "$tmp/stale.h")" = stale
 want='C identifier' expect_usage "pack: bad --name" pack "$mesh" -o "$tmp/x.h" --name 9lives
 want='--views' expect_usage "pack: --views 0" pack "$mesh" -o "$tmp/x.h" --views 0
 expect_input "pack: missing mesh" pack "$tmp/none.obj" -o "$tmp/x.h"

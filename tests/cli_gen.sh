@@ -120,6 +120,25 @@ gen_ok cylinder-rows 2 cylinder --segments 7 --bands 5 --radius 2 --height 0.5
 gen_ok knot-35 0 knot --p 3 --q 5 --tube 0.12 --segments 150 --bands 6
 gen_ok knot-unknot 0 knot --p 1 --q 4 --R 1.5 --r 0.5 --tube 0.1 --segments 40 --bands 5
 
+# The default knot and the documented one are smooth tubes: no edge is a
+# crease (a tube twisting between its rings, or passing through itself,
+# makes them).
+smooth_tube() {
+    name=$1; shift
+    "$SILK" gen knot "$@" -o "$tmp/tube.obj" >/dev/null 2>"$err" && run_silk info "$tmp/tube.obj"
+    n=$(info_value "$out" "feature edges")
+    check "$name: no feature edges (${n:-none})" test "$rc" -eq 0 -a "$n" = 0
+}
+smooth_tube "default knot"
+smooth_tube "documented knot" --p 3 --q 5 --tube 0.15 --segments 160
+check "silk help gen shows the documented knot" sh -c "'$SILK' help gen | grep -q -- '--p 3 --q 5 --tube 0.15 --segments 160'"
+want='--tube 0.3 is too thick: the tube would pass through itself \(at most 0\.[0-9]+' \
+    expect_usage "knot tube through itself" gen knot --p 3 --q 5 --tube 0.3 -o "$tmp/k.obj"
+want='--segments 10 is too few: the tube.s straight pieces would pass through each other \(at least 12 ' \
+    expect_usage "knot too coarse: its polyline passes through itself" gen knot --segments 10 -o "$tmp/k.obj"
+want='--tube 1.1 is too thick for the curve.s tightest bend \(at most' \
+    expect_usage "knot tube folds at a bend" gen knot --p 1 --q 8 --R 3 --r 1 --tube 1.1 -o "$tmp/k.obj"
+
 # the defaults the paper's experiments use
 run_silk gen sphere -o "$tmp/s.obj"
 check "sphere default is 200 triangles" grep -q '^# 102 vertices, 200 triangles' "$tmp/s.obj"
@@ -132,9 +151,11 @@ run_silk gen knot -o "$tmp/k2.obj"
 check "-o - writes the same mesh to stdout" cmp -s "$tmp/k1.obj" "$tmp/k2.obj"
 check "atomic output leaves no temporary file" no_tmp_files "$tmp"
 
-# bad parameters: usage errors, nothing written (and no stale file kept)
+# bad parameters: usage errors, nothing written (an earlier file stays)
 o=$tmp/bad.obj
-echo stale >"$o"
+echo earlier >"$tmp/earlier.obj"
+want='--tube' expect_usage "a failed run" gen knot --tube 0.5 -o "$tmp/earlier.obj"
+check "a failed run keeps an earlier output" test "$(cat "$tmp/earlier.obj")" = earlier
 want='--segments' expect_usage "segments too few" gen sphere --segments 2 -o "$o"
 want='--bands' expect_usage "bands too few" gen sphere --bands 1 -o "$o"
 want='--r must be smaller' expect_usage "torus r >= R" gen torus --R 1 --r 1 -o "$o"

@@ -24,7 +24,18 @@ example_ok() {
 }
 check "README example renders ($(cat "$out"))" example_ok
 "$tmp/example" "$tmp/missing.obj" >"$out" 2>"$err"
+check "README example reports a missing file" test $? -eq 1 -a -s "$err"
+"$tmp/example" "$here/bad/face-index-zero.obj" >"$out" 2>"$err"
 check "README example reports a load error" test $? -eq 1 -a -s "$err"
+# Over its 1 MiB buffer: it says so rather than parse a cut file.
+"$SILK" gen sphere --segments 200 --bands 120 -o "$tmp/big.obj"
+"$tmp/example" "$tmp/big.obj" >"$out" 2>"$err"
+rc=$?
+check "README example says a file is too large ($(head -c 200 "$err"))" \
+    test "$rc" -eq 1 -a "$(cat "$err")" = "$tmp/big.obj: too large for the 1048576-byte buffer"
+head -c 1048576 "$tmp/big.obj" >"$tmp/exact.obj"
+"$tmp/example" "$tmp/exact.obj" >"$out" 2>"$err"
+check "README example reads a file of exactly its buffer's size" test $? -eq 1 -a -z "$(grep 'too large' "$err")"
 
 for c in "make demo" "make test" "silk render" "silk info" "silk gen" ".ci/run"; do
     check "README mentions $c" grep -q -- "$c" "$readme"

@@ -3,7 +3,7 @@
 # 2048x2048, perspective and orthographic, PNG and PPM, both pixel formats,
 # the eye inside the model, --compare and --wire; the default camera frames
 # the model (its area on screen is what the framing rule predicts); renders
-# are deterministic; failures leave no output file, partial or stale.
+# are deterministic; failures leave no partial output and keep an earlier one.
 . "$(dirname "$0")/shlib.sh"
 
 sphere=$tmp/sphere.obj
@@ -112,14 +112,15 @@ nf=$(ppm_count_not "$tmp/f.ppm" $bg)
 ns=$(ppm_count_not "$tmp/s.ppm" $bg)
 check "smooth covers more than flat ($ns > $nf px)" test "$ns" -gt "$nf"
 
-# ---- failures leave nothing behind -----------------------------------------------
+# ---- failures leave the output as it was ------------------------------------------
 o=$tmp/fail.png
-echo stale >"$o"
-want='cannot open: No such file or directory' expect_input "missing mesh" render "$tmp/nope.obj" -o "$o"
-check "missing mesh removes a stale output" test ! -e "$o"
-echo stale >"$o"
+cp "$tmp/o.ppm" "$tmp/good.ppm"
+want='cannot open: No such file or directory' expect_input "missing mesh" render "$tmp/nope.obj" -o "$tmp/good.ppm"
+check "missing mesh keeps an earlier output" cmp -s "$tmp/o.ppm" "$tmp/good.ppm"
+want='--mode must be' expect_usage "a typo in --mode" render "$sphere" --mode smoth -o "$tmp/good.ppm"
+check "a typo in --mode keeps an earlier output" cmp -s "$tmp/o.ppm" "$tmp/good.ppm"
 want='size' expect_usage "bad size" render "$sphere" --size 0x5 -o "$o"
-check "usage error removes a stale output" test ! -e "$o"
+check "usage error writes nothing" test ! -e "$o"
 cp "$tmp/o.ppm" "$tmp/input.ppm"
 expect_input "an image as the mesh" render "$tmp/input.ppm" -o "$tmp/input.ppm"
 check "a failed render never removes its input" cmp -s "$tmp/o.ppm" "$tmp/input.ppm"

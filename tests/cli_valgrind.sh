@@ -51,9 +51,15 @@ for shape in sphere torus cone cylinder knot; do
     memcheck "gen $shape" gen "$shape" -o "$tmp/$shape.obj"
 done
 list="$tmp/sphere.obj $tmp/torus.obj $tmp/cone.obj $tmp/cylinder.obj $tmp/knot.obj"
-for m in bunny-500 fandisk-128; do
-    [ -f "$meshes/$m.obj" ] && list="$list $meshes/$m.obj"
-done
+want=5
+if [ -d "$meshes" ]; then
+    want=6
+    for m in bunny-500 fandisk-128; do
+        [ -f "$meshes/$m.obj" ] && list="$list $meshes/$m.obj"
+    done
+else
+    echo "skip: $meshes is missing, so bunny-500 and fandisk-128 are not checked"
+fi
 
 n=0
 for m in $list; do
@@ -65,7 +71,7 @@ for m in $list; do
     done
     memcheck "info $b" info "$m" --size 64x48
 done
-check "at least 6 meshes" test "$n" -ge 6
+check "at least $want meshes ($n)" test "$n" -ge "$want"
 # what `make demo` does besides: contact sheets of all modes with edges,
 # a close-up, flat | smooth side by side
 for b in sphere knot; do

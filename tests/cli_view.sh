@@ -70,6 +70,34 @@ object='!(r == 255 && g == 255 && b == 255)'
 red='r > 180 && g < 100 && b < 100'
 blue='b > 200 && r < 80 && g < 140'
 
+# No display: one line and exit 1 at once, never a wait for input that
+# cannot come; --frames N ends after N frames with or without --spin (on
+# SDL's invisible driver, asked for by name).  Each under a timeout.
+ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0   # SDL keeps some allocations until exit
+export ASAN_OPTIONS
+if "$SILK" view --help | grep -q 'not in this build'; then
+    echo "skip: silk is built without SDL2, so view has no window to fail to open"
+else
+    nodisp() { timeout 2 env -u DISPLAY -u WAYLAND_DISPLAY "$@" >"$out" 2>"$err"; rc=$?; }
+    nodisp -u SDL_VIDEODRIVER "$SILK" view "$torus"
+    check "no display: exit 1 within 2 s (got $rc)" test "$rc" -eq 1
+    want='no display' check "no display: one line saying so ($(head -c 200 "$err"))" one_error_line
+    nodisp SDL_VIDEODRIVER=nowhere "$SILK" view "$torus"
+    check "SDL_VIDEODRIVER=nowhere: exit 1 within 2 s (got $rc)" test "$rc" -eq 1
+    want='cannot open a window' check "SDL_VIDEODRIVER=nowhere: one line ($(head -c 200 "$err"))" one_error_line
+    want=
+    for spin in "" --spin; do
+        rm -f "$tmp"/frames-*.ppm
+        timeout 20 env SDL_VIDEODRIVER=offscreen "$SILK" view "$torus" --size 80x60 --frames 3 $spin \
+            -o "$tmp/frames-%d.ppm" >"$out" 2>"$err"
+        rc=$?
+        check "--frames 3 ${spin:-without --spin} ends with status 0 (got $rc: $(head -c 200 "$err"))" test "$rc" -eq 0
+        check "--frames 3 ${spin:-without --spin} saves the last frame" test -s "$tmp/frames-1.ppm"
+    done
+fi
+timeout 20 "$SILK" view "$torus" --fb-file "$tmp/fb.raw" --fb-geometry 80x60x16 --frames 3 >"$out" 2>"$err"
+check "--fb-file --frames 3 ends after 3 frames (exit $?)" grep -q '^silk view: 3 frames of 80x60' "$out"
+
 # --events: the same viewer, no window.
 run_silk view "$torus" --size 160x120 --events "h shot:$tmp/e1.ppm 1 shot:$tmp/e2.ppm"
 check "view --events saves screenshots" test -s "$tmp/e1.ppm" -a -s "$tmp/e2.ppm"
@@ -143,14 +171,21 @@ shot() {
 
 xdotool key h; shot                                       # 1: smooth, no status line
 xdotool key 1; shot                                       # 2: flat
-xdotool mousemove --window "$wid" 160 100 mousedown 1 \
-    mousemove --window "$wid" 160 200 mouseup 1; shot     # 3: dragged 100 px down
+# One step at a time with pauses: on a loaded machine (tests run two at a
+# time) a press that arrives with the first move may not start the drag.
+drag() {
+    xdotool mousemove --window "$wid" --sync 160 100; sleep 0.2
+    xdotool mousedown 1; sleep 0.2
+    xdotool mousemove --window "$wid" --sync 160 200; sleep 0.2
+    xdotool mouseup 1; sleep 0.2
+}
+drag; shot                                                # 3: dragged 100 px down
 xdotool click --repeat 3 --delay 50 4; shot               # 4: three wheel notches in
 xdotool key 2 w; shot                                     # 5: smooth, wireframe
 xdotool key w l; shot                                     # 6: lines over the surface
 xdotool key l; shot                                       # 7: lines alone
 xdotool key l h; shot                                     # 8: status line
-xdotool windowsize "$wid" 400 300; sleep 0.5; shot        # 9: resized
+xdotool windowsize --sync "$wid" 400 300; sleep 0.5; shot # 9: resized
 xdotool key q
 for i in $(seq 50); do kill -0 "$view_pid" 2>/dev/null || break; sleep 0.1; done
 if kill -0 "$view_pid" 2>/dev/null; then

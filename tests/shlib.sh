@@ -96,3 +96,19 @@ done_testing() {
     echo "$passed passed, $failed failed"
     [ "$failed" -eq 0 ]
 }
+
+# mesh_made NAME PATTERN FILE TARGET: the command run_silk just ran exited 0
+# with nothing on stderr and a line matching PATTERN on stdout, and silk
+# info reads FILE as closed and manifold with TARGET triangles.
+mesh_made() {
+    if [ "$rc" -ne 0 ] || [ -s "$err" ] || ! grep -qE -- "$2" "$out"; then
+        fail "$1" "exit $rc: $(head -c 300 "$err") $(head -c 300 "$out")"; return
+    fi
+    "$SILK" info "$3" >"$tmp/info" 2>&1
+    if [ "$(info_value "$tmp/info" triangles)" = "$4" ] && [ "$(info_value "$tmp/info" "boundary edges")" = 0 ] &&
+       [ "$(info_value "$tmp/info" "non-manifold edges")" = 0 ] && [ "$(info_value "$tmp/info" "degenerate triangles")" = 0 ]; then
+        pass "$1: $4 triangles, closed, manifold"
+    else
+        fail "$1" "silk info: $(head -c 400 "$tmp/info")"
+    fi
+}

@@ -17,7 +17,8 @@
  *     vertex cache costs time, not pixels),
  *   - byte for byte the FLAT frame when it fell back all the way
  *     (stats show no silhouette triangles),
- *   - otherwise a mix: every pixel is the reference's or the FLAT frame's,
+ *   - otherwise (lines, whose own arrays may be what did not fit; PN and
+ *     BLEND) a mix: every pixel is the reference's or the FLAT frame's,
  * and fell_back is set exactly when the frame had less memory than the
  * full frame's peak and did not draw the reference.  Scratch is always
  * released.  PN and BLEND fall back the same way.

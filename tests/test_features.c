@@ -18,7 +18,7 @@
 #include "check.h"
 #include "../src/curve.h"
 #include "silk/silk.h"
-#include "../src/smooth.h"
+#include "../src/frame.h"
 #include "support/testmesh.h"
 #include "support/testvec.h"
 

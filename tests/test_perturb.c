@@ -11,7 +11,8 @@
 #include <string.h>
 #include "check.h"
 #include "silk/silk.h"
-#include "../src/silhouette.h"
+#include "../src/perturb.h"
+#include "../src/remesh.h"
 #include "support/testframe.h"
 #include "support/testmesh.h"
 #include "support/testvec.h"

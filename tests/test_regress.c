@@ -2,7 +2,7 @@
  * test_regress.c - every input the fuzz harnesses ever found a problem
  * with (tests/regress/HARNESS/, see tests/regress/README.md), run again
  * through the same harness code, plus the malformed-input corpus
- * tests/bad/ through the OBJ, PLY and prepared-model harnesses.
+ * tests/bad/ through the OBJ, PLY, STL and prepared-model harnesses.
  *
  * The harnesses (fuzz/fuzz_*.c) are compiled in here without libFuzzer,
  * each under its own entry name; their checks abort with a "fuzz: ..."
@@ -20,6 +20,9 @@
 #undef FUZZ_ENTRY
 #define FUZZ_ENTRY fuzz_ply_entry
 #include "../fuzz/fuzz_ply.c"
+#undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_stl_entry
+#include "../fuzz/fuzz_stl.c"
 #undef FUZZ_ENTRY
 #define FUZZ_ENTRY fuzz_pack_entry
 #include "../fuzz/fuzz_pack.c"
@@ -103,6 +106,14 @@ TEST(regress_ply)
     printf("  %d regression inputs, %d malformed files\n", n, bad);
 }
 
+TEST(regress_stl)
+{
+    int n = run_dir("tests/regress/stl", "", fuzz_stl_entry);
+    int bad = run_dir("tests/bad", ".stl", fuzz_stl_entry);
+    CHECKF(bad >= 10, "only %d STL files in tests/bad", bad);
+    printf("  %d regression inputs, %d malformed files\n", n, bad);
+}
+
 TEST(regress_pack)
 {
     int n = run_dir("tests/regress/pack", "", fuzz_pack_entry);
@@ -136,6 +147,7 @@ int main(void)
 {
     RUN(regress_obj);
     RUN(regress_ply);
+    RUN(regress_stl);
     RUN(regress_pack);
     RUN(regress_render);
     RUN(regress_math);

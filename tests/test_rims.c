@@ -1,5 +1,5 @@
 /*
- * test_rims.c - issue 3's acceptance for feature curves: a capped cylinder
+ * test_rims.c - feature curves: a capped cylinder
  * and a cone whose rims are feature edges (paper III-A) render with smooth
  * rims.
  *

@@ -11,7 +11,8 @@
 #include <string.h>
 #include "check.h"
 #include "silk/silk.h"
-#include "../src/silhouette.h"
+#include "../src/plan.h"
+#include "../src/remesh.h"
 #include "../src/curve.h"
 #include "support/testframe.h"
 #include "support/testmesh.h"

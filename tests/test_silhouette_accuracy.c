@@ -1,5 +1,5 @@
 /*
- * test_silhouette_accuracy.c - the acceptance test of issue 3: how close
+ * test_silhouette_accuracy.c - how close
  * silk's silhouettes come to the true outline of the surface a coarse mesh
  * samples.
  *

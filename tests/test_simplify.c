@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "support/testmesh.h"
 #include "silk/silk.h"
 #include "../platform/platform.h"
 #include "../tools/simplify.c"
@@ -23,38 +24,10 @@ static int load(const char *name, simp_mesh *out)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
-    uint8_t *data;
-    size_t len;
-    silk_error err;
     memset(out, 0, sizeof *out);
-    if (silk_file_read(path, &data, &len, &err) != SILK_OK) {
-        printf("skip: %s\n", err.msg);
-        return -1;
-    }
-    size_t size = len * 16 + (4 << 20);
-    void *buf = malloc(size);
-    silk_arena a;
-    silk_arena_init(&a, buf, size);
-    silk_load_opts lo;
-    silk_load_opts_default(&lo);
-    silk_mesh m;
-    silk_status st = silk_load_mesh(data, len, path, &lo, &a, &m, &err);
-    free(data);
-    CHECKF(st == SILK_OK, "%s", err.msg);
-    if (st == SILK_OK) {
-        out->nverts = m.nverts;
-        out->ntris = m.ntris;
-        out->pos = malloc(3 * sizeof(double) * m.nverts);
-        out->tri = malloc(3 * sizeof(uint32_t) * m.ntris);
-        for (uint32_t i = 0; i < m.nverts; i++) {
-            out->pos[3 * i] = m.pos[i].x / 65536.0;
-            out->pos[3 * i + 1] = m.pos[i].y / 65536.0;
-            out->pos[3 * i + 2] = m.pos[i].z / 65536.0;
-        }
-        for (uint32_t i = 0; i < 3 * m.ntris; i++) out->tri[i] = m.tri[i];
-    }
-    free(buf);
-    return st == SILK_OK ? 0 : -1;
+    int r = tm_load_doubles(path, &out->pos, &out->nverts, &out->tri, &out->ntris);
+    CHECKF(r >= 0, "%s does not load", name);
+    return r == 1 ? 0 : -1;
 }
 
 typedef struct dist { double mean, max; } dist;
@@ -66,7 +39,7 @@ static void one_way(const simp_mesh *a, const simp_mesh *b, double *sum, double 
         double best = INFINITY;
         for (uint32_t f = 0; f < b->ntris; f++) {
             const uint32_t *t = &b->tri[3 * f];
-            double d = point_tri_d2(&a->pos[3 * i], &b->pos[3 * t[0]], &b->pos[3 * t[1]], &b->pos[3 * t[2]]);
+            double d = tm_point_tri_d2(&a->pos[3 * i], &b->pos[3 * t[0]], &b->pos[3 * t[1]], &b->pos[3 * t[2]]);
             if (d < best) best = d;
         }
         best = sqrt(best);

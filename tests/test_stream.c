@@ -1,5 +1,5 @@
 /*
- * test_stream.c - streamed frames (src/render.c, silhouette.h STREAM mode):
+ * test_stream.c - streamed frames (src/render.c, plan.h STREAM mode):
  * the renderer keeps only the silhouette plan and rebuilds each input
  * triangle's share of a FLAT or SMOOTH frame whenever a band needs it.
  *
@@ -28,7 +28,9 @@
 #include "support/testframe.h"
 #include "silk/silk.h"
 #include "support/testmesh.h"
-#include "../src/silhouette.h"
+#include "../src/smooth.h"
+#include "../src/remesh.h"
+#include "../src/lines.h"
 
 #define ARENA_BYTES (16u << 20)
 #define BOARD_FRAME_BYTES 43776u      /* 59136 - 320 * 8 * (2 + 4) */

@@ -178,19 +178,6 @@ int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path)
     return 0;
 }
 
-const char *cli_find_output(int argc, char **argv)
-{
-    const char *out = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
-            if (i + 1 < argc) out = argv[++i];
-        } else if (strncmp(argv[i], "--output=", 9) == 0) {
-            out = argv[i] + 9;
-        }
-    }
-    return out;
-}
-
 /* The option's name without "=value", for messages. */
 static const char *opt_name(const char *arg, char *buf, size_t n)
 {
@@ -211,6 +198,7 @@ void cli_scene_opts_default(cli_scene_opts *o)
     o->height = SILK_BOARD_HEIGHT;
     o->fmt = SILK_BOARD_FORMAT;
     o->fov = CLI_DEFAULT_FOV;
+    o->orient_note = 1;
     silk_render_opts_default(&o->render);
 }
 
@@ -228,6 +216,8 @@ void cli_print_scene_help(FILE *f)
             "  --normals auto|compute|file  shading normals: auto (default) the file's\n"
             "                       where every corner has one, computed otherwise;\n"
             "                       compute always computed; file the same as auto\n"
+            "  --orient fix|keep    fix (default): wind the triangles consistently and\n"
+            "                       closed surfaces outward; keep: the file's winding\n"
             "  --visibility auto|brute|gauss  visibility of normals: auto builds the\n"
             "                       Gaussian-sphere hierarchy at load and uses it where it\n"
             "                       pays (default); brute tests every normal; gauss always\n"
@@ -295,6 +285,11 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         else if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
         else if (strcmp(v, "file") == 0) o->load.normals = SILK_NORMALS_FILE;
         else return cli_fail(-1, "--normals must be auto, compute or file (got \"%s\")", v);
+    } else if (cli_is(arg, "--orient")) {
+        VALUE();
+        if (strcmp(v, "fix") == 0) o->load.orient = SILK_ORIENT_FIX;
+        else if (strcmp(v, "keep") == 0) o->load.orient = SILK_ORIENT_KEEP;
+        else return cli_fail(-1, "--orient must be fix or keep (got \"%s\")", v);
     } else if (cli_is(arg, "--visibility")) {
         VALUE();
         if (strcmp(v, "auto") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_AUTO;
@@ -483,6 +478,18 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
 
 /* ---- scene ----------------------------------------------------------------------- */
 
+void cli_orient_note(const char *path, const silk_mesh *m)
+{
+    if (m->nreoriented_tris)
+        fprintf(stderr, "silk: note: %s: %lu triangles turned round for a consistent, outward winding%s "
+                "(--orient keep leaves them)\n",
+                path, (unsigned long)m->nreoriented_tris,
+                m->nnonorientable_tris ? "; others are on a non-orientable surface, left as they are" : "");
+    else if (m->nnonorientable_tris)
+        fprintf(stderr, "silk: note: %s: %lu triangles are on a non-orientable surface; left as in the file\n",
+                path, (unsigned long)m->nnonorientable_tris);
+}
+
 /* Bytes the arena gets when --arena is not given.  Measured on the shared
  * OBJ meshes (docs/memory.md): the loaded mesh takes about 3x its file, a
  * smooth frame's scratch up to about 7x (240 bytes per triangle); 16x
@@ -562,6 +569,7 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
     }
     if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     s->load_bytes = s->arena.bottom;
+    if (o->orient_note) cli_orient_note(o->mesh_path, &s->mesh);
 
     int rc = cli_camera(o, &s->mesh, &s->cam);
     if (rc) return rc;

@@ -79,6 +79,7 @@ typedef struct cli_scene_opts {
     int vis_brute;             /* 1: no Gaussian-sphere hierarchy, every normal tested */
     size_t arena_bytes;        /* 0: from the file size */
     int arena_doublings;       /* without --arena: start from the estimate times 2^this */
+    int orient_note;           /* 1 (default): say on stderr when the load turned triangles round */
 } cli_scene_opts;
 
 void cli_scene_opts_default(cli_scene_opts *o);
@@ -106,8 +107,13 @@ typedef struct cli_scene {
     size_t load_bytes;         /* arena bottom after loading the mesh */
 } cli_scene;
 
-/* Read and load the mesh, allocate the arena, set up the camera, the target
- * (colour and depth from the arena, purpose RASTER) and the Phong stages.
+/* One line on stderr when loading turned triangles round, or found a
+ * surface it could not orient (silk_mesh.nreoriented_tris, ...). */
+void cli_orient_note(const char *path, const silk_mesh *m);
+
+/* Read and load the mesh (with the orientation note unless o->orient_note
+ * is 0), allocate the arena, set up the camera, the target (colour and
+ * depth from the arena, purpose RASTER) and the Phong stages.
  * Returns 0, or an exit code after printing the error; cli_scene_free
  * releases everything either way. */
 int cli_scene_load(cli_scene *s, const cli_scene_opts *o);
@@ -129,10 +135,6 @@ double cli_mesh_radius(const silk_mesh *m, double c[3]);
  * or the usage error of an unknown option or a second mesh.  Returns 0 or
  * CLI_EXIT_USAGE. */
 int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path);
-
-/* The value of the last "-o"/"--output" in argv, or NULL: found before the
- * options are parsed, so that even a usage error removes a stale output. */
-const char *cli_find_output(int argc, char **argv);
 
 /* The subcommands: argv[0] is the subcommand's name; they return the exit
  * status. */

@@ -121,10 +121,7 @@ int cmd_diff(int argc, char **argv)
     if (!rc && nfiles < 2) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images needed (silk diff A.png B.png)");
     if (!rc && out && silk_image_format_for_path(out) != SILK_IMAGE_PNG)
         rc = cli_fail(CLI_EXIT_USAGE, "diff: %s: the picture of the differences is a PNG (use .png)", out);
+    /* A failed run leaves OUT as it was (written atomically). */
     if (!rc) rc = diff(files[0], files[1], bg, out);
-
-    /* A picture at OUT after a failure would be an earlier run's. */
-    const char *stale = out ? out : cli_find_output(argc, argv);
-    if (rc && stale && silk_image_format_for_path(stale) == SILK_IMAGE_PNG) silk_file_remove_stale(stale);
     return rc;
 }

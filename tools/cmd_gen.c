@@ -91,7 +91,9 @@ static int write_mesh(const gen_mesh *m, const gen_params *p, const char *out)
     return 0;
 }
 
-static int gen(int argc, char **argv, const char **outp)
+/* Returns the exit status, or -1 after --help.  A failed run leaves OUT as
+ * it was (written atomically). */
+static int gen(int argc, char **argv)
 {
     const char *out = NULL;
     if (argc < 2) return cli_fail(CLI_EXIT_USAGE, "gen: which shape? (sphere, torus, cone, cylinder or knot)");
@@ -113,7 +115,6 @@ static int gen(int argc, char **argv, const char **outp)
         }
         if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
-            *outp = out;
             continue;
         }
         const gen_option *g = NULL;
@@ -149,11 +150,6 @@ static int gen(int argc, char **argv, const char **outp)
 
 int cmd_gen(int argc, char **argv)
 {
-    const char *out = NULL;
-    int rc = gen(argc, argv, &out);
-    if (rc < 0) return 0;   /* --help */
-    /* A mesh at OUT after a failure would be an earlier run's. */
-    if (!out) out = cli_find_output(argc, argv);
-    if (rc && out && strcmp(out, "-") != 0 && has_obj_extension(out)) silk_file_remove_stale(out);
-    return rc;
+    int rc = gen(argc, argv);
+    return rc < 0 ? 0 : rc;   /* -1: --help */
 }

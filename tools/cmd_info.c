@@ -66,6 +66,8 @@ static void print_mesh(const cli_scene *s, const cli_scene_opts *o)
     line("boundary edges", "%u", m->nboundary_edges);
     line("non-manifold edges", "%u", m->nnonmanifold_edges);
     line("degenerate triangles", "%u", m->ndegenerate_tris);
+    line("reoriented triangles", "%u", m->nreoriented_tris);
+    if (m->nnonorientable_tris) line("non-orientable triangles", "%u (left as in the file)", m->nnonorientable_tris);
     print_vec("bbox min", m->bbox_min);
     print_vec("bbox max", m->bbox_max);
 }
@@ -121,6 +123,7 @@ int cmd_info(int argc, char **argv)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);
+    o.orient_note = 0;        /* the report has the line */
     int rc = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];

@@ -390,11 +390,8 @@ int cmd_pack(int argc, char **argv)
     if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "pack: no mesh given (silk pack MESH -o MODEL.h)");
     if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "pack: no output given (-o MODEL.h)");
     if (!rc && neyes && nviews) rc = cli_fail(CLI_EXIT_USAGE, "pack: give --eye or --views, not both");
-    if (rc) {
-        const char *stale = out ? out : cli_find_output(argc, argv);
-        if (stale) silk_file_remove_stale(stale);
-        return rc;
-    }
+    /* A failed run leaves OUT as it was (written atomically). */
+    if (rc) return rc;
 
     cli_scene s;
     rc = cli_scene_load(&s, &o);
@@ -413,7 +410,6 @@ int cmd_pack(int argc, char **argv)
     }
     if (rc) {
         cli_scene_free(&s);
-        silk_file_remove_stale(out);
         return rc;
     }
 
@@ -436,10 +432,7 @@ int cmd_pack(int argc, char **argv)
         }
     }
     cli_scene_free(&s);
-    if (st != SILK_OK) {
-        silk_file_remove_stale(out);
-        return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
-    }
+    if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     size_t total = 0;
     printf("%s: %s as %s_mesh(), %d camera%s; model data (bytes):", out, o.mesh_path, name, ncams,
            ncams == 1 ? "" : "s");

@@ -102,24 +102,21 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
 
 int cmd_prepare(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    long target = -1;
+    const char *in = NULL;
+    simp_args args = { NULL, -1, { 1, 0 } };
     simp_opts so;
     simp_opts_default(&so, 0);
     so.subset = 1;
-    silk_decimal scale = { 1, 0 };
-    int rc = 0, fit = 0, r;
+    int rc = 0, fit = 0, k;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        } else if ((r = simplify_option(argc, argv, &i, &so, &target, &scale)) >= 0) {
-            rc = r;
+        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0 || (k = simplify_option(argc, argv, &i, &so)) != 0) {
+            if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--fit") == 0) {
             fit = 1;
-        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
             rc = cli_fail(CLI_EXIT_USAGE, "prepare: unknown option %s (try silk prepare --help)", a);
         } else if (!in) {
@@ -129,12 +126,14 @@ int cmd_prepare(int argc, char **argv)
         }
     }
     if (!rc && !in) rc = cli_fail(CLI_EXIT_USAGE, "prepare: give FINE (silk prepare FINE -o MODEL.silk --triangles N)");
-    if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "prepare: -o MODEL.silk is needed");
-    if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --triangles N is needed");
+    if (!rc && !args.out) rc = cli_fail(CLI_EXIT_USAGE, "prepare: -o MODEL.silk is needed");
+    if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --triangles N is needed");
     if (rc) return rc;
-    so.target_tris = (uint32_t)target;
-    if (silk_file_same(in, out)) return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
-    rc = prepare(in, out, &so, scale, fit);
-    if (rc) silk_file_remove_stale(out);
+    so.target_tris = (uint32_t)args.target;
+    if (silk_file_same(in, args.out))
+        return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
+    /* A failed run leaves no model at OUT (written atomically; an earlier one is removed). */
+    rc = prepare(in, args.out, &so, args.scale, fit);
+    if (rc) silk_file_remove_stale(args.out);
     return rc;
 }

@@ -36,8 +36,8 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n"
             "\n"
-            "Render MESH (OBJ, PLY or a prepared .silk model) to an image; the format\n"
-            "follows OUT's extension.\n"
+            "Render MESH (OBJ, PLY, STL or a prepared .silk model) to an image; the\n"
+            "format follows OUT's extension.\n"
             "\n"
             "  -o, --output OUT     the image to write (.png or .ppm); written atomically\n"
             "  --compare            flat and smooth side by side (an image twice as wide)\n"
@@ -425,13 +425,8 @@ int cmd_render(int argc, char **argv)
             rc = cli_fail(CLI_EXIT_USAGE, "render: --turntable %d writes %d images: -o needs one frame number such as "
                           "turn_%%03d.png (or use --sheet for one image)", se.views, se.views);
     }
+    /* A failed run leaves OUT as it was: images are written atomically, and
+     * an earlier run's image stays. */
     if (!rc) rc = use_series ? render_series(&o, out, &se) : render(&o, out, compare);
-
-    /* An image at OUT after a failure would be an earlier run's (but never
-     * remove the input: "silk render x.ppm -o x.ppm" fails to load it). */
-    const char *stale = out ? out : cli_find_output(argc, argv);
-    if (rc && stale && silk_image_format_for_path(stale) != SILK_IMAGE_NONE &&
-        !(o.mesh_path && silk_file_same(stale, o.mesh_path)))
-        silk_file_remove_stale(stale);
     return rc;
 }

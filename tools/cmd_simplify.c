@@ -9,7 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
 #include "measure.h"
@@ -22,8 +21,9 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk simplify IN OUT.obj --triangles N [options]\n"
             "\n"
-            "Simplify the mesh IN (OBJ, PLY, .silk) to N triangles by quadric-error edge\n"
-            "collapse (Garland-Heckbert) and write OUT as OBJ (atomically; - for stdout).\n"
+            "Simplify the mesh IN (OBJ, PLY, STL or .silk) to N triangles by quadric-error\n"
+            "edge collapse (Garland-Heckbert) and write OUT as OBJ (atomically; - for\n"
+            "stdout).\n"
             "Boundary and crease edges are kept where possible; a closed manifold input\n"
             "gives a closed manifold output (no collapse that breaks the surface or turns\n"
             "a triangle over).  Prints one line:\n"
@@ -43,8 +43,8 @@ static void help(FILE *f)
             "  silk simplify bunny-fine.obj bunny-500.obj --triangles 500\n");
 }
 
-/* The mesh as silk loads it, positions widened to double. */
-int simplify_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
+/* The mesh as silk loads it, positions widened to double (simplify.h). */
+int simp_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold)
 {
     uint8_t *data;
     size_t len;
@@ -90,7 +90,13 @@ int simplify_load(const char *path, silk_decimal scale, simp_mesh *out, int *clo
     return rc;
 }
 
-static int write_obj(const simp_mesh *m, const surf_normals *sn, const char *in, const char *path, uint32_t target)
+int simp_write_obj(const simp_mesh *m, const double *normals, const char *path, const char *comment)
+{
+    return simp_write_obj_corners(m, normals, normals ? m->nverts : 0, normals ? m->tri : NULL, path, comment);
+}
+
+int simp_write_obj_corners(const simp_mesh *m, const double *normals, uint32_t nnormals, const uint32_t *tri_normal,
+                           const char *path, const char *comment)
 {
     silk_outfile o;
     silk_error err;
@@ -100,25 +106,41 @@ static int write_obj(const simp_mesh *m, const surf_normals *sn, const char *in,
         if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         f = o.fp;
     }
-    fprintf(f, "# silk simplify %s --triangles %u%s: %u triangles, %u vertices\n", in, target,
-            sn ? " --for smooth" : "", m->ntris, m->nverts);
+    fprintf(f, "# %s: %u triangles, %u vertices\n", comment, m->ntris, m->nverts);
     for (uint32_t i = 0; i < m->nverts; i++)
         fprintf(f, "v %.9g %.9g %.9g\n", m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
-    if (sn)
-        for (uint32_t i = 0; i < sn->nnormals; i++)
-            fprintf(f, "vn %.9g %.9g %.9g\n", sn->normal[3 * i], sn->normal[3 * i + 1], sn->normal[3 * i + 2]);
+    if (normals)
+        for (uint32_t i = 0; i < nnormals; i++)
+            fprintf(f, "vn %.6f %.6f %.6f\n", normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
     for (uint32_t i = 0; i < m->ntris; i++) {
-        const uint32_t *t = &m->tri[3 * i];
-        if (sn) {
-            const uint32_t *n = &sn->tri_normal[3 * i];
+        const uint32_t *t = &m->tri[3 * i], *n = normals ? &tri_normal[3 * i] : NULL;
+        if (normals)
             fprintf(f, "f %u//%u %u//%u %u//%u\n", t[0] + 1, n[0] + 1, t[1] + 1, n[1] + 1, t[2] + 1, n[2] + 1);
-        } else {
+        else
             fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
-        }
     }
     if (to_stdout) return fflush(stdout) == 0 ? 0 : cli_fail(CLI_EXIT_INPUT, "cannot write to stdout");
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
+}
+
+int simp_common_option(int argc, char **argv, int *i, simp_args *args)
+{
+    const char *a = argv[*i], *v, *end;
+    if (cli_is(a, "--triangles")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_long("--triangles", v, 4, 100000000, &args->target)) return -1;
+    } else if (cli_is(a, "--scale")) {
+        if (!(v = cli_value(argc, argv, i))) return -1;
+        if (silk_decimal_parse(v, &end, &args->scale) != 0 || *end || args->scale.mant <= 0) {
+            cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
+            return -1;
+        }
+    } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
+        if (!(args->out = cli_value(argc, argv, i))) return -1;
+    } else {
+        return 0;
+    }
+    return 1;
 }
 
 int simplify_pipeline(const char *in, const simp_opts *so, silk_decimal scale, simp_result *r)
@@ -126,7 +148,7 @@ int simplify_pipeline(const char *in, const simp_opts *so, silk_decimal scale, s
     memset(r, 0, sizeof *r);
     int closed = 0, rc;
     simp_topology topo;
-    if ((rc = simplify_load(in, scale, &r->mesh, &closed)) != 0) return rc;
+    if ((rc = simp_load(in, scale, &r->mesh, &closed)) != 0) return rc;
     if (so->subset && simp_copy(&r->mesh, &r->fine) != 0) return cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
     if (simp_run(&r->mesh, so, &r->stats) != 0 || simp_topology_check(&r->mesh, &topo) != 0 ||
         (so->subset && surf_normals_compute(&r->fine, &r->mesh, so->crease_deg, &r->normals) != 0))
@@ -153,34 +175,30 @@ void simp_result_free(simp_result *r)
     surf_normals_free(&r->normals);
 }
 
-int simplify_option(int argc, char **argv, int *i, simp_opts *so, long *target, silk_decimal *scale)
+int simplify_option(int argc, char **argv, int *i, simp_opts *so)
 {
     const char *a = argv[*i], *v;
-    if (cli_is(a, "--triangles")) {
-        if (!(v = cli_value(argc, argv, i)) || cli_parse_long("--triangles", v, 4, 100000000, target))
-            return CLI_EXIT_USAGE;
-    } else if (cli_is(a, "--crease")) {
-        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--crease", v, 0, 180, &so->crease_deg))
-            return CLI_EXIT_USAGE;
+    if (cli_is(a, "--crease")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--crease", v, 0, 180, &so->crease_deg)) return -1;
     } else if (cli_is(a, "--feature-weight")) {
         if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so->feature_weight))
-            return CLI_EXIT_USAGE;
-    } else if (cli_is(a, "--scale")) {
-        const char *end;
-        if (!(v = cli_value(argc, argv, i))) return CLI_EXIT_USAGE;
-        if (silk_decimal_parse(v, &end, scale) != 0 || *end || scale->mant <= 0)
-            return cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
+            return -1;
     } else {
-        return -1;
+        return 0;
     }
-    return 0;
+    return 1;
 }
 
 static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale)
 {
     simp_result r;
+    char comment[1024];
+    snprintf(comment, sizeof comment, "silk simplify %s --triangles %u%s", in, so->target_tris,
+             so->subset ? " --for smooth" : "");
     int rc = simplify_pipeline(in, so, scale, &r);
-    if (rc == 0 && (rc = write_obj(&r.mesh, so->subset ? &r.normals : NULL, in, out, so->target_tris)) == 0) {
+    if (rc == 0 && (rc = so->subset ? simp_write_obj_corners(&r.mesh, r.normals.normal, r.normals.nnormals,
+                                                              r.normals.tri_normal, out, comment)
+                                    : simp_write_obj(&r.mesh, NULL, out, comment)) == 0) {
         if (strcmp(out, "-") != 0)
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
                    r.mesh.ntris, r.mesh.nverts, so->target_tris, r.stats.collapses, r.stats.feature_edges);
@@ -192,45 +210,40 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
 
 int cmd_simplify(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    long target = -1;
+    const char *in = NULL;
+    simp_args args = { NULL, -1, { 1, 0 } };
     simp_opts so;
     simp_opts_default(&so, 0);
-    silk_decimal scale = { 1, 0 };
-    int rc = 0, r;
+    int rc = 0, k;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        } else if ((r = simplify_option(argc, argv, &i, &so, &target, &scale)) >= 0) {
-            rc = r;
+        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
+            if (k < 0) rc = CLI_EXIT_USAGE;
+        } else if ((k = simplify_option(argc, argv, &i, &so)) != 0) {
+            if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--for")) {
             if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
             else if (strcmp(v, "smooth") == 0) so.subset = 1;
             else if (strcmp(v, "flat") == 0) so.subset = 0;
             else rc = cli_fail(CLI_EXIT_USAGE, "--for must be flat or smooth (got \"%s\")", v);
-        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
             rc = cli_fail(CLI_EXIT_USAGE, "simplify: unknown option %s (try silk simplify --help)", a);
         } else if (!in) {
             in = a;
-        } else if (!out) {
-            out = a;
+        } else if (!args.out) {
+            args.out = a;
         } else {
             rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", a);
         }
     }
-    if (!rc && (!in || !out)) rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
-    if (!rc && target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
-    so.target_tris = (uint32_t)target;
+    if (!rc && (!in || !args.out))
+        rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
+    if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
+    so.target_tris = (uint32_t)args.target;
     if (rc) return rc;
-    rc = simplify(in, out, &so, scale);
-    /* A file at OUT after a failure would be an earlier run's - unless it
-     * is the input itself. */
-    struct stat si, so_;
-    int same = stat(in, &si) == 0 && stat(out, &so_) == 0 && si.st_dev == so_.st_dev && si.st_ino == so_.st_ino;
-    if (rc && strcmp(out, "-") != 0 && !same) silk_file_remove_stale(out);
-    return rc;
+    /* A failed run leaves OUT as it was (written atomically). */
+    return simplify(in, args.out, &so, args.scale);
 }

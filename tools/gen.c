@@ -116,9 +116,9 @@ static void cross(const double a[3], const double b[3], double o[3])
 
 static double norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
-/* Unit tangent, normal, binormal and the curvature at t.  The Frenet frame is
- * a smooth periodic function of t for a curve without inflections, so the
- * tube closes on itself exactly (a transported frame would not). */
+/* Unit tangent, normal, binormal and the curvature at t (the tube is built
+ * on the frame of knot_rings below; this one gives the curvature and the
+ * starting normal). */
 static double knot_frame(const gen_params *k, double t, double c[3], double T[3], double N[3], double B[3])
 {
     double d1[3], d2[3], b[3];
@@ -144,43 +144,94 @@ static int gcd(int a, int b)
     return a;
 }
 
-/* Why the knot's tube would not be a clean surface, or NULL.  Sampled: the
- * tube must be thinner than the smallest radius of curvature, and two points
- * of the curve that are far apart along it must be more than two tube radii
- * apart in space. */
-static const char *knot_problem(const gen_params *k)
+/* 1 if the closed polyline pts[0..n) passes within 2 * tube of itself
+ * between points farther apart along it than pi * tube (closer ones may be
+ * that close legitimately, where the curve bends). */
+static int passes_through_itself(const double (*pts)[3], int n, double tube)
 {
-    enum { N = 1440 };
-    double (*pts)[3] = malloc(N * sizeof *pts);
+    double len = 0;
+    for (int i = 0; i < n; i++) {
+        const double *a = pts[i], *b = pts[(i + 1) % n];
+        len += sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+    }
+    int near = (int)ceil(PI * tube / (len / n)) + 1;
+    for (int i = 0; i < n; i++)
+        for (int j = i + near; j < n && j - i <= n - near; j++) {
+            double dx = pts[i][0] - pts[j][0], dy = pts[i][1] - pts[j][1], dz = pts[i][2] - pts[j][2];
+            if (dx * dx + dy * dy + dz * dz < 4 * tube * tube) return 1;
+        }
+    return 0;
+}
+
+enum { KNOT_SAMPLES = 1440 };
+
+/* Why a tube of radius `tube` around the knot's curve would not be a clean
+ * surface, or NULL.  Sampled: the tube must be thinner than the smallest
+ * radius of curvature (else its inner side folds), and must not pass
+ * through itself.  With `segments` > 0 the tube is the mesh's: around the
+ * polyline through the rings' centres, whose straight pieces may cut
+ * through another part of the tube where the curve's would not. */
+static const char *knot_problem(const gen_params *k, double tube, int segments)
+{
+    int per = segments > 0 ? (KNOT_SAMPLES + segments - 1) / segments : 1;
+    int n = segments > 0 ? segments * per : KNOT_SAMPLES;
+    double (*pts)[3] = malloc((size_t)n * sizeof *pts);
     if (!pts) return "out of memory";
     const char *why = NULL;
-    double min_radius = INFINITY, len = 0;
-    for (int i = 0; i < N; i++) {
+    double min_radius = INFINITY;
+    for (int i = 0; i < KNOT_SAMPLES && segments <= 0; i++) {
         double T[3], Nn[3], B[3];
-        double kappa = knot_frame(k, TAU * i / N, pts[i], T, Nn, B);
+        double kappa = knot_frame(k, TAU * i / KNOT_SAMPLES, pts[i], T, Nn, B);
         if (!(kappa > 1e-12)) {
             free(pts);
             return "the knot's curve has a straight point (no Frenet frame)";
         }
         if (1 / kappa < min_radius) min_radius = 1 / kappa;
-        if (i) len += sqrt((pts[i][0] - pts[i - 1][0]) * (pts[i][0] - pts[i - 1][0]) +
-                           (pts[i][1] - pts[i - 1][1]) * (pts[i][1] - pts[i - 1][1]) +
-                           (pts[i][2] - pts[i - 1][2]) * (pts[i][2] - pts[i - 1][2]));
     }
-    if (k->tube >= 0.95 * min_radius) why = "--tube is too thick for the curve's tightest bend";
-    /* Points closer than pi*tube along the curve may be closer than 2*tube in
-     * space legitimately (the curve bends); farther ones may not. */
-    int near = (int)ceil(PI * k->tube / (len / N)) + 1;
-    for (int i = 0; i < N && !why; i++)
-        for (int j = i + near; j < N && j - i <= N - near; j++) {
-            double dx = pts[i][0] - pts[j][0], dy = pts[i][1] - pts[j][1], dz = pts[i][2] - pts[j][2];
-            if (dx * dx + dy * dy + dz * dz < 4 * k->tube * k->tube) {
-                why = "--tube is too thick: the tube would intersect itself";
-                break;
-            }
-        }
+    /* The polyline: each ring's centre, then points along the chord to the next. */
+    for (int i = 0; i < segments; i++) {
+        double c0[3], c1[3];
+        gen_knot_curve(k, TAU * i / segments, c0);
+        gen_knot_curve(k, TAU * (i + 1) / segments, c1);
+        for (int s = 0; s < per; s++)
+            for (int c = 0; c < 3; c++) pts[i * per + s][c] = c0[c] + (c1[c] - c0[c]) * s / per;
+    }
+    if (segments <= 0 && tube >= 0.95 * min_radius) why = "is too thick for the curve's tightest bend";
+    else if (passes_through_itself((const double (*)[3])pts, n, tube))
+        why = segments > 0 ? "is too few: the tube's straight pieces would pass through each other"
+                           : "is too thick: the tube would pass through itself";
     free(pts);
     return why;
+}
+
+/* The thickest tube the curve takes, to 1%, below `bad`. */
+static double knot_max_tube(const gen_params *k, double bad)
+{
+    double lo = 0, hi = bad;
+    while (hi - lo > 0.01 * hi) {
+        double mid = (lo + hi) / 2;
+        if (knot_problem(k, mid, 0)) hi = mid;
+        else lo = mid;
+    }
+    return lo;
+}
+
+/* The fewest segments, above `bad`, whose polyline tube is clean (0 if none
+ * up to the point where the polyline follows the curve). */
+static int knot_min_segments(const gen_params *k, int bad)
+{
+    int lo = bad, hi = bad;
+    do {
+        lo = hi;
+        hi *= 2;
+        if (hi >= KNOT_SAMPLES) return knot_problem(k, k->tube, KNOT_SAMPLES) ? 0 : KNOT_SAMPLES;
+    } while (knot_problem(k, k->tube, hi));
+    while (hi - lo > 1) {
+        int mid = lo + (hi - lo) / 2;
+        if (knot_problem(k, k->tube, mid)) lo = mid;
+        else hi = mid;
+    }
+    return hi;
 }
 
 const char *gen_check(const gen_params *p, char *buf, size_t n)
@@ -219,7 +270,18 @@ const char *gen_check(const gen_params *p, char *buf, size_t n)
         else if (gcd(p->p, p->q) != 1) why = "--p and --q must have no common factor (else the curve closes early)";
         else if (!(p->R > 0) || !(p->r > 0) || !(p->tube > 0)) why = "--R, --r and --tube must be positive";
         else if (!(p->r < p->R)) why = "--r must be smaller than --R";
-        else why = knot_problem(p);
+        else if ((why = knot_problem(p, p->tube, 0)) && why[0] == 'i') {
+            /* "is too thick ...": say how thick it may be. */
+            snprintf(buf, n, "--tube %g %s (at most %.3g for --p %d --q %d --R %g --r %g)", p->tube, why,
+                     knot_max_tube(p, p->tube), p->p, p->q, p->R, p->r);
+            return buf;
+        } else if (!why && p->segments < KNOT_SAMPLES && (why = knot_problem(p, p->tube, p->segments)) &&
+                   why[0] == 'i') {
+            int least = knot_min_segments(p, p->segments);
+            if (least) snprintf(buf, n, "--segments %d %s (at least %d for this knot)", p->segments, why, least);
+            else snprintf(buf, n, "--segments %d %s (make --tube thinner)", p->segments, why);
+            return buf;
+        }
         break;
     default:
         why = "unknown shape";
@@ -352,22 +414,117 @@ static void build_torus(const gen_params *p, gen_mesh *m)
         join_rings(m, (uint32_t)(k * n), (uint32_t)(((k + 1) % b) * n), n);
 }
 
+/* A frame along the knot's centre curve that does not twist about the
+ * tangent: T the tangent, U a unit normal, V = T x U.  The Frenet frame spins
+ * about T as fast as the curve's torsion, which near a torus knot's core is so
+ * fast that the quads between two rings twist into a fold; a rotation-
+ * minimizing frame (the double-reflection method: W. Wang, B. Juettler, D.
+ * Zheng, Y. Liu, "Computation of rotation minimizing frames", ACM TOG 27(1),
+ * 2008, section 4) does not.  Transported once around the closed curve it
+ * comes back turned about T by some angle; that angle is spread evenly over
+ * the rings so that the tube closes on itself. */
+typedef struct knot_ring {
+    double c[3], U[3], V[3];
+} knot_ring;
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Reflect a in the plane normal to v (|v|^2 = vv). */
+static void reflect(double a[3], const double v[3], double vv)
+{
+    double f = 2 * dot3(v, a) / vv;
+    for (int i = 0; i < 3; i++) a[i] -= f * v[i];
+}
+
+static void knot_tangent(const gen_params *p, double t, double c[3], double T[3])
+{
+    double d2[3];
+    knot_derivs(p, t, c, T, d2);
+    double s = norm(T);
+    for (int i = 0; i < 3; i++) T[i] /= s;
+}
+
+/* One step of the double reflection from (x0, T0, U) to (x1, T1): U is
+ * carried along. */
+static void transport(const double x0[3], const double T0[3], const double x1[3], const double T1[3], double U[3])
+{
+    double v1[3], tl[3], v2[3];
+    for (int i = 0; i < 3; i++) {
+        v1[i] = x1[i] - x0[i];
+        tl[i] = T0[i];
+    }
+    double c1 = dot3(v1, v1);
+    if (c1 > 0) {
+        reflect(U, v1, c1);
+        reflect(tl, v1, c1);
+    }
+    for (int i = 0; i < 3; i++) v2[i] = T1[i] - tl[i];
+    double c2 = dot3(v2, v2);
+    if (c2 > 0) reflect(U, v2, c2);
+    /* Keep U exactly unit and normal to T1 against rounding. */
+    double d = dot3(U, T1);
+    for (int i = 0; i < 3; i++) U[i] -= d * T1[i];
+    double l = norm(U);
+    for (int i = 0; i < 3; i++) U[i] /= l;
+}
+
+/* The n rings' centres and frames (U, V), closed as described above. */
+static void knot_rings(const gen_params *p, int n, knot_ring *ring)
+{
+    int sub = n >= 4096 ? 1 : (4096 + n - 1) / n;   /* transport steps per ring */
+    double x0[3], T0[3], U[3], B[3];
+    knot_frame(p, 0, x0, T0, U, B);                  /* start from the Frenet normal */
+    double U0[3] = { U[0], U[1], U[2] }, V0[3];
+    cross(T0, U0, V0);
+    for (int i = 0; i < n; i++) {
+        knot_ring *r = &ring[i];
+        double T[3];
+        knot_tangent(p, TAU * i / n, r->c, T);
+        memcpy(r->U, U, sizeof U);
+        cross(T, U, r->V);
+        for (int k = 1; k <= sub; k++) {
+            double x1[3], T1[3];
+            knot_tangent(p, TAU * (i + (double)k / sub) / n, x1, T1);
+            transport(x0, T0, x1, T1, U);
+            memcpy(x0, x1, sizeof x1);
+            memcpy(T0, T1, sizeof T1);
+        }
+    }
+    /* Back at t = 2 pi, U is U0 turned about T0 by alpha; ring i turns back
+     * by alpha * i / n. */
+    double alpha = atan2(dot3(U, V0), dot3(U, U0));
+    for (int i = 1; i < n; i++) {
+        knot_ring *r = &ring[i];
+        double a = -alpha * i / n, ca = cos(a), sa = sin(a), u[3], v[3];
+        for (int k = 0; k < 3; k++) {
+            u[k] = ca * r->U[k] + sa * r->V[k];
+            v[k] = ca * r->V[k] - sa * r->U[k];
+        }
+        memcpy(r->U, u, sizeof u);
+        memcpy(r->V, v, sizeof v);
+    }
+}
+
 /* One ring of `bands` points around the tube per step along the curve: the
- * in-ring angle plays phi, the curve parameter theta; (cos N + sin B) x T is
- * the outward normal, so this order is outward too. */
+ * in-ring angle plays phi, the curve parameter theta; (cos U + sin V) x T is
+ * the outward normal (V = T x U), so this order is outward too. */
 static void build_knot(const gen_params *p, gen_mesh *m)
 {
     int n = p->segments, b = p->bands;
     double s = p->R + p->r + p->tube;
+    knot_ring *ring = malloc((size_t)n * sizeof *ring);
+    if (!ring) return;   /* gen_build sees the short count */
+    knot_rings(p, n, ring);
     for (int i = 0; i < n; i++) {
-        double c[3], T[3], N[3], B[3];
-        knot_frame(p, TAU * i / n, c, T, N, B);
+        const knot_ring *r = &ring[i];
         for (int j = 0; j < b; j++) {
             double be = TAU * j / b, cb = cos(be), sb = sin(be);
-            put_vertex(m, c[0] + p->tube * (cb * N[0] + sb * B[0]), c[1] + p->tube * (cb * N[1] + sb * B[1]),
-                       c[2] + p->tube * (cb * N[2] + sb * B[2]), s);
+            put_vertex(m, r->c[0] + p->tube * (cb * r->U[0] + sb * r->V[0]),
+                       r->c[1] + p->tube * (cb * r->U[1] + sb * r->V[1]),
+                       r->c[2] + p->tube * (cb * r->U[2] + sb * r->V[2]), s);
         }
     }
+    free(ring);
     for (int i = 0; i < n; i++)
         join_rings(m, (uint32_t)(i * b), (uint32_t)(((i + 1) % n) * b), b);
 }

@@ -1,9 +1,9 @@
 /*
- * measure.h - the measurement subcommands of the silk tool (project issue
- * 5): `silk diff` (tools/cmd_diff.c), `silk simplify` (tools/cmd_simplify.c)
- * and the render-mode benchmark that `silk bench` runs without
- * --visibility (tools/cmd_bench_modes.c).  Each takes argv[0] = its name
- * and returns the exit status, like the commands in cli.h.
+ * measure.h - the measurement subcommands of the silk tool: `silk diff`
+ * (tools/cmd_diff.c), `silk simplify` (tools/cmd_simplify.c) and the
+ * render-mode benchmark that `silk bench` runs without --visibility
+ * (tools/cmd_bench_modes.c).  Each takes argv[0] = its name and returns the
+ * exit status, like the commands in cli.h.
  */
 #ifndef SILK_MEASURE_H
 #define SILK_MEASURE_H

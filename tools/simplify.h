@@ -23,6 +23,8 @@
 #include <stdint.h>
 #include "silk/fixed.h"
 
+#include "silk/silk.h"
+
 typedef struct simp_mesh {
     uint32_t nverts, ntris;
     double *pos;             /* 3 * nverts, malloc'd */
@@ -70,9 +72,30 @@ int simp_topology_check(const simp_mesh *m, simp_topology *t);
 int simp_copy(const simp_mesh *m, simp_mesh *out);
 void simp_free(simp_mesh *m);
 
-/* tools/cmd_simplify.c: the mesh at path as silk's loader reads it (any
- * format, --scale applied), positions widened to double; whether it is
- * closed and manifold.  0, or the exit status after a one-line error. */
-int simplify_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold);
+/* The command's input and output (tools/cmd_simplify.c), shared by the
+ * commands that make meshes from meshes.  simp_load: the mesh as silk's
+ * loader reads it (every format, every error message), coordinates times
+ * scale, widened to double, and whether it is closed and manifold; 0 or an
+ * exit code after printing the error.  simp_write_obj: OBJ with the comment
+ * line "# COMMENT: N triangles, N vertices" and, unless normals is NULL, one
+ * normal per vertex (3 doubles each, "vn" lines, faces "f a//a ..."),
+ * atomically, "-" for stdout; 0 or an exit code after printing the error. */
+int simp_load(const char *path, silk_decimal scale, simp_mesh *out, int *closed_manifold);
+int simp_write_obj(const simp_mesh *m, const double *normals, const char *path, const char *comment);
+/* The same with nnormals normals and the normal of each corner named by
+ * tri_normal (3 per triangle): faces "f a//n ...". */
+int simp_write_obj_corners(const simp_mesh *m, const double *normals, uint32_t nnormals, const uint32_t *tri_normal,
+                           const char *path, const char *comment);
+
+/* Their common options: --triangles N (4..1e8), --scale S, -o/--output OUT.
+ * simp_common_option: 1 when argv[*i] is one of them (consumed with its
+ * value, *i advanced), 0 when not, -1 after printing a usage error. */
+typedef struct simp_args {
+    const char *out;           /* NULL: not given */
+    long target;               /* -1: not given */
+    silk_decimal scale;        /* {1, 0}: none */
+} simp_args;
+int simp_common_option(int argc, char **argv, int *i, simp_args *args);
+
 
 #endif

@@ -53,9 +53,9 @@ void simp_result_free(simp_result *r);
 /* The warning when the target was not reached (every further collapse
  * would break the surface). */
 void simplify_warn_short(const char *in, const simp_mesh *m, uint32_t target);
-/* Options both commands take: --triangles, --crease, --feature-weight,
- * --scale, at argv[*i] (its value consumed).  0 when parsed, an exit
- * status after an error, -1 when argv[*i] is none of them. */
-int simplify_option(int argc, char **argv, int *i, simp_opts *so, long *target, silk_decimal *scale);
+/* The simplification's options both commands take besides
+ * simp_common_option's: --crease, --feature-weight.  1 when argv[*i] is one
+ * of them (consumed with its value), 0 when not, -1 after a usage error. */
+int simplify_option(int argc, char **argv, int *i, simp_opts *so);
 
 #endif

@@ -4,12 +4,18 @@
  * cmd_view.c; this file turns SDL's events into viewer calls and copies
  * each finished frame into the window's surface (SDL converts RGB888 or
  * RGB565 to whatever the display uses).  Nothing is drawn while nothing
- * changes: the loop sleeps in SDL_WaitEventTimeout unless the model spins.
+ * changes: the loop sleeps in SDL_WaitEventTimeout unless the model spins
+ * or --frames N asks for N frames.
+ *
+ * Without a display SDL would fall back to its invisible "offscreen" driver
+ * and wait for input that never comes; the viewer says there is no display
+ * instead (unless SDL_VIDEODRIVER asks for such a driver by name).
  */
 #define _POSIX_C_SOURCE 200809L
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -95,11 +101,48 @@ static int handle(viewer *v, SDL_Window *win, const SDL_Event *e)
     }
 }
 
+static int has_env(const char *name)
+{
+    const char *s = getenv(name);
+    return s && *s;
+}
+
+/* SDL's video, on a display the user can see.  Returns 0 or an exit code. */
+static int open_video(void)
+{
+    static const char no_display[] =
+        "view: no display to open a window on (%s); use --fb DEVICE, --benchmark N or --events";
+    int chosen = has_env("SDL_VIDEODRIVER");
+    int x11 = has_env("DISPLAY"), wayland = has_env("WAYLAND_DISPLAY");
+    /* Only the drivers whose display is named (a Linux console, KMS, when
+     * none is): SDL's probes of the others print their own complaints. */
+    if (!chosen) {
+#ifdef SDL_HINT_VIDEODRIVER   /* SDL 2.0.22 and later: a list */
+        SDL_SetHint(SDL_HINT_VIDEODRIVER, wayland && x11 ? "wayland,x11" : wayland ? "wayland" : x11 ? "x11" : "KMSDRM");
+#else
+        setenv("SDL_VIDEODRIVER", x11 ? "x11" : wayland ? "wayland" : "KMSDRM", 1);
+#endif
+    }
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+        int rc = chosen || x11 || wayland
+                     ? cli_fail(CLI_EXIT_INPUT, "view: cannot open a window: %s (no display? try --fb or --benchmark)",
+                                SDL_GetError())
+                     : cli_fail(CLI_EXIT_INPUT, no_display, "DISPLAY and WAYLAND_DISPLAY are not set");
+        SDL_Quit();
+        return rc;
+    }
+    const char *drv = SDL_GetCurrentVideoDriver();
+    if (!chosen && drv && (strcmp(drv, "offscreen") == 0 || strcmp(drv, "dummy") == 0)) {
+        SDL_Quit();
+        return cli_fail(CLI_EXIT_INPUT, no_display, "only an invisible one");
+    }
+    return 0;
+}
+
 int viewer_run_sdl(viewer *v, long frames)
 {
-    if (SDL_Init(SDL_INIT_VIDEO) != 0)
-        return cli_fail(CLI_EXIT_INPUT, "view: cannot open a window: %s (no display? try --fb or --benchmark)",
-                        SDL_GetError());
+    int rc = open_video();
+    if (rc) return rc;
     const char *base = strrchr(v->o.mesh_path, '/');
     char title[300];
     snprintf(title, sizeof title, "silk view - %s", base ? base + 1 : v->o.mesh_path);
@@ -110,12 +153,13 @@ int viewer_run_sdl(viewer *v, long frames)
         SDL_Quit();
         return rc;
     }
-    int rc = 0;
-    long shown = 0;
+    long drawn = 0;
     v->dirty = 1;
     while (!v->quit && !rc) {
         SDL_Event e;
-        /* Idle: wait for input; spinning: take what is there and draw. */
+        /* Idle: wait for input; spinning or counting frames: take what is
+         * there and draw. */
+        if (frames > 0) v->dirty = 1;
         int have = (v->dirty || v->spin) ? SDL_PollEvent(&e) : SDL_WaitEventTimeout(&e, 250);
         while (have && !rc) {
             rc = handle(v, win, &e);
@@ -123,15 +167,16 @@ int viewer_run_sdl(viewer *v, long frames)
         }
         if (rc || v->quit || !(v->dirty || v->spin)) continue;
         if ((rc = viewer_frame(v)) != 0) break;
+        drawn++;
         double t0 = now_ms();
-        if (present(win, v) == 0) {
-            shown++;
-        } else {
+        if (present(win, v) != 0) {
             v->dirty = 1;
             SDL_Delay(10);
         }
         v->present_ms = now_ms() - t0;
-        if (frames > 0 && shown >= frames) {
+        /* Counted when drawn, so that a window that cannot show them (being
+         * resized, or invisible) still ends. */
+        if (frames > 0 && drawn >= frames) {
             rc = viewer_screenshot(v, NULL);
             v->quit = 1;
         }

@@ -36,7 +36,6 @@ BOARD_RUN   := qemu-system-arm -M mps2-an385 -nographic -monitor none -serial no
 
 # What the firmware renders: each model packed into flash, from BOARD_VIEWS
 # cameras around it (`silk pack --views`), each in flat and smooth mode.
-MESHES_DIR   := $(or $(SILK_MESHES),../shared/meshes)
 BOARD_MESHES ?= $(MESHES_DIR)/bunny-500.obj $(MESHES_DIR)/knot-480.obj
 BOARD_VIEWS  := 3
 

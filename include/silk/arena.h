@@ -15,6 +15,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum silk_purpose {
     SILK_MEM_MESH = 0,     /* positions, normals, uvs, triangle indices */
     SILK_MEM_ADJACENCY,    /* edges and triangle->edge links */
@@ -60,5 +64,9 @@ silk_arena_mark silk_arena_top_mark(const silk_arena *a);
 void  silk_arena_top_release(silk_arena *a, const silk_arena_mark *m);
 size_t silk_arena_free_bytes(const silk_arena *a);
 const char *silk_purpose_name(silk_purpose p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

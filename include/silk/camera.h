@@ -13,6 +13,10 @@
 #include "fixed.h"
 #include "error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct silk_mat4 { silk_fx m[4][4]; } silk_mat4;
 
 typedef struct silk_camera {
@@ -67,5 +71,9 @@ int silk_view_project(const silk_view *v, silk_vec3 p, silk_vec2 *px);
 /* Direction used for visibility: for perspective E - P (towards the eye), for
  * orthographic -forward (constant).  Not normalised. */
 silk_vec3 silk_view_to_eye(const silk_view *v, silk_vec3 p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -10,6 +10,10 @@
 
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum silk_status {
     SILK_OK = 0,
     SILK_ERR_NOMEM = 1,      /* the arena is too small */
@@ -38,5 +42,9 @@ silk_status silk_fail(silk_error *err, silk_status code, const char *name, uint3
     ;
 
 const char *silk_status_name(silk_status s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef int32_t silk_fx;                   /* Q16.16 */
 
 #define SILK_FX_SHIFT 16
@@ -20,7 +24,8 @@ typedef int32_t silk_fx;                   /* Q16.16 */
 #define SILK_FX_HALF  ((silk_fx)32768)
 #define SILK_FX_MAX   ((silk_fx)INT32_MAX)
 #define SILK_FX_MIN   ((silk_fx)-INT32_MAX)  /* symmetric, so negation never overflows */
-#define SILK_FX_PI    ((silk_fx)205887)      /* pi in Q16.16 */
+#define SILK_PI_Q30   INT64_C(3373259426)     /* pi in Q2.30: the one pi of the core */
+#define SILK_FX_PI    ((silk_fx)((SILK_PI_Q30 + 8192) >> 14))   /* pi in Q16.16, 205887 */
 
 /* Compile-time constants from integer ratios: SILK_FX_C(3, 2) is 1.5. */
 #define SILK_FX_C(num, den) ((silk_fx)(((int64_t)(num) * 65536) / (den)))
@@ -74,6 +79,8 @@ silk_fx silk_fx_div(silk_fx a, silk_fx b);
 silk_fx silk_fx_muldiv(silk_fx a, silk_fx b, silk_fx c);
 
 static inline silk_fx silk_fx_abs(silk_fx a) { return a < 0 ? -a : a; }
+/* |v| for any int64_t, INT64_MIN included (hence unsigned). */
+static inline uint64_t silk_abs64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 static inline silk_fx silk_fx_min(silk_fx a, silk_fx b) { return a < b ? a : b; }
 static inline silk_fx silk_fx_max(silk_fx a, silk_fx b) { return a > b ? a : b; }
 static inline silk_fx silk_fx_clamp(silk_fx a, silk_fx lo, silk_fx hi)
@@ -166,5 +173,9 @@ silk_fx   silk_v3_length(silk_vec3 a);                 /* exact-rounded, saturat
 int       silk_v3_normalize(silk_vec3 a, silk_vec3 *out);
 /* a + (b-a)*t */
 silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 #include "camera.h"
 #include "raster.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A cubic Hermite curve (paper eq. 5) with normals and texture coordinates
  * interpolated linearly along it (eq. 6). */
 typedef struct silk_curve {
@@ -128,5 +132,9 @@ typedef struct silk_phong {
 /* varyings: world position (3), normal (3), uv (2) */
 void silk_phong_default(silk_phong *p, const silk_view *view); /* a key light and a fill light */
 void silk_hal_phong(silk_hal *h, const silk_phong *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

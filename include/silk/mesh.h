@@ -17,6 +17,10 @@
 #include "arena.h"
 #include "error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #ifndef SILK_INDEX_T
 #define SILK_INDEX_T uint32_t
 #endif
@@ -66,6 +70,10 @@ typedef enum silk_normals_source {
 typedef struct silk_mesh {
     uint32_t nverts, ntris, nnormals, nuvs, nedges;
     uint32_t nfeature_edges, nboundary_edges, nnonmanifold_edges, ndegenerate_tris;
+    /* Orientation at load (silk_load_opts.orient): triangles whose corner
+     * order was turned round, and triangles left as in the file because
+     * their surface cannot be oriented (a Moebius band). */
+    uint32_t nreoriented_tris, nnonorientable_tris;
 
     silk_vec3  *pos;          /* nverts, model units */
     silk_vec3  *normal;       /* nnormals unit shading normals: one per smooth group of each vertex */
@@ -94,10 +102,16 @@ typedef struct silk_mesh {
 } silk_mesh;
 
 
+typedef enum silk_orient_mode {
+    SILK_ORIENT_FIX = 0,      /* wind triangles consistently, closed parts outward (docs/formats.md) */
+    SILK_ORIENT_KEEP          /* the file's corner order, as it is */
+} silk_orient_mode;
+
 typedef struct silk_load_opts {
     silk_decimal scale;       /* coordinates are multiplied by this before rounding; {1,0} = none */
     silk_fx crease_deg;       /* dihedral angle (degrees) above which an edge is a feature */
     silk_normals_source normals;
+    silk_orient_mode orient;
 } silk_load_opts;
 
 /* Documented default crease angle; see docs/formats.md for how it was chosen. */
@@ -110,8 +124,16 @@ silk_status silk_load_obj(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
 silk_status silk_load_ply(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
-/* Picks the format from the content (a prepared model's signature, see
- * silk/model.h; "ply\n"; otherwise OBJ). */
+/* STL, ascii or binary (told apart by the binary size, 84 + 50 n bytes).
+ * Corners with bit-identical Q16.16 coordinates become one vertex. */
+silk_status silk_load_stl(const void *data, size_t len, const char *name,
+                          const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
+/* Picks the reader from the content: a prepared model's signature
+ * (silk/model.h), "ply" magic, the size of a binary STL
+ * or an ascii STL's "solid", else OBJ; binary data in a file whose name
+ * ends in ".stl" is read as a (damaged) binary STL.  Files of other formats (glTF, FBX, 3DS,
+ * OFF, compressed or archived files, binary data) fail with a line naming
+ * what they are (docs/formats.md). */
 silk_status silk_load_mesh(const void *data, size_t len, const char *name,
                            const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
 
@@ -141,5 +163,9 @@ typedef struct silk_mesh_bytes {
     size_t total;
 } silk_mesh_bytes;
 void silk_mesh_bytes_used(const silk_mesh *m, silk_mesh_bytes *b);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 #include <stdint.h>
 #include "fixed.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SILK_MAX_VARYINGS 8
 
 typedef enum silk_pixfmt {
@@ -59,5 +63,9 @@ void silk_raster_triangle(silk_target *t, const struct silk_hal *h,
 /* A one-pixel line between two clip-space points, depth-tested with a small
  * bias towards the viewer so that lines on the surface show; colour rgb. */
 void silk_raster_line(silk_target *t, const silk_vertex_out *a, const silk_vertex_out *b, uint32_t rgb);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

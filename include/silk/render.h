@@ -26,6 +26,10 @@
 #include "hal.h"
 #include "visibility.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum silk_mode {
     SILK_MODE_FLAT = 0,      /* the coarse mesh as it is, Phong shaded */
     SILK_MODE_SMOOTH = 1,    /* silhouette smoothing (paper section III) */
@@ -43,7 +47,9 @@ typedef enum silk_pn_normals { SILK_PN_QUADRATIC = 0, SILK_PN_LINEAR = 1 } silk_
 
 /* Pen-and-ink lines (src/lines.c): in SMOOTH mode the sampled silhouette
  * segments and the visible feature curves, exactly as the re-meshed surface
- * runs along them; in FLAT mode, or with lines_polygonal in any mode, the
+ * runs along them, and the contour of the drawn triangles (every side
+ * between two that face opposite ways), so the whole outline is drawn; in
+ * FLAT mode, or with lines_polygonal in any mode, the
  * coarse mesh's silhouette edges (between a front- and a back-facing
  * triangle) and its feature edges next to a front-facing triangle.  PN and
  * BLEND draw patches that bulge over those edges, so there lines without
@@ -101,5 +107,9 @@ typedef struct silk_sink {
 silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
                               const silk_render_opts *o, silk_target *band, const silk_sink *sink,
                               silk_frame_stats *stats, silk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

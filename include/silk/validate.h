@@ -16,6 +16,10 @@
 #include "error.h"
 #include "mesh.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* SILK_OK, or SILK_ERR_PARSE with "name: what is inconsistent" (name may
  * be NULL: "mesh").  What is checked:
  *  - counts are nonzero where the mesh needs them, fit silk_index below
@@ -34,5 +38,9 @@
  * Not checked: whether normals and features are what silk would have
  * computed (a wrong one draws a wrong picture, never outside memory). */
 silk_status silk_mesh_validate(const silk_mesh *m, const char *name, silk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

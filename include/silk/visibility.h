@@ -18,6 +18,10 @@
 #include "mesh.h"
 #include "camera.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum silk_vis_method {
     SILK_VIS_AUTO = 0,     /* the faster of the two for this mesh size */
     SILK_VIS_BRUTE = 1,    /* one dot product per normal */
@@ -103,5 +107,9 @@ int silk_vis_cell_ball(uint32_t level, uint32_t lat, uint32_t lon, silk_vec3 *c,
  * the break-even measured with `silk bench --visibility`, docs/visibility.md. */
 #define SILK_VIS_AUTO_PERSPECTIVE 240u
 #define SILK_VIS_AUTO_PARALLEL    256u
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,6 +8,7 @@ corpus checks the messages.  Run from anywhere: python3 tests/bad/make_bad.py
 (the produced files are committed too; re-run after changing a case).
 """
 import os
+import re
 import struct
 import sys
 
@@ -65,7 +66,7 @@ case("tiny-far-away.obj", "v 900 0 0\nv 900.00002 0 0\nv 900 0.00002 0\nf 1 2 3\
 case("crlf-bad-index.obj", "v 0 0 0\r\nv 1 0 0\r\n\r\nv 0 1 0\r\nf 1 2 7\r\n", "5: face index 7 out of range (3 vertices)")
 case("long-line.obj", TRI + "# " + "x" * 70000 + "\nf 1 2 3\n", "4: line too long (more than 65535 bytes)")
 case("binary-garbage.obj", bytes((i * 151 + 7) % 256 for i in range(600)),
-     "1: unexpected byte 0x07 (not a text file?)")
+     "not a mesh file (binary data); silk reads OBJ, PLY and STL")
 case("nul-in-text.obj", TRI + "f 1 2 3\0\n", "4: unexpected byte 0x00 (not a text file?)")
 
 # ---- PLY -------------------------------------------------------------------
@@ -166,15 +167,85 @@ case("ply-just-beyond-le.ply", ply_binary("le", verts=[(0, 0, 0), (0, -1024.0001
 case("ply-tiny.ply", ply_binary("le", verts=[(0, 0, 0), (1e-4, 0, 0), (0, 1e-4, 0), (0, 0, 1e-4)]),
      "model is too small for fixed-point precision (size 0.000173); scale it up with --scale 1000")
 
+# ---- STL ---------------------------------------------------------------------
+def facet(*corners):
+    return (" facet normal 0 0 1\n  outer loop\n" + "".join("   vertex %s\n" % c for c in corners) +
+            "  endloop\n endfacet\n")
+
+
+F1 = facet("0 0 0", "1 0 0", "0 1 0")
+case("stl-ascii-empty.stl", "solid empty\nendsolid empty\n", "no triangles")
+case("stl-ascii-two-vertices.stl", "solid s\n" + facet("0 0 0", "1 0 0") + "endsolid s\n",
+     "6: facet has 2 vertices (3 needed)")
+case("stl-ascii-four-vertices.stl", "solid s\n" + facet("0 0 0", "1 0 0", "0 1 0", "1 1 0") + "endsolid s\n",
+     "7: facet has more than 3 vertices (STL facets are triangles)")
+case("stl-ascii-bad-number.stl", "solid s\n" + F1 + facet("0 0 0", "1 zero 0", "0 1 0"), "12: bad number 'zero'")
+case("stl-ascii-nan.stl", "solid s\n" + facet("nan 0 0", "1 0 0", "0 1 0"), "4: 'nan' is not a finite number")
+case("stl-ascii-two-coordinates.stl", "solid s\n" + facet("0 0", "1 0 0", "0 1 0"), "4: vertex needs 3 numbers, found 2")
+case("stl-ascii-cut.stl", "solid s\n" + F1 + " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n", "file ends inside facet 2")
+case("stl-ascii-no-loop.stl", "solid s\n facet normal 0 0 1\n   vertex 0 0 0\n", "3: unexpected 'vertex' (expected 'outer loop')")
+case("stl-ascii-no-endfacet.stl", "solid s\n" + F1.replace(" endfacet\n", "") + F1,
+     "8: unexpected 'facet' (expected 'endfacet')")
+case("stl-ascii-junk-after.stl", "solid s\n" + F1 + "endsolid s\nv 0 0 0\n", "10: unexpected 'v' (expected 'solid')")
+case("stl-ascii-out-of-range.stl", "solid s\n" + facet("0 0 0", "5000 0 0", "0 1 0"),
+     "5: coordinate 5000.0 is outside the fixed-point range (+-1024); scale the model with --scale 0.1")
+case("stl-ascii-one-point.stl", "solid s\n" + facet("1 1 1", "1 1 1", "1 1 1"),
+     "model has no size (all vertices are at one point)")
+case("stl-ascii-binary-byte.stl", "solid s\n" + F1 * 6 + facet("0 0 0", "1 0\x01 0", "0 1 0"),
+     "47: unexpected byte 0x01 (not a text file?)")
+
+
+def binary_stl(header, count, records, extra=b""):
+    data = header.ljust(80, b" ") + struct.pack("<I", count)
+    for r in records:
+        data += struct.pack("<12f", 0, 0, 1, *r) + b"\0\0"
+    return data + extra
+
+
+TRI_F = (0, 0, 0, 1, 0, 0, 0, 1, 0)
+case("stl-binary-zero.stl", binary_stl(b"made by hand", 0, []), "no triangles")
+case("stl-binary-truncated.stl", binary_stl(b"made by hand", 2, [TRI_F]),
+     "binary STL is truncated: the header declares 2 triangles (184 bytes), the file has 134 bytes")
+case("stl-binary-solid-truncated.stl", binary_stl(b"solid part", 3, [TRI_F, TRI_F]),
+     "binary STL is truncated: the header declares 3 triangles (234 bytes), the file has 184 bytes")
+case("stl-binary-longer.stl", binary_stl(b"solid part", 1, [TRI_F], b"0123456789"),
+     "binary STL is longer than its header says: 1 triangles take 134 bytes, the file has 144")
+case("stl-binary-too-short.stl", b"\x00\x01\x02" * 13, "binary STL is too short (39 bytes; the header alone is 84)")
+case("stl-binary-nan.stl", binary_stl(b"", 2, [TRI_F, (0, 0, 0, float("nan"), 0, 0, 0, 1, 0)]),
+     "triangle 2: coordinate is not a finite number (NaN or infinity)")
+case("stl-binary-inf.stl", binary_stl(b"solid", 1, [(0, 0, 0, 1, float("-inf"), 0, 0, 1, 0)]),
+     "triangle 1: coordinate is not a finite number (NaN or infinity)")
+case("stl-binary-out-of-range.stl", binary_stl(b"solid big", 1, [(0, 0, 0, 2000.5, 0, 0, 0, 1, 0)]),
+     "vertex 1: coordinate 2000.5 is outside the fixed-point range (+-1024); scale the model with --scale 0.1")
+
+# ---- formats silk does not read, by their first bytes ------------------------
+CONVERT = " is not supported: convert it to OBJ, PLY or STL"
+case("model.gltf", '{\n  "asset": { "version": "2.0" },\n  "meshes": []\n}\n', "glTF" + CONVERT)
+case("model.glb", b"glTF" + struct.pack("<II", 2, 12), "binary glTF (GLB)" + CONVERT)
+case("model.json", '{ "vertices": [0, 0, 0] }\n', "JSON" + CONVERT)
+case("model-binary.fbx", b"Kaydara FBX Binary  \x00\x1a\x00" + struct.pack("<I", 7400), "FBX" + CONVERT)
+case("model-ascii.fbx", "; FBX 7.4.0 project file\n; ----\n", "FBX" + CONVERT)
+case("model.3ds", b"MM" + struct.pack("<I", 16) + b"\x02\x00" + struct.pack("<II", 10, 3), "3DS" + CONVERT)
+case("model.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "OFF" + CONVERT)
+case("model-color.off", "COFF\n3 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n3 0 1 2\n", "OFF" + CONVERT)
+case("mesh.obj.gz", b"\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03", "the file is gzip-compressed: decompress it first")
+case("mesh.zip", b"PK\x03\x04\x14\x00\x00\x00\x08\x00", "the file is a zip archive: extract the mesh from it first")
+case("mesh.obj.xz", b"\xfd7zXZ\x00\x00\x04\xe6\xd6\xb4\x46", "the file is xz-compressed: decompress it first")
+case("mesh.obj.zst", b"\x28\xb5\x2f\xfd\x04\x58\x00\x00", "the file is zstd-compressed: decompress it first")
+case("mesh.obj.bz2", b"BZh91AY&SY", "the file is bzip2-compressed: decompress it first")
+case("mesh.7z", b"7z\xbc\xaf\x27\x1c\x00\x04", "the file is a 7z archive: extract the mesh from it first")
+case("junk.bin", bytes((i * 37 + 11) % 256 for i in range(300)),
+     "not a mesh file (binary data); silk reads OBJ, PLY and STL")
+
 
 def main():
     for f in os.listdir(HERE):
-        if f.endswith(".expected") or f.endswith(".obj") or f.endswith(".ply"):
+        if not f.endswith(".py"):
             os.remove(os.path.join(HERE, f))
     for name, data, message in CASES:
         with open(os.path.join(HERE, name), "wb") as f:
             f.write(data)
-        sep = "" if message[0].isdigit() else " "
+        sep = "" if re.match(r"[0-9]+:", message) else " "
         line = "silk: tests/bad/%s:%s%s\n" % (name, sep, message)
         with open(os.path.join(HERE, name + ".expected"), "w") as f:
             f.write(line)

@@ -52,6 +52,42 @@ int tf_view_around_size(const silk_mesh *m, const double dir[3], double dist, in
     return 1;
 }
 
+int tf_collect_band(void *user, const silk_target *t)
+{
+    tf_collect *c = user;
+    size_t bpp = silk_pixfmt_bytes(t->fmt), row = (size_t)t->width * bpp;
+    if (t->y0 != c->next_row || t->rows < 1 || t->rows > c->max_rows || t->y0 + t->rows > t->height) c->bad++;
+    for (int y = 0; y < t->rows && t->y0 + y < t->height; y++)
+        memcpy(c->frame + (size_t)(t->y0 + y) * row, t->color + (size_t)y * t->stride, row);
+    c->next_row = t->y0 + t->rows;
+    c->bands++;
+    return c->stop_after && c->bands >= c->stop_after;
+}
+
+silk_status tf_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
+                            const silk_render_opts *o, silk_pixfmt fmt, int rows, tf_collect *c,
+                            silk_frame_stats *stats, silk_error *err)
+{
+    int w = v->cam.width, hgt = v->cam.height;
+    size_t bpp = silk_pixfmt_bytes(fmt);
+    silk_arena_mark mk = silk_arena_top_mark(a);
+    uint8_t *bc = silk_arena_alloc_top(a, (size_t)rows * (size_t)w * bpp, SILK_MEM_RASTER);
+    uint32_t *bd = silk_arena_array_top(a, (size_t)rows * (size_t)w, sizeof *bd, SILK_MEM_RASTER);
+    if (!bc || !bd) {
+        silk_arena_top_release(a, &mk);
+        return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "no room for a band of %d rows", rows);
+    }
+    silk_target band;
+    silk_target_init(&band, w, hgt, 0, rows, fmt, bc, bd);
+    c->next_row = c->bands = c->bad = 0;
+    c->max_rows = rows;
+    silk_sink sink = { tf_collect_band, c };
+    silk_status st = silk_render_bands(a, m, v, h, o, &band, &sink, stats, err);
+    if (band.rows != rows || band.y0 != 0) c->bad++;
+    silk_arena_top_release(a, &mk);
+    return st;
+}
+
 int tf_run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol, silk_sil_frame *f,
                  silk_frame_geom *g, silk_frame_stats *st)
 {

@@ -1,6 +1,6 @@
 /*
- * testframe.h - test support for the per-frame stages (src/smooth.h,
- * src/silhouette.h): a view around a mesh, the smooth-silhouette stages
+ * testframe.h - test support for the per-frame stages (src/frame.h,
+ * src/plan.h): a view around a mesh, the smooth-silhouette stages
  * run by hand so that the test can inspect the internal frame, and the
  * watertightness checks of a frame's output geometry.
  */
@@ -9,8 +9,10 @@
 
 #include <stdint.h>
 #include "silk/silk.h"
-#include "../../src/smooth.h"
-#include "../../src/silhouette.h"
+#include "../../src/frame.h"
+#include "../../src/plan.h"
+#include "../../src/remesh.h"
+#include "../../src/perturb.h"
 
 /* Looking at the centre of the mesh's bounding box from direction dir
  * (any length), dist bounding radii away: 512 x 512, 45 degrees, or a
@@ -21,6 +23,26 @@ int tf_view_around(const silk_mesh *m, const double dir[3], double dist, int ort
 /* The same at w x h pixels (tf_view_around is 512 x 512). */
 int tf_view_around_size(const silk_mesh *m, const double dir[3], double dist, int ortho, int w, int h,
                         silk_view *v);
+
+/* A silk_sink that copies each band into a whole frame (frame: the band's
+ * width x height pixels, rows top to bottom) and records how they came:
+ * the row the next band must start at, the bands seen, the bands out of
+ * order or taller than max_rows; with stop_after non-zero it stops the
+ * frame after that many bands. */
+typedef struct tf_collect {
+    uint8_t *frame;
+    int next_row, max_rows, bands, bad, stop_after;
+} tf_collect;
+int tf_collect_band(void *user, const silk_target *t);
+
+/* silk_render_bands at the view's size in bands of `rows` rows, whose
+ * buffers (exactly `rows` lines, so that an overrun shows under ASan) come
+ * from the top of the arena and are released after, collected into c
+ * (c->frame must hold the whole frame; the other fields are reset).  A
+ * band target not restored by the call counts as a bad band. */
+silk_status tf_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
+                            const silk_render_opts *o, silk_pixfmt fmt, int rows, tf_collect *c,
+                            silk_frame_stats *stats, silk_error *err);
 
 /* The stages exactly as silk_frame_smooth runs them when memory suffices
  * (brute-force visibility), keeping the internal frame for inspection.

@@ -129,3 +129,93 @@ int tm_fixture_read_obj(tm_fixture *f, const char *path)
     free(text);
     return ok;
 }
+
+/* ---- as double arrays ---------------------------------------------------------- */
+
+int tm_load_doubles(const char *path, double **pos, uint32_t *nv, uint32_t **tri, uint32_t *nt)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        printf("skip: no %s\n", path);
+        return 0;
+    }
+    fclose(f);
+    size_t len;
+    char *text = tm_read_file(path, &len);
+    if (!text) {
+        fprintf(stderr, "cannot read %s\n", path);
+        return -1;
+    }
+    size_t bytes = len * 16 + ((size_t)4 << 20);
+    void *buf = malloc(bytes);
+    silk_arena a;
+    silk_arena_init(&a, buf, bytes);
+    silk_load_opts lo;
+    silk_load_opts_default(&lo);
+    silk_mesh m;
+    silk_error err;
+    silk_status st = silk_load_mesh((const uint8_t *)text, len, path, &lo, &a, &m, &err);
+    free(text);
+    if (st != SILK_OK) {
+        fprintf(stderr, "%s\n", err.msg);
+        free(buf);
+        return -1;
+    }
+    *nv = m.nverts, *nt = m.ntris;
+    *pos = malloc(3 * sizeof **pos * (m.nverts ? m.nverts : 1));
+    *tri = malloc(3 * sizeof **tri * (m.ntris ? m.ntris : 1));
+    for (uint32_t i = 0; i < m.nverts; i++) vec3d(m.pos[i], &(*pos)[3 * i]);
+    for (uint32_t i = 0; i < 3 * m.ntris; i++) (*tri)[i] = m.tri[i];
+    free(buf);
+    return 1;
+}
+
+/* ---- geometry ------------------------------------------------------------------ */
+
+static void tm_sub3(const double *a, const double *b, double *r)
+{
+    r[0] = a[0] - b[0], r[1] = a[1] - b[1], r[2] = a[2] - b[2];
+}
+
+/* Squared distance from p to triangle abc (closest point by regions,
+ * Ericson, Real-Time Collision Detection 5.1.5). */
+double tm_point_tri_d2(const double *p, const double *a, const double *b, const double *c)
+{
+    double ab[3], ac[3], ap[3], q[3];
+    tm_sub3(b, a, ab), tm_sub3(c, a, ac), tm_sub3(p, a, ap);
+    double d1 = dot3(ab, ap), d2 = dot3(ac, ap), v, w;
+    if (d1 <= 0 && d2 <= 0) { memcpy(q, a, sizeof q); goto out; }
+    double bp[3];
+    tm_sub3(p, b, bp);
+    double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+    if (d3 >= 0 && d4 <= d3) { memcpy(q, b, sizeof q); goto out; }
+    double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        v = d1 / (d1 - d3);
+        for (int k = 0; k < 3; k++) q[k] = a[k] + v * ab[k];
+        goto out;
+    }
+    double cp[3];
+    tm_sub3(p, c, cp);
+    double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+    if (d6 >= 0 && d5 <= d6) { memcpy(q, c, sizeof q); goto out; }
+    double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        w = d2 / (d2 - d6);
+        for (int k = 0; k < 3; k++) q[k] = a[k] + w * ac[k];
+        goto out;
+    }
+    double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int k = 0; k < 3; k++) q[k] = b[k] + w * (c[k] - b[k]);
+        goto out;
+    }
+    double den = 1 / (va + vb + vc);
+    v = vb * den, w = vc * den;
+    for (int k = 0; k < 3; k++) q[k] = a[k] + ab[k] * v + ac[k] * w;
+out:;
+    double d[3];
+    tm_sub3(p, q, d);
+    return dot3(d, d);
+}

@@ -65,4 +65,15 @@ static inline int tm_fixture_read_shared(tm_fixture *f, const char *name)
 }
 #endif
 
+/* The mesh at path as silk_load_mesh reads it (any format, default load
+ * options), positions widened to double: malloc'd arrays of 3 * *nv
+ * coordinates and 3 * *nt corners.  1; 0 when there is no such file (after
+ * printing a "skip:" line: the shared meshes may be absent); -1 when it
+ * does not load (after printing why). */
+int tm_load_doubles(const char *path, double **pos, uint32_t *nv, uint32_t **tri, uint32_t *nt);
+
+/* Squared distance from point p to triangle abc, in double (closest point
+ * by regions). */
+double tm_point_tri_d2(const double *p, const double *a, const double *b, const double *c);
+
 #endif

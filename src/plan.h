@@ -1,6 +1,7 @@
 /*
- * silhouette.h - internal: the per-frame data the silhouette stages pass to
- * each other (paper section III-B..E).  Not installed.
+ * plan.h - internal: the plan of a SMOOTH frame, the per-frame data the
+ * silhouette stages pass to each other (paper section III-B..E), and
+ * silhouette.c, which makes its first part.  Not installed.
  *
  *   silhouette.c  visibility, silhouette triangles, the edges that carry
  *                 points this frame (silhouette bridges, feature segments),
@@ -27,10 +28,10 @@
  * order: the pictures are identical, and a stream frame needs a fraction of
  * the memory (no sides, no segments, no output arrays).
  */
-#ifndef SILK_SILHOUETTE_H
-#define SILK_SILHOUETTE_H
+#ifndef SILK_PLAN_H
+#define SILK_PLAN_H
 
-#include "smooth.h"
+#include "frame.h"
 
 #define SILK_SIL_NONE UINT32_MAX
 
@@ -69,10 +70,8 @@ typedef struct silk_sil_edge {
     uint32_t side0, nsides;  /* triangle sides on this edge */
     uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
     uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
-    uint32_t parent;         /* union-find over edges joined by a re-meshed triangle */
     uint8_t is_feature;
     uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
-    uint8_t rejected;        /* on roots: this part is drawn coarse (out of memory) */
 } silk_sil_edge;
 
 /* The silhouette segment of one silhouette triangle (III-D) and its samples. */
@@ -81,18 +80,12 @@ typedef struct silk_sil_seg {
     uint32_t tri;
     uint32_t n;              /* sampling intervals (eq. 8) */
     uint32_t split;          /* sample joined to both base vertices (Fig. 11) */
-    uint32_t comp;           /* union-find root (edge index) */
     int concave;             /* III-E: N_A.F > 0 and N_B.F < 0 */
     silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E */
     silk_fx rise;            /* how far the segment's ends rise above P_i */
     uint32_t curve, rec;     /* output: segment curve and its first interior sample */
     uint32_t rec_a, rec_b;   /* output: the records of A and B (points of the edge chains) */
 } silk_sil_seg;
-
-/* Per union-find root: what accepting that part of the frame costs. */
-typedef struct silk_sil_cost {
-    uint32_t recs, tris, curves, near;   /* near: neighbour vertices of its concave segments */
-} silk_sil_cost;
 
 typedef struct silk_sil_frame {
     silk_arena *a;
@@ -112,7 +105,7 @@ typedef struct silk_sil_frame {
     silk_sil_side *sides;  uint32_t nsides;
     silk_fx *chain;        uint32_t nchain;
     silk_sil_seg *segs;    uint32_t nsegs;
-    silk_sil_cost *cost;     /* nedges (indexed by root) */
+    uint64_t store_recs, store_tris, store_curves;   /* what a stored frame holds */
     uint32_t max_poly;       /* longest boundary of one re-meshed triangle */
     uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
     /* the most one input triangle becomes, with its own records (STREAM),
@@ -128,8 +121,6 @@ typedef struct silk_sil_frame {
     uint32_t *slot_vert, *slot_stamp, nslots;
     uint32_t *vert_offset;   /* nverts view of vert_slot after perturbation: offset index */
     silk_vec3 *offset;     uint32_t noffset;
-
-    int fell_back;
 } silk_sil_frame;
 
 /* silhouette.c: fills visible .. chain (sides only in STORED mode).
@@ -148,52 +139,21 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv);
 
+/* Whether triangle t faces the eye, by its face normal (what decides which
+ * feature edges are sampled, and the coarse outline of lines.c); a
+ * zero-area or broken triangle faces nowhere. */
+int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
+
 /* Eq. 8 for curve c: the number of intervals to sample it with, from its
  * projected chord in pixels and cos alpha (see silhouette.c for why the
  * chord). */
 uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol);
 
-/* remesh.c */
-silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments, counts, components, costs */
-/* The silhouette segment of silhouette triangle t (what plan stores in
- * segs[] in STORED mode); 0 when a silhouette point is missing. */
-int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);
-int  silk_remesh_reject_last(silk_sil_frame *f);     /* drop one more component; 0 if none left */
-uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
-int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g);   /* 0 when it does not fit */
-void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats);
-/* STREAM mode: room for one input triangle's share in local (0 when it
- * does not fit), that share (local's arrays refilled, its records refer to
- * local->curve and f->offset), and the frame's counts. */
-int  silk_remesh_stream_alloc(silk_sil_frame *f, silk_frame_geom *local);
-void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *local, uint32_t t);
-void silk_remesh_stream_stats(const silk_sil_frame *f, silk_frame_stats *stats);
-
-/* lines.c: after silk_remesh_emit, the lines of the frame into g (the
- * silhouette segments and visible feature curves drawn); SILK_ERR_NOMEM
- * when they do not fit, with no lines in g. */
-silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g);
-
-/* perturb.c */
-int  silk_perturb_alloc(silk_sil_frame *f);          /* 0 when it does not fit */
-void silk_perturb(silk_sil_frame *f);                /* fills offset, vert_offset */
-
-/* smooth.c: the plan of a STREAM frame into f and room for one input
- * triangle's share in local, all from the top of the arena (the caller
- * releases it; silk_remesh_stream_stats gives the frame's counts).  Returns
- * 0 when it does not fit (or tolerance_px <= 0): then nothing is left
- * allocated and the caller draws the coarse mesh. */
-int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                             silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local);
-
-/* Shared helpers. */
-uint32_t silk_sil_find_root(silk_sil_edge *edges, uint32_t i);
-/* Whether mesh edge `edge` carries points this frame (after silk_remesh_plan:
- * parents are roots then, and a dropped part is marked on its root). */
+/* Whether mesh edge `edge` carries points this frame. */
 static inline int silk_sil_chained(const silk_sil_frame *f, uint32_t edge)
 {
     uint32_t w = f->edge_slot[edge];
-    return w != SILK_SIL_NONE && !f->edges[f->edges[w].parent].rejected && f->edges[w].nchain > 0;
+    return w != SILK_SIL_NONE && f->edges[w].nchain > 0;
 }
 
 #endif

@@ -1,0 +1,267 @@
+/*
+ * test_golden.c - golden frames: the exact pixels of every mode.
+ *
+ * Meshes made by `silk gen`'s generator (tools/gen.c, with explicit
+ * parameters so that a change of its defaults does not move them: sphere,
+ * torus, cone and a clean (2,3) knot) and the shared bunny-500 (skipped
+ * with one line when ../shared/meshes is missing), each from three views
+ * (three-quarter perspective, orthographic from above, and a grazing
+ * close-up nearly edge-on to the model's equator), are drawn in every mode:
+ * flat, smooth, pn, blend, lines over, lines only, polygonal lines (over PN
+ * patches) and wireframe, RGB888, and a few in RGB565.  Each frame is drawn
+ * whole and in bands of 16 rows (some also of 1 row); the bands must give
+ * the whole frame's bytes, and the whole frame must give the bytes of its
+ * reference image tests/golden/NAME.png (RGB565 widened by bit replication,
+ * which loses nothing).  Any difference fails, naming the image and the
+ * number of pixels that differ.
+ *
+ *   test_golden            compare (make test)
+ *   test_golden --update   rewrite the images that differ or are missing
+ *                          and print "changed: NAME" / "new: NAME" for each
+ *                          (make golden)
+ *
+ * SILK_GOLDEN overrides the directory (default tests/golden).
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "silk/silk.h"
+#include "../platform/platform.h"
+#include "../platform/png_read.h"
+#include "../tools/gen.h"
+#include "support/testmesh.h"
+#include "support/testframe.h"
+
+#define W 128
+#define H 96
+#define BG 0xFFFFFFu
+#define ARENA_BYTES (24u << 20)
+
+static int update;
+static int n_changed, n_new, n_same;
+
+static const char *golden_dir(void)
+{
+    const char *d = getenv("SILK_GOLDEN");
+    return d ? d : "tests/golden";
+}
+
+/* ---- the meshes ------------------------------------------------------------- */
+
+static int gen_fixture(tm_fixture *f, const gen_params *p)
+{
+    gen_mesh gm;
+    char msg[256];
+    if (gen_check(p, msg, sizeof msg)) {
+        fprintf(stderr, "gen: %s\n", msg);
+        return 0;
+    }
+    if (gen_build(p, &gm) != 0) return 0;
+    int ok = tm_fixture_input(f, gm.pos, gm.nverts, gm.tri, gm.ntris) && tm_fixture_build(f) == SILK_OK;
+    gen_free(&gm);
+    return ok;
+}
+
+/* Returns 1 when the mesh is in f->m, 0 when it is skipped (bunny without
+ * the shared meshes), -1 on failure. */
+static int make_mesh(const char *name, tm_fixture *f)
+{
+    gen_params p;
+    if (!strcmp(name, "bunny")) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/bunny-500.obj", check_meshes_dir());
+        FILE *fp = fopen(path, "rb");
+        if (!fp) {
+            printf("skip: bunny: %s not found (SILK_MESHES)\n", path);
+            return 0;
+        }
+        fclose(fp);
+        return tm_fixture_read_obj(f, path) && tm_fixture_build(f) == SILK_OK ? 1 : -1;
+    }
+    if (!strcmp(name, "sphere")) {
+        gen_defaults(GEN_SPHERE, &p);
+        p.radius = 1; p.segments = 10; p.bands = 11;                  /* 200 triangles */
+    } else if (!strcmp(name, "torus")) {
+        gen_defaults(GEN_TORUS, &p);
+        p.R = 1; p.r = 0.4; p.segments = 16; p.bands = 8;             /* 256 */
+    } else if (!strcmp(name, "cone")) {
+        gen_defaults(GEN_CONE, &p);
+        p.radius = 1; p.height = 1.5; p.segments = 24; p.bands = 1;   /* 48 */
+    } else {
+        gen_defaults(GEN_KNOT, &p);
+        p.p = 2; p.q = 3; p.R = 1; p.r = 0.4; p.tube = 0.2; p.segments = 48; p.bands = 6;  /* 576 */
+    }
+    return gen_fixture(f, &p) ? 1 : -1;
+}
+
+/* ---- the views and modes ------------------------------------------------------ */
+
+typedef struct view_case {
+    const char *name;
+    double dir[3], dist;
+    int ortho;
+} view_case;
+
+static const view_case views[] = {
+    { "front", { 0.470, 0.342, 0.814 }, 2.2, 0 },    /* the command's default direction */
+    { "top", { -0.55, 0.78, -0.30 }, 3.0, 1 },
+    { "graze", { 0.90, 0.03, 0.43 }, 1.7, 0 },       /* eye nearly in the equator plane, close */
+};
+
+typedef struct mode_case {
+    const char *name;
+    silk_mode mode;
+    silk_lines lines;
+    int polygonal, wire;
+} mode_case;
+
+static const mode_case modes[] = {
+    { "flat", SILK_MODE_FLAT, SILK_LINES_NONE, 0, 0 },
+    { "smooth", SILK_MODE_SMOOTH, SILK_LINES_NONE, 0, 0 },
+    { "pn", SILK_MODE_PN, SILK_LINES_NONE, 0, 0 },
+    { "blend", SILK_MODE_BLEND, SILK_LINES_NONE, 0, 0 },
+    { "lines-over", SILK_MODE_SMOOTH, SILK_LINES_OVER, 0, 0 },
+    { "lines-only", SILK_MODE_SMOOTH, SILK_LINES_ONLY, 0, 0 },
+    { "lines-poly", SILK_MODE_PN, SILK_LINES_OVER, 1, 0 },
+    { "wire", SILK_MODE_SMOOTH, SILK_LINES_NONE, 0, 1 },
+};
+
+/* ---- one golden frame --------------------------------------------------------- */
+
+/* The frame against NAME.png: 1 when equal (or rewritten with --update). */
+static int compare_golden(const silk_target *t, const char *name)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s.png", golden_dir(), name);
+    size_t n = (size_t)t->width * (size_t)t->height * 3;
+    uint8_t *mine = malloc(n);
+    for (int y = 0; y < t->height; y++) silk_target_row_rgb888(t, y, mine + (size_t)y * (size_t)t->width * 3);
+
+    uint8_t *ref = NULL;
+    int rw = 0, rh = 0;
+    silk_error err;
+    FILE *probe = fopen(path, "rb");
+    int exists = probe != NULL;
+    if (probe) fclose(probe);
+    long differ = -1;
+    if (exists && silk_png_read(path, &ref, &rw, &rh, &err) == SILK_OK && rw == t->width && rh == t->height) {
+        differ = 0;
+        for (size_t i = 0; i < n; i += 3) differ += memcmp(mine + i, ref + i, 3) != 0;
+    }
+    free(ref);
+    free(mine);
+    if (differ == 0) {
+        n_same++;
+        return 1;
+    }
+    if (update) {
+        if (silk_png_write(t, path, &err) != SILK_OK) {
+            CHECKF(0, "%s", err.msg);
+            return 0;
+        }
+        printf("%s: %s\n", exists ? "changed" : "new", name);
+        if (exists) n_changed++;
+        else n_new++;
+        return 1;
+    }
+    if (!exists) CHECKF(0, "%s: no golden image (make golden)", path);
+    else CHECKF(differ == 0, "%s: %ld pixels differ from the golden image", name, differ);
+    return 0;
+}
+
+static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, const mode_case *mc,
+                        silk_pixfmt fmt, int one_row_bands)
+{
+    char name[128];
+    snprintf(name, sizeof name, "%s-%s-%s%s", mesh, vc->name, mc->name, fmt == SILK_PIX_RGB565 ? "-565" : "");
+    silk_view v;
+    if (!tf_view_around_size(&f->m, vc->dir, vc->dist, vc->ortho, W, H, &v)) {
+        CHECKF(0, "%s: no view", name);
+        return;
+    }
+    silk_phong ph;
+    silk_hal hal;
+    silk_phong_default(&ph, &v);
+    silk_hal_phong(&hal, &ph);
+    silk_render_opts ro;
+    silk_render_opts_default(&ro);
+    ro.mode = mc->mode;
+    ro.lines = mc->lines;
+    ro.lines_polygonal = mc->polygonal;
+    ro.wire = mc->wire;
+    ro.bg_rgb = BG;
+
+    silk_arena_mark mk = silk_arena_top_mark(&f->a);
+    size_t bpp = silk_pixfmt_bytes(fmt), bytes = (size_t)W * H * bpp;
+    uint8_t *color = silk_arena_alloc_top(&f->a, bytes, SILK_MEM_RASTER);
+    uint32_t *depth = silk_arena_array_top(&f->a, (size_t)W * H, sizeof *depth, SILK_MEM_RASTER);
+    uint8_t *copy = malloc(bytes);
+    if (!color || !depth || !copy) {
+        CHECKF(0, "%s: out of memory", name);
+        free(copy);
+        silk_arena_top_release(&f->a, &mk);
+        return;
+    }
+    silk_target full;
+    silk_target_init(&full, W, H, 0, H, fmt, color, depth);
+    silk_target_clear(&full, BG);
+    silk_frame_stats fs, bs;
+    silk_error err;
+    silk_status st = silk_render(&f->a, &f->m, &v, &hal, &ro, &full, &fs, &err);
+    CHECKF(st == SILK_OK, "%s: %s", name, err.msg);
+    CHECKF(!fs.fell_back, "%s: the frame fell back", name);
+
+    int heights[2] = { 16, 1 };
+    for (int k = 0; k < (one_row_bands ? 2 : 1); k++) {
+        memset(copy, 0xA5, bytes);
+        tf_collect c = { copy, 0, 0, 0, 0, 0 };
+        st = tf_render_bands(&f->a, &f->m, &v, &hal, &ro, fmt, heights[k], &c, &bs, &err);
+        CHECKF(st == SILK_OK && c.bad == 0 && c.next_row == H, "%s: bands of %d: %s", name, heights[k],
+               st == SILK_OK ? "out of order" : err.msg);
+        CHECKF(memcmp(copy, color, bytes) == 0, "%s: bands of %d rows differ from the whole frame", name,
+               heights[k]);
+    }
+    compare_golden(&full, name);
+    free(copy);
+    silk_arena_top_release(&f->a, &mk);
+}
+
+static void golden_mesh(const char *mesh)
+{
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
+    int got = make_mesh(mesh, &f);
+    CHECKF(got >= 0, "%s: cannot make the mesh", mesh);
+    if (got == 1) {
+        for (size_t iv = 0; iv < sizeof views / sizeof views[0]; iv++)
+            for (size_t im = 0; im < sizeof modes / sizeof modes[0]; im++)
+                golden_case(&f, mesh, &views[iv], &modes[im], SILK_PIX_RGB888, iv == 0);
+        /* RGB565: the default mode with and without lines, and flat, from the first view. */
+        golden_case(&f, mesh, &views[0], &modes[0], SILK_PIX_RGB565, 1);
+        golden_case(&f, mesh, &views[0], &modes[1], SILK_PIX_RGB565, 1);
+        golden_case(&f, mesh, &views[2], &modes[4], SILK_PIX_RGB565, 0);
+    }
+    tm_fixture_free(&f);
+}
+
+TEST(golden_sphere) { golden_mesh("sphere"); }
+TEST(golden_torus) { golden_mesh("torus"); }
+TEST(golden_cone) { golden_mesh("cone"); }
+TEST(golden_knot) { golden_mesh("knot"); }
+TEST(golden_bunny) { golden_mesh("bunny"); }
+
+int main(int argc, char **argv)
+{
+    update = argc > 1 && !strcmp(argv[1], "--update");
+    RUN(golden_sphere);
+    RUN(golden_torus);
+    RUN(golden_cone);
+    RUN(golden_knot);
+    RUN(golden_bunny);
+    if (update)
+        printf("golden: %d changed, %d new, %d unchanged in %s\n", n_changed, n_new, n_same, golden_dir());
+    return check_done();
+}

@@ -1,0 +1,201 @@
+#!/bin/sh
+# profile_fw.sh - where every byte of flash and RAM goes on a firmware board
+# (mps2-an385): the second half of `make profile`, after make has built the
+# firmware for the mesh.
+#
+#   sh tools/profile_fw.sh MESH [--check]
+#
+# The board's settings come from the Makefile, which read them from
+# boards/$(BOARD)/board.mk, as environment variables: BOARD, FW_DIR (where
+# the firmware of each model is: FW_DIR/NAME/fw.elf and fw.map), BOARD_RUN
+# (the emulator command line, QEMU), BOARD_CROSS, BOARD_FLASH_BYTES,
+# BOARD_WIDTH, BOARD_HEIGHT, BOARD_BAND_ROWS, and PROFILE_CSV (the CSV to
+# write).
+#
+# It runs the firmware, which renders its views flat and smooth in bands and
+# reports its own arena high-water marks by purpose and its stack high-water
+# mark from stack painting (saved as FW_DIR/NAME/report.txt); flash and
+# static RAM come from the linker's map file, input section by input
+# section: the core's code by module, the scene, platform code, libc,
+# libgcc, and the packed model by kind.  The last line is
+#   footprint BOARD MESH ram_total_bytes=N code_bytes=N model_bytes=N
+# with ram_total = static RAM + arena high-water + stack high-water (the band
+# buffers are in the arena) and code = flash other than the model.  --check
+# exits 1 when the board's budget is not met (a frame fell back, RAM over
+# budget, core code over 48 KiB).
+set -u
+mesh=${1:?usage: profile_fw.sh MESH [--check]}
+check=0
+[ "${2:-}" = --check ] && check=1
+for v in BOARD FW_DIR BOARD_RUN BOARD_FLASH_BYTES BOARD_WIDTH BOARD_HEIGHT BOARD_BAND_ROWS PROFILE_CSV; do
+    eval "[ -n \"\${$v:-}\" ]" || { echo "profile_fw.sh: $v is not set (run it through make profile)" >&2; exit 2; }
+done
+name=$(basename "$mesh")
+name=${name%.*}
+dir=$FW_DIR/$name
+[ -e "$dir/fw.elf" ] || { echo "silk: profile: $dir/fw.elf is missing (make BOARD=$BOARD BOARD_MESHES=$mesh firmware)" >&2; exit 1; }
+
+# The firmware under the emulator, 300 s at most.
+timeout 300 $BOARD_RUN "$dir/fw.elf" -append "$dir/frame" >"$dir/report.txt" 2>&1
+st=$?
+if [ "$st" -ne 0 ] || ! grep -qx 'fw result=ok' "$dir/report.txt"; then
+    cat "$dir/report.txt" >&2
+    echo "silk: profile: the firmware did not run to the end (exit $st, $BOARD_RUN $dir/fw.elf)" >&2
+    exit 1
+fi
+# .text of the whole core library for the board, linked or not.
+lib_text=$("${BOARD_CROSS:-}size" -t "$FW_DIR/libsilk.a" 2>/dev/null | awk '/\(TOTALS\)/ { print $1 }')
+
+awk -v board="$BOARD" -v mesh="$mesh" -v name="$name" -v dir="$dir" -v csv="$PROFILE_CSV" -v check="$check" \
+    -v flash_budget="$BOARD_FLASH_BYTES" -v width="$BOARD_WIDTH" -v height="$BOARD_HEIGHT" \
+    -v band_rows="$BOARD_BAND_ROWS" -v lib_text="${lib_text:-0}" -v runner="${BOARD_RUN%% *}" '
+function hex(s,    i, n, c) {
+    n = 0
+    s = tolower(s)
+    sub(/^0x/, "", s)
+    for (i = 1; i <= length(s); i++) {
+        c = index("0123456789abcdef", substr(s, i, 1))
+        if (!c) break
+        n = n * 16 + c - 1
+    }
+    return n
+}
+function field(key,    i) {               # "key=N" on the current report line
+    for (i = 1; i <= NF; i++) if (index($i, key "=") == 1) return substr($i, length(key) + 2) + 0
+    return -1
+}
+function row(area, item, bytes, note) {
+    printf "  %-34s %9d  %s\n", item, bytes, note
+    if (csv != "") printf "%s,%s,%d\n", area, item, bytes >csv
+}
+# "…/libsilk.a(raster.o)" -> "core raster", and so on.
+function module_of(file,    base, member) {
+    base = file
+    sub(/.*\//, "", base)
+    member = ""
+    if (index(file, "(")) {
+        member = substr(file, index(file, "(") + 1)
+        sub(/\).*/, "", member)
+        sub(/\.[^.]*$/, "", member)
+    }
+    if (index(file, "libsilk.a(")) return "core " member
+    if (index(file, "libc_nano.a(") || index(file, "libc.a(")) return "libc"
+    if (index(file, "libgcc.a(")) return "libgcc"
+    if (index(file, "libnosys.a(")) return "libnosys"
+    if (index(base, "fw_main")) return "scene fw_main"
+    sub(/\.[^.]*$/, "", base)
+    return "platform " base
+}
+function account(out_sec, in_sec, size, file,    kind, p, m) {
+    if (out_sec == ".bss") kind = "bss"
+    else if (out_sec == ".data") kind = "data"
+    else if (substr(in_sec, 1, 5) == ".text") kind = "text"
+    else kind = "ro"                       # .rodata, .vectors, .ARM.exidx
+    p = index(in_sec, "fwmodel_")
+    if (p && substr(in_sec, 1, 7) == ".rodata" && (substr(in_sec, p + 8) in model_kind)) {
+        model[model_kind[substr(in_sec, p + 8)]] += size
+        return
+    }
+    m = module_of(file)
+    if (!(m in seen)) { seen[m] = 1; mods[++nmod] = m }
+    bytes[m, kind] += size
+}
+BEGIN {
+    # packed array (fwmodel_X) -> kind, as `silk pack` names them; kinds in print order
+    split("pos positions|normal normals|normal_vertex normals|tri_normal normals|uv uvs|tri_uv uvs|" \
+          "tri triangles|tri_edge edges|edge edges|vert_edge_start vertex_edges|vert_edge vertex_edges|" \
+          "edge_feature features|feature features|vis_node visibility|vis visibility|cameras cameras", pairs, "|")
+    for (i = 1; pairs[i] != ""; i++) {
+        split(pairs[i], kv, " ")
+        k = kv[2]
+        gsub(/_/, " ", k)
+        model_kind[kv[1]] = k
+        if (!(k in kind_seen)) { kind_seen[k] = 1; kinds[++nkinds] = k }
+    }
+    nmod = 0
+}
+# ---- the firmware report
+FILENAME ~ /report\.txt$/ {
+    if ($0 ~ /^fw frame=/) {
+        frames++
+        if (field("fell_back") == 1) { fell++; if ($0 ~ / mode=smooth /) smooth_fell++ }
+    } else if ($0 ~ /^fw arena size=/) {
+        arena_size = field("size"); arena_peak = field("peak")
+    } else if ($0 ~ /^fw arena_purpose /) {
+        pname[++npurpose] = substr($3, 6); ppeak[npurpose] = field("peak")
+    } else if ($0 ~ /^fw stack /) {
+        stack_size = field("size"); stack_used = field("used")
+    } else if ($0 ~ /^fw static /) {
+        data = field("data"); bss = field("bss")
+    } else if ($0 ~ /^fw ram /) {
+        ram_total = field("total"); ram_budget = field("budget")
+    }
+    next
+}
+# ---- the map file: input sections of the loaded output sections (GNU ld -Map)
+!in_map { if (index($0, "Linker script and memory map") == 1) in_map = 1; next }
+/^\./ { out_sec = $1; pending = ""; next }
+!/^ / { pending = ""; next }
+{
+    wanted = out_sec == ".text" || out_sec == ".ARM.exidx" || out_sec == ".data" || out_sec == ".bss"
+    if ($1 == "*fill*") {
+        if (NF >= 3 && wanted && out_sec != ".bss") fill += hex($3)
+        next
+    }
+    if (NF == 1 && substr($1, 1, 1) == ".") { pending = $1; next }   # long name: the rest is on the next line
+    if (pending != "" && NF == 3 && $1 ~ /^0x/ && $2 ~ /^0x/) {
+        if (wanted) account(out_sec, pending, hex($2), $3)
+        pending = ""
+        next
+    }
+    pending = ""
+    if (NF >= 4 && substr($1, 1, 1) == "." && $2 ~ /^0x/ && $3 ~ /^0x/ && wanted) account(out_sec, $1, hex($3), $4)
+}
+END {
+    if (!in_map) { print "silk: profile: cannot read the map file " dir "/fw.map" >"/dev/stderr"; exit 1 }
+    if (csv != "") printf "area,item,bytes\n" >csv
+    # modules by name
+    for (i = 2; i <= nmod; i++) for (j = i; j > 1 && mods[j - 1] > mods[j]; j--) { t = mods[j]; mods[j] = mods[j - 1]; mods[j - 1] = t }
+    printf "silk profile: %s on %s (%s)\n", mesh, board, dir
+    printf "frame %sx%s, bands of %d rows; %d frames rendered (flat and smooth from %d views)\n",
+        width, height, band_rows, frames, int(frames / 2)
+    printf "\nFLASH (bytes; from %s/fw.map)\n", dir
+    for (i = 1; i <= nmod; i++) {
+        m = mods[i]; t = bytes[m, "text"] + 0; ro = bytes[m, "ro"] + 0; d = bytes[m, "data"] + 0
+        if (!t && !ro && !d) continue
+        row("flash", m, t + ro + d, sprintf("code %d, constants %d%s", t, ro, d ? ", .data image" : ""))
+        if (substr(m, 1, 5) == "core ") { core_text += t; core_ro += ro }
+        code += t + ro; data_init += d
+    }
+    row("flash", "alignment padding", fill, "")
+    code += fill + data_init
+    print "  model (silk pack):"
+    for (i = 1; i <= nkinds; i++) { model_total += model[kinds[i]]; if (model[kinds[i]]) row("flash", "model " kinds[i], model[kinds[i]], "") }
+    printf "  %-34s %9d  (limit 48 KiB = 49152: %s)\n", "core code (.text of libsilk)", core_text, core_text <= 49152 ? "ok" : "OVER"
+    printf "  %-34s %9d\n", "core constants (.rodata)", core_ro
+    if (lib_text) printf "  %-34s %9d  (every module, loaders too: `size` of fw/libsilk.a)\n", "core library .text", lib_text
+    row("flash", "code total", code, "everything but the model")
+    row("flash", "model total", model_total, "")
+    row("flash", "flash total", code + model_total, flash_budget ? sprintf("of %d (%s)", flash_budget, code + model_total <= flash_budget ? "fits" : "OVER") : "")
+
+    printf "\nRAM (bytes; measured by the firmware under %s)\n", runner
+    row("ram", "static .data", data, "libc state")
+    row("ram", "static .bss besides the arena", bss - arena_size, "")
+    row("ram", "arena", arena_peak, sprintf("high-water of %d reserved", arena_size))
+    for (i = 1; i <= npurpose; i++) if (ppeak[i] > 0)
+        row("ram", "  arena " pname[i], ppeak[i], pname[i] == "raster" ? "band buffers: colour + depth" : pname[i] == "frame" ? "per-frame scratch, peak" : "")
+    row("ram", "stack", stack_used, sprintf("painted high-water of %d reserved", stack_size))
+    row("ram", "ram total", ram_total, sprintf("of %d budget (%s)", ram_budget, ram_total <= ram_budget ? "fits" : "OVER"))
+    if (fell) printf "\n  %d of %d frames fell back (%d smooth): the arena could not hold their per-frame\n" \
+        "  scratch, so part or all of the frame was drawn unsmoothed; see docs/small-devices.md.\n", fell, frames, smooth_fell
+    if (csv != "") {
+        printf "frames,fell_back,%d\n", fell >csv
+        if (close(csv) != 0) { print "silk: profile: " csv ": write failed" >"/dev/stderr"; exit 1 }
+        printf "\ncsv: %s\n", csv
+    }
+    printf "footprint %s %s ram_total_bytes=%d code_bytes=%d model_bytes=%d\n", board, name, ram_total, code, model_total
+    if (check && (fell || ram_total > ram_budget || core_text > 49152)) {
+        printf "silk: profile: %s does not meet its budget (%d frames fell back)\n", board, fell >"/dev/stderr"
+        exit 1
+    }
+}' "$dir/report.txt" "$dir/fw.map"
