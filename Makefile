@@ -26,7 +26,7 @@ PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 
 CORE_SRC  := $(wildcard src/*.c)
-PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/fb_sink.c
+PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/ppm_read.c platform/fb_sink.c
 TOOL_SRC  := $(wildcard tools/*.c)
 # The window of `silk view` needs SDL2 (docs/viewer.md); without it the rest
 # builds, and `silk view` offers only --fb, --benchmark and --events.

@@ -19,18 +19,25 @@
 
 #include "platform.h"
 
+int silk_path_is_stdio(const char *path)
+{
+    return path && strcmp(path, "-") == 0;
+}
+
 silk_status silk_file_read(const char *path, uint8_t **data, size_t *len, silk_error *err)
 {
     *data = NULL;
     *len = 0;
-    FILE *f = fopen(path, "rb");
+    int std = silk_path_is_stdio(path);
+    if (std) path = SILK_STDIN_NAME;
+    FILE *f = std ? stdin : fopen(path, "rb");
     if (!f) return silk_fail(err, SILK_ERR_IO, path, 0, "cannot open: %s", strerror(errno));
 
     /* fopen() succeeds on a directory; say so instead of "cannot read". */
     struct stat st;
     int have_stat = fstat(fileno(f), &st) == 0;
     if (have_stat && S_ISDIR(st.st_mode)) {
-        fclose(f);
+        if (!std) fclose(f);
         return silk_fail(err, SILK_ERR_IO, path, 0, "cannot read: %s", strerror(EISDIR));
     }
 
@@ -45,7 +52,7 @@ silk_status silk_file_read(const char *path, uint8_t **data, size_t *len, silk_e
         if (n + 1 >= cap) {
             if (cap > SILK_FILE_MAX) {
                 free(buf);
-                fclose(f);
+                if (!std) fclose(f);
                 return silk_fail(err, SILK_ERR_IO, path, 0, "file is too large (more than %zu bytes)",
                                  (size_t)SILK_FILE_MAX);
             }
@@ -60,16 +67,16 @@ silk_status silk_file_read(const char *path, uint8_t **data, size_t *len, silk_e
         if (got < want) break;   /* end of file or an error, told apart below */
     }
     if (!buf) {
-        fclose(f);
+        if (!std) fclose(f);
         return silk_fail(err, SILK_ERR_IO, path, 0, "out of memory reading the file");
     }
     if (ferror(f)) {
         int e = errno;
         free(buf);
-        fclose(f);
+        if (!std) fclose(f);
         return silk_fail(err, SILK_ERR_IO, path, 0, "cannot read: %s", strerror(e ? e : EIO));
     }
-    fclose(f);
+    if (!std) fclose(f);
     buf[n] = 0;
     *data = buf;
     *len = n;
@@ -81,11 +88,27 @@ silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err
     o->fp = NULL;
     o->path = path;
     o->tmp = NULL;
+    o->direct = 0;
+    if (silk_path_is_stdio(path)) {
+        /* Standard output cannot be written atomically: a failure is still
+         * reported, but what was written has gone. */
+        o->fp = stdout;
+        o->path = SILK_STDOUT_NAME;
+        o->direct = 1;
+        return SILK_OK;
+    }
 
     /* rename() over a directory would fail only at the end; fail early. */
     struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+    int exists = stat(path, &st) == 0;
+    if (exists && S_ISDIR(st.st_mode))
         return silk_fail(err, SILK_ERR_IO, path, 0, "cannot write: %s", strerror(EISDIR));
+    if (exists && !S_ISREG(st.st_mode)) {
+        o->fp = fopen(path, "wb");
+        if (!o->fp) return silk_fail(err, SILK_ERR_IO, path, 0, "cannot write: %s", strerror(errno));
+        o->direct = 1;
+        return SILK_OK;
+    }
 
     static const char suffix[] = ".tmpXXXXXX";
     size_t n = strlen(path);
@@ -119,6 +142,15 @@ silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err
 
 silk_status silk_outfile_commit(silk_outfile *o, silk_error *err)
 {
+    if (o->direct) {
+        FILE *fp = o->fp;
+        o->fp = NULL;
+        int bad = !fp || fflush(fp) != 0 || ferror(fp);
+        int e = errno ? errno : EIO;
+        if (fp && fp != stdout && fclose(fp) != 0 && !bad) bad = 1, e = errno ? errno : EIO;
+        if (bad) return silk_fail(err, SILK_ERR_IO, o->path, 0, "cannot write: %s", strerror(e));
+        return SILK_OK;
+    }
     if (!o->fp || !o->tmp) return silk_fail(err, SILK_ERR_IO, o->path, 0, "cannot write: not open");
     int e = 0;
     if (fflush(o->fp) != 0 || ferror(o->fp)) e = errno ? errno : EIO;
@@ -138,6 +170,12 @@ silk_status silk_outfile_commit(silk_outfile *o, silk_error *err)
 
 void silk_outfile_abort(silk_outfile *o)
 {
+    if (o->direct) {
+        if (o->fp && o->fp != stdout) fclose(o->fp);
+        else if (o->fp) fflush(o->fp);
+        o->fp = NULL;
+        return;
+    }
     if (o->fp) {
         fclose(o->fp);
         o->fp = NULL;
@@ -152,13 +190,14 @@ void silk_outfile_abort(silk_outfile *o)
 int silk_file_remove_stale(const char *path)
 {
     struct stat st;
-    if (lstat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0;
+    if (silk_path_is_stdio(path) || lstat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0;
     return unlink(path) == 0;
 }
 
 int silk_file_same(const char *a, const char *b)
 {
     struct stat sa, sb;
+    if (silk_path_is_stdio(a) || silk_path_is_stdio(b)) return 0;
     return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
@@ -178,10 +217,16 @@ silk_image_format silk_image_format_for_path(const char *path)
 
 silk_status silk_image_write(const silk_target *t, const char *path, silk_error *err)
 {
-    switch (silk_image_format_for_path(path)) {
+    return silk_image_write_as(t, path, silk_image_format_for_path(path), err);
+}
+
+silk_status silk_image_write_as(const silk_target *t, const char *path, silk_image_format fmt, silk_error *err)
+{
+    switch (fmt) {
     case SILK_IMAGE_PNG: return silk_png_write(t, path, err);
     case SILK_IMAGE_PPM: return silk_ppm_write(t, path, err);
     default: break;
     }
-    return silk_fail(err, SILK_ERR_ARG, path, 0, "unknown image format (use .png or .ppm)");
+    return silk_fail(err, SILK_ERR_ARG, silk_path_is_stdio(path) ? SILK_STDOUT_NAME : path, 0,
+                     "unknown image format (use .png or .ppm)");
 }

@@ -1,5 +1,6 @@
 /*
- * png_sink.c - write a render target as an 8-bit RGB PNG through libpng.
+ * png_sink.c - write a render target as an 8-bit RGB PNG through libpng,
+ * or as RGBA with an alpha channel the caller gives (the object's coverage).
  *
  * libpng reports errors by longjmp; the handler below keeps its message so
  * the caller gets one line ("out.png: cannot write: libpng: Write Error")
@@ -35,7 +36,7 @@ static void on_png_warning(png_structp png, png_const_charp msg)
 
 /* The libpng part, separate so that nothing the caller owns is live across
  * setjmp except through the arguments. */
-static int write_png_stream(FILE *fp, const silk_target *t, uint8_t *row, png_sink_ctx *ctx)
+static int write_png_stream(FILE *fp, const silk_target *t, const uint8_t *alpha, uint8_t *row, png_sink_ctx *ctx)
 {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, ctx, on_png_error, on_png_warning);
     if (!png) {
@@ -53,11 +54,24 @@ static int write_png_stream(FILE *fp, const silk_target *t, uint8_t *row, png_si
         return 0;
     }
     png_init_io(png, fp);
-    png_set_IHDR(png, info, (png_uint_32)t->width, (png_uint_32)t->height, 8, PNG_COLOR_TYPE_RGB,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, (png_uint_32)t->width, (png_uint_32)t->height, 8,
+                 alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (int y = 0; y < t->height; y++) {
-        if (t->fmt == SILK_PIX_RGB888) {
+        if (alpha) {
+            /* RGB widened in place from the back, so row holds 4 bytes a pixel */
+            const uint8_t *a = alpha + (size_t)y * (size_t)t->width;
+            silk_target_row_rgb888(t, y, row);
+            for (int x = t->width - 1; x >= 0; x--) {
+                size_t i = (size_t)x;
+                row[4 * i + 3] = a[i];
+                row[4 * i + 2] = row[3 * i + 2];
+                row[4 * i + 1] = row[3 * i + 1];
+                row[4 * i + 0] = row[3 * i + 0];
+            }
+            png_write_row(png, row);
+        } else if (t->fmt == SILK_PIX_RGB888) {
             png_write_row(png, t->color + (size_t)y * t->stride);
         } else {
             silk_target_row_rgb888(t, y, row);
@@ -69,26 +83,36 @@ static int write_png_stream(FILE *fp, const silk_target *t, uint8_t *row, png_si
     return 1;
 }
 
-silk_status silk_png_write(const silk_target *t, const char *path, silk_error *err)
+static silk_status png_write(const silk_target *t, const uint8_t *alpha, const char *path, silk_error *err)
 {
     silk_status s = silk_image_check_target(t, path, err);
     if (s != SILK_OK) return s;
     if ((png_uint_32)t->width > PNG_UINT_31_MAX || (png_uint_32)t->height > PNG_UINT_31_MAX)
         return silk_fail(err, SILK_ERR_ARG, path, 0, "image too large for PNG");
-    uint8_t *row = malloc((size_t)t->width * 3);
+    uint8_t *row = malloc((size_t)t->width * 4);
     if (!row) return silk_fail(err, SILK_ERR_IO, path, 0, "out of memory");
 
     silk_outfile o;
     s = silk_outfile_open(&o, path, err);
     if (s == SILK_OK) {
         png_sink_ctx ctx = { { 0 } };
-        if (write_png_stream(o.fp, t, row, &ctx)) {
+        if (write_png_stream(o.fp, t, alpha, row, &ctx)) {
             s = silk_outfile_commit(&o, err);
         } else {
             silk_outfile_abort(&o);
-            s = silk_fail(err, SILK_ERR_IO, path, 0, "cannot write: libpng: %s", ctx.msg);
+            s = silk_fail(err, SILK_ERR_IO, o.path, 0, "cannot write: libpng: %s", ctx.msg);
         }
     }
     free(row);
     return s;
+}
+
+silk_status silk_png_write(const silk_target *t, const char *path, silk_error *err)
+{
+    return png_write(t, NULL, path, err);
+}
+
+silk_status silk_png_write_alpha(const silk_target *t, const uint8_t *alpha, const char *path, silk_error *err)
+{
+    return png_write(t, alpha, path, err);
 }

@@ -58,5 +58,13 @@ void silk_frame_stats_fell_back(silk_frame_stats *stats, uint32_t tris_drawn)
     if (!stats) return;
     stats->silhouette_tris = stats->bridges = stats->samples = stats->moved_vertices = 0;
     stats->tris_drawn = tris_drawn;
-    stats->fell_back = 1;
+    silk_frame_fell_short(stats);
+}
+
+/* The one flag for a frame that is less than was asked for, drawn coarse or
+ * with lines left out or unlifted: a caller that retries with a larger
+ * arena gets all of it. */
+void silk_frame_fell_short(silk_frame_stats *stats)
+{
+    if (stats) stats->fell_back = 1;
 }

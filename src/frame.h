@@ -22,6 +22,10 @@ typedef struct silk_frame_geom {
     silk_curve *curve; uint32_t ncurve;
     silk_vec3  *offset; uint32_t noffset;
     silk_patch *patch; uint32_t npatch;  /* PN and BLEND modes */
+    uint32_t   *part_rec;                /* SMOOTH: input triangle t's records start at
+                                            part_rec[t] (ntris + 1), or NULL */
+    uint32_t   *rec_key;                 /* SMOOTH with lines: per record, which point it is
+                                            (copies of one point share it; lines.c), or NULL */
     /* Pen-and-ink lines (lines.c), when asked for: line i is the polyline
      * through line_vrec[line_start[i] .. line_start[i+1]-1], a silhouette
      * line or a feature line (line_feature[i]).  Records of their own;
@@ -51,6 +55,9 @@ silk_status silk_frame_fall_back(silk_arena *a, const silk_mesh *m, const silk_a
 /* stats of a frame drawn as the coarse mesh (tris_drawn triangles): no
  * silhouette work counted, fell_back set.  stats may be NULL. */
 void silk_frame_stats_fell_back(silk_frame_stats *stats, uint32_t tris_drawn);
+/* What sets fell_back, for the coarse mesh and for lines that did not fit
+ * (left out, or drawn without their lift).  stats may be NULL. */
+void silk_frame_fell_short(silk_frame_stats *stats);
 
 /* Paper section III for one view.  All arrays come from the top of the arena
  * (purpose FRAME); the caller releases them.  When the arena runs out part way,

@@ -34,6 +34,7 @@
  */
 #include <string.h>
 #include "lines.h"
+#include "remesh.h"
 
 /* Room for nlines polylines over nrec records, from the top of the arena. */
 static int lines_alloc(silk_arena *a, silk_frame_geom *g, uint32_t nlines, uint64_t nrec)
@@ -64,54 +65,114 @@ static void line_end(silk_frame_geom *g, int feature)
     g->line_start[g->nlines] = g->nline_vrec;
 }
 
+/* Which point record r is: records at a mesh vertex (its corners, moved
+ * as one) are one point, keyed by the vertex; any other record is its own. */
+static uint32_t point_key(const silk_mesh *m, const silk_frame_geom *g, uint32_t r)
+{
+    const silk_vrec *v = &g->vrec[r];
+    if (g->rec_key) return g->rec_key[r];
+    if ((v->kind == SILK_VREC_CORNER || v->kind == SILK_VREC_MOVED) && v->a / 3 < m->ntris && m->tri[v->a] < m->nverts)
+        return m->tri[v->a];
+    return m->nverts + r;
+}
+
 /* ---- SMOOTH mode ------------------------------------------------------------- */
 
-/* The corner record of side s at edge.v[0] (end 0) or edge.v[1] (end 1):
- * record 3t+k is corner k of triangle t in every SMOOTH frame (CORNER, or
- * MOVED at a perturbed vertex). */
-static uint32_t side_corner(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s, int end)
+/* The sides on each carrying edge, in the plan's order (triangle by
+ * triangle): at[e->side0 + i] is 3t+k of the edge's side i. */
+static uint32_t *edge_sides(const silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
-    uint32_t ca = 3 * s->tri + s->k, cb = 3 * s->tri + (s->k + 1) % 3;
-    int fwd = m->tri[ca] == m->edge[e->edge].v[0];
-    return (end == 0) == fwd ? ca : cb;
+    uint32_t *at = silk_arena_array_top(f->a, f->nsides, sizeof *at, SILK_MEM_FRAME);
+    uint32_t *n = silk_arena_array_top(f->a, f->nedges, sizeof *n, SILK_MEM_FRAME);
+    if (!at || !n) return NULL;
+    memset(n, 0, (size_t)f->nedges * sizeof *n);
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        if (!silk_sil_tri_ok(m, t)) continue;
+        for (uint32_t k = 0; k < 3; k++) {
+            uint32_t w = f->edge_slot[m->tri_edge[3 * t + k]];
+            if (w != SILK_SIL_NONE) at[f->edges[w].side0 + n[w]++] = 3 * t + k;
+        }
+    }
+    return at;
+}
+
+/* The first record of side c's (3t+k) chain in the stored frame g. */
+static uint32_t side_rec(const silk_sil_frame *f, const silk_frame_geom *g, uint32_t c)
+{
+    return silk_remesh_corner_rec(f, c / 3, c % 3, g->part_rec[c / 3]) + 1;
+}
+
+/* Which point each record of g is (g->rec_key, for silk_lines_lift): a
+ * mesh vertex for its corners; for the copies of an edge's point made by
+ * sides with the same normals and uvs, the first such side's record; any
+ * other record is its own point. */
+static int point_keys(const silk_sil_frame *f, silk_frame_geom *g, const uint32_t *at)
+{
+    const silk_mesh *m = f->m;
+    uint32_t *key = silk_arena_array_top(f->a, g->nvrec, sizeof *key, SILK_MEM_FRAME);
+    if (!key) return 0;
+    g->rec_key = NULL;
+    for (uint32_t r = 0; r < g->nvrec; r++) key[r] = point_key(m, g, r);
+    for (uint32_t w = 0; w < f->nedges; w++) {
+        const silk_sil_edge *e = &f->edges[w];
+        for (uint32_t i = 0; e->nchain && i < e->nsides; i++) {
+            silk_sil_side s, o;
+            uint32_t c = at[e->side0 + i], own = c;
+            silk_sil_side_attrs(m, c / 3, c % 3, &m->edge[e->edge], &s);
+            for (uint32_t j = 0; j < i; j++) {
+                own = at[e->side0 + j];
+                silk_sil_side_attrs(m, own / 3, own % 3, &m->edge[e->edge], &o);
+                if (o.n0 == s.n0 && o.n1 == s.n1 && o.uv0 == s.uv0 && o.uv1 == s.uv1) break;
+                own = c;
+            }
+            uint32_t rec = side_rec(f, g, c), first = side_rec(f, g, own);
+            for (uint32_t j = 0; j < e->nchain; j++) key[rec + j] = m->nverts + first + j;
+        }
+    }
+    g->rec_key = key;
+    return 1;
 }
 
 silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
 {
-    uint32_t nlines = 0;
-    uint64_t nrec = 0;
-    for (uint32_t i = 0; i < f->nsegs; i++) {
-        nlines++;
-        nrec += f->segs[i].n + 1;
-    }
+    const silk_mesh *m = f->m;
+    uint32_t nlines = f->nsegs;
+    uint64_t nrec = f->seg_samples + 2 * (uint64_t)f->nsegs;
     for (uint32_t w = 0; w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;
         nlines++;
-        nrec += 2 + (silk_sil_chained(f, e->edge) ? e->nchain : 0);
+        nrec += 2 + e->nchain;
     }
-    if (!lines_alloc(f->a, g, nlines, nrec)) return SILK_ERR_NOMEM;
+    uint32_t *at = edge_sides(f);
+    if (!at || !point_keys(f, g, at) || !lines_alloc(f->a, g, nlines, nrec)) return SILK_ERR_NOMEM;
 
-    for (uint32_t i = 0; i < f->nsegs; i++) {
-        const silk_sil_seg *s = &f->segs[i];
-        line_rec(g, s->rec_a);
-        for (uint32_t j = 1; j < s->n; j++) line_rec(g, s->rec + j - 1);
-        line_rec(g, s->rec_b);
+    /* Each silhouette segment through A, its samples and B: the records
+     * of its triangle's share (the samples follow the boundary). */
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        silk_sil_seg s;
+        if (!(f->tri_state[t] & SILK_TS_SIL) || !silk_remesh_seg(f, t, &s)) continue;
+        uint32_t rec[3];
+        silk_remesh_seg_recs(f, t, g->part_rec[t], rec);
+        line_rec(g, rec[0]);
+        for (uint32_t j = 1; j < s.n; j++) line_rec(g, rec[2] + j - 1);
+        line_rec(g, rec[1]);
         line_end(g, 0);
     }
-    /* A feature edge that needed no samples is drawn straight between its
-     * corners, and so is its line. */
+    /* Each visible feature edge through its ends and its chain, as its
+     * first side has them; one that needed no samples is drawn straight
+     * between its corners, and so is its line. */
     for (uint32_t w = 0; w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;
-        const silk_sil_side *s = &f->sides[e->side0];
-        line_rec(g, side_corner(f, e, s, 0));
-        if (silk_sil_chained(f, e->edge)) {
-            uint32_t rec = f->sides[s->owner].rec;
-            for (uint32_t j = 0; j < e->nchain; j++) line_rec(g, rec + j);
-        }
-        line_rec(g, side_corner(f, e, s, 1));
+        uint32_t c = at[e->side0], t = c / 3, k = c % 3, k1 = (k + 1) % 3;
+        int fwd = m->tri[c] == m->edge[e->edge].v[0];
+        uint32_t r0 = silk_remesh_corner_rec(f, t, k, g->part_rec[t]);
+        uint32_t r1 = silk_remesh_corner_rec(f, t, k1, g->part_rec[t]);
+        line_rec(g, fwd ? r0 : r1);
+        for (uint32_t j = 0; j < e->nchain; j++) line_rec(g, r0 + 1 + j);
+        line_rec(g, fwd ? r1 : r0);
         line_end(g, 1);
     }
     return SILK_OK;
@@ -211,16 +272,6 @@ static int64_t depth_slope(const spt *a, const spt *b, const spt *c)
      * below 1/256 px^2 counts as edge-on. */
     if (area2 < 256) return INT64_MAX;
     return (gx + gy) / (area2 >> 8);
-}
-
-/* Which point record r is: records at a mesh vertex (its corners, moved
- * as one) are one point, keyed by the vertex; any other record is its own. */
-static uint32_t point_key(const silk_mesh *m, const silk_frame_geom *g, uint32_t r)
-{
-    const silk_vrec *v = &g->vrec[r];
-    if ((v->kind == SILK_VREC_CORNER || v->kind == SILK_VREC_MOVED) && v->a / 3 < m->ntris && m->tri[v->a] < m->nverts)
-        return m->tri[v->a];
-    return m->nverts + r;
 }
 
 uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_geom *g, const silk_vertex_out *out,
@@ -376,9 +427,8 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
     uint32_t nhalf = 3 * g->ntri;
     rec_pos *pos = silk_arena_array_top(a, g->nvrec, sizeof *pos, SILK_MEM_FRAME);
     uint32_t *id = silk_arena_array_top(a, g->nvrec, sizeof *id, SILK_MEM_FRAME);
-    uint8_t *on_line = silk_arena_array_top(a, g->nvrec, 1, SILK_MEM_FRAME);
     half_edge *h = silk_arena_array_top(a, nhalf, sizeof *h, SILK_MEM_FRAME);
-    if (!pos || !id || !on_line || !h) return SILK_ERR_NOMEM;
+    if (!pos || !id || !h) return SILK_ERR_NOMEM;
 
     /* Each record's point: the first record at its position. */
     for (uint32_t r = 0; r < g->nvrec; r++) {
@@ -387,9 +437,6 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
     }
     heap_sort(pos, g->nvrec, sizeof *pos, pos_before);
     for (uint32_t i = 0; i < g->nvrec; i++) id[pos[i].r] = i && !pos_cmp(&pos[i - 1], &pos[i]) ? id[pos[i - 1].r] : i;
-    memset(on_line, 0, g->nvrec);
-    for (uint32_t i = 0; i < g->nline_vrec; i++)
-        if (g->line_src[i] < g->nvrec) on_line[id[g->line_src[i]]] = 1;
 
     for (uint32_t t = 0; t < g->ntri; t++) {
         int32_t facing = screen_facing(g, out, t, width, height);
@@ -407,7 +454,7 @@ silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_ver
     heap_sort(h, nhalf, sizeof *h, half_before);
 
     /* A side shared by exactly two triangles facing opposite ways is on
-     * the contour, unless a line runs along it already. */
+     * the contour. */
     uint32_t ncont = 0;
     for (uint32_t i = 0; i + 1 < nhalf; i++) {
         const half_edge *e = &h[i], *o = &h[i + 1];

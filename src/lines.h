@@ -21,10 +21,9 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
 
 /* The contour of the drawn triangles (after the vertex stage; out: its
  * output for every record of g): every side shared by two triangles of g
- * that face opposite ways on screen and that no line of g runs along yet,
- * added to g's lines as a silhouette line.  Where the outline of the
- * re-meshed surface leaves its silhouette segments (a fold along a mesh
- * edge, round a cone's apex) these close it.  SILK_ERR_NOMEM, with g's
+ * that face opposite ways on screen, added to g's lines as a silhouette
+ * line.  Where the outline of the re-meshed surface leaves its silhouette
+ * segments (a fold along a mesh edge, round a cone's apex) these close it.  SILK_ERR_NOMEM, with g's
  * lines unchanged, when they do not fit. */
 silk_status silk_lines_contour(silk_arena *a, silk_frame_geom *g, const silk_vertex_out *out, int width, int height);
 
@@ -39,9 +38,10 @@ uint32_t *silk_lines_lift(silk_arena *a, const silk_mesh *m, const silk_frame_ge
 /* o moved towards the eye by lift (as above), keeping its pixel. */
 void silk_lines_apply_lift(silk_vertex_out *o, uint32_t lift);
 
-/* After silk_remesh_emit, the lines of the frame into g (the
- * silhouette segments and visible feature curves drawn); SILK_ERR_NOMEM
- * when they do not fit, with no lines in g. */
+/* From the plan f and its stored frame g (silk_remesh_store), the lines
+ * of the frame into g (the silhouette segments and visible feature curves
+ * drawn, through the records of the shares), and g->rec_key, which point
+ * each record is; SILK_ERR_NOMEM when they do not fit, with no lines in g. */
 silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g);
 
 #endif

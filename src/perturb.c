@@ -130,12 +130,12 @@ void silk_perturb(silk_sil_frame *f)
     if (!f->near_bound) return;
     uint32_t ns = f->nsegs;
     for (int pass = 0; pass < 2; pass++) {
-        /* the segments in triangle order: stored (STORED mode) or rebuilt */
+        /* the segments in triangle order */
         uint32_t i = 0;
         for (uint32_t t = 0; t < f->m->ntris && i < ns; t++) {
             if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
             silk_sil_seg tmp;
-            const silk_sil_seg *s = f->segs ? &f->segs[i] : (silk_remesh_seg(f, t, &tmp) ? &tmp : NULL);
+            const silk_sil_seg *s = silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
             i++;
             if (!s || !s->concave) continue;
             visit_near(f, s, pass * ns + i, pass);

@@ -18,15 +18,15 @@
  * (their own normals and uvs) but with the same end points, tangents and
  * parameters, so the positions agree bit for bit.
  *
- * Two ways to run the stages.  STORED (silk_frame_smooth): the whole frame's
- * records, curves and triangles in one silk_frame_geom.  STREAM (the
- * renderer, silk_frame_smooth_stream): only the plan is kept - the carrying
- * edges, their points, the perturbation - and silk_remesh_emit_tri rebuilds
- * one input triangle's share (its own copies of the records and curves it
- * uses) each time a band needs it.  Both run the same emission code, so the
- * records evaluate to the same bits and the triangles come in the same
- * order: the pictures are identical, and a stream frame needs a fraction of
- * the memory (no sides, no segments, no output arrays).
+ * The plan is all a frame keeps between its stages: the carrying edges,
+ * their points, the perturbation.  One emitter, silk_remesh_emit_tri,
+ * builds one input triangle's share of the frame from it (its own copies
+ * of the records and curves it uses).  The renderer streams the shares,
+ * rebuilding each whenever a band needs it (silk_frame_smooth_stream); a
+ * stored frame (silk_frame_smooth, which lines need) is every share
+ * appended into one buffer.  The records evaluate to the same bits and the
+ * triangles come in the same order either way, so the pictures are
+ * identical.
  */
 #ifndef SILK_PLAN_H
 #define SILK_PLAN_H
@@ -49,15 +49,14 @@ typedef struct silk_sil_pair {
     uint32_t chain;          /* index of u in the edge's chain */
 } silk_sil_pair;
 
-/* One triangle side lying on a carrying edge.  Sides with the same normals
- * and uvs share one curve and one run of records (owner). */
+/* One triangle side lying on a carrying edge, as that triangle sees the
+ * edge.  Sides with the same normals and uvs evaluate the edge's points to
+ * the same records. */
 typedef struct silk_sil_side {
     uint32_t tri;
     uint32_t k;              /* side k joins corners k and (k+1)%3 */
     silk_index n0, n1;       /* normals at edge.v[0], edge.v[1] */
     silk_index uv0, uv1;     /* uvs there, or SILK_NO_INDEX */
-    uint32_t owner;          /* side whose curve and records this one uses */
-    uint32_t curve, rec;     /* output: curve index and first chain record (owners only) */
 } silk_sil_side;
 
 /* An edge that carries points this frame.  Its curve runs from edge.v[0] to
@@ -67,7 +66,7 @@ typedef struct silk_sil_edge {
     silk_vec3 t0, t1;        /* tangents of the bridge or of the feature segment */
     uint32_t edge;           /* mesh edge index */
     uint32_t pair0, npairs;  /* silhouette points */
-    uint32_t side0, nsides;  /* triangle sides on this edge */
+    uint32_t side0, nsides;  /* triangle sides on this edge, and where they start in a list of all (lines.c) */
     uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
     uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
     uint8_t is_feature;
@@ -83,8 +82,6 @@ typedef struct silk_sil_seg {
     int concave;             /* III-E: N_A.F > 0 and N_B.F < 0 */
     silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E */
     silk_fx rise;            /* how far the segment's ends rise above P_i */
-    uint32_t curve, rec;     /* output: segment curve and its first interior sample */
-    uint32_t rec_a, rec_b;   /* output: the records of A and B (points of the edge chains) */
 } silk_sil_seg;
 
 typedef struct silk_sil_frame {
@@ -93,7 +90,6 @@ typedef struct silk_sil_frame {
     const silk_view *v;
     silk_fx tol;
     silk_vis_method vis;
-    int stream;              /* STREAM mode: no sides[], segs[], cost[] or output arrays */
 
     uint8_t *visible;        /* nnormals */
     uint8_t *tri_state;      /* ntris, SILK_TS_* */
@@ -102,14 +98,13 @@ typedef struct silk_sil_frame {
 
     silk_sil_edge *edges;  uint32_t nedges;
     silk_sil_pair *pairs;  uint32_t npairs;
-    silk_sil_side *sides;  uint32_t nsides;
+    uint32_t nsides;         /* triangle sides on carrying edges */
     silk_fx *chain;        uint32_t nchain;
-    silk_sil_seg *segs;    uint32_t nsegs;
-    uint64_t store_recs, store_tris, store_curves;   /* what a stored frame holds */
+    uint32_t nsegs;          /* silhouette segments (rebuilt where needed: silk_remesh_seg) */
+    uint64_t store_recs, store_curves;   /* what a stored frame holds (its triangles: out_tris) */
     uint32_t max_poly;       /* longest boundary of one re-meshed triangle */
     uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
-    /* the most one input triangle becomes, with its own records (STREAM),
-     * and the totals over the frame (all of it is accepted in STREAM mode) */
+    /* the most one input triangle's share holds, and the frame's totals */
     uint32_t max_recs, max_tris, max_curves;
     uint32_t near_total, out_tris, seg_samples;
 
@@ -123,14 +118,14 @@ typedef struct silk_sil_frame {
     silk_vec3 *offset;     uint32_t noffset;
 } silk_sil_frame;
 
-/* silhouette.c: fills visible .. chain (sides only in STORED mode).
- * SILK_ERR_NOMEM when scratch runs out. */
+/* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs
+ * out. */
 silk_status silk_sil_find(silk_sil_frame *f);
-/* The side record of triangle t's side k on edge e, or NULL (STORED mode). */
-const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
-                                      uint32_t tri, uint32_t k);
+/* Whether triangle t is whole (its corners, normals and edges index the
+ * mesh): only those are smoothed, and only their sides are counted. */
+int silk_sil_tri_ok(const silk_mesh *m, uint32_t t);
 /* tri, k, normals and uvs of triangle t's side k on mesh edge e, from the
- * mesh (what the stored side holds); owner, curve and rec are left alone. */
+ * mesh. */
 void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s);
 /* The curve of edge e: its vertices, its tangents; normals and uvs zero. */
 void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c);

@@ -30,14 +30,15 @@
  * triangle but has points on its sides is fanned from the opposite vertex
  * when one side has points (Fig. 12a), else from its centre (Fig. 12b).
  *
- * Memory: the plan counts what the frame costs - a stored frame's records,
- * triangles and curves, the largest share of one input triangle - so that
- * smooth.c can tell before emitting whether it fits; when it does not, the
- * frame is the coarse mesh (silk_frame_fall_back).  In STREAM mode (plan.h)
- * nothing is stored: segments are rebuilt from the edges' points when
- * needed, and silk_remesh_emit_tri runs the same emission for one input
- * triangle into a small share with its own copies of the corner and side
- * records.
+ * Emission is one function, silk_remesh_emit_tri: one input triangle's
+ * share of the frame (its corner records, its own copies of the records
+ * and curves of its sides' chains, its segment's samples and centres, its
+ * triangles), rebuilt from the plan alone (segments are recomputed from the
+ * edges' points).  A streamed frame refills one share at a time; a stored
+ * frame is the shares of all input triangles appended into one buffer.
+ * The plan counts what both cost (the largest share, the sum of all of
+ * them), so that smooth.c can tell before emitting whether it fits; when it
+ * does not, the frame is the coarse mesh (silk_frame_fall_back).
  */
 #include <string.h>
 #include "remesh.h"
@@ -69,14 +70,17 @@ static const silk_sil_pair *side_pair(const silk_sil_frame *f, const silk_sil_ed
     return NULL;
 }
 
+static silk_vec3 mid3(silk_vec3 a, silk_vec3 b)
+{
+    return silk_v3(silk_fx_sat(((int64_t)a.x + b.x) / 2), silk_fx_sat(((int64_t)a.y + b.y) / 2),
+                   silk_fx_sat(((int64_t)a.z + b.z) / 2));
+}
+
 /* The sample of segment s closest to the bisector plane of the base edge
  * b1 -> b2: joined to both base vertices it gives the fattest middle triangle. */
 static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
 {
-    silk_vec3 dir = silk_v3_sub(b2, b1);
-    silk_vec3 mid = silk_v3(silk_fx_sat(((int64_t)b1.x + b2.x) / 2),
-                            silk_fx_sat(((int64_t)b1.y + b2.y) / 2),
-                            silk_fx_sat(((int64_t)b1.z + b2.z) / 2));
+    silk_vec3 dir = silk_v3_sub(b2, b1), mid = mid3(b1, b2);
     uint32_t best = s->n / 2;
     int64_t best_d = INT64_MAX;
     for (uint32_t i = 0; i <= s->n; i++) {
@@ -96,21 +100,22 @@ typedef struct sil_layout {
     int centre1, centre2;    /* the part around L / along the base needs a centre */
 } sil_layout;
 
-/* The silhouette point side k of t puts on its edge e. */
-static const silk_sil_pair *tri_pair(const silk_sil_frame *f, const silk_sil_edge *e, uint32_t t, uint32_t k)
+/* Index, in the edge's chain, of the silhouette point side k of t puts
+ * on its edge. */
+static uint32_t pair_chain(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
+    const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
     silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
-    return side_pair(f, e, &s);
+    return side_pair(f, e, &s)->chain;
 }
 
-/* Index, in triangle direction, of the silhouette point of side k. */
+/* The same in triangle direction. */
 static uint32_t pair_pos(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
-    const silk_sil_pair *p = tri_pair(f, e, t, k);
-    int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
-    return fwd ? p->chain : e->nchain - 1 - p->chain;
+    uint32_t c = pair_chain(f, t, k);
+    return f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0] ? c : e->nchain - 1 - c;
 }
 
 static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
@@ -128,43 +133,42 @@ static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
     l->centre2 = l->iA != l->iB1 - 1 || l->iB != l->iB2 + 1;
 }
 
-/* What one input triangle becomes: output triangles, records and curves
- * beyond its corners and side points (what it adds to a stored frame), its boundary
- * length, and all the records and curves of its own copy (STREAM mode). */
+/* What one input triangle's share holds: its output triangles, records
+ * and curves, and its boundary length. */
 typedef struct tri_count {
     uint32_t tris, recs, curves, poly;
-    uint32_t local_recs, local_curves;
 } tri_count;
 
 static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, tri_count *c)
 {
-    uint32_t np[3], sum = 0, nchained = 0;
+    uint32_t sum = 0, nchained = 0;
     for (uint32_t k = 0; k < 3; k++) {
-        np[k] = side_points(f, t, k);
-        sum += np[k];
-        nchained += np[k] > 0;
+        uint32_t np = side_points(f, t, k);
+        sum += np;
+        nchained += np > 0;
     }
+    /* the corners, the sides' points, one curve per side with points */
     c->poly = 3 + sum;
+    c->recs = 3 + sum;
+    c->curves = nchained;
     if (seg) {
         sil_layout l;
         layout(f, t, &l);
         uint32_t n = seg->n;
-        c->recs = n - 1;
-        c->curves = 1;
-        if (l.centre1) { c->tris = n + l.iA + l.len - l.iB; c->recs++; c->curves++; }
-        else c->tris = n;
-        if (l.centre2) { c->tris += n + l.iB - l.iA; c->recs++; c->curves++; }
-        else c->tris += n + 1 + (l.iB2 - l.iB1 - 1);
+        c->recs += n - 1;
+        c->curves++;
+        c->tris = 2 * n;
+        if (l.centre1) { c->tris += l.iA + l.len - l.iB; c->recs++; c->curves++; }
+        if (l.centre2) { c->tris += l.iB - l.iA; c->recs++; c->curves++; }
+        else c->tris += 1 + (l.iB2 - l.iB1 - 1);
         c->poly += n + 2;
     } else if (nchained == 1) {
-        c->tris = sum + 1; c->recs = 0; c->curves = 0;
+        c->tris = sum + 1;
     } else if (nchained >= 2) {
-        c->tris = sum + 3; c->recs = 1; c->curves = 1;
+        c->tris = sum + 3; c->recs++; c->curves++;
     } else {
-        c->tris = 1; c->recs = 0; c->curves = 0;
+        c->tris = 1;
     }
-    c->local_recs = 3 + sum + c->recs;
-    c->local_curves = nchained + c->curves;
 }
 
 int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
@@ -202,36 +206,14 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
 silk_status silk_remesh_plan(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
-    silk_arena *a = f->a;
-    if (!f->stream) {
-        f->segs = silk_arena_array_top(a, f->nsil, sizeof *f->segs, SILK_MEM_FRAME);
-        if (!f->segs) return SILK_ERR_NOMEM;
-    }
-
-    /* Segments (III-D). */
-    f->nsegs = 0;
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        silk_sil_seg tmp, *s = f->segs ? &f->segs[f->nsegs] : &tmp;
-        if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
-        if (silk_remesh_seg(f, t, s)) f->nsegs++;
-        else f->tri_state[t] = 0;
-    }
-
-    /* What the frame costs: a stored frame's records, triangles and
-     * curves (its sides share records), the most one input triangle
-     * becomes (a streamed frame's share), the perturbation's slots. */
-    f->store_recs = 3 * (uint64_t)m->ntris;
-    f->store_tris = m->ntris;
+    /* What the frame costs: the most one input triangle becomes (a
+     * streamed frame's share), all of them (a stored frame), the
+     * perturbation's slots.  Segments (III-D) are made here and again
+     * where they are needed; a triangle without one is no silhouette
+     * triangle from here on. */
+    f->store_recs = 0;
     f->store_curves = 0;
-    for (uint32_t w = 0; f->sides && w < f->nedges; w++) {
-        const silk_sil_edge *e = &f->edges[w];
-        for (uint32_t i = 0; e->nchain && i < e->nsides; i++)
-            if (f->sides[e->side0 + i].owner == e->side0 + i) {
-                f->store_recs += e->nchain;
-                f->store_curves++;
-            }
-    }
-    uint32_t si = 0;
+    f->nsegs = 0;
     f->max_poly = 0;
     f->max_recs = 3;
     f->max_tris = 1;
@@ -241,20 +223,19 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg tmp, *s = NULL;
         if (f->tri_state[t] & SILK_TS_SIL) {
-            if (f->segs) s = &f->segs[si++];
-            else if (silk_remesh_seg(f, t, &tmp)) s = &tmp;
+            if (silk_remesh_seg(f, t, &tmp)) { s = &tmp; f->nsegs++; }
+            else f->tri_state[t] = 0;
         }
-        if (!side_points(f, t, 0) && !side_points(f, t, 1) && !side_points(f, t, 2)) continue;
         tri_count tc;
         tri_cost(f, t, s, &tc);
-        f->store_tris += tc.tris - 1;
         f->store_recs += tc.recs;
         f->store_curves += tc.curves;
         f->out_tris += tc.tris - 1;
+        if (tc.poly == 3) continue;     /* as it is: three corners, one triangle */
         if (tc.poly > f->max_poly) f->max_poly = tc.poly;
-        if (tc.local_recs > f->max_recs) f->max_recs = tc.local_recs;
+        if (tc.recs > f->max_recs) f->max_recs = tc.recs;
         if (tc.tris > f->max_tris) f->max_tris = tc.tris;
-        if (tc.local_curves > f->max_curves) f->max_curves = tc.local_curves;
+        if (tc.curves > f->max_curves) f->max_curves = tc.curves;
         if (s) {
             f->seg_samples += s->n - 1;
             if (s->concave) {
@@ -276,11 +257,11 @@ uint32_t silk_remesh_near_bound(const silk_sil_frame *f)
     return f->near_total > f->m->nverts ? f->m->nverts : f->near_total;
 }
 
-int silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g)
+int silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g, uint64_t recs, uint64_t tris, uint64_t curves)
 {
-    uint64_t recs = f->store_recs, tris = f->store_tris, curves = f->store_curves;
-    if (recs > UINT32_MAX || 3 * tris > UINT32_MAX) return 0;
+    if (recs > UINT32_MAX || 3 * tris > UINT32_MAX || curves > UINT32_MAX) return 0;
     silk_arena *a = f->a;
+    memset(g, 0, sizeof *g);
     g->vrec = silk_arena_array_top(a, (size_t)recs, sizeof *g->vrec, SILK_MEM_FRAME);
     g->tri = silk_arena_array_top(a, (size_t)(3 * tris), sizeof *g->tri, SILK_MEM_FRAME);
     g->tri_added = silk_arena_array_top(a, (size_t)tris, 1, SILK_MEM_FRAME);
@@ -328,12 +309,6 @@ static uint32_t put_corner(const silk_sil_frame *f, silk_frame_geom *g, uint32_t
     return g->nvrec++;
 }
 
-/* Corner k of t: STORED mode made every corner's record up front, at 3t+k. */
-static uint32_t corner_rec(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t, uint32_t k)
-{
-    return f->stream ? put_corner(f, g, 3 * t + k) : 3 * t + k;
-}
-
 /* The curve of side s's points: the edge's, with the side's normals and uvs. */
 static void side_curve(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s, silk_curve *c)
 {
@@ -347,34 +322,55 @@ static void side_curve(const silk_sil_frame *f, const silk_sil_edge *e, const si
     }
 }
 
-/* Append side k of t (its chain, in the triangle's direction) to out: the
- * run of records its owner side made (STORED), or this triangle's own copy
- * of the side's curve and records (STREAM), which evaluate the same. */
+/* Append side k of t (its chain, in the triangle's direction) to out:
+ * this triangle's own copy of the side's curve and of its records, in
+ * chain order.  The triangle across the edge makes its own copy from the
+ * same chain, so both evaluate to the same bits. */
 static uint32_t walk_side(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t, uint32_t k, uint32_t *out)
 {
     uint32_t n = side_points(f, t, k);
     if (!n) return 0;
     const silk_sil_edge *e = edge_at(f, t, k);
-    uint32_t rec;
-    if (f->stream) {
-        silk_sil_side s;
-        silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
-        side_curve(f, e, &s, &g->curve[g->ncurve]);
-        rec = g->nvrec;
-        for (uint32_t j = 0; j < n; j++) put_curve_rec(g, g->ncurve, f->chain[e->chain0 + j]);
-        g->ncurve++;
-    } else {
-        rec = f->sides[silk_sil_side_of(f, e, t, k)->owner].rec;
-    }
+    silk_sil_side s;
+    silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+    side_curve(f, e, &s, &g->curve[g->ncurve]);
+    uint32_t rec = g->nvrec;
+    for (uint32_t j = 0; j < n; j++) put_curve_rec(g, g->ncurve, f->chain[e->chain0 + j]);
+    g->ncurve++;
     int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
     for (uint32_t j = 0; j < n; j++) out[j] = fwd ? rec + j : rec + n - 1 - j;
     return n;
 }
 
-static silk_vec3 mid3(silk_vec3 a, silk_vec3 b)
+/* The corner triangle t's boundary walk starts at: L for a silhouette
+ * triangle, the corner opposite the only side with points, else corner 0. */
+static uint32_t first_corner(const silk_sil_frame *f, uint32_t t)
 {
-    return silk_v3(silk_fx_sat(((int64_t)a.x + b.x) / 2), silk_fx_sat(((int64_t)a.y + b.y) / 2),
-                   silk_fx_sat(((int64_t)a.z + b.z) / 2));
+    if (f->tri_state[t] & SILK_TS_SIL) return f->tri_state[t] & SILK_TS_LONE;
+    uint32_t nchained = 0, only = 0;
+    for (uint32_t k = 0; k < 3; k++)
+        if (side_points(f, t, k)) { nchained++; only = k; }
+    return nchained == 1 ? (only + 2) % 3 : 0;
+}
+
+/* The boundary of t into cyc from its first corner: each corner's record,
+ * then its side's chain; returns the length. */
+static uint32_t walk_boundary(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t, uint32_t *cyc)
+{
+    uint32_t k0 = first_corner(f, t), len = 0;
+    for (uint32_t i = 0; i < 3; i++) {
+        uint32_t k = (k0 + i) % 3;
+        cyc[len++] = put_corner(f, g, 3 * t + k);
+        len += walk_side(f, g, t, k, &cyc[len]);
+    }
+    return len;
+}
+
+uint32_t silk_remesh_corner_rec(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t base)
+{
+    uint32_t k0 = first_corner(f, t);
+    for (uint32_t i = 0; (k0 + i) % 3 != k; i++) base += 1 + side_points(f, t, (k0 + i) % 3);
+    return base;
 }
 
 static silk_vec2 mid2(silk_vec2 a, silk_vec2 b)
@@ -417,28 +413,20 @@ static void fan_closed(silk_frame_geom *g, uint32_t apex, const uint32_t *cyc, u
 }
 
 /* Fig. 11: the silhouette triangle cut by its segment. */
-static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, silk_sil_seg *s)
+static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s)
 {
     const silk_mesh *m = f->m;
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     uint32_t *cyc = f->poly, *list = f->poly + f->max_poly;
     sil_layout l;
     layout(f, t, &l);
-    uint32_t len = 0;
-    for (uint32_t i = 0; i < 3; i++) {
-        uint32_t k = (lone + i) % 3;
-        cyc[len++] = corner_rec(f, g, t, k);
-        len += walk_side(f, g, t, k, &cyc[len]);
-    }
+    walk_boundary(f, g, t, cyc);
 
     /* the segment: interior samples as records on its own curve */
-    s->curve = g->ncurve++;
-    g->curve[s->curve] = s->c;
-    s->rec = g->nvrec;
-    for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, s->curve, silk_sample_param(i, s->n));
-    s->rec_a = cyc[l.iA];
-    s->rec_b = cyc[l.iB];
-#define SAMPLE(i) ((i) == 0 ? cyc[l.iA] : (i) == s->n ? cyc[l.iB] : s->rec + (i) - 1)
+    uint32_t curve = g->ncurve++, rec = g->nvrec;
+    g->curve[curve] = s->c;
+    for (uint32_t i = 1; i < s->n; i++) put_curve_rec(g, curve, silk_sample_param(i, s->n));
+#define SAMPLE(i) ((i) == 0 ? cyc[l.iA] : (i) == s->n ? cyc[l.iB] : rec + (i) - 1)
 
     /* around L: L, side L up to A, the samples, B and side L+2 back to L */
     uint32_t n = 0;
@@ -484,125 +472,66 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, s
 #undef SAMPLE
 }
 
-/* Fig. 12: points on the sides of a triangle the silhouette does not cross. */
-static void emit_fanned(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
+void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
 {
-    const silk_mesh *m = f->m;
-    uint32_t nchained = 0, only = 0;
-    for (uint32_t k = 0; k < 3; k++)
-        if (side_points(f, t, k)) { nchained++; only = k; }
-    uint32_t *cyc = f->poly;
-    uint32_t len = 0;
+    silk_sil_seg seg;
+    g->offset = f->offset;
+    g->noffset = f->noffset;
+    if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &seg)) {
+        emit_silhouette(f, g, t, &seg);     /* Fig. 11 */
+        return;
+    }
+    uint32_t nchained = 0, corners[3];
+    for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
+    uint32_t *cyc = nchained ? f->poly : corners;
+    uint32_t len = walk_boundary(f, g, t, cyc);
+    if (nchained == 0) {
+        put_tri(g, cyc[0], cyc[1], cyc[2], 0);      /* as it is */
+        return;
+    }
+    /* Fig. 12a: from the opposite vertex over the only side with points */
     if (nchained == 1) {
-        /* from the opposite vertex over the side with points */
-        uint32_t o = (only + 2) % 3;
-        for (uint32_t i = 0; i < 3; i++) {
-            uint32_t k = (o + i) % 3;
-            cyc[len++] = corner_rec(f, g, t, k);
-            len += walk_side(f, g, t, k, &cyc[len]);
-        }
         fan(g, cyc[0], cyc + 1, len - 1);
         return;
     }
-    for (uint32_t k = 0; k < 3; k++) {
-        cyc[len++] = corner_rec(f, g, t, k);
-        len += walk_side(f, g, t, k, &cyc[len]);
-    }
-    /* the centre: two thirds along from corner 0 to the midpoint of the
-     * opposite side, so position, normal and uv are the corners' average */
+    /* Fig. 12b: from the centre, two thirds along from corner 0 to the
+     * midpoint of the opposite side, so position, normal and uv are the
+     * corners' average */
     silk_vec3 p[3], n[3];
     silk_vec2 uv[3];
-    for (int k = 0; k < 3; k++) corner_attrs(m, 3 * t + k, &p[k], &n[k], &uv[k]);
+    for (uint32_t k = 0; k < 3; k++) corner_attrs(f->m, 3 * t + k, &p[k], &n[k], &uv[k]);
     fan_closed(g, put_centre(g, p[0], n[0], uv[0], mid3(p[1], p[2]), mean_normal(n[1], n[2]),
                              mid2(uv[1], uv[2]), T_TWO_THIRDS), cyc, len);
 }
 
-/* Input triangle t's share of the frame: re-meshed by its silhouette
- * segment s (Fig. 11), fanned over the points on its sides (Fig. 12), or
- * as it is. */
-static void emit_one(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, silk_sil_seg *s)
+int silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g)
 {
-    if (s) {
-        emit_silhouette(f, g, t, s);
-        return;
+    uint32_t n = f->m->ntris;
+    if (!silk_remesh_alloc(f, g, f->store_recs, f->out_tris, f->store_curves)) return 0;
+    g->part_rec = silk_arena_array_top(f->a, (size_t)n + 1, sizeof *g->part_rec, SILK_MEM_FRAME);
+    if (!g->part_rec) return 0;
+    for (uint32_t t = 0; t < n; t++) {
+        g->part_rec[t] = g->nvrec;
+        silk_remesh_emit_tri(f, g, t);
     }
-    int chained = 0;
-    for (uint32_t k = 0; k < 3; k++) chained |= side_points(f, t, k) > 0;
-    if (chained) {
-        emit_fanned(f, g, t);
-        return;
-    }
-    uint32_t r0 = corner_rec(f, g, t, 0), r1 = corner_rec(f, g, t, 1), r2 = corner_rec(f, g, t, 2);
-    put_tri(g, r0, r1, r2, 0);
+    g->part_rec[n] = g->nvrec;
+    return 1;
 }
 
-void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats)
+void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, uint32_t rec[3])
 {
-    const silk_mesh *m = f->m;
-    g->nvrec = g->ntri = g->ncurve = 0;
-    for (uint32_t i = 0; i < 3 * m->ntris; i++) put_corner(f, g, i);
-
-    /* Edge chains: one curve and one run of records per distinct side. */
-    uint32_t samples = 0, bridges = 0;
-    for (uint32_t w = 0; w < f->nedges; w++) {
-        silk_sil_edge *e = &f->edges[w];
-        if (!e->nchain) continue;
-        bridges += e->npairs;
-        samples += e->nchain;
-        for (uint32_t i = 0; i < e->nsides; i++) {
-            silk_sil_side *s = &f->sides[e->side0 + i];
-            if (s->owner != e->side0 + i) continue;
-            s->curve = g->ncurve++;
-            side_curve(f, e, s, &g->curve[s->curve]);
-            s->rec = g->nvrec;
-            for (uint32_t j = 0; j < e->nchain; j++) put_curve_rec(g, s->curve, f->chain[e->chain0 + j]);
-        }
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
+    for (uint32_t i = 0; i < 2; i++) {
+        uint32_t k = (lone + 2 * i) % 3;
+        rec[i] = silk_remesh_corner_rec(f, t, k, base) + 1 + pair_chain(f, t, k);
     }
-
-    uint32_t si = 0;
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        silk_sil_seg *s = (si < f->nsegs && f->segs[si].tri == t) ? &f->segs[si++] : NULL;
-        if (s) samples += s->n - 1;
-        emit_one(f, g, t, s);
-    }
-
-    g->offset = f->offset;
-    g->noffset = f->noffset;
-    if (stats) {
-        stats->silhouette_tris = f->nsil;
-        stats->bridges = bridges;
-        stats->samples = samples;
-        stats->tris_drawn = g->ntri;
-        stats->moved_vertices = f->noffset;
-    }
+    /* the samples follow the boundary, whose last side is L+2's */
+    rec[2] = silk_remesh_corner_rec(f, t, (lone + 2) % 3, base) + 1 + side_points(f, t, (lone + 2) % 3);
 }
 
-/* ---- STREAM mode ----------------------------------------------------------------- */
-
-int silk_remesh_stream_alloc(silk_sil_frame *f, silk_frame_geom *local)
+void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats)
 {
-    silk_arena *a = f->a;
-    memset(local, 0, sizeof *local);
-    local->vrec = silk_arena_array_top(a, f->max_recs, sizeof *local->vrec, SILK_MEM_FRAME);
-    local->tri = silk_arena_array_top(a, 3 * (size_t)f->max_tris, sizeof *local->tri, SILK_MEM_FRAME);
-    local->tri_added = silk_arena_array_top(a, f->max_tris, 1, SILK_MEM_FRAME);
-    local->curve = silk_arena_array_top(a, f->max_curves, sizeof *local->curve, SILK_MEM_FRAME);
-    f->poly = silk_arena_array_top(a, 2 * (size_t)f->max_poly, sizeof *f->poly, SILK_MEM_FRAME);
-    return local->vrec && local->tri && local->tri_added && local->curve && f->poly;
-}
-
-void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *local, uint32_t t)
-{
-    silk_sil_seg seg, *s = NULL;
-    local->nvrec = local->ntri = local->ncurve = 0;
-    local->offset = f->offset;
-    local->noffset = f->noffset;
-    if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &seg)) s = &seg;
-    emit_one(f, local, t, s);
-}
-
-void silk_remesh_stream_stats(const silk_sil_frame *f, silk_frame_stats *stats)
-{
+    if (!stats) return;
     uint32_t bridges = 0, samples = f->seg_samples;
     for (uint32_t w = 0; w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];

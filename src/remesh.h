@@ -1,25 +1,35 @@
 /*
  * remesh.h - internal: silhouette segments, sampling and re-meshing
- * (remesh.c): the plan's segments and costs, and the emission of vertex
- * records from the plan.  Not installed.
+ * (remesh.c): what the frame costs, and the one emitter of vertex records
+ * and triangles from the plan.  Not installed.
  */
 #ifndef SILK_REMESH_H
 #define SILK_REMESH_H
 
 #include "plan.h"
 
-silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments, counts, components, costs */
-/* The silhouette segment of silhouette triangle t (what plan stores in
- * segs[] in STORED mode); 0 when a silhouette point is missing. */
+silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments counted, costs */
+/* The silhouette segment of silhouette triangle t; 0 when a silhouette
+ * point is missing. */
 int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);
 uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
-int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g);   /* 0 when it does not fit */
-void silk_remesh_emit(silk_sil_frame *f, silk_frame_geom *g, silk_frame_stats *stats);
-/* STREAM mode: room for one input triangle's share in local (0 when it
- * does not fit), that share (local's arrays refilled, its records refer to
- * local->curve and f->offset), and the frame's counts. */
-int  silk_remesh_stream_alloc(silk_sil_frame *f, silk_frame_geom *local);
-void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *local, uint32_t t);
-void silk_remesh_stream_stats(const silk_sil_frame *f, silk_frame_stats *stats);
+/* Room in g for recs records, tris triangles and curves curves (f->max_*
+ * for one share, f->store_* and f->out_tris for a whole frame), and the
+ * emitter's scratch; 0 when it does not fit. */
+int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g, uint64_t recs, uint64_t tris, uint64_t curves);
+/* Input triangle t's share of the frame, appended to g (records, curves,
+ * triangles; its records refer to g->curve and f->offset). */
+void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t);
+/* A stored frame: every input triangle's share appended into g (from the
+ * top of the arena), g->part_rec saying where each starts; 0 when it does
+ * not fit. */
+int  silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g);
+/* The record of corner k in t's share, its share starting at record base;
+ * side k's chain follows it, in the edge's order. */
+uint32_t silk_remesh_corner_rec(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t base);
+/* The records of silhouette triangle t's segment in its share (starting
+ * at record base): rec[0] A, rec[1] B, rec[2] its first interior sample. */
+void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, uint32_t rec[3]);
+void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats);   /* the frame's counts */
 
 #endif

@@ -61,10 +61,14 @@ typedef struct frame {
     silk_vertex_out *cache;   /* NULL when the arena could not hold it */
     silk_vertex_out *line_cache;   /* the same for the lines' records */
     uint32_t *line_lift;      /* per line record (lines.c), or NULL */
-    /* Streamed frames: g and cache hold one input triangle's share at a time. */
-    int stream, smooth;
+    /* A frame is drawn in nparts parts, part(f, k) filling g and cache
+     * with part k: a streamed frame's parts are its input triangles'
+     * shares, rebuilt one at a time; a stored frame is one part, all there. */
+    uint32_t nparts;
+    void (*part)(struct frame *f, uint32_t k);
+    int smooth;
     silk_sil_frame sil;       /* SMOOTH: the plan */
-    uint16_t *rows;           /* per input triangle: first and last row it can reach, or NULL */
+    uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -106,11 +110,14 @@ static int streamed(const silk_render_opts *o)
 
 static size_t aligned(size_t n) { return (n + SILK_ARENA_ALIGN - 1) & ~(size_t)(SILK_ARENA_ALIGN - 1); }
 
+static void stream_part(frame *f, uint32_t t);
+
 static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                   const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
                                   silk_error *err)
 {
-    f->stream = 1;
+    f->nparts = m->ntris;
+    f->part = stream_part;
     f->hal = h;
     f->geom.mesh = m;
     if (o->mode == SILK_MODE_SMOOTH) {
@@ -120,7 +127,7 @@ static silk_status stream_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         f->smooth = silk_frame_smooth_stream(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->g) &&
                     (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
         if (f->smooth) {
-            silk_remesh_stream_stats(&f->sil, stats);
+            silk_remesh_stats(&f->sil, stats);
             f->geom.curves = f->g.curve;
             f->geom.offsets = f->sil.offset;
             return SILK_OK;
@@ -157,6 +164,7 @@ static void stream_part(frame *f, uint32_t t)
 {
     silk_frame_geom *g = &f->g;
     if (f->smooth) {
+        g->nvrec = g->ntri = g->ncurve = 0;
         silk_remesh_emit_tri(&f->sil, g, t);
     } else {
         for (uint32_t k = 0; k < 3; k++) g->vrec[k].a = 3 * t + k;
@@ -195,6 +203,13 @@ static void stream_rows(frame *f, silk_arena *a, int height)
     }
 }
 
+/* A stored frame's one part is there already. */
+static void stored_part(frame *f, uint32_t k)
+{
+    (void)f;
+    (void)k;
+}
+
 static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                  const silk_hal *h, const silk_render_opts *o,
                                  silk_frame_stats *stats, silk_error *err)
@@ -212,6 +227,8 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     memset(f, 0, sizeof *f);
     if (streamed(o)) return stream_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
+    f->nparts = 1;
+    f->part = stored_part;
     silk_status st;
     /* The smooth curves exist only in SMOOTH mode; FLAT outlines the coarse mesh it draws. */
     int smooth_lines = o->lines && !o->lines_polygonal && o->mode == SILK_MODE_SMOOTH;
@@ -231,10 +248,8 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     else
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
     if (st != SILK_OK) return st;
-    if (o->lines && !smooth_lines && silk_lines_polygonal(a, m, v, o->mode == SILK_MODE_FLAT, &f->g) != SILK_OK) {
-        f->g.nlines = f->g.nline_vrec = 0;
-        stats->fell_back = 1;
-    }
+    if (o->lines && !smooth_lines && silk_lines_polygonal(a, m, v, o->mode == SILK_MODE_FLAT, &f->g) != SILK_OK)
+        silk_frame_fell_short(stats);
 
     f->geom.mesh = m;
     f->geom.curves = f->g.curve;
@@ -248,7 +263,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
      * contour of the drawn triangles closes it (it needs the vertex stage's
      * output; without room for it the frame says so). */
     if (smooth_lines && (!f->cache || silk_lines_contour(a, &f->g, f->cache, v->cam.width, v->cam.height) != SILK_OK))
-        stats->fell_back = 1;
+        silk_frame_fell_short(stats);
     f->line_cache = silk_arena_array_top(a, f->g.nline_vrec, sizeof *f->line_cache, SILK_MEM_FRAME);
     if (f->line_cache)
         for (uint32_t i = 0; i < f->g.nline_vrec; i++)
@@ -257,7 +272,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     /* Without their lift (no room for it or for the vertex cache it reads)
      * lines sink into the surface they lie on: the frame says so, as one
      * that could not smooth does. */
-    if (f->g.nline_vrec && f->g.line_src && !f->line_lift) stats->fell_back = 1;
+    if (f->g.nline_vrec && f->g.line_src && !f->line_lift) silk_frame_fell_short(stats);
     stats->tris_drawn = f->g.ntri;
     return SILK_OK;
 }
@@ -283,18 +298,17 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     }
 }
 
-/* The frame's triangles (a stored frame at once, a streamed one input
- * triangle at a time, only those that reach into the band), then the lines. */
+/* The frame's triangles part by part (only the parts that reach into the
+ * band), then the lines. */
 static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[2];
     silk_target_clear(t, o->bg_rgb);
-    uint32_t nparts = f->stream ? f->geom.mesh->ntris : 1;
     for (int pass = 0; pass < (o->wire ? 3 : 1); pass++)
-        for (uint32_t k = 0; k < nparts; k++) {
+        for (uint32_t k = 0; k < f->nparts; k++) {
             if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
-            if (f->stream) stream_part(f, k);
+            f->part(f, k);
             draw_tris(f, o, t, pass);
         }
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
@@ -357,7 +371,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
     const int rows = band->rows;
-    if (st == SILK_OK && f.stream && rows < band->height) stream_rows(&f, a, band->height);
+    if (st == SILK_OK && f.nparts > 1 && rows < band->height) stream_rows(&f, a, band->height);
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;

@@ -51,23 +51,13 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 
 /* Triangles whose three normals and corners are usable; anything else is
  * drawn as it is (never smoothed), so a broken index cannot crash a frame. */
-static int tri_ok(const silk_mesh *m, uint32_t t)
+int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
 {
     for (int k = 0; k < 3; k++)
         if (m->tri[3 * t + k] >= m->nverts || m->tri_normal[3 * t + k] >= m->nnormals ||
             !edge_ok(m, m->tri_edge[3 * t + k]))
             return 0;
     return 1;
-}
-
-const silk_sil_side *silk_sil_side_of(const silk_sil_frame *f, const silk_sil_edge *e,
-                                      uint32_t tri, uint32_t k)
-{
-    for (uint32_t i = 0; i < e->nsides; i++) {
-        const silk_sil_side *s = &f->sides[e->side0 + i];
-        if (s->tri == tri && s->k == k) return s;
-    }
-    return NULL;
 }
 
 void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c)
@@ -207,7 +197,7 @@ static silk_status find_triangles(silk_sil_frame *f)
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = 0;
         f->tri_state[t] = 0;
-        if (!tri_ok(m, t)) continue;
+        if (!silk_sil_tri_ok(m, t)) continue;
         const silk_index *tn = &m->tri_normal[3 * t];
         uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
         if (v0 != v1 || v1 != v2) {
@@ -254,7 +244,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     /* Count the sides (every triangle side on a carrying edge) and the
      * silhouette sides of each edge, then lay them out edge by edge. */
     for (uint32_t t = 0; t < m->ntris; t++) {
-        if (!tri_ok(m, t)) continue;
+        if (!silk_sil_tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
         for (uint32_t k = 0; k < 3; k++) {
             uint32_t w = f->edge_slot[m->tri_edge[3 * t + k]];
@@ -270,58 +260,39 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     }
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
-        f->edges[w].side0 = nsides; nsides += f->edges[w].nsides; f->edges[w].nsides = 0;
+        f->edges[w].side0 = nsides; nsides += f->edges[w].nsides;
         f->edges[w].pair0 = npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
     }
     f->nsides = nsides;
     f->npairs = npairs;
-    /* Only STORED mode keeps the sides: which of them share records. */
-    f->sides = f->stream ? NULL : silk_arena_array_top(a, nsides, sizeof *f->sides, SILK_MEM_FRAME);
     f->pairs = silk_arena_array_top(a, npairs, sizeof *f->pairs, SILK_MEM_FRAME);
-    if ((!f->sides && !f->stream) || !f->pairs) return SILK_ERR_NOMEM;
-    return SILK_OK;
+    return f->pairs ? SILK_OK : SILK_ERR_NOMEM;
 }
 
-/* Every side on a carrying edge (with the side whose records it shares, in
- * STORED mode) and one silhouette point per distinct normal pair. */
-static void fill_sides(silk_sil_frame *f)
+/* One silhouette point per distinct normal pair on each edge a silhouette
+ * triangle's silhouette side lies on. */
+static void fill_pairs(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        if (!tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
+        if (!(st & SILK_TS_SIL)) continue;
+        uint32_t lone = st & SILK_TS_LONE;
         for (uint32_t k = 0; k < 3; k++) {
-            silk_index e = m->tri_edge[3 * t + k];
-            uint32_t w = f->edge_slot[e];
-            if (w == SILK_SIL_NONE) continue;
-            silk_sil_edge *we = &f->edges[w];
-            silk_sil_side side, *s = f->sides ? &f->sides[we->side0 + we->nsides] : &side;
-            silk_sil_side_attrs(m, t, k, &m->edge[e], s);
-            if (f->sides) {
-                s->owner = (uint32_t)(s - f->sides);
-                for (uint32_t i = 0; i < we->nsides; i++) {
-                    const silk_sil_side *o = &f->sides[we->side0 + i];
-                    if (o->n0 == s->n0 && o->n1 == s->n1 && o->uv0 == s->uv0 && o->uv1 == s->uv1) {
-                        s->owner = we->side0 + i;
-                        break;
-                    }
-                }
-            }
-            we->nsides++;
-
-            if (!(st & SILK_TS_SIL)) continue;
-            uint32_t lone = st & SILK_TS_LONE;
             if (k != lone && k != (lone + 2) % 3) continue;
-            /* One silhouette point per distinct normal pair on the edge. */
-            uint32_t i;
-            for (i = 0; i < we->npairs; i++) {
-                const silk_sil_pair *p = &f->pairs[we->pair0 + i];
-                if (p->n0 == s->n0 && p->n1 == s->n1) break;
+            silk_index e = m->tri_edge[3 * t + k];
+            silk_sil_edge *we = &f->edges[f->edge_slot[e]];
+            silk_sil_side s;
+            silk_sil_side_attrs(m, t, k, &m->edge[e], &s);
+            uint32_t j;
+            for (j = 0; j < we->npairs; j++) {
+                const silk_sil_pair *p = &f->pairs[we->pair0 + j];
+                if (p->n0 == s.n0 && p->n1 == s.n1) break;
             }
-            if (i < we->npairs) continue;
+            if (j < we->npairs) continue;
             silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
-            p->n0 = s->n0;
-            p->n1 = s->n1;
+            p->n0 = s.n0;
+            p->n1 = s.n1;
         }
     }
 }
@@ -381,6 +352,6 @@ silk_status silk_sil_find(silk_sil_frame *f)
     silk_status st = find_triangles(f);
     if (st == SILK_OK) st = lay_out_edges(f);
     if (st != SILK_OK) return st;
-    fill_sides(f);
+    fill_pairs(f);
     return chain_points(f);
 }

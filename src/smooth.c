@@ -1,11 +1,11 @@
 /*
  * smooth.c - one frame of silhouette smoothing (paper section III, Fig. 7):
- * visibility and silhouette triangles, bridges and silhouette points
- * (silhouette.c), segments, adaptive sampling and re-meshing (remesh.c),
- * vertex perturbation (perturb.c), and the vertex records for the HAL -
- * stored for the whole frame (silk_frame_smooth), or planned only and
- * streamed one input triangle at a time (silk_frame_smooth_stream, what the
- * renderer uses; plan.h).
+ * the plan - visibility and silhouette triangles, bridges and silhouette
+ * points (silhouette.c), segments and what they cost (remesh.c), vertex
+ * perturbation (perturb.c) - and then the emission (remesh.c), streamed one
+ * input triangle at a time (silk_frame_smooth_stream, what the renderer
+ * uses) or stored for the whole frame (silk_frame_smooth, for lines and for
+ * callers that want the geometry; plan.h).
  *
  * Memory runs out gracefully, the same way for every frame: a plan (or a
  * stored frame's output) that does not fit turns the frame into the coarse
@@ -25,18 +25,10 @@ silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view
     return silk_frame_smooth_lines(a, m, v, tolerance_px, vis, 0, g, stats, err);
 }
 
-/* Lines that do not fit are left out, and the frame counts as fallen back,
- * so a caller that retries with a larger arena gets them. */
-static void lines_fell_back(silk_frame_geom *g, silk_frame_stats *stats)
-{
-    g->nlines = g->nline_vrec = 0;
-    if (stats) stats->fell_back = 1;
-}
-
 /* The plan of a frame (silhouette.c, remesh.c, perturb.c) into f, from the
- * top of the arena; 0 when it does not fit. */
+ * top of the arena, and the perturbation; 0 when it does not fit. */
 static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
-                     silk_fx tolerance_px, silk_vis_method vis, int stream)
+                     silk_fx tolerance_px, silk_vis_method vis)
 {
     memset(f, 0, sizeof *f);
     f->a = a;
@@ -44,8 +36,9 @@ static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const
     f->v = v;
     f->tol = tolerance_px;
     f->vis = vis;
-    f->stream = stream;
-    return silk_sil_find(f) == SILK_OK && silk_remesh_plan(f) == SILK_OK && silk_perturb_alloc(f);
+    if (silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK || !silk_perturb_alloc(f)) return 0;
+    silk_perturb(f);
+    return 1;
 }
 
 silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const silk_view *v,
@@ -61,14 +54,13 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_sil_frame f;
-    if (!make_plan(&f, a, m, v, tolerance_px, vis, 0) || !silk_remesh_alloc(&f, g)) {
+    if (!make_plan(&f, a, m, v, tolerance_px, vis) || !silk_remesh_store(&f, g)) {
         silk_status st = silk_frame_fall_back(a, m, &mark, g, stats, err);
-        if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) lines_fell_back(g, stats);
+        if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) silk_frame_fell_short(stats);
         return st;
     }
-    silk_perturb(&f);
-    silk_remesh_emit(&f, g, stats);
-    if (lines && silk_lines_smooth(&f, g) != SILK_OK) lines_fell_back(g, stats);
+    silk_remesh_stats(&f, stats);
+    if (lines && silk_lines_smooth(&f, g) != SILK_OK) silk_frame_fell_short(stats);
     return SILK_OK;
 }
 
@@ -76,11 +68,8 @@ int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view 
                              silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local)
 {
     silk_arena_mark mark = silk_arena_top_mark(a);
-    if (tolerance_px <= 0 || !make_plan(f, a, m, v, tolerance_px, vis, 1) || !silk_remesh_stream_alloc(f, local)) {
-        silk_arena_top_release(a, &mark);
-        memset(f, 0, sizeof *f);
-        return 0;
-    }
-    silk_perturb(f);
-    return 1;
+    if (make_plan(f, a, m, v, tolerance_px, vis) && silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves))
+        return 1;
+    silk_arena_top_release(a, &mark);
+    return 0;
 }

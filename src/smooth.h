@@ -8,11 +8,11 @@
 
 #include "plan.h"
 
-/* The plan of a STREAM frame into f and room for one input
- * triangle's share in local, all from the top of the arena (the caller
- * releases it; silk_remesh_stream_stats gives the frame's counts).  Returns
- * 0 when it does not fit (or tolerance_px <= 0): then nothing is left
- * allocated and the caller draws the coarse mesh. */
+/* The plan of a streamed frame into f and room for one input triangle's
+ * share in local, all from the top of the arena (the caller releases it;
+ * silk_remesh_stats gives the frame's counts).  tolerance_px > 0 (the
+ * caller checks it).  Returns 0 when it does not fit: then nothing is
+ * left allocated and the caller draws the coarse mesh. */
 int silk_frame_smooth_stream(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
                              silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local);
 

@@ -55,6 +55,10 @@ check "--visibility runs the visibility benchmark" grep -q '^visibility ' "$out"
 
 want="not a mode" expect_usage "unknown mode" bench "$tmp/coarse.obj" --modes flat,shiny
 expect_usage "PN level too high" bench "$tmp/coarse.obj" --modes pn99
+# one parser for every --modes: a mode listed twice is refused alike
+want="listed twice" expect_usage "bench --modes pn3,pn3" bench "$tmp/coarse.obj" --modes pn3,pn3
+want="listed twice" expect_usage "bench --modes pn,pn3 (pn is pn3 here)" bench "$tmp/coarse.obj" --modes pn,pn3
+want="listed twice" expect_usage "render --modes pn3,pn3" render "$tmp/coarse.obj" --modes pn3,pn3 --sheet -o "$tmp/m.png"
 expect_usage "mode twice" bench "$tmp/coarse.obj" --modes flat,flat
 want="COARSE:FINE" expect_usage "pair without colon" bench --pair "$tmp/coarse.obj"
 expect_usage "no mesh" bench --views 2

@@ -37,6 +37,27 @@ head -c 1048576 "$tmp/big.obj" >"$tmp/exact.obj"
 "$tmp/example" "$tmp/exact.obj" >"$out" 2>"$err"
 check "README example reads a file of exactly its buffer's size" test $? -eq 1 -a -z "$(grep 'too large' "$err")"
 
+# The examples after "run by tests/cli_readme.sh" run as they are, one
+# command line at a time, in an empty directory with this silk on PATH.
+if command -v python3 >/dev/null; then
+    awk '/run by tests\/cli_readme.sh/ { want = 1; next }
+         want && /^```sh$/ { on = 1; next } on && /^```$/ { on = 0; want = 0 } on' "$readme" >"$tmp/examples.sh"
+    check "README has examples for the tests to run" test "$(grep -c '^silk' "$tmp/examples.sh")" -ge 10
+    mkdir -p "$tmp/bin" "$tmp/run"
+    silk_abs=$(cd "$(dirname "$SILK")" && pwd)/$(basename "$SILK")
+    ln -s "$silk_abs" "$tmp/bin/silk"
+    while IFS= read -r line; do
+        case "$line" in ''|'#'*) continue ;; esac
+        if (cd "$tmp/run" && PATH="$tmp/bin:$PATH" sh -c "set -e; $line" >"$out" 2>"$err"); then
+            pass "README: $line"
+        else
+            fail "README: $line" "$(head -c 300 "$err")"
+        fi
+    done <"$tmp/examples.sh"
+else
+    echo "python3 missing: the README examples are not run"
+fi
+
 for c in "make demo" "make test" "silk render" "silk info" "silk gen" ".ci/run"; do
     check "README mentions $c" grep -q -- "$c" "$readme"
 done

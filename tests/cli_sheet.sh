@@ -100,9 +100,9 @@ check "zoom: about half object ($n of 4800 px)" test "$n" -gt 1200 -a "$n" -lt 3
 
 want='frame number' expect_usage "turntable needs a numbered -o" render "$sphere" --turntable 4 -o "$tmp/t.png"
 want='needs --sheet' expect_usage "several modes need --sheet" render "$sphere" --modes flat,smooth -o "$tmp/t.png"
-want='--modes must list' expect_usage "unknown mode" render "$sphere" --modes flat,wobbly --sheet -o "$tmp/t.png"
-want='--modes must list' expect_usage "empty mode" render "$sphere" --modes flat,,smooth --sheet -o "$tmp/t.png"
-want='--modes must list' expect_usage "pn level out of range" render "$sphere" --modes pn99 --sheet -o "$tmp/t.png"
+want='is not a mode' expect_usage "unknown mode" render "$sphere" --modes flat,wobbly --sheet -o "$tmp/t.png"
+want='is not a mode' expect_usage "empty mode" render "$sphere" --modes flat,,smooth --sheet -o "$tmp/t.png"
+want='is not a mode' expect_usage "pn level out of range" render "$sphere" --modes pn99 --sheet -o "$tmp/t.png"
 want='between 1 and' expect_usage "turntable 0" render "$sphere" --turntable 0 -o "$tmp/t%d.png"
 want='between 1 and' expect_usage "turntable 361" render "$sphere" --turntable 361 -o "$tmp/t%d.png"
 want='--compare' expect_usage "compare with a sheet" render "$sphere" --compare --sheet -o "$tmp/t.png"

@@ -25,8 +25,14 @@ help_has "silk --help" --help -- render info gen "Exit status" "help"
 help_has "silk help" help -- render info gen
 help_has "silk render --help" render --help -- --output --compare $scene rgb565 smooth
 help_has "silk help render" help render -- --output $scene
-help_has "silk info --help" info --help -- $scene
+help_has "silk info --help" info --help -- ${scene% --bg --wire}
 help_has "silk gen --help" gen --help -- sphere torus cone cylinder knot --segments --bands
+# options a command would ignore are refused, not swallowed
+for opt in --wire "--bg 000000" "--lines over" "--color ff0000"; do
+    want="unknown option ${opt% *}" expect_usage "info refuses $opt" info "$sphere" $opt
+    want="unknown option ${opt% *}" expect_usage "pack refuses $opt" pack "$sphere" -o "$tmp/x.h" $opt
+done
+want='unknown option --mode' expect_usage "pack refuses --mode" pack "$sphere" -o "$tmp/x.h" --mode flat
 run_silk --version
 check "silk --version" grep -q '^silk [0-9]' "$out"
 

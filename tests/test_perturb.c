@@ -51,10 +51,11 @@ typedef struct pstats {
  * segments' end data and compare. */
 static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_frame_geom *g, pstats *ps)
 {
+    silk_sil_seg *segs = tf_segs(f);
     ps->views++;
     uint32_t ref_moved = 0;
     for (uint32_t i = 0; i < f->nsegs; i++) {
-        const silk_sil_seg *s = &f->segs[i];
+        const silk_sil_seg *s = &segs[i];
         double a[3], b[3], na[3], nb[3], F[3];
         vec3d(s->c.p0, a); vec3d(s->c.p1, b); vec3d(s->c.n0, na); vec3d(s->c.n1, nb);
         for (int k = 0; k < 3; k++) F[k] = b[k] - a[k];
@@ -68,7 +69,7 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
         vec3d(m->pos[v], V);
         int any = 0;
         for (uint32_t i = 0; i < f->nsegs; i++) {
-            const silk_sil_seg *s = &f->segs[i];
+            const silk_sil_seg *s = &segs[i];
             if (!s->concave || !is_near(m, s->tri, v)) continue;
             double n[3];
             vec3d(s->nm, n);
@@ -81,7 +82,7 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
             double rl = sqrt(dot3(R, R));
             for (int k = 0; k < 3; k++) R[k] /= rl;
             for (uint32_t i = 0; i < f->nsegs; i++) {
-                const silk_sil_seg *s = &f->segs[i];
+                const silk_sil_seg *s = &segs[i];
                 if (!s->concave || !is_near(m, s->tri, v)) continue;
                 double n[3], M[3], vm[3];
                 vec3d(s->nm, n);
@@ -126,7 +127,7 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
         if (capped) continue;
         /* uncapped: below every plane it neighbours */
         for (uint32_t i = 0; i < f->nsegs; i++) {
-            const silk_sil_seg *s = &f->segs[i];
+            const silk_sil_seg *s = &segs[i];
             if (!s->concave || !is_near(m, s->tri, v)) continue;
             double n[3], M[3], d = 0;
             vec3d(s->nm, n);
@@ -141,11 +142,12 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
     /* every corner at a moved vertex is a MOVED record with that vertex's offset */
     for (uint32_t c = 0; c < 3 * m->ntris; c++) {
         uint32_t sl = f->vert_offset ? f->vert_offset[m->tri[c]] : SILK_SIL_NONE;
-        const silk_vrec *r = &g->vrec[c];
+        const silk_vrec *r = &g->vrec[silk_remesh_corner_rec(f, c / 3, c % 3, g->part_rec[c / 3])];
         if (sl == SILK_SIL_NONE ? r->kind != SILK_VREC_CORNER : (r->kind != SILK_VREC_MOVED || r->b != sl))
             ps->wrong_records++;
         if (r->a != c) ps->wrong_records++;
     }
+    free(segs);
 }
 
 static void perturb_views(const char *name, int nviews, pstats *ps)
@@ -251,6 +253,7 @@ TEST(moves_down_to_the_plane)
         silk_frame_stats st;
         if (!tf_run_frame(&a, &m, &v, SILK_FX_HALF, &f, &g, &st)) { CHECK(0); return; }
         check_view(&m, &f, &g, &ps);
+        silk_sil_seg *segs = tf_segs(&f);
         for (uint32_t vtx = 0; vtx < m.nverts; vtx++) {
             uint32_t sl = f.vert_offset ? f.vert_offset[vtx] : SILK_SIL_NONE;
             if (sl == SILK_SIL_NONE) continue;
@@ -258,10 +261,11 @@ TEST(moves_down_to_the_plane)
             /* every concave plane here has a normal with n.z > 0 near the saddle's middle:
              * moving down means the offset has a negative component along the plane normals */
             for (uint32_t s = 0; s < f.nsegs; s++) {
-                if (!f.segs[s].concave || !is_near(&m, f.segs[s].tri, vtx)) continue;
-                if (silk_v3_dot64(g.offset[sl], f.segs[s].nm) >= 0) wrong_dir++;
+                if (!segs[s].concave || !is_near(&m, segs[s].tri, vtx)) continue;
+                if (silk_v3_dot64(g.offset[sl], segs[s].nm) >= 0) wrong_dir++;
             }
         }
+        free(segs);
         silk_arena_top_release(&a, &mk);
     }
     printf("  saddle: %u concave segments, %d vertex moves\n", ps.concave, found);

@@ -33,6 +33,9 @@
 #define FUZZ_ENTRY fuzz_math_entry
 #include "../fuzz/fuzz_math.c"
 #undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_ppm_entry
+#include "../fuzz/fuzz_ppm.c"
+#undef FUZZ_ENTRY
 #define FUZZ_ENTRY fuzz_model_entry
 #include "../fuzz/fuzz_model.c"
 #undef FUZZ_ENTRY
@@ -135,6 +138,12 @@ TEST(regress_math)
     printf("  %d regression inputs\n", n);
 }
 
+TEST(regress_ppm)
+{
+    int n = run_dir("tests/regress/ppm", "", fuzz_ppm_entry);
+    CHECKF(n >= 5, "%d inputs", n);
+}
+
 TEST(regress_model)
 {
     int n = run_dir("tests/regress/model", "", fuzz_model_entry);
@@ -151,6 +160,7 @@ int main(void)
     RUN(regress_pack);
     RUN(regress_render);
     RUN(regress_math);
+    RUN(regress_ppm);
     RUN(regress_model);
     return check_done();
 }

@@ -259,17 +259,19 @@ static void shared_points(const char *name, int nviews, int want_split)
             if (users != e->nsides) bad_sides++;
             if (e->nsides < 2) continue;
             edges_two_sides++;
-            const silk_sil_side *s0 = &f.sides[f.sides[e->side0].owner];
-            for (uint32_t k = 1; k < e->nsides; k++) {
-                const silk_sil_side *sk = &f.sides[f.sides[e->side0 + k].owner];
+            /* every side's own copy of the chain against the first side's */
+            uint32_t r0 = UINT32_MAX;
+            for (uint32_t c = 0; c < 3 * m.ntris; c++) {
+                if (m.tri_edge[c] != e->edge) continue;
+                uint32_t r = tf_side_rec(&f, &g, c / 3, c % 3);
+                if (r0 == UINT32_MAX) { r0 = r; continue; }
                 for (uint32_t j = 0; j < e->nchain; j++) {
                     silk_vertex_attr x, y;
-                    silk_vrec_eval(&gg, &g.vrec[s0->rec + j], &x);
-                    silk_vrec_eval(&gg, &g.vrec[sk->rec + j], &y);
+                    silk_vrec_eval(&gg, &g.vrec[r0 + j], &x);
+                    silk_vrec_eval(&gg, &g.vrec[r + j], &y);
                     compared++;
                     if (x.pos.x != y.pos.x || x.pos.y != y.pos.y || x.pos.z != y.pos.z) mismatched++;
-                    if (sk != s0 && (x.normal.x != y.normal.x || x.normal.y != y.normal.y ||
-                                     x.normal.z != y.normal.z))
+                    if (x.normal.x != y.normal.x || x.normal.y != y.normal.y || x.normal.z != y.normal.z)
                         split_normals++;
                 }
             }
@@ -287,6 +289,76 @@ static void shared_points(const char *name, int nviews, int want_split)
 TEST(shared_points_bit_identical_sphere) { shared_points("sphere-200.obj", 30, 0); }
 TEST(shared_points_bit_identical_torus) { shared_points("torus-576.obj", 30, 0); }
 TEST(shared_points_bit_identical_creases) { shared_points("cone-70.obj", 40, 1); shared_points("fandisk-128.obj", 40, 1); }
+
+/* Which point each record of a stored frame with lines is (rec_key, what
+ * the lines' depth lift groups by): every triangle has its own copy of an
+ * edge's points, and the copies of sides with the same normals and uvs are
+ * one point, so records with one key evaluate to the same position and
+ * normal; across a crease the copies keep keys of their own. */
+static uint32_t *key_of;
+static int cmp_by_key(const void *pa, const void *pb)
+{
+    uint32_t a = *(const uint32_t *)pa, b = *(const uint32_t *)pb;
+    if (key_of[a] != key_of[b]) return key_of[a] < key_of[b] ? -1 : 1;
+    return a < b ? -1 : a > b;
+}
+
+static void point_keys(const char *name, int nviews, int want_split)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    uint32_t shared = 0, differ = 0, split = 0, frames = 0;
+    for (int i = 0; i < nviews; i++) {
+        double dir[3];
+        random_dir(dir);
+        silk_view v;
+        if (!tf_view_around(&m, dir, 1.5 + check_uniform(0, 4), i & 1, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_frame_geom g;
+        silk_frame_stats st;
+        silk_error err;
+        if (silk_frame_smooth_lines(&a, &m, &v, SILK_FX_HALF, SILK_VIS_BRUTE, 1, &g, &st, &err) != SILK_OK ||
+            st.fell_back || !g.rec_key) {
+            CHECK(0);
+            silk_arena_top_release(&a, &mk);
+            return;
+        }
+        frames++;
+        silk_geom gg = { .mesh = &m, .curves = g.curve, .offsets = g.offset };
+        uint32_t *idx = malloc(g.nvrec * sizeof *idx);
+        silk_vertex_attr *at = malloc(g.nvrec * sizeof *at);
+        for (uint32_t r = 0; r < g.nvrec; r++) {
+            idx[r] = r;
+            silk_vrec_eval(&gg, &g.vrec[r], &at[r]);
+        }
+        key_of = g.rec_key;
+        qsort(idx, g.nvrec, sizeof *idx, cmp_by_key);
+        for (uint32_t j = 1; j < g.nvrec; j++) {
+            const silk_vertex_attr *x = &at[idx[j - 1]], *y = &at[idx[j]];
+            int same_pos = x->pos.x == y->pos.x && x->pos.y == y->pos.y && x->pos.z == y->pos.z;
+            int same_n = x->normal.x == y->normal.x && x->normal.y == y->normal.y && x->normal.z == y->normal.z;
+            int curves = g.vrec[idx[j]].kind == SILK_VREC_CURVE && g.vrec[idx[j - 1]].kind == SILK_VREC_CURVE;
+            if (key_of[idx[j - 1]] == key_of[idx[j]]) {
+                shared += curves;
+                if (!same_pos || (curves && !same_n)) differ++;
+            } else if (curves && same_pos && !same_n) {
+                split++;
+            }
+        }
+        free(idx);
+        free(at);
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %s: %u frames, %u edge-point copies sharing a key, %u crease copies apart\n", name, frames, shared,
+           split);
+    CHECKF(differ == 0, "%u records with one key differ", differ);
+    if (want_split) CHECKF(split > 0, "no crease copies with keys of their own");
+    else CHECKF(shared > 0, "no edge point shared by the two sides of its edge");
+}
+
+TEST(point_keys_sphere) { point_keys("sphere-200.obj", 10, 0); }
+TEST(point_keys_creases) { point_keys("cone-70.obj", 20, 1); point_keys("fandisk-128.obj", 20, 1); }
 
 /* Eq. 8 (read with h = the projected chord, see silhouette.c): the number of
  * intervals of every silhouette segment and every sampled feature segment
@@ -308,18 +380,19 @@ static void sample_counts(const char *name, int nviews, silk_fx tol)
         silk_frame_geom g;
         silk_frame_stats st;
         if (!tf_run_frame(&a, &m, &v, tol, &f, &g, &st)) { CHECK(0); return; }
+        silk_sil_seg *sg = tf_segs(&f);
         for (uint32_t s = 0; s < f.nsegs + f.nedges; s++) {
             const silk_curve *c;
             silk_curve wc;
             double cosa;
             uint32_t n;
             if (s < f.nsegs) {
-                c = &f.segs[s].c;
+                c = &sg[s].c;
                 double na[3], nb[3];
                 vec3d(c->n0, na);
                 vec3d(c->n1, nb);
                 cosa = dot3(na, nb);
-                n = f.segs[s].n;
+                n = sg[s].n;
                 segs++;
             } else {
                 const silk_sil_edge *w = &f.edges[s - f.nsegs];
@@ -349,6 +422,7 @@ static void sample_counts(const char *name, int nviews, silk_fx tol)
             if (n > 1) multi++;
             if (n == 0) zero++;
         }
+        free(sg);
         silk_arena_top_release(&a, &mk);
     }
     printf("  %s at tolerance %.2f: %u segments, %u feature segments, %u sampled more than once\n", name, e, segs,
@@ -449,36 +523,38 @@ TEST(uvs_interpolate_linearly_across_seams)
         for (uint32_t w = 0; w < f.nedges; w++) {
             const silk_sil_edge *e = &f.edges[w];
             if (!e->nchain) continue;
-            for (uint32_t k = 0; k < e->nsides; k++) {
-                const silk_sil_side *sd = &f.sides[e->side0 + k];
-                const silk_curve *c = &g.curve[f.sides[sd->owner].curve];
-                /* the corner of triangle sd->tri at edge.v[0] and at edge.v[1] */
-                uint32_t c0 = 0, c1 = 0;
-                for (uint32_t j = 0; j < 3; j++) {
-                    if (m.tri[3 * sd->tri + j] == m.edge[e->edge].v[0]) c0 = 3 * sd->tri + j;
-                    if (m.tri[3 * sd->tri + j] == m.edge[e->edge].v[1]) c1 = 3 * sd->tri + j;
-                }
-                silk_vec2 u0 = m.uv[m.tri_uv[c0]], u1 = m.uv[m.tri_uv[c1]];
+            /* every side on the edge: its own curve carries its uvs; a side
+             * whose uvs differ from the first side's is on a seam */
+            uint32_t r0 = UINT32_MAX;
+            silk_sil_side s0;
+            for (uint32_t cn = 0; cn < 3 * m.ntris; cn++) {
+                if (m.tri_edge[cn] != e->edge) continue;
+                uint32_t t = cn / 3, r = tf_side_rec(&f, &g, t, cn % 3);
+                silk_sil_side sd;
+                silk_sil_side_attrs(&m, t, cn % 3, &m.edge[e->edge], &sd);
+                const silk_curve *c = &g.curve[g.vrec[r].a];
+                silk_vec2 u0 = m.uv[sd.uv0], u1 = m.uv[sd.uv1];
                 if (c->uv0.x != u0.x || c->uv0.y != u0.y || c->uv1.x != u1.x || c->uv1.y != u1.y) bad_side++;
-                if (k > 0) {
-                    seams += f.sides[e->side0].owner != sd->owner;
-                    for (uint32_t j = 0; j < e->nchain; j++) {
-                        silk_vertex_attr x, y;
-                        silk_vrec_eval(&gg, &g.vrec[f.sides[f.sides[e->side0].owner].rec + j], &x);
-                        silk_vrec_eval(&gg, &g.vrec[f.sides[sd->owner].rec + j], &y);
-                        if (x.pos.x != y.pos.x || x.pos.y != y.pos.y || x.pos.z != y.pos.z) mismatched++;
-                    }
+                if (r0 == UINT32_MAX) { r0 = r; s0 = sd; continue; }
+                seams += s0.uv0 != sd.uv0 || s0.uv1 != sd.uv1 || s0.n0 != sd.n0 || s0.n1 != sd.n1;
+                for (uint32_t j = 0; j < e->nchain; j++) {
+                    silk_vertex_attr x, y;
+                    silk_vrec_eval(&gg, &g.vrec[r0 + j], &x);
+                    silk_vrec_eval(&gg, &g.vrec[r + j], &y);
+                    if (x.pos.x != y.pos.x || x.pos.y != y.pos.y || x.pos.z != y.pos.z) mismatched++;
                 }
             }
         }
+        silk_sil_seg *segs = tf_segs(&f);
         for (uint32_t s = 0; s < f.nsegs; s++) {
-            const silk_sil_seg *sg = &f.segs[s];
+            const silk_sil_seg *sg = &segs[s];
             uint32_t t = sg->tri, lone = f.tri_state[t] & SILK_TS_LONE;
             /* A on side lone (corner lone -> lone+1), at its pair's parameter */
             for (int end = 0; end < 2; end++) {
                 uint32_t k = end == 0 ? lone : (lone + 2) % 3;
                 const silk_sil_edge *e = &f.edges[f.edge_slot[m.tri_edge[3 * t + k]]];
-                const silk_sil_side *sd = silk_sil_side_of(&f, e, t, k);
+                silk_sil_side sdv, *sd = &sdv;
+                silk_sil_side_attrs(&m, t, k, &m.edge[e->edge], sd);
                 const silk_sil_pair *p = NULL;
                 for (uint32_t j = 0; j < e->npairs; j++)
                     if (f.pairs[e->pair0 + j].n0 == sd->n0 && f.pairs[e->pair0 + j].n1 == sd->n1) p = &f.pairs[e->pair0 + j];
@@ -491,6 +567,7 @@ TEST(uvs_interpolate_linearly_across_seams)
                 if (d > 1.5) bad_seg++;
             }
         }
+        free(segs);
         silk_arena_top_release(&a, &mk);
     }
     printf("  %u sides on seams, worst segment-end uv error %.2f ulp\n", seams, worst);
@@ -515,6 +592,8 @@ int main(void)
     RUN(sample_counts_eq8);
     RUN(sample_counts_monotone);
     RUN(uvs_interpolate_linearly_across_seams);
+    RUN(point_keys_sphere);
+    RUN(point_keys_creases);
     free(arena_buf);
     return check_done();
 }

@@ -144,13 +144,14 @@ static void compare_shares(silk_arena *a, const silk_mesh *m, const silk_view *v
     }
     silk_frame_stats ps;
     memset(&ps, 0, sizeof ps);
-    silk_remesh_stream_stats(&f, &ps);
+    silk_remesh_stats(&f, &ps);
     if (ps.tris_drawn != st.tris_drawn || ps.samples != st.samples || ps.bridges != st.bridges ||
         ps.moved_vertices != st.moved_vertices || ps.silhouette_tris != st.silhouette_tris)
         ss->counts++;
     silk_geom gs = { m, g.curve, g.offset, NULL };
     uint32_t k = 0;   /* the stored frame's next triangle */
     for (uint32_t t = 0; t < m->ntris; t++) {
+        part.nvrec = part.ntri = part.ncurve = 0;
         silk_remesh_emit_tri(&f, &part, t);
         if (part.nvrec > f.max_recs || part.ntri > f.max_tris || part.ncurve > f.max_curves) ss->over++;
         silk_geom gp = { m, part.curve, part.offset, NULL };

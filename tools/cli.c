@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "progress.h"
 #include "../platform/platform.h"
 
 int cli_fail(int code, const char *fmt, ...)
@@ -178,6 +179,45 @@ int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path)
     return 0;
 }
 
+void cli_json_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        if (*p == '"' || *p == '\\') fprintf(f, "\\%c", *p);
+        else if (*p < 0x20) fprintf(f, "\\u%04x", *p);
+        else fputc(*p, f);
+    }
+    fputc('"', f);
+}
+
+const char *cli_input_name(const char *path)
+{
+    return silk_path_is_stdio(path) ? SILK_STDIN_NAME : path;
+}
+
+int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, int *n)
+{
+    *n = 0;
+    for (const char *p = list;;) {
+        size_t len = strcspn(p, ",");
+        cli_mode *m = &out[*n];
+        if (*n == max) return cli_fail(-1, "%s: at most %d modes (got \"%s\")", opt, max, list);
+        if (len == 0 || len >= sizeof m->name) goto bad;
+        memcpy(m->name, p, len);
+        m->name[len] = 0;
+        if (silk_mode_parse(m->name, &m->mode, &m->level) != 0) goto bad;
+        for (int k = 0; k < *n; k++)
+            if (strcmp(out[k].name, m->name) == 0) return cli_fail(-1, "%s: %s is listed twice", opt, m->name);
+        ++*n;
+        if (!p[len]) return 0;
+        p += len + 1;
+        continue;
+    bad:
+        return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn or pnL (L 1..%u) separated "
+                        "by commas", opt, (int)len, p, SILK_PN_MAX_LEVEL);
+    }
+}
+
 /* The option's name without "=value", for messages. */
 static const char *opt_name(const char *arg, char *buf, size_t n)
 {
@@ -198,17 +238,56 @@ void cli_scene_opts_default(cli_scene_opts *o)
     o->height = SILK_BOARD_HEIGHT;
     o->fmt = SILK_BOARD_FORMAT;
     o->fov = CLI_DEFAULT_FOV;
+    o->groups = CLI_OPT_ALL;
     o->orient_note = 1;
     silk_render_opts_default(&o->render);
 }
 
-void cli_print_scene_help(FILE *f)
+/* Which group each scene option belongs to; a command takes only the groups
+ * in its cli_scene_opts.groups, so an option it would ignore is refused.
+ * Options not listed here are load options, taken by every command. */
+static const struct {
+    const char *name;
+    unsigned group;
+} option_group[] = {
+    { "--eye", CLI_OPT_CAMERA },          { "--target", CLI_OPT_CAMERA },     { "--up", CLI_OPT_CAMERA },
+    { "--fov", CLI_OPT_CAMERA },          { "--ortho", CLI_OPT_CAMERA },      { "--yaw", CLI_OPT_CAMERA },
+    { "--pitch", CLI_OPT_CAMERA },        { "--up-axis", CLI_OPT_CAMERA },    { "--size", CLI_OPT_FRAME },
+    { "--format", CLI_OPT_FRAME },        { "--mode", CLI_OPT_MODE },         { "--tolerance", CLI_OPT_MODE },
+    { "--level", CLI_OPT_MODE },          { "--pn-normals", CLI_OPT_MODE },   { "--beta", CLI_OPT_MODE },
+    { "--bg", CLI_OPT_LOOK },             { "--wire", CLI_OPT_LOOK },         { "--lines", CLI_OPT_LOOK },
+    { "--lines-polygonal", CLI_OPT_LOOK }, { "--color", CLI_OPT_LOOK },       { "--ambient", CLI_OPT_LOOK },
+    { "--specular", CLI_OPT_LOOK },       { "--shininess", CLI_OPT_LOOK },    { "--light", CLI_OPT_LOOK },
+};
+
+static unsigned group_of(const char *arg)
+{
+    size_t n = strcspn(arg, "=");
+    for (size_t i = 0; i < sizeof option_group / sizeof option_group[0]; i++)
+        if (strlen(option_group[i].name) == n && strncmp(arg, option_group[i].name, n) == 0)
+            return option_group[i].group;
+    return CLI_OPT_LOAD;
+}
+
+/* A material colour (components in [0, 1]) as 0xRRGGBB. */
+static uint32_t v3_to_rgb(silk_vec3 c)
+{
+    silk_fx v[3] = { c.x, c.y, c.z };
+    uint32_t rgb = 0;
+    for (int k = 0; k < 3; k++) rgb = rgb << 8 | (uint32_t)lround(cli_fx_to_double(v[k]) * 255);
+    return rgb;
+}
+
+void cli_print_scene_help(FILE *f, unsigned groups)
 {
     silk_render_opts ro;
     silk_render_opts_default(&ro);
-    fprintf(f,
+    silk_phong ph;
+    silk_phong_default(&ph, NULL);
+    if (groups & CLI_OPT_LOAD)
+        fprintf(f,
             "\n"
-            "Mesh loading:\n"
+            "Mesh loading (MESH - reads standard input; the format is told by the content):\n"
             "  --scale S            multiply coordinates by S while reading (exact decimal;\n"
             "                       model coordinates must end up within +-1024)\n"
             "  --crease DEG         dihedral angle above which an edge is a sharp feature\n"
@@ -224,41 +303,94 @@ void cli_print_scene_help(FILE *f)
             "                       uses the hierarchy\n"
             "  --arena BYTES        the one memory block silk may use (e.g. 512K, 64M);\n"
             "                       default: sized from the file and the image, grown if short\n"
+            "  --quiet              no progress line on a terminal\n",
+            cli_fx_to_double(SILK_DEFAULT_CREASE_DEG));
+    if (groups & CLI_OPT_CAMERA)
+        fprintf(f,
             "Camera (default: the whole model, seen from front-right-above):\n"
             "  --eye x,y,z          eye position (default: placed so the model fits the view)\n"
             "  --target x,y,z       point looked at (default: centre of the bounding box)\n"
-            "  --up x,y,z           up direction (default 0,1,0)\n"
+            "  --up x,y,z           up direction (default: the up axis)\n"
+            "  --up-axis y|z        the model's up axis (default y; z for Z-up exports, whose\n"
+            "                       front is then -y)\n"
+            "  --yaw DEG            orbit the eye DEG degrees about the up axis through the\n"
+            "                       target, to the viewer's right (the model turns left)\n"
+            "  --pitch DEG          orbit the eye DEG degrees up (-90..90; the elevation stops\n"
+            "                       at straight above or below)\n"
             "  --fov DEG            perspective, vertical field of view (%g..%g, default %g)\n"
             "  --ortho H|auto       orthographic, H = half the view height in model units;\n"
-            "                       auto fits the model\n"
-            "Frame:\n"
+            "                       auto fits the model\n",
+            cli_fx_to_double(SILK_FOV_MIN), cli_fx_to_double(SILK_FOV_MAX), CLI_DEFAULT_FOV);
+    if (groups & (CLI_OPT_FRAME | CLI_OPT_MODE)) fprintf(f, "Frame:\n");
+    if (groups & CLI_OPT_FRAME)
+        fprintf(f,
             "  --size WxH           image size in pixels, 1..%d each (default %dx%d)\n"
-            "  --format rgb888|rgb565  pixel format silk renders in (default %s)\n"
-            "  --mode flat|smooth|pn|blend  coarse mesh as it is, smoothed silhouettes\n"
-            "                       (default), PN triangles, or silhouetteness blending\n"
-            "                       (Dyken & Reimers); docs/methods.md\n"
+            "  --format rgb888|rgb565  pixel format silk renders in (default %s)\n",
+            CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT,
+            SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888");
+    if (groups & CLI_OPT_MODE)
+        fprintf(f,
+            "  --mode flat|smooth|pn|pnL|blend  coarse mesh as it is, smoothed silhouettes\n"
+            "                       (default), PN triangles (pnL: at level L), or\n"
+            "                       silhouetteness blending (Dyken & Reimers); docs/methods.md\n"
             "  --tolerance PX       silhouette sampling tolerance in pixels, 0.25..4 (%g)\n"
             "  --level L            pn: segments per triangle side, 1..%u (default %u)\n"
             "  --pn-normals quadratic|linear  pn: normal patch (default quadratic)\n"
-            "  --beta B             blend: silhouetteness transition, 0..1 (default %g)\n"
-            "  --bg RRGGBB          background colour in hex (default %06x)\n"
+            "  --beta B             blend: silhouetteness transition, 0..1 (default %g)\n",
+            cli_fx_to_double(ro.tolerance_px), SILK_PN_MAX_LEVEL, (unsigned)ro.level, cli_fx_to_double(ro.blend_beta));
+    if (groups & CLI_OPT_LOOK)
+        fprintf(f,
+            "Look (docs/viewer.md, \"Material and light\"):\n"
+            "  --bg RRGGBB|none     background colour in hex (default %06x); none: a PNG\n"
+            "                       with alpha, 255 on the object and 0 elsewhere\n"
             "  --wire               draw the edges; triangles added by smoothing in red\n"
             "  --lines over|only    pen-and-ink outlines over the shading or alone: the\n"
             "                       smoothed silhouette and visible feature curves (smooth),\n"
             "                       the mesh's silhouette and feature edges (flat)\n"
             "  --lines-polygonal    the coarse mesh's silhouette and feature edges in any\n"
-            "                       mode (pn and blend draw lines only so; alone: --lines over)\n",
-            cli_fx_to_double(SILK_DEFAULT_CREASE_DEG), cli_fx_to_double(SILK_FOV_MIN),
-            cli_fx_to_double(SILK_FOV_MAX), CLI_DEFAULT_FOV, CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT,
-            SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", cli_fx_to_double(ro.tolerance_px),
-            SILK_PN_MAX_LEVEL, (unsigned)ro.level, cli_fx_to_double(ro.blend_beta), (unsigned)ro.bg_rgb);
+            "                       mode (pn and blend draw lines only so; alone: --lines over)\n"
+            "  --color RRGGBB       the object's colour (default %06x)\n"
+            "  --ambient A          light everywhere, 0..1 (default %.2f)\n"
+            "  --specular S         strength of the highlights, 0..1 (default %.2f)\n"
+            "  --shininess N        sharpness of the highlights, 1..256 (default %d)\n"
+            "  --light [point:]x,y,z[:RRGGBB]  a white (or RRGGBB) light instead of the\n"
+            "                       default two: directional from direction x,y,z (model\n"
+            "                       axes, towards the light), or with point: at position\n"
+            "                       x,y,z; repeat for up to %d lights\n",
+            (unsigned)ro.bg_rgb, (unsigned)v3_to_rgb(ph.mat.color), cli_fx_to_double(ph.mat.ambient),
+            cli_fx_to_double(ph.mat.specular), ph.mat.shininess, SILK_MAX_LIGHTS);
 }
 
 static int parse_fx(const char *opt, const char *s, double lo, double hi, silk_fx *out)
 {
     double v;
     if (cli_parse_double(opt, s, lo, hi, &v) != 0) return -1;
-    *out = (silk_fx)llround(v * 65536.0);
+    *out = cli_fx_from_double(v);
+    return 0;
+}
+
+/* --light [point:]x,y,z[:RRGGBB] */
+static int parse_light(const char *s, cli_light *l)
+{
+    char buf[256];
+    if (strlen(s) >= sizeof buf) return cli_fail(-1, "--light is too long");
+    strcpy(buf, s);
+    char *p = buf, *colour;
+    memset(l, 0, sizeof *l);
+    l->rgb = 0xFFFFFF;
+    if (strncmp(p, "point:", 6) == 0) {
+        l->point = 1;
+        p += 6;
+    } else if (strncmp(p, "dir:", 4) == 0) {
+        p += 4;
+    }
+    if ((colour = strchr(p, ':')) != NULL) {
+        *colour++ = 0;
+        if (cli_parse_rgb("--light", colour, &l->rgb)) return -1;
+    }
+    if (cli_parse_vec3("--light", p, CLI_MAX_COORD, l->v)) return -1;
+    if (!l->point && l->v[0] == 0 && l->v[1] == 0 && l->v[2] == 0)
+        return cli_fail(-1, "--light: a direction must not be 0,0,0 (got \"%s\")", s);
     return 0;
 }
 
@@ -267,8 +399,11 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
     char name[40];
     const char *arg = argv[*i], *opt = opt_name(arg, name, sizeof name), *v;
     int r = 0;
+    if (!(group_of(arg) & o->groups)) return 0;   /* not this command's: it says "unknown option" */
 #define VALUE() do { if (!(v = cli_value(argc, argv, i))) return -1; } while (0)
-    if (cli_is(arg, "--scale")) {
+    if (cli_is(arg, "--quiet")) {
+        o->quiet = 1;
+    } else if (cli_is(arg, "--scale")) {
         VALUE();
         const char *end;
         silk_decimal d;
@@ -336,11 +471,11 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         else return cli_fail(-1, "--format must be rgb888 or rgb565 (got \"%s\")", v);
     } else if (cli_is(arg, "--mode")) {
         VALUE();
-        if (strcmp(v, "flat") == 0) o->render.mode = SILK_MODE_FLAT;
-        else if (strcmp(v, "smooth") == 0) o->render.mode = SILK_MODE_SMOOTH;
-        else if (strcmp(v, "pn") == 0) o->render.mode = SILK_MODE_PN;
-        else if (strcmp(v, "blend") == 0) o->render.mode = SILK_MODE_BLEND;
-        else return cli_fail(-1, "--mode must be flat, smooth, pn or blend (got \"%s\")", v);
+        uint32_t level;
+        if (silk_mode_parse(v, &o->render.mode, &level) != 0)
+            return cli_fail(-1, "--mode must be flat, smooth, pn, pnL (L 1..%u) or blend (got \"%s\")",
+                            SILK_PN_MAX_LEVEL, v);
+        if (level) o->render.level = level;
     } else if (cli_is(arg, "--level")) {
         VALUE();
         long l;
@@ -359,7 +494,8 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         r = parse_fx(opt, v, 0.25, 4, &o->render.tolerance_px);
     } else if (cli_is(arg, "--bg")) {
         VALUE();
-        r = cli_parse_rgb(opt, v, &o->render.bg_rgb);
+        o->bg_none = strcmp(v, "none") == 0;
+        if (!o->bg_none) r = cli_parse_rgb(opt, v, &o->render.bg_rgb);
     } else if (strcmp(arg, "--wire") == 0) {
         o->render.wire = 1;
     } else if (cli_is(arg, "--lines")) {
@@ -370,6 +506,39 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
     } else if (strcmp(arg, "--lines-polygonal") == 0) {
         o->render.lines_polygonal = 1;
         if (!o->render.lines) o->render.lines = SILK_LINES_OVER;
+    } else if (cli_is(arg, "--yaw")) {
+        VALUE();
+        r = cli_parse_double(opt, v, -360, 360, &o->yaw);
+    } else if (cli_is(arg, "--pitch")) {
+        VALUE();
+        r = cli_parse_double(opt, v, -90, 90, &o->pitch);
+    } else if (cli_is(arg, "--up-axis")) {
+        VALUE();
+        if (strcmp(v, "y") == 0) o->up_axis_z = 0;
+        else if (strcmp(v, "z") == 0) o->up_axis_z = 1;
+        else return cli_fail(-1, "--up-axis must be y or z (got \"%s\")", v);
+    } else if (cli_is(arg, "--color")) {
+        VALUE();
+        r = cli_parse_rgb(opt, v, &o->look.color);
+        o->look.have_color = 1;
+    } else if (cli_is(arg, "--ambient")) {
+        VALUE();
+        r = cli_parse_double(opt, v, 0, 1, &o->look.ambient);
+        o->look.have_ambient = 1;
+    } else if (cli_is(arg, "--specular")) {
+        VALUE();
+        r = cli_parse_double(opt, v, 0, 1, &o->look.specular);
+        o->look.have_specular = 1;
+    } else if (cli_is(arg, "--shininess")) {
+        VALUE();
+        long n;
+        r = cli_parse_long(opt, v, 1, 256, &n);
+        o->look.shininess = (int)n;
+    } else if (cli_is(arg, "--light")) {
+        VALUE();
+        if (o->look.nlights == SILK_MAX_LIGHTS) return cli_fail(-1, "--light: at most %d lights", SILK_MAX_LIGHTS);
+        r = parse_light(v, &o->look.light[o->look.nlights]);
+        o->look.nlights++;
     } else {
         return 0;
     }
@@ -381,9 +550,12 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
 
 double cli_fx_to_double(silk_fx v) { return v / 65536.0; }
 
-static silk_fx to_fx(double v) { return (silk_fx)llround(v * 65536.0); }
+silk_fx cli_fx_from_double(double v) { return (silk_fx)llround(v * 65536.0); }
 
-static silk_vec3 to_v3(const double v[3]) { return silk_v3(to_fx(v[0]), to_fx(v[1]), to_fx(v[2])); }
+static silk_vec3 to_v3(const double v[3])
+{
+    return silk_v3(cli_fx_from_double(v[0]), cli_fx_from_double(v[1]), cli_fx_from_double(v[2]));
+}
 
 static double len3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
@@ -414,23 +586,82 @@ double cli_mesh_radius(const silk_mesh *m, double c[3])
     return r > 0 ? r : 1;
 }
 
+/* The model's frame: U its up axis, F its front (where the default camera
+ * looks from), R = U x F its right.  Y-up: U = +y, F = +z, R = +x; Z-up
+ * (--up-axis z, as Blender exports): U = +z, F = -y, R = +x. */
+static void model_frame(const cli_scene_opts *o, double U[3], double F[3], double R[3])
+{
+    static const double y_up[3][3] = { { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 0 } };
+    static const double z_up[3][3] = { { 0, 0, 1 }, { 0, -1, 0 }, { 1, 0, 0 } };
+    const double (*f)[3] = o->up_axis_z ? z_up : y_up;
+    memcpy(U, f[0], 3 * sizeof *U);
+    memcpy(F, f[1], 3 * sizeof *F);
+    memcpy(R, f[2], 3 * sizeof *R);
+}
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* The direction from the target towards the eye at azimuth az (from F
+ * towards R) and elevation el (towards U), radians. */
+static void orbit_dir(const double U[3], const double F[3], const double R[3], double az, double el, double d[3])
+{
+    for (int k = 0; k < 3; k++) d[k] = cos(el) * (cos(az) * F[k] + sin(az) * R[k]) + sin(el) * U[k];
+}
+
+void cli_orbit_dir(const cli_scene_opts *o, double az_deg, double el_deg, double d[3])
+{
+    double U[3], F[3], R[3];
+    model_frame(o, U, F, R);
+    orbit_dir(U, F, R, az_deg * CLI_DEG, el_deg * CLI_DEG, d);
+}
+
+void cli_orbit_angles(const cli_scene_opts *o, const double d[3], double *az_deg, double *el_deg)
+{
+    double U[3], F[3], R[3], len = len3(d);
+    model_frame(o, U, F, R);
+    *el_deg = len > 0 ? asin(fmax(-1, fmin(1, dot3(d, U) / len))) / CLI_DEG : 0;
+    *az_deg = atan2(dot3(d, R), dot3(d, F)) / CLI_DEG;
+}
+
+void cli_up_axis(const cli_scene_opts *o, double up[3])
+{
+    double F[3], R[3];
+    model_frame(o, up, F, R);
+}
+
 int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
 {
-    const double deg = 3.14159265358979323846 / 180;
+    const double deg = CLI_DEG;
     double c[3];
     double r = cli_mesh_radius(m, c);
     double aspect = (double)o->width / o->height;
+    double U[3], F[3], R[3];
+    model_frame(o, U, F, R);
 
-    double target[3], eye[3], up[3] = { 0, 1, 0 };
+    double target[3], eye[3], up[3];
+    memcpy(up, U, sizeof up);
     for (int k = 0; k < 3; k++) target[k] = o->have_target ? o->target[k] : c[k];
     double off[3] = { target[0] - c[0], target[1] - c[1], target[2] - c[2] };
     double half_v = o->fov * deg / 2, half_h = atan(tan(half_v) * aspect);
     double half = half_v < half_h ? half_v : half_h;
     if (o->have_eye) {
         memcpy(eye, o->eye, sizeof eye);
+        if (o->yaw != 0 || o->pitch != 0) {
+            /* the given eye's azimuth and elevation about the target, turned */
+            double d[3] = { eye[0] - target[0], eye[1] - target[1], eye[2] - target[2] }, dist = len3(d);
+            if (dist > 0) {
+                double el = asin(fmax(-1, fmin(1, dot3(d, U) / dist))), az = atan2(dot3(d, R), dot3(d, F));
+                el = fmax(-90 * deg, fmin(90 * deg, el + o->pitch * deg));
+                orbit_dir(U, F, R, az + o->yaw * deg, el, d);
+                for (int k = 0; k < 3; k++) eye[k] = target[k] + d[k] * dist;
+            }
+        }
     } else {
-        double az = CLI_VIEW_AZIMUTH * deg, el = CLI_VIEW_ELEVATION * deg;
-        double d[3] = { cos(el) * sin(az), sin(el), cos(el) * cos(az) };
+        double az = (CLI_VIEW_AZIMUTH + o->yaw) * deg, el = (CLI_VIEW_ELEVATION + o->pitch) * deg;
+        if (el > 90 * deg) el = 90 * deg;
+        if (el < -90 * deg) el = -90 * deg;
+        double d[3];
+        orbit_dir(U, F, R, az, el, d);
         double dist = (o->ortho ? 2 * r : r / sin(half)) + len3(off);
         for (int k = 0; k < 3; k++) eye[k] = target[k] + d[k] * dist;
     }
@@ -438,9 +669,9 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
     double vlen = len3(view);
     if (o->have_up) {
         memcpy(up, o->up, sizeof up);
-    } else if (vlen > 0 && fabs(view[1]) > cos(1 * deg) * vlen) {
-        up[1] = 0;
-        up[2] = -1;
+    } else if (vlen > 0 && fabs(dot3(view, U)) > cos(1 * deg) * vlen) {
+        /* looking along the up axis: the screen's up is away from the front */
+        for (int k = 0; k < 3; k++) up[k] = -F[k];
     }
     for (int k = 0; k < 3; k++)
         if (fabs(eye[k]) > CLI_MAX_COORD)
@@ -465,12 +696,12 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
     cam->target = to_v3(target);
     cam->up = to_v3(up);
     cam->ortho = o->ortho;
-    cam->fov_deg = to_fx(o->fov);
+    cam->fov_deg = cli_fx_from_double(o->fov);
     double oh = o->ortho_auto ? (aspect < 1 ? r / aspect : r) : o->ortho_half;
     if (oh > CLI_MAX_COORD) oh = CLI_MAX_COORD;
-    cam->ortho_half_height = to_fx(o->ortho ? oh : 1.0);
-    cam->znear = to_fx(znear);
-    cam->zfar = to_fx(zfar);
+    cam->ortho_half_height = cli_fx_from_double(o->ortho ? oh : 1.0);
+    cam->znear = cli_fx_from_double(znear);
+    cam->zfar = cli_fx_from_double(zfar);
     cam->width = o->width;
     cam->height = o->height;
     return 0;
@@ -508,70 +739,123 @@ static size_t raster_bytes(const cli_scene_opts *o)
     return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + 64;
 }
 
+/* One load of m's file into an arena of size bytes; nothing printed. */
+static silk_status load_into(cli_mesh *m, const silk_load_opts *lo, int vis, size_t size, silk_error *err)
+{
+    free(m->buf);
+    if (!(m->buf = malloc(size)))
+        return silk_fail(err, SILK_ERR_NOMEM, m->name, 0, "cannot allocate an arena of %zu bytes", size);
+    silk_arena_init(&m->arena, m->buf, size);
+    silk_status st = silk_load_mesh(m->file, m->file_len, m->name, lo, &m->arena, &m->mesh, err);
+    if (st == SILK_OK && vis) st = silk_vis_build(&m->mesh, NULL, &m->arena, err);
+    return st;
+}
+
 /* The arena the model needs to load (with its visibility hierarchy): the
  * peak of a load into a larger arena, which is the exact minimum (both
  * ends of the arena are counted together).  0 if no arena up to 64 times
  * the given one loads it. */
-static size_t load_bytes_needed(const cli_scene *s, const cli_scene_opts *o, size_t given)
+static size_t load_bytes_needed(const cli_mesh *m, const silk_load_opts *lo, int vis, size_t given)
 {
-    size_t size = auto_arena_bytes(s->file_len, 0);
+    cli_mesh probe = *m;
+    probe.buf = NULL;
+    size_t size = auto_arena_bytes(m->file_len, 0), need = 0;
     if (size < 2 * given) size = 2 * given;
     for (int attempt = 0; attempt < 6 && size < SIZE_MAX / 4; attempt++, size *= 2) {
-        void *buf = malloc(size);
-        if (!buf) return 0;
-        silk_arena a;
-        silk_mesh m;
         silk_error err;
-        silk_arena_init(&a, buf, size);
-        silk_status st = silk_load_mesh(s->file, s->file_len, o->mesh_path, &o->load, &a, &m, &err);
-        if (st == SILK_OK && !o->vis_brute) st = silk_vis_build(&m, NULL, &a, &err);
-        size_t peak = a.peak;
-        free(buf);
-        if (st == SILK_OK) return peak;
-        if (st != SILK_ERR_NOMEM) return 0;
+        silk_status st = load_into(&probe, lo, vis, size, &err);
+        if (st == SILK_OK) need = probe.arena.peak;
+        if (st != SILK_ERR_NOMEM) break;
     }
+    free(probe.buf);
+    return need;
+}
+
+/* silk_file_read, but standard input is read once and kept: a command that
+ * loads again into a larger arena gets the same bytes the second time. */
+static silk_status read_input(const char *path, uint8_t **data, size_t *len, silk_error *err)
+{
+    static uint8_t *stdin_data;
+    static size_t stdin_len;
+    if (!silk_path_is_stdio(path)) return silk_file_read(path, data, len, err);
+    if (!stdin_data) {
+        silk_status st = silk_file_read(path, &stdin_data, &stdin_len, err);
+        if (st != SILK_OK) return st;
+    }
+    /* a copy with the reader's trailing NUL, freed by the caller as usual */
+    if (!(*data = malloc(stdin_len + 1))) return silk_fail(err, SILK_ERR_IO, SILK_STDIN_NAME, 0, "out of memory");
+    memcpy(*data, stdin_data, stdin_len + 1);
+    *len = stdin_len;
+    return SILK_OK;
+}
+
+int cli_mesh_load(cli_mesh *m, const char *path, const silk_load_opts *lo, int vis, size_t fixed, size_t extra,
+                  int doublings, int quiet)
+{
+    memset(m, 0, sizeof *m);
+    m->path = path;
+    m->name = cli_input_name(path);
+    silk_error err;
+    if (read_input(path, &m->file, &m->file_len, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+
+    /* Large files take a while to parse: say so on a terminal. */
+    progress pr;
+    char label[160];
+    snprintf(label, sizeof label, "loading %s (%.0f MB)", m->name, m->file_len / 1e6);
+    progress_start(&pr, quiet || m->file_len < CLI_PROGRESS_FILE_BYTES, label);
+    progress_note(&pr, "parsing");
+
+    size_t size = fixed;
+    if (!size) {
+        size = auto_arena_bytes(m->file_len, extra);
+        for (int k = 0; k < doublings && size < SIZE_MAX / 4; k++) size *= 2;
+    }
+    /* Without a fixed size, an arena that proves too small is doubled and
+     * the mesh loaded again: the estimate is a guess, the limit is not. */
+    silk_status st;
+    for (int attempt = 0;; attempt++) {
+        st = load_into(m, lo, vis, size, &err);
+        if (st != SILK_ERR_NOMEM || fixed || attempt >= 4 || size > SIZE_MAX / 4) break;
+        size *= 2;
+        progress_note(&pr, "parsing again in a larger arena");
+    }
+    progress_end(&pr);
+    if (st == SILK_ERR_NOMEM && fixed) {
+        size_t need = load_bytes_needed(m, lo, vis, size);
+        if (need)
+            return cli_fail(CLI_EXIT_INPUT, "%s: arena too small: loading needs %zu bytes, --arena gives %zu", m->name,
+                            need, size);
+        return cli_fail(CLI_EXIT_INPUT, "%s (the arena has %zu bytes; raise --arena)", err.msg, size);
+    }
+    if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
+}
+
+void cli_mesh_free(cli_mesh *m)
+{
+    free(m->buf);
+    free(m->file);
+    memset(m, 0, sizeof *m);
 }
 
 int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
 {
     memset(s, 0, sizeof *s);
-    silk_error err;
-    if (silk_file_read(o->mesh_path, &s->file, &s->file_len, &err) != SILK_OK)
-        return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
-
-    size_t size = o->arena_bytes;
-    if (!size) {
-        size = auto_arena_bytes(s->file_len, raster_bytes(o));
-        for (int k = 0; k < o->arena_doublings && size < SIZE_MAX / 4; k++) size *= 2;
-    }
-    silk_status st;
-    /* Without --arena, an arena that proves too small is doubled and the
-     * mesh loaded again: the estimate is a guess, the limit is not. */
-    for (int attempt = 0;; attempt++) {
-        s->arena_buf = malloc(size);
-        if (!s->arena_buf)
-            return cli_fail(CLI_EXIT_INPUT, "cannot allocate an arena of %zu bytes", size);
-        silk_arena_init(&s->arena, s->arena_buf, size);
-        st = silk_load_mesh(s->file, s->file_len, o->mesh_path, &o->load, &s->arena, &s->mesh, &err);
-        if (st == SILK_OK && !o->vis_brute) st = silk_vis_build(&s->mesh, NULL, &s->arena, &err);
-        if (st != SILK_ERR_NOMEM || o->arena_bytes || attempt >= 4 || size > SIZE_MAX / 4) break;
-        free(s->arena_buf);
-        s->arena_buf = NULL;
-        size *= 2;
-    }
-    if (st == SILK_ERR_NOMEM && o->arena_bytes) {
-        size_t need = load_bytes_needed(s, o, size);
-        if (need)
-            return cli_fail(CLI_EXIT_INPUT, "%s: arena too small: loading needs %zu bytes, --arena gives %zu",
-                            o->mesh_path, need, size);
-        return cli_fail(CLI_EXIT_INPUT, "%s (the arena has %zu bytes; raise --arena)", err.msg, size);
-    }
-    if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    cli_mesh lm;
+    int rc = cli_mesh_load(&lm, o->mesh_path, &o->load, !o->vis_brute, o->arena_bytes, raster_bytes(o),
+                           o->arena_doublings, o->quiet);
+    /* the scene takes over the file and the arena */
+    s->file = lm.file;
+    s->file_len = lm.file_len;
+    s->arena_buf = lm.buf;
+    s->arena = lm.arena;
+    s->mesh = lm.mesh;
+    if (rc) return rc;
     s->load_bytes = s->arena.bottom;
-    if (o->orient_note) cli_orient_note(o->mesh_path, &s->mesh);
+    if (o->orient_note) cli_orient_note(cli_input_name(o->mesh_path), &s->mesh);
 
-    int rc = cli_camera(o, &s->mesh, &s->cam);
+    silk_error err;
+    rc = cli_camera(o, &s->mesh, &s->cam);
     if (rc) return rc;
     if (silk_view_init(&s->view, &s->cam, &err) != SILK_OK)
         return cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
@@ -583,9 +867,78 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
         return cli_fail(CLI_EXIT_INPUT, "the arena (%zu bytes) has no room for a %dx%d frame (%zu bytes); raise --arena",
                         s->arena.size, o->width, o->height, raster_bytes(o));
     silk_target_init(&s->target, o->width, o->height, 0, o->height, o->fmt, color, depth);
-    silk_phong_default(&s->phong, &s->view);
+    cli_phong(o, &s->view, &s->phong);
     silk_hal_phong(&s->hal, &s->phong);
     return 0;
+}
+
+/* ---- look and output -------------------------------------------------------------- */
+
+static silk_vec3 rgb_to_v3(uint32_t rgb)
+{
+    double c[3] = { ((rgb >> 16) & 255) / 255.0, ((rgb >> 8) & 255) / 255.0, (rgb & 255) / 255.0 };
+    return to_v3(c);
+}
+
+void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
+{
+    silk_phong_default(p, view);
+    const cli_look *l = &o->look;
+    if (l->have_color) p->mat.color = rgb_to_v3(l->color);
+    if (l->have_ambient) p->mat.ambient = cli_fx_from_double(l->ambient);
+    if (l->have_specular) p->mat.specular = cli_fx_from_double(l->specular);
+    if (l->shininess) p->mat.shininess = l->shininess;
+    if (l->nlights) {
+        p->nlights = l->nlights;
+        for (int i = 0; i < l->nlights; i++) {
+            const cli_light *li = &l->light[i];
+            double v[3] = { li->v[0], li->v[1], li->v[2] }, n = li->point ? 1 : len3(v);
+            p->lights[i].kind = li->point ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
+            for (int k = 0; k < 3; k++) v[k] /= n;
+            p->lights[i].vec = to_v3(v);
+            p->lights[i].color = rgb_to_v3(li->rgb);
+        }
+    }
+}
+
+cli_alpha cli_alpha_for(const cli_scene_opts *o)
+{
+    if (!o->bg_none) return CLI_ALPHA_NONE;
+    return o->render.lines == SILK_LINES_ONLY ? CLI_ALPHA_COLOUR : CLI_ALPHA_COVERAGE;
+}
+
+int cli_write_image(const silk_target *t, const char *path, silk_image_format fmt, cli_alpha alpha, uint32_t bg_rgb)
+{
+    silk_error err;
+    if (!silk_path_is_stdio(path)) fmt = silk_image_format_for_path(path);
+    else if (fmt == SILK_IMAGE_NONE) fmt = SILK_IMAGE_PNG;
+    if (!alpha) {
+        if (silk_image_write_as(t, path, fmt, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+        return 0;
+    }
+    if (fmt != SILK_IMAGE_PNG)
+        return cli_fail(CLI_EXIT_USAGE, "%s: --bg none needs a PNG (PPM has no alpha channel)",
+                        silk_path_is_stdio(path) ? SILK_STDOUT_NAME : path);
+    size_t n = (size_t)t->width * (size_t)t->height;
+    uint8_t *a = malloc(n ? n : 1), *row = malloc((size_t)t->width * 3);
+    if (!a || !row) {
+        free(a), free(row);
+        return cli_fail(CLI_EXIT_INPUT, "out of memory for the alpha channel");
+    }
+    uint8_t bg[3] = { (uint8_t)(bg_rgb >> 16), (uint8_t)(bg_rgb >> 8), (uint8_t)bg_rgb };
+    for (int y = 0; y < t->height; y++) {
+        /* covered: the surface wrote depth there, or something (a line drawn
+         * alone) changed the background colour */
+        silk_target_row_rgb888(t, y, row);
+        for (int x = 0; x < t->width; x++) {
+            size_t i = (size_t)y * (size_t)t->width + (size_t)x;
+            int depth = alpha == CLI_ALPHA_COVERAGE && t->depth && t->depth[i] != 0;   /* cleared to 0, the farthest */
+            a[i] = depth || memcmp(row + 3 * x, bg, 3) != 0 ? 255 : 0;
+        }
+    }
+    silk_status st = silk_png_write_alpha(t, a, path, &err);
+    free(a), free(row);
+    return st == SILK_OK ? 0 : cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
 }
 
 void cli_scene_free(cli_scene *s)

@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "silk/silk.h"
+#include "../platform/platform.h"
 
 #define CLI_EXIT_INPUT 1      /* a file, a mesh or a render failed */
 #define CLI_EXIT_USAGE 2      /* a bad option or value */
@@ -32,6 +33,13 @@
 #ifndef SILK_BOARD_FORMAT
 #define SILK_BOARD_FORMAT SILK_PIX_RGB888
 #endif
+
+/* Files from this size on show a progress line while they load. */
+#define CLI_PROGRESS_FILE_BYTES ((size_t)4 << 20)
+
+/* The tools' one pi, and degrees to radians. */
+#define CLI_PI 3.14159265358979323846
+#define CLI_DEG (CLI_PI / 180)
 
 /* The default camera: vertical field of view, and the direction from the
  * model towards the eye, 30 degrees to the right of +z and 20 degrees up. */
@@ -56,26 +64,68 @@ int cli_parse_size(const char *opt, const char *s, int *w, int *h);
 int cli_parse_rgb(const char *opt, const char *s, uint32_t *rgb);
 int cli_parse_bytes(const char *opt, const char *s, size_t *out);
 
+/* A list of render modes (--modes flat,smooth,pn3): each name as
+ * silk_mode_parse reads it (level 0 where the name gives none), at most
+ * max of them, none twice. */
+typedef struct cli_mode {
+    char name[16];
+    silk_mode mode;
+    uint32_t level;
+} cli_mode;
+int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, int *n);
+
 /* Argument walking with "--opt value" and "--opt=value".  cli_value returns
  * the value of the option at argv[*i] and advances *i, or prints "OPT needs
  * a value" and returns NULL.  cli_is(arg, name) matches "name" and "name=..". */
 int cli_is(const char *arg, const char *name);
 const char *cli_value(int argc, char **argv, int *i);
 
+/* The groups of scene options; a command takes those it uses (the groups
+ * field of cli_scene_opts) and refuses the others as unknown. */
+#define CLI_OPT_LOAD 1u        /* --scale --crease --normals --visibility --arena --quiet */
+#define CLI_OPT_CAMERA 2u      /* --eye --target --up --up-axis --yaw --pitch --fov --ortho */
+#define CLI_OPT_FRAME 4u       /* --size --format */
+#define CLI_OPT_MODE 8u        /* --mode --tolerance --level --pn-normals --beta */
+#define CLI_OPT_LOOK 16u       /* --bg --wire --lines --lines-polygonal, material and lights */
+#define CLI_OPT_ALL 31u
+
+/* --light [point:]x,y,z[:RRGGBB] */
+typedef struct cli_light {
+    int point;                 /* 0: directional, v the direction towards the light */
+    double v[3];
+    uint32_t rgb;
+} cli_light;
+
+/* Material and lights; what is not given keeps silk_phong_default's value. */
+typedef struct cli_look {
+    int have_color, have_ambient, have_specular;
+    uint32_t color;
+    double ambient, specular;
+    int shininess;             /* 0: the default */
+    int nlights;               /* 0: the default two lights */
+    cli_light light[SILK_MAX_LIGHTS];
+} cli_look;
+
 /* Everything `silk render` and `silk info` read from the command line
  * besides their own few options. */
 typedef struct cli_scene_opts {
-    const char *mesh_path;
+    const char *mesh_path;     /* "-": standard input */
+    unsigned groups;           /* CLI_OPT_*: the options this command takes */
     silk_load_opts load;
     int width, height;
     silk_pixfmt fmt;
     int have_eye, have_target, have_up;
     double eye[3], target[3], up[3];
+    double yaw, pitch;         /* degrees the eye orbits right and up */
+    int up_axis_z;             /* 1: the model's up is +z and its front -y */
     int ortho;                 /* 1: orthographic */
     int ortho_auto;            /* --ortho auto: half height from the model */
     double fov;                /* degrees, perspective */
     double ortho_half;         /* world units, orthographic */
     silk_render_opts render;
+    int bg_none;               /* --bg none: alpha from the object's coverage */
+    cli_look look;
+    int quiet;                 /* --quiet: no progress line */
     int vis_brute;             /* 1: no Gaussian-sphere hierarchy, every normal tested */
     size_t arena_bytes;        /* 0: from the file size */
     int arena_doublings;       /* without --arena: start from the estimate times 2^this */
@@ -89,8 +139,50 @@ void cli_scene_opts_default(cli_scene_opts *o);
  * error. */
 int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i);
 
-/* The help text of the scene options, for the subcommands' --help. */
-void cli_print_scene_help(FILE *f);
+/* The help text of the scene options in groups (CLI_OPT_*), for the
+ * subcommands' --help. */
+void cli_print_scene_help(FILE *f, unsigned groups);
+
+/* The Phong stages for a view: silk_phong_default, then o's material and
+ * lights. */
+void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p);
+
+/* What the alpha channel of an image shows (--bg none). */
+typedef enum cli_alpha {
+    CLI_ALPHA_NONE = 0,        /* no alpha channel */
+    CLI_ALPHA_COVERAGE,        /* 255 where the surface wrote depth or the colour is not bg_rgb */
+    CLI_ALPHA_COLOUR           /* 255 where the colour is not bg_rgb (--lines only: the surface is hidden) */
+} cli_alpha;
+
+/* The alpha the scene options ask for. */
+cli_alpha cli_alpha_for(const cli_scene_opts *o);
+
+/* Write t to path: PNG or PPM by the extension, or fmt for "-" (standard
+ * output; SILK_IMAGE_NONE means PNG); with alpha, a PNG whose alpha channel
+ * is 255 on the object and 0 elsewhere.  Returns 0 or an exit code after
+ * printing the error. */
+int cli_write_image(const silk_target *t, const char *path, silk_image_format fmt, cli_alpha alpha, uint32_t bg_rgb);
+
+/* A mesh file read whole and loaded into an arena of its own. */
+typedef struct cli_mesh {
+    const char *path;          /* as given; "-" is standard input */
+    const char *name;          /* for messages: the path, or SILK_STDIN_NAME */
+    uint8_t *file;
+    size_t file_len;
+    void *buf;
+    silk_arena arena;
+    silk_mesh mesh;
+} cli_mesh;
+
+/* Read path ("-": standard input) and load it, with the visibility
+ * hierarchy if vis, into an arena of exactly `fixed` bytes, or (fixed 0)
+ * of 16 bytes per file byte + extra + 1 MiB, times 2^doublings, doubled
+ * up to four more times while loading runs short of it.  A progress line
+ * on a terminal for large files unless quiet.  Returns 0 or an exit code
+ * after printing the error; cli_mesh_free releases everything either way. */
+int cli_mesh_load(cli_mesh *m, const char *path, const silk_load_opts *lo, int vis, size_t fixed, size_t extra,
+                  int doublings, int quiet);
+void cli_mesh_free(cli_mesh *m);
 
 /* A loaded mesh in its arena, a view of it, a target in the same arena. */
 typedef struct cli_scene {
@@ -124,8 +216,18 @@ void cli_scene_free(cli_scene *s);
  * an exit code after printing the error. */
 int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam);
 
-/* Q16.16 to double, for printing. */
+/* The orbit about the target in o's model frame (--up-axis): the direction
+ * from the target towards the eye at azimuth az (from the front towards the
+ * right) and elevation el, in degrees; the angles of a direction d; the up
+ * axis.  cli_camera places the default eye at az 30 + yaw, el 20 + pitch. */
+void cli_orbit_dir(const cli_scene_opts *o, double az_deg, double el_deg, double d[3]);
+void cli_orbit_angles(const cli_scene_opts *o, const double d[3], double *az_deg, double *el_deg);
+void cli_up_axis(const cli_scene_opts *o, double up[3]);
+
+/* Q16.16 to double, for printing; double to Q16.16, rounded to nearest
+ * (the caller checks the range). */
 double cli_fx_to_double(silk_fx v);
+silk_fx cli_fx_from_double(double v);
 
 /* The centre of the mesh's bounding box (into c) and the radius about it
  * that holds every vertex, 5% to spare; 1 for a mesh of one point. */
@@ -136,11 +238,10 @@ double cli_mesh_radius(const silk_mesh *m, double c[3]);
  * CLI_EXIT_USAGE. */
 int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path);
 
-/* The subcommands: argv[0] is the subcommand's name; they return the exit
- * status. */
-int cmd_render(int argc, char **argv);
-int cmd_info(int argc, char **argv);
-int cmd_gen(int argc, char **argv);
-int cmd_bench(int argc, char **argv);   /* tools/cmd_bench.c */
+/* s as a JSON string, quoted and escaped. */
+void cli_json_string(FILE *f, const char *s);
+
+/* The name of an input for messages: path, or SILK_STDIN_NAME for "-". */
+const char *cli_input_name(const char *path);
 
 #endif

@@ -4,24 +4,27 @@
  * the object masks (pixel != background) of the two images.  The metrics
  * (tools/mask.c) are defined in docs/measurements.md.  One line on stdout:
  *   diff A B differing=N boundary=N mean_px=X hausdorff_px=X
+ * or, with --json, one JSON object with the same values.  A and B are PNG
+ * or PPM files, told apart by their content.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
 #include "mask.h"
-#include "measure.h"
 #include "../platform/platform.h"
 #include "../platform/png_read.h"
 
 static void help(FILE *f)
 {
     fprintf(f,
-            "usage: silk diff A.png B.png [--bg RRGGBB] [-o DIFF.png]\n"
+            "usage: silk diff A.png B.png [--bg RRGGBB] [-o DIFF.png] [--json]\n"
             "\n"
-            "Compare the silhouettes of two renders of the same size.  A pixel belongs\n"
-            "to the object when it differs from the background colour; A is the\n"
+            "Compare the silhouettes of two renders of the same size (PNG or PPM; - reads\n"
+            "one from standard input).  A pixel belongs to the object when it differs from\n"
+            "the background colour (a transparent pixel counts as background); A is the\n"
             "reference.  Prints one line:\n"
             "  diff A B differing=N boundary=N mean_px=X hausdorff_px=X\n"
             "  differing     pixels that are object in one image and background in the other\n"
@@ -33,7 +36,11 @@ static void help(FILE *f)
             "  --bg RRGGBB           background colour of both images (default ffffff,\n"
             "                        the background of silk render)\n"
             "  -o, --output DIFF.png picture of the differences: both grey, only A red,\n"
-            "                        only B blue, neither white (written atomically)\n"
+            "                        only B blue, neither white (a PNG, written atomically)\n"
+            "  --json                the result as one JSON object (docs/formats.md):\n"
+            "                        {\"schema\": \"silk-diff/1\", \"a\", \"b\", \"width\", \"height\",\n"
+            "                        \"differing\", \"boundary\", \"mean_px\", \"hausdorff_px\"}, with\n"
+            "                        null for inf\n"
             "\n"
             "example (the same camera for both: the default one frames each mesh by\n"
             "its own bounding box):\n"
@@ -49,12 +56,19 @@ static void print_px(const char *name, double v)
     else printf(" %s=%.3f", name, v);
 }
 
-static int diff(const char *pa, const char *pb, uint32_t bg, const char *out)
+static void json_px(const char *name, double v, const char *end)
+{
+    if (v > 1e300) printf("\"%s\": null%s", name, end);
+    else printf("\"%s\": %.6g%s", name, v, end);
+}
+
+static int diff(const char *pa, const char *pb, uint32_t bg, const char *out, int json)
 {
     uint8_t *ra = NULL, *rb = NULL, *ma = NULL, *mb = NULL;
     int wa, ha, wb, hb, rc = 0;
     silk_error err;
-    if (silk_png_read(pa, &ra, &wa, &ha, &err) != SILK_OK || silk_png_read(pb, &rb, &wb, &hb, &err) != SILK_OK) {
+    if (silk_image_read(pa, bg, &ra, &wa, &ha, &err) != SILK_OK ||
+        silk_image_read(pb, bg, &rb, &wb, &hb, &err) != SILK_OK) {
         rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         goto done;
     }
@@ -87,10 +101,21 @@ static int diff(const char *pa, const char *pb, uint32_t bg, const char *out)
             goto done;
         }
     }
-    printf("diff %s %s differing=%llu boundary=%.0f", pa, pb, (unsigned long long)st.differing, st.length_a);
-    print_px("mean_px", st.mean_px);
-    print_px("hausdorff_px", st.hausdorff_px);
-    printf("\n");
+    if (json) {
+        printf("{\"schema\": \"silk-diff/1\", \"a\": ");
+        cli_json_string(stdout, cli_input_name(pa));
+        printf(", \"b\": ");
+        cli_json_string(stdout, cli_input_name(pb));
+        printf(", \"width\": %d, \"height\": %d, \"differing\": %llu, \"boundary\": %.0f, ", wa, ha,
+               (unsigned long long)st.differing, st.length_a);
+        json_px("mean_px", st.mean_px, ", ");
+        json_px("hausdorff_px", st.hausdorff_px, "}\n");
+    } else {
+        printf("diff %s %s differing=%llu boundary=%.0f", pa, pb, (unsigned long long)st.differing, st.length_a);
+        print_px("mean_px", st.mean_px);
+        print_px("hausdorff_px", st.hausdorff_px);
+        printf("\n");
+    }
 done:
     free(ra), free(rb), free(ma), free(mb);
     return rc;
@@ -99,7 +124,7 @@ done:
 int cmd_diff(int argc, char **argv)
 {
     const char *files[2] = { NULL, NULL }, *out = NULL;
-    int nfiles = 0, rc = 0;
+    int nfiles = 0, rc = 0, json = 0;
     uint32_t bg = 0xFFFFFF;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
@@ -108,6 +133,8 @@ int cmd_diff(int argc, char **argv)
             return 0;
         } else if (cli_is(a, "--bg")) {
             if (!(v = cli_value(argc, argv, &i)) || cli_parse_rgb("--bg", v, &bg)) rc = CLI_EXIT_USAGE;
+        } else if (strcmp(a, "--json") == 0) {
+            json = 1;
         } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (a[0] == '-' && a[1]) {
@@ -119,9 +146,13 @@ int cmd_diff(int argc, char **argv)
         }
     }
     if (!rc && nfiles < 2) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images needed (silk diff A.png B.png)");
-    if (!rc && out && silk_image_format_for_path(out) != SILK_IMAGE_PNG)
+    if (!rc && nfiles == 2 && silk_path_is_stdio(files[0]) && silk_path_is_stdio(files[1]))
+        rc = cli_fail(CLI_EXIT_USAGE, "diff: only one image can come from standard input");
+    if (!rc && out && silk_path_is_stdio(out))
+        rc = cli_fail(CLI_EXIT_USAGE, "diff: -o -: standard output carries the result; give a file name");
+    if (!rc && out && !silk_path_is_stdio(out) && silk_image_format_for_path(out) != SILK_IMAGE_PNG)
         rc = cli_fail(CLI_EXIT_USAGE, "diff: %s: the picture of the differences is a PNG (use .png)", out);
     /* A failed run leaves OUT as it was (written atomically). */
-    if (!rc) rc = diff(files[0], files[1], bg, out);
+    if (!rc) rc = diff(files[0], files[1], bg, out, json);
     return rc;
 }

@@ -2,14 +2,15 @@
  * cmd_hull.c - `silk hull FINE -o HULL.obj --triangles N [--inner]`: a
  * coarse mesh that contains the detailed one (the outer hull) or lies
  * inside it (the inner hull), by the constrained edge collapses of
- * tools/hull.c, written as OBJ.  The input is read by silk's own loader
- * (simp_load, tools/cmd_simplify.c).
+ * tools/hull.c, written as OBJ (or PLY for a .ply name).  The input is read
+ * by silk's own loader (simp_load, tools/cmd_simplify.c).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
 #include "hull.h"
 #include "../platform/platform.h"
 
@@ -18,7 +19,8 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk hull FINE -o HULL.obj --triangles N [options]\n"
             "\n"
-            "Make a coarse outer hull of the closed mesh FINE (OBJ or PLY): a mesh of N\n"
+            "Make a coarse outer hull of the closed mesh FINE (OBJ, PLY or STL; - for\n"
+            "standard input): a mesh of N\n"
             "triangles that contains every point of FINE, by edge collapses that only\n"
             "ever move the surface outward, each placed to add the least volume.  With\n"
             "--inner, the inner hull: a mesh inside FINE.  Vertices lie on silk's fixed-\n"
@@ -30,20 +32,21 @@ static void help(FILE *f)
             "It stops above N when no collapse that keeps the hull is left (a warning).\n"
             "\n"
             "options:\n"
-            "  -o, --output HULL.obj  the hull, as OBJ\n"
+            "  -o, --output HULL.obj  the hull, as OBJ (ascii PLY for a .ply name)\n"
             "  --triangles N          the triangle count to reach (at least 4)\n"
             "  --inner                the inner hull instead of the outer\n"
             "  --scale S              multiply coordinates by S while reading (as silk render)\n"
+            "  --quiet                no progress line on a terminal\n"
             "\n"
             "example:\n"
             "  silk hull bunny-fine.obj -o bunny-hull-500.obj --triangles 500\n");
 }
 
-static int hull(const char *in, const char *out, const hull_opts *ho, silk_decimal scale)
+static int hull(const char *in, const char *out, const hull_opts *ho, const simp_args *args)
 {
     simp_mesh m;
     int closed = 0, rc;
-    if ((rc = simp_load(in, scale, &m, &closed)) != 0) {
+    if ((rc = simp_load(in, args->scale, args->quiet, &m, &closed)) != 0) {
         simp_free(&m);
         return rc;
     }
@@ -69,7 +72,7 @@ static int hull(const char *in, const char *out, const hull_opts *ho, silk_decim
         char comment[1024];
         snprintf(comment, sizeof comment, "silk hull %s --triangles %u%s", in, ho->target_tris,
                  ho->inner ? " --inner" : "");
-        if ((rc = simp_write_obj(&m, fine.normal, out, comment)) == 0) {
+        if ((rc = simp_write_mesh(&m, fine.normal, out, comment)) == 0) {
             if (strcmp(out, "-") != 0)
                 printf("hull %s %s triangles=%u vertices=%u target=%u collapses=%u volume=%.6g (%+.1f%%)\n", in, out,
                        m.ntris, m.nverts, ho->target_tris, st.collapses, st.volume_out,
@@ -87,7 +90,7 @@ static int hull(const char *in, const char *out, const hull_opts *ho, silk_decim
 int cmd_hull(int argc, char **argv)
 {
     const char *in = NULL;
-    simp_args args = { NULL, -1, { 1, 0 } };
+    simp_args args = { NULL, -1, { 1, 0 }, 0 };
     hull_opts ho;
     hull_opts_default(&ho, 0);
     int rc = 0, k;
@@ -113,6 +116,6 @@ int cmd_hull(int argc, char **argv)
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "hull: --triangles N is needed");
     ho.target_tris = (uint32_t)args.target;
     /* A failed run leaves OUT as it was (written atomically). */
-    if (!rc) rc = hull(in, args.out, &ho, args.scale);
+    if (!rc) rc = hull(in, args.out, &ho, &args);
     return rc;
 }

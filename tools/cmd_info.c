@@ -4,30 +4,38 @@
  * given (or default) camera costs, from silk_frame_stats.
  *
  * Every value is one "name: value" line, so scripts can grep for them;
- * docs/memory.md explains each memory line.
+ * docs/memory.md explains each memory line.  --json prints the same values
+ * as one JSON object (docs/formats.md, "Machine-readable output").
  */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
+
+/* info renders a frame for its statistics but writes no image: the look
+ * options would change nothing. */
+#define INFO_OPTIONS (CLI_OPT_LOAD | CLI_OPT_CAMERA | CLI_OPT_FRAME | CLI_OPT_MODE)
 
 static void help(FILE *f)
 {
     fprintf(f,
-            "usage: silk info MESH [options]\n"
+            "usage: silk info MESH [--json] [options]\n"
             "\n"
             "Print MESH's counts (vertices, triangles, normals, edges, feature, boundary\n"
             "and non-manifold edges, degenerate triangles), the arena memory each part\n"
             "takes, and the per-frame counts of one frame rendered (not written) with\n"
-            "the camera and frame options below.\n"
-            "\n");
-    cli_print_scene_help(f);
+            "the camera and frame options below.  MESH - reads standard input.\n"
+            "\n"
+            "  --json               the same as one JSON object (docs/formats.md)\n");
+    cli_print_scene_help(f, INFO_OPTIONS);
     fprintf(f,
             "\n"
             "examples:\n"
             "  silk info bunny.obj\n"
-            "  silk info bunny.obj --eye 0,0,3 --size 512x512 --tolerance 1\n");
+            "  silk info bunny.obj --eye 0,0,3 --size 512x512 --tolerance 1\n"
+            "  silk info bunny.obj --json | python3 -m json.tool\n");
 }
 
 /* "name:" padded to a column, then the value. */
@@ -55,7 +63,7 @@ static void print_vec(const char *name, silk_vec3 v)
 static void print_mesh(const cli_scene *s, const cli_scene_opts *o)
 {
     const silk_mesh *m = &s->mesh;
-    line("file", "%s (%zu bytes)", o->mesh_path, s->file_len);
+    line("file", "%s (%zu bytes)", cli_input_name(o->mesh_path), s->file_len);
     line("vertices", "%u", m->nverts);
     line("triangles", "%u", m->ntris);
     line("normals", "%u", m->nnormals);
@@ -119,17 +127,77 @@ static void print_frame(const cli_scene *s, const cli_scene_opts *o, const silk_
     line("  fell back", "%s", st->fell_back ? "yes (the arena ran out; part of the frame not smoothed)" : "no");
 }
 
+/* ---- JSON ------------------------------------------------------------------------------ */
+
+static void json_vec(const char *name, silk_vec3 v, const char *end)
+{
+    printf("\"%s\": [%.17g, %.17g, %.17g]%s", name, cli_fx_to_double(v.x), cli_fx_to_double(v.y),
+           cli_fx_to_double(v.z), end);
+}
+
+static void print_json(const cli_scene *s, const cli_scene_opts *o, const silk_frame_stats *st)
+{
+    const silk_mesh *m = &s->mesh;
+    printf("{\n  \"schema\": \"silk-info/1\",\n  \"file\": ");
+    cli_json_string(stdout, cli_input_name(o->mesh_path));
+    printf(",\n  \"file_bytes\": %zu,\n", s->file_len);
+    printf("  \"mesh\": {\"vertices\": %u, \"triangles\": %u, \"normals\": %u, \"uvs\": %u, \"edges\": %u,\n"
+           "    \"feature_edges\": %u, \"boundary_edges\": %u, \"nonmanifold_edges\": %u,\n"
+           "    \"degenerate_triangles\": %u, ",
+           m->nverts, m->ntris, m->nnormals, m->nuvs, m->nedges, m->nfeature_edges, m->nboundary_edges,
+           m->nnonmanifold_edges, m->ndegenerate_tris);
+    json_vec("bbox_min", m->bbox_min, ", ");
+    json_vec("bbox_max", m->bbox_max, "},\n");
+
+    silk_mesh_bytes b;
+    silk_mesh_bytes_used(m, &b);
+    printf("  \"mesh_bytes\": {\"positions\": %zu, \"normals\": %zu, \"uvs\": %zu, \"triangles\": %zu, "
+           "\"edges\": %zu,\n    \"vertex_edges\": %zu, \"features\": %zu, \"total\": %zu, "
+           "\"visibility_hierarchy\": %zu},\n",
+           b.positions, b.normals, b.uvs, b.triangles, b.edges, b.vertex_edges, b.features, b.total,
+           silk_vis_bytes(m->vis));
+
+    const silk_arena *a = &s->arena;
+    printf("  \"arena\": {\"size\": %zu, \"after_loading\": %zu, \"persistent\": %zu, \"peak\": %zu, \"free\": %zu,\n"
+           "    \"purposes\": {",
+           a->size, s->load_bytes, a->bottom, a->peak, silk_arena_free_bytes(a));
+    for (int p = 0; p < SILK_MEM_COUNT; p++)
+        printf("%s\"%s\": {\"now\": %zu, \"peak\": %zu}", p ? ", " : "", silk_purpose_name((silk_purpose)p),
+               a->used[p], a->peak_used[p]);
+    printf("}},\n");
+
+    const silk_camera *c = &s->cam;
+    printf("  \"frame\": {\"width\": %d, \"height\": %d, \"format\": \"%s\", \"mode\": \"%s\", \"level\": %u,\n    ",
+           o->width, o->height, o->fmt == SILK_PIX_RGB565 ? "rgb565" : "rgb888", silk_mode_name(o->render.mode),
+           (unsigned)o->render.level);
+    json_vec("eye", c->eye, ", ");
+    json_vec("target", c->target, ", ");
+    json_vec("up", c->up, ",\n    ");
+    printf("\"projection\": \"%s\", \"fov\": %.17g, \"ortho_half_height\": %.17g,\n",
+           c->ortho ? "orthographic" : "perspective", cli_fx_to_double(c->fov_deg),
+           cli_fx_to_double(c->ortho_half_height));
+    printf("    \"silhouette_triangles\": %u, \"bridges\": %u, \"samples\": %u, \"moved_vertices\": %u,\n"
+           "    \"triangles_drawn\": %u, \"frame_bytes\": %zu, \"fell_back\": %s}\n}\n",
+           st->silhouette_tris, st->bridges, st->samples, st->moved_vertices, st->tris_drawn, st->frame_bytes,
+           st->fell_back ? "true" : "false");
+}
+
 int cmd_info(int argc, char **argv)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);
+    o.groups = INFO_OPTIONS;
     o.orient_note = 0;        /* the report has the line */
-    int rc = 0;
+    int rc = 0, json = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
+        }
+        if (strcmp(a, "--json") == 0) {
+            json = 1;
+            continue;
         }
         int r = cli_scene_option(&o, argc, argv, &i);
         if (r < 0) rc = CLI_EXIT_USAGE;
@@ -154,15 +222,19 @@ int cmd_info(int argc, char **argv)
         silk_status r = silk_render(&s.arena, &s.mesh, &s.view, &s.hal, &o.render, &s.target, &st, &err);
         if (r != SILK_OK) {
             cli_scene_free(&s);
-            return cli_fail(CLI_EXIT_INPUT, "%s: %s", o.mesh_path, err.msg);
+            return cli_fail(CLI_EXIT_INPUT, "%s: %s", cli_input_name(o.mesh_path), err.msg);
         }
         if (st.fell_back && !o.arena_bytes && attempt < 4) {
             cli_scene_free(&s);
             continue;
         }
-        print_mesh(&s, &o);
-        print_memory(&s);
-        print_frame(&s, &o, &st);
+        if (json) {
+            print_json(&s, &o, &st);
+        } else {
+            print_mesh(&s, &o);
+            print_memory(&s);
+            print_frame(&s, &o, &st);
+        }
         cli_scene_free(&s);
         return ferror(stdout) ? CLI_EXIT_INPUT : 0;
     }

@@ -29,9 +29,12 @@
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
 #include "../platform/platform.h"
 
 #define PACK_MAX_EYES 16
+/* pack renders nothing: mode and look options would change nothing. */
+#define PACK_OPTIONS (CLI_OPT_LOAD | CLI_OPT_CAMERA | CLI_OPT_FRAME)
 
 static void help(FILE *f)
 {
@@ -42,23 +45,26 @@ static void help(FILE *f)
             "segments, visibility hierarchy), as a C header of const arrays that a device\n"
             "renders from flash: NAME_mesh(&mesh) fills a silk_mesh pointing at them.\n"
             "The header also holds the cameras NAME_camera(k) that `silk render` would\n"
-            "use with the same options: one per --eye, N of --views, or the default view;\n"
+            "use with the same options: one per --eye (repeat it for up to %d views), N of\n"
+            "--views, or the default view;\n"
             "each camera's comment names the --eye that gives `silk render` the same view.\n"
             "\n"
-            "  -o, --output FILE    the header to write (atomically)\n"
-            "  --name NAME          prefix of every symbol (default: FILE's base name)\n"
-            "  --eye x,y,z          a camera position; repeat for several views (up to %d)\n"
+            "  -o, --output FILE    the header to write (atomically); - writes it to\n"
+            "                       standard output\n"
+            "  --name NAME          prefix of every symbol (default: FILE's base name, or\n"
+            "                       MESH's with -o -, or \"model\" when both are -)\n"
             "  --views N            N cameras around the model (1..%d): the default view\n"
             "                       turned by k*360/N degrees about the vertical through the\n"
             "                       target, odd k mirrored to look from below\n",
             PACK_MAX_EYES, PACK_MAX_EYES);
-    cli_print_scene_help(f);
+    cli_print_scene_help(f, PACK_OPTIONS);
     fprintf(f,
             "\n"
             "examples:\n"
             "  silk pack bunny-500.obj -o bunny.h\n"
             "  silk pack bunny-500.obj -o bunny.h --size 320x240 --eye 0,0,3 --eye 3,1,0\n"
-            "  silk pack knot-480.obj -o knot.h --size 320x240 --format rgb565 --views 3\n");
+            "  silk pack knot-480.obj -o knot.h --size 320x240 --format rgb565 --views 3\n"
+            "  silk gen sphere -o - | silk pack - -o - --name sphere > sphere.h\n");
 }
 
 /* ---- C text ------------------------------------------------------------------- */
@@ -328,17 +334,16 @@ static int orbit_eyes(const cli_scene_opts *o, const silk_mesh *m, int n, double
     silk_camera c0;
     int rc = cli_camera(o, m, &c0);
     if (rc) return rc;
-    const double pi = 3.14159265358979323846;
     double t[3] = { cli_fx_to_double(c0.target.x), cli_fx_to_double(c0.target.y), cli_fx_to_double(c0.target.z) };
     double d[3] = { cli_fx_to_double(c0.eye.x) - t[0], cli_fx_to_double(c0.eye.y) - t[1],
                     cli_fx_to_double(c0.eye.z) - t[2] };
     for (int k = 0; k < n; k++) {
-        double a = 2 * pi * k / n, ca = cos(a), sa = sin(a);
+        double a = 2 * CLI_PI * k / n, ca = cos(a), sa = sin(a);
         double e[3] = { t[0] + d[0] * ca + d[2] * sa, t[1] + (k % 2 ? -d[1] : d[1]), t[2] - d[0] * sa + d[2] * ca };
         for (int i = 0; i < 3; i++) {
             if (fabs(e[i]) > CLI_MAX_COORD)
                 return cli_fail(CLI_EXIT_USAGE, "pack: view %d would put the eye beyond +-%g", k, CLI_MAX_COORD);
-            eyes[k][i] = cli_fx_to_double((silk_fx)llround(e[i] * 65536.0));
+            eyes[k][i] = cli_fx_to_double(cli_fx_from_double(e[i]));
         }
     }
     return 0;
@@ -348,6 +353,7 @@ int cmd_pack(int argc, char **argv)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);
+    o.groups = PACK_OPTIONS;
     const char *out = NULL, *name_opt = NULL;
     double eyes[PACK_MAX_EYES][3];
     int neyes = 0, nviews = 0, rc = 0;
@@ -415,7 +421,9 @@ int cmd_pack(int argc, char **argv)
 
     char name[48];
     if (name_opt) snprintf(name, sizeof name, "%s", name_opt);
-    else name_from_path(out, name, sizeof name);
+    else if (!silk_path_is_stdio(out)) name_from_path(out, name, sizeof name);
+    else if (!silk_path_is_stdio(o.mesh_path)) name_from_path(o.mesh_path, name, sizeof name);
+    else snprintf(name, sizeof name, "model");
     writer w;
     memset(&w, 0, sizeof w);
     w.name = name;
@@ -424,23 +432,25 @@ int cmd_pack(int argc, char **argv)
     silk_status st = silk_outfile_open(&of, out, &err);
     if (st == SILK_OK) {
         w.fp = of.fp;
-        if (write_header(&w, o.mesh_path, &s, cams, ncams) != 0) {
+        if (write_header(&w, cli_input_name(o.mesh_path), &s, cams, ncams) != 0) {
             silk_outfile_abort(&of);
-            st = silk_fail(&err, SILK_ERR_IO, out, 0, "write failed");
+            st = silk_fail(&err, SILK_ERR_IO, of.path, 0, "write failed");
         } else {
             st = silk_outfile_commit(&of, &err);
         }
     }
     cli_scene_free(&s);
     if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    if (silk_path_is_stdio(out)) return 0;   /* stdout holds the header */
+    FILE *sf = stdout;
     size_t total = 0;
-    printf("%s: %s as %s_mesh(), %d camera%s; model data (bytes):", out, o.mesh_path, name, ncams,
-           ncams == 1 ? "" : "s");
+    fprintf(sf, "%s: %s as %s_mesh(), %d camera%s; model data (bytes):", of.path, cli_input_name(o.mesh_path), name,
+            ncams, ncams == 1 ? "" : "s");
     for (int k = 0; k < K_COUNT; k++) {
         if (!w.bytes[k]) continue;
-        printf(" %s %zu,", kind_name[k], w.bytes[k]);
+        fprintf(sf, " %s %zu,", kind_name[k], w.bytes[k]);
         total += w.bytes[k];
     }
-    printf(" total %zu\n", total);
+    fprintf(sf, " total %zu\n", total);
     return 0;
 }

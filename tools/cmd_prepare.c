@@ -14,7 +14,7 @@
 
 #include "cli.h"
 #include "fit.h"
-#include "measure.h"
+#include "commands.h"
 #include "model_file.h"
 #include "simplify.h"
 #include "surface.h"
@@ -25,11 +25,12 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk prepare FINE -o MODEL.silk --triangles N [options]\n"
             "\n"
-            "Make the detailed mesh FINE (OBJ, PLY) into a prepared model: a coarse mesh of\n"
-            "N triangles whose vertices are vertices of FINE (so they lie on its surface)\n"
-            "and whose normals are FINE's normals there, split along feature edges - the\n"
-            "mesh smooth mode draws best.  flat, smooth, pn and blend draw it; every silk\n"
-            "command that takes a mesh takes MODEL.silk.  Written atomically.  Prints:\n"
+            "Make the detailed mesh FINE (OBJ, PLY or STL; - for standard input) into a\n"
+            "prepared model: a coarse mesh of N triangles whose vertices are vertices of\n"
+            "FINE (so they lie on its surface) and whose normals are FINE's normals there,\n"
+            "split along feature edges - the mesh smooth mode draws best.  flat, smooth, pn\n"
+            "and blend draw it; every silk command that takes a mesh takes MODEL.silk.\n"
+            "Written atomically.  Prints:\n"
             "  prepare FINE MODEL triangles=N vertices=N normals=N bytes=N\n"
             "\n"
             "options:\n"
@@ -40,6 +41,7 @@ static void help(FILE *f)
             "  --fit               move each normal (up to 30 degrees) so that the curves\n"
             "                      smooth mode builds over its edges follow FINE closer\n"
             "  --scale S           multiply coordinates by S while reading (as silk render)\n"
+            "  --quiet             no progress line on a terminal\n"
             "\n"
             "example:\n"
             "  silk prepare bunny-fine.obj -o bunny.silk --triangles 500\n");
@@ -81,12 +83,12 @@ done:
     return rc;
 }
 
-static int prepare(const char *in, const char *out, const simp_opts *so, silk_decimal scale, int fit)
+static int prepare(const char *in, const char *out, const simp_opts *so, silk_decimal scale, int quiet, int fit)
 {
     simp_result r;
     fit_stats fs = { 0, 0, 0 };
     size_t bytes = 0;
-    int rc = simplify_pipeline(in, so, scale, &r);
+    int rc = simplify_pipeline(in, so, scale, quiet, "prepare", &r);
     if (rc == 0 && fit && fit_normals(&r.fine, &r.mesh, &r.normals, &fs) != 0)
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while fitting normals", in);
     if (rc == 0 && (rc = write_model(&r.mesh, &r.normals, out, &bytes)) == 0) {
@@ -103,7 +105,7 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
 int cmd_prepare(int argc, char **argv)
 {
     const char *in = NULL;
-    simp_args args = { NULL, -1, { 1, 0 } };
+    simp_args args = { NULL, -1, { 1, 0 }, 0 };
     simp_opts so;
     simp_opts_default(&so, 0);
     so.subset = 1;
@@ -133,7 +135,7 @@ int cmd_prepare(int argc, char **argv)
     if (silk_file_same(in, args.out))
         return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
     /* A failed run leaves no model at OUT (written atomically; an earlier one is removed). */
-    rc = prepare(in, args.out, &so, args.scale, fit);
+    rc = prepare(in, args.out, &so, args.scale, args.quiet, fit);
     if (rc) silk_file_remove_stale(args.out);
     return rc;
 }

@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
 
 /* The board this silk was built for (the Makefile passes them from
  * boards/$(BOARD)/board.mk). */
@@ -89,8 +90,7 @@ static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, fram
     int rc = cli_camera(o, &s->mesh, &c0);
     int views = SILK_BOARD_VIEWS;
     for (int k = 0; !rc && k < views; k++) {
-        const double pi = 3.14159265358979323846;
-        double a = 2 * pi * k / views;
+        double a = 2 * CLI_PI * k / views;
         double t[3] = { cli_fx_to_double(c0.target.x), cli_fx_to_double(c0.target.y), cli_fx_to_double(c0.target.z) };
         double d[3] = { cli_fx_to_double(c0.eye.x) - t[0], cli_fx_to_double(c0.eye.y) - t[1],
                         cli_fx_to_double(c0.eye.z) - t[2] };

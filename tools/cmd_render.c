@@ -7,7 +7,7 @@
  *
  * The output is written atomically, and when the command fails a file left
  * at OUT by an earlier run is removed, so OUT exists afterwards only if this
- * run produced it.
+ * run produced it.  MESH "-" is standard input, OUT "-" standard output.
  */
 #include <math.h>
 #include <stdio.h>
@@ -15,6 +15,8 @@
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
+#include "progress.h"
 #include "sheet.h"
 #include "../platform/platform.h"
 
@@ -25,8 +27,7 @@
 typedef struct series {
     int views;                       /* --turntable N; 1 without */
     int nmodes;                      /* 0: the one --mode of the scene options */
-    silk_mode mode[SERIES_MAX_MODES];
-    uint32_t level[SERIES_MAX_MODES];
+    cli_mode mode[SERIES_MAX_MODES];
     int sheet;
     double zoom;                     /* --zoom Z; 0 without */
 } series;
@@ -36,10 +37,12 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n"
             "\n"
-            "Render MESH (OBJ, PLY, STL or a prepared .silk model) to an image; the\n"
-            "format follows OUT's extension.\n"
+            "Render MESH (OBJ, PLY, STL or a prepared .silk model; - for standard input)\n"
+            "to an image; the format follows OUT's extension.\n"
             "\n"
-            "  -o, --output OUT     the image to write (.png or .ppm); written atomically\n"
+            "  -o, --output OUT     the image to write (.png or .ppm); written atomically;\n"
+            "                       - writes it to standard output\n"
+            "  --image-format png|ppm  the format for -o - (default png)\n"
             "  --compare            flat and smooth side by side (an image twice as wide)\n"
             "Series (docs/viewer.md):\n"
             "  --turntable N        N views around the model (1..%d), turning about the up\n"
@@ -53,13 +56,16 @@ static void help(FILE *f)
             "  --zoom Z             close-up, Z times (1..64) magnified around a point of\n"
             "                       the silhouette (the rightmost silhouette triangle)\n",
             SERIES_MAX_VIEWS);
-    cli_print_scene_help(f);
+    cli_print_scene_help(f, CLI_OPT_ALL);
     fprintf(f,
             "\n"
             "examples:\n"
             "  silk render sphere.obj -o sphere.png\n"
             "  silk render bunny.obj -o bunny.png --size 1024x768 --mode flat --wire\n"
             "  silk render torus.obj -o t.ppm --eye 0,3,3 --ortho 1.6 --format rgb565\n"
+            "  silk render bunny.obj -o bunny.png --yaw 90 --pitch 30 --color e0a040 --bg none\n"
+            "  silk render bunny.obj -o lit.png --light -1,1,1 --light point:2,0,2:ff8040\n"
+            "  silk gen sphere -o - | silk render - -o - > sphere.png\n"
             "  silk render bunny.obj --turntable 36 -o out/turn_%%03d.png\n"
             "  silk render bunny.obj --modes flat,smooth,blend,pn --sheet -o modes.png --size 320x240\n");
 }
@@ -73,7 +79,7 @@ static void blit(const silk_target *src, uint8_t *dst, size_t dst_stride, int x0
                (size_t)src->width * bpp);
 }
 
-static int render(cli_scene_opts *o, const char *out, int compare)
+static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt, int compare)
 {
     /* Without --arena: when the frame ran out of scratch and fell back to
      * unsmoothed triangles, double the arena and render again. */
@@ -97,7 +103,7 @@ static int render(cli_scene_opts *o, const char *out, int compare)
             if (st != SILK_OK) {
                 free(wide);
                 cli_scene_free(&s);
-                return cli_fail(CLI_EXIT_INPUT, "%s: %s", o->mesh_path, err.msg);
+                return cli_fail(CLI_EXIT_INPUT, "%s: %s", cli_input_name(o->mesh_path), err.msg);
             }
             fell_back |= stats.fell_back;
             if (compare) {
@@ -121,10 +127,10 @@ static int render(cli_scene_opts *o, const char *out, int compare)
             image.depth = NULL;
             image.writes = NULL;
         }
-        silk_status st = silk_image_write(&image, out, &err);
+        int wrc = cli_write_image(&image, out, out_fmt, cli_alpha_for(o), o->render.bg_rgb);
         free(wide);
         cli_scene_free(&s);
-        if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+        if (wrc) return wrc;
         if (fell_back)
             fprintf(stderr, "silk: warning: the arena ran out during the frame; part of it is not smoothed\n");
         return 0;
@@ -168,16 +174,16 @@ static int zoom_camera(const cli_scene *s, double zoom, silk_camera *cam)
         if (best != SILK_FX_MIN) break;
     }
     if (cam->ortho) {
-        cam->ortho_half_height = (silk_fx)lround(cli_fx_to_double(cam->ortho_half_height) / zoom * 65536);
+        cam->ortho_half_height = cli_fx_from_double(cli_fx_to_double(cam->ortho_half_height) / zoom);
         if (cam->ortho_half_height < SILK_ZNEAR_MIN)
             return cli_fail(CLI_EXIT_USAGE, "--zoom %g: the view would be smaller than 1/1024 model units", zoom);
     } else {
-        const double deg = 3.14159265358979323846 / 180;
+        const double deg = CLI_DEG;
         double fov = 2 * atan(tan(cli_fx_to_double(cam->fov_deg) * deg / 2) / zoom) / deg;
         if (fov < cli_fx_to_double(SILK_FOV_MIN))
             return cli_fail(CLI_EXIT_USAGE, "--zoom %g: the field of view would be %.2f degrees (at least %g)", zoom, fov,
                             cli_fx_to_double(SILK_FOV_MIN));
-        cam->fov_deg = (silk_fx)lround(fov * 65536);
+        cam->fov_deg = cli_fx_from_double(fov);
     }
     return 0;
 }
@@ -198,12 +204,13 @@ static int series_view(const cli_scene_opts *o, const cli_scene *s, const series
             u[i] /= ul;
             d[i] = e[i] - t[i];
         }
-        double a = 2 * 3.14159265358979323846 * k / se->views, c = cos(a), sn = sin(a);
+        double a = 2 * CLI_PI * k / se->views, c = cos(a), sn = sin(a);
         double ud = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
         double x[3] = { u[1] * d[2] - u[2] * d[1], u[2] * d[0] - u[0] * d[2], u[0] * d[1] - u[1] * d[0] };
         for (int i = 0; i < 3; i++) r[i] = d[i] * c + x[i] * sn + u[i] * ud * (1 - c);
         cli_scene_opts turned = *o;
         turned.have_eye = turned.have_target = turned.have_up = 1;
+        turned.yaw = turned.pitch = 0;   /* the first view has them */
         for (int i = 0; i < 3; i++) {
             turned.eye[i] = t[i] + r[i];
             turned.target[i] = t[i];
@@ -245,8 +252,8 @@ static void cell_label(const series *se, const silk_render_opts *ro, const silk_
 
 static void sheet_title(const cli_scene_opts *o, const series *se, char *buf, size_t n)
 {
-    const char *base = strrchr(o->mesh_path, '/');
-    base = base ? base + 1 : o->mesh_path;
+    const char *name = cli_input_name(o->mesh_path), *base = strrchr(name, '/');
+    base = base ? base + 1 : name;
     snprintf(buf, n, "%s  %dx%d %s, tol %g px%s", base, o->width, o->height, o->ortho ? "ortho" : "perspective",
              cli_fx_to_double(o->render.tolerance_px), o->render.wire ? ", wireframe" : "");
     if (se->zoom > 1) snprintf(buf + strlen(buf), n - strlen(buf), ", close-up x%g", se->zoom);
@@ -254,8 +261,8 @@ static void sheet_title(const cli_scene_opts *o, const series *se, char *buf, si
 
 /* Render every view and mode of the series from the loaded scene s: into
  * one sheet, or each frame into its own file (*written counts them). */
-static int series_frames(const cli_scene_opts *o, const char *out, const series *se, cli_scene *s, int *fell_back,
-                         int *written)
+static int series_frames(const cli_scene_opts *o, const char *out, silk_image_format out_fmt, const series *se,
+                         cli_scene *s, int *fell_back, int *written)
 {
     int nmodes = se->nmodes ? se->nmodes : 1, cols, rows, rc = 0;
     if (nmodes > 1) {
@@ -275,23 +282,26 @@ static int series_frames(const cli_scene_opts *o, const char *out, const series 
             return CLI_EXIT_INPUT;
         }
     }
+    progress pr;
+    progress_start(&pr, o->quiet, "render");
     for (int k = 0; k < se->views && !rc; k++) {
+        progress_update(&pr, k, se->views);
         silk_view view;
         if ((rc = series_view(o, s, se, k, &view)) != 0) break;
         silk_phong phong;
         silk_hal hal;
-        silk_phong_default(&phong, &view);
+        cli_phong(o, &view, &phong);
         silk_hal_phong(&hal, &phong);
         for (int m = 0; m < nmodes && !rc; m++) {
             silk_render_opts ro = o->render;
             if (se->nmodes) {
-                ro.mode = se->mode[m];
-                if (se->level[m]) ro.level = se->level[m];
+                ro.mode = se->mode[m].mode;
+                if (se->mode[m].level) ro.level = se->mode[m].level;
             }
             silk_error err;
             silk_frame_stats st;
             if (silk_render(&s->arena, &s->mesh, &view, &hal, &ro, &s->target, &st, &err) != SILK_OK) {
-                rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", o->mesh_path, err.msg);
+                rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", cli_input_name(o->mesh_path), err.msg);
                 break;
             }
             *fell_back |= st.fell_back;
@@ -308,29 +318,28 @@ static int series_frames(const cli_scene_opts *o, const char *out, const series 
                 rc = cli_fail(CLI_EXIT_USAGE, "render: output name too long: %s", out);
                 break;
             }
-            if (silk_image_write(&s->target, se->views > 1 ? path : out, &err) != SILK_OK) {
-                rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+            if ((rc = cli_write_image(&s->target, se->views > 1 ? path : out, out_fmt, cli_alpha_for(o),
+                                      o->render.bg_rgb)) != 0)
                 break;
-            }
             ++*written;
         }
     }
+    progress_end(&pr);
     if (se->sheet && !rc) {
-        silk_error err;
-        if (sheet_write(&sh, out, &err) != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+        rc = cli_write_image(&sh.img, out, out_fmt, CLI_ALPHA_NONE, 0);
     }
     sheet_free(&sh);
     return rc;
 }
 
-static int render_series(cli_scene_opts *o, const char *out, const series *se)
+static int render_series(cli_scene_opts *o, const char *out, silk_image_format out_fmt, const series *se)
 {
     for (int attempt = 0;; attempt++) {
         cli_scene s;
         o->arena_doublings = attempt;
         int rc = cli_scene_load(&s, o);
         int fell_back = 0, written = 0;
-        if (!rc) rc = series_frames(o, out, se, &s, &fell_back, &written);
+        if (!rc) rc = series_frames(o, out, out_fmt, se, &s, &fell_back, &written);
         cli_scene_free(&s);
         /* As in render(): a frame that ran out of scratch means a larger
          * arena and the whole series again. */
@@ -346,36 +355,13 @@ static int render_series(cli_scene_opts *o, const char *out, const series *se)
     }
 }
 
-/* --modes LIST: comma-separated mode names (sheet.h). */
-static int parse_modes(const char *list, series *se)
-{
-    const char *p = list;
-    se->nmodes = 0;
-    for (;;) {
-        size_t len = strcspn(p, ",");
-        char name[16];
-        if (len == 0 || len >= sizeof name) goto bad;
-        memcpy(name, p, len);
-        name[len] = 0;
-        if (se->nmodes == SERIES_MAX_MODES)
-            return cli_fail(-1, "--modes: at most %d modes (got \"%s\")", SERIES_MAX_MODES, list);
-        se->level[se->nmodes] = 0;
-        if (sheet_parse_mode(name, &se->mode[se->nmodes], &se->level[se->nmodes])) goto bad;
-        se->nmodes++;
-        if (!p[len]) return 0;
-        p += len + 1;
-    }
-bad:
-    return cli_fail(-1, "--modes must list flat, smooth, blend, pn or pnL (L 1..%u) separated by commas (got \"%s\")",
-                    SILK_PN_MAX_LEVEL, list);
-}
-
 int cmd_render(int argc, char **argv)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);
     const char *out = NULL;
     int compare = 0, rc = 0, use_series = 0;
+    silk_image_format out_fmt = SILK_IMAGE_NONE;
     series se;
     memset(&se, 0, sizeof se);
     se.views = 1;
@@ -390,6 +376,12 @@ int cmd_render(int argc, char **argv)
         if (r != 0) continue;
         if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--image-format")) {
+            const char *v = cli_value(argc, argv, &i);
+            if (!v) rc = CLI_EXIT_USAGE;
+            else if (strcmp(v, "png") == 0) out_fmt = SILK_IMAGE_PNG;
+            else if (strcmp(v, "ppm") == 0) out_fmt = SILK_IMAGE_PPM;
+            else rc = cli_fail(CLI_EXIT_USAGE, "--image-format must be png or ppm (got \"%s\")", v);
         } else if (strcmp(a, "--compare") == 0) {
             compare = 1;
         } else if (cli_is(a, "--turntable")) {
@@ -400,7 +392,7 @@ int cmd_render(int argc, char **argv)
             use_series = 1;
         } else if (cli_is(a, "--modes")) {
             const char *v = cli_value(argc, argv, &i);
-            if (!v || parse_modes(v, &se)) rc = CLI_EXIT_USAGE;
+            if (!v || cli_parse_modes("--modes", v, se.mode, SERIES_MAX_MODES, &se.nmodes)) rc = CLI_EXIT_USAGE;
             use_series = 1;
         } else if (strcmp(a, "--sheet") == 0) {
             se.sheet = use_series = 1;
@@ -414,8 +406,14 @@ int cmd_render(int argc, char **argv)
     }
     if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "render: no mesh given (silk render MESH -o OUT.png)");
     if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "render: no output given (-o OUT.png or OUT.ppm)");
-    if (!rc && silk_image_format_for_path(out) == SILK_IMAGE_NONE)
+    if (!rc && !silk_path_is_stdio(out) && silk_image_format_for_path(out) == SILK_IMAGE_NONE)
         rc = cli_fail(CLI_EXIT_USAGE, "render: %s: unknown image format (use .png or .ppm)", out);
+    if (!rc && out_fmt && !silk_path_is_stdio(out) && out_fmt != silk_image_format_for_path(out))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --image-format is for -o - (%s names its format)", out);
+    if (!rc && o.bg_none && (compare || se.sheet))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --bg none is for single frames (not --compare or --sheet)");
+    if (!rc && silk_path_is_stdio(out) && se.views > 1 && !se.sheet)
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --turntable writes one file per view; -o - needs --sheet");
     if (!rc && use_series) {
         if (compare)
             rc = cli_fail(CLI_EXIT_USAGE, "render: --compare is flat|smooth in one image; for a series use --modes flat,smooth --sheet");
@@ -427,6 +425,6 @@ int cmd_render(int argc, char **argv)
     }
     /* A failed run leaves OUT as it was: images are written atomically, and
      * an earlier run's image stays. */
-    if (!rc) rc = use_series ? render_series(&o, out, &se) : render(&o, out, compare);
+    if (!rc) rc = use_series ? render_series(&o, out, out_fmt, &se) : render(&o, out, out_fmt, compare);
     return rc;
 }

@@ -17,13 +17,13 @@
 #include <string.h>
 #include <time.h>
 
+#include "commands.h"
 #include "viewer.h"
 #include "font.h"
 #include "sheet.h"
 #include "../platform/platform.h"
 
-#define PI 3.14159265358979323846
-#define DEG (PI / 180)
+#define DEG CLI_DEG
 
 #define HUD_BG    0x202020u
 #define HUD_TEXT  0xF0F0F0u
@@ -61,7 +61,9 @@ static int update_camera(viewer *v)
     cli_scene_opts o = v->o;
     o.width = v->w;
     o.height = v->h;
-    double d[3] = { cos(v->el * DEG) * sin(v->az * DEG), sin(v->el * DEG), cos(v->el * DEG) * cos(v->az * DEG) };
+    double d[3], up[3];
+    cli_orbit_dir(&o, v->az, v->el, d);
+    cli_up_axis(&o, up);
     /* Orthographic: the view is as high as the perspective view at the
      * target, and the eye steps back out of the model. */
     double half = v->dist * tan(o.fov * DEG / 2), back = v->dist;
@@ -72,10 +74,11 @@ static int update_camera(viewer *v)
         if (back < need) back = need;
     }
     o.have_eye = o.have_target = o.have_up = 1;
+    o.yaw = o.pitch = 0;   /* the orbit state took them in */
     for (int k = 0; k < 3; k++) {
         o.target[k] = v->target[k];
         o.eye[k] = v->target[k] + d[k] * back;
-        o.up[k] = k == 1;
+        o.up[k] = up[k];
     }
     o.ortho = v->ortho;
     o.ortho_auto = 0;
@@ -85,7 +88,7 @@ static int update_camera(viewer *v)
     if (rc) return rc;
     silk_error err;
     if (silk_view_init(&v->view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "view: %s", err.msg);
-    silk_phong_default(&v->phong, &v->view);
+    cli_phong(&v->o, &v->view, &v->phong);
     silk_hal_phong(&v->hal, &v->phong);
     return 0;
 }
@@ -163,8 +166,7 @@ int viewer_open(viewer *v, const cli_scene_opts *o, const char *shot_pattern)
     memcpy(v->target, t, sizeof t);
     v->dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(v->dist > 0)) v->dist = 3 * v->radius;
-    v->el = asin(clampd(d[1] / v->dist, -1, 1)) / DEG;
-    v->az = atan2(d[0], d[2]) / DEG;
+    cli_orbit_angles(o, d, &v->az, &v->el);
     if (o->ortho) v->dist = cli_fx_to_double(cam.ortho_half_height) / tan(o->fov * DEG / 2);
     clamp_orbit(v);
     memcpy(v->home, v->target, sizeof v->target);
@@ -470,7 +472,8 @@ static void help(FILE *f)
             "usage: silk view MESH [options]            a window (SDL2)%s\n"
             "       silk view MESH --benchmark N        no window: time N frames\n"
             "       silk view MESH --events \"KEYS...\"   no window: apply events, save screenshots\n"
-            "       silk view MESH --fb DEVICE          a Linux framebuffer (silk view --fb DEV --help)\n"
+            "       silk view MESH --fb DEVICE          a Linux framebuffer (silk view --fb DEV --help),\n"
+            "       silk view MESH --fb-file PATH ...   or a file standing in for one\n"
             "\n"
             "Show MESH in a window and turn it with the mouse.  The status line at the\n"
             "bottom shows the mode, the frame time, the triangles drawn and on the\n"
@@ -499,8 +502,6 @@ static void help(FILE *f)
             "options:\n"
             "  -o, --output PATTERN  screenshot names; a %%d in it counts them\n"
             "                       (default silk-view-%%03d.png)\n"
-            "  --mode flat|smooth|blend|pn|pnL  the first mode (pnL: PN level L)\n"
-            "  --level L            PN level (1..%u)\n"
             "  --spin               start spinning\n"
             "  --frames N           quit after N frames, saving the last as a screenshot\n"
             "  --benchmark N        no window: render N frames, each turned 360/N degrees,\n"
@@ -510,12 +511,12 @@ static void help(FILE *f)
             "                       keys as above (space left right up down plus minus by\n"
             "                       name), drag:DX,DY  pan:DX,DY  wheel:N  size:WxH  shot:PATH\n",
 #ifdef SILK_HAVE_SDL2
-            "",
+            ""
 #else
-            " - not in this build (no SDL2)",
+            " - not in this build (no SDL2)"
 #endif
-            SILK_PN_MAX_LEVEL);
-    cli_print_scene_help(f);
+    );
+    cli_print_scene_help(f, CLI_OPT_ALL);
     fprintf(f,
             "\n"
             "examples:\n"
@@ -526,7 +527,7 @@ static void help(FILE *f)
             "docs/viewer.md has more.\n");
 }
 
-/* Does the command line ask for a framebuffer (tools/cmd_fbview.c)? */
+/* Does the command line ask for a framebuffer (tools/view_fb.c)? */
 static int wants_framebuffer(int argc, char **argv)
 {
     int headless = 0;
@@ -543,29 +544,19 @@ static int wants_framebuffer(int argc, char **argv)
 #endif
 }
 
-int cmd_view_desktop(int argc, char **argv)
+int cmd_view(int argc, char **argv)
 {
-    if (wants_framebuffer(argc, argv)) return -1;
+    if (wants_framebuffer(argc, argv)) return view_fb(argc, argv);
     cli_scene_opts o;
     cli_scene_opts_default(&o);
     const char *pattern = "silk-view-%03d.png", *events = NULL;
-    long frames = 0, bench = 0, level = 0;
-    int rc = 0, spin = 0, have_mode = 0;
-    silk_mode mode = SILK_MODE_SMOOTH;
-    uint32_t mode_level = 0;
+    long frames = 0, bench = 0;
+    int rc = 0, spin = 0;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *val;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             return 0;
-        }
-        /* --mode before the scene options: the viewer knows every mode. */
-        if (cli_is(a, "--mode")) {
-            if (!(val = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (sheet_parse_mode(val, &mode, &mode_level))
-                rc = cli_fail(CLI_EXIT_USAGE, "--mode must be flat, smooth, blend, pn or pnL (got \"%s\")", val);
-            have_mode = 1;
-            continue;
         }
         int r = cli_scene_option(&o, argc, argv, &i);
         if (r < 0) rc = CLI_EXIT_USAGE;
@@ -576,9 +567,6 @@ int cmd_view_desktop(int argc, char **argv)
                 rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: at most one %%d (and %%%% for a percent sign)", pattern);
             else if (silk_image_format_for_path(pattern) == SILK_IMAGE_NONE)
                 rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: unknown image format (use .png or .ppm)", pattern);
-        } else if (cli_is(a, "--level")) {
-            if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--level", val, 1, SILK_PN_MAX_LEVEL, &level))
-                rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--spin") == 0) {
             spin = 1;
         } else if (cli_is(a, "--frames")) {
@@ -595,15 +583,13 @@ int cmd_view_desktop(int argc, char **argv)
     }
     if (rc) return rc;
     if (!o.mesh_path) return cli_fail(CLI_EXIT_USAGE, "view: no mesh given (silk view MESH)");
+    if (o.bg_none) return cli_fail(CLI_EXIT_USAGE, "view: --bg none is for images (silk render); give a colour");
     if (bench && events) return cli_fail(CLI_EXIT_USAGE, "view: --benchmark or --events, not both");
 #ifndef SILK_HAVE_SDL2
     if (!bench && !events)
         return cli_fail(CLI_EXIT_USAGE, "view: this silk was built without SDL2, so it has no window; use --fb DEVICE, "
                         "--benchmark N or --events (install libsdl2-dev and rebuild for the window)");
 #endif
-    if (have_mode) o.render.mode = mode;
-    if (mode_level) o.render.level = mode_level;
-    if (level) o.render.level = (uint32_t)level;
 
     viewer *v = malloc(sizeof *v);
     if (!v) return cli_fail(CLI_EXIT_INPUT, "view: out of memory");
@@ -620,7 +606,7 @@ int cmd_view_desktop(int argc, char **argv)
 }
 
 #ifndef SILK_HAVE_SDL2
-/* Without SDL2 there is no window; cmd_view_desktop never gets here. */
+/* Without SDL2 there is no window; cmd_view never gets here. */
 int viewer_run_sdl(viewer *v, long frames)
 {
     (void)v;

@@ -14,10 +14,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli.h"
 #include "gen.h"
 
-static const double PI = 3.14159265358979323846264338327950;
-static const double TAU = 6.28318530717958647692528676655901;
+static const double PI = CLI_PI;
+static const double TAU = 2 * CLI_PI;
 
 static const char *const shape_names[GEN_SHAPE_COUNT] = { "sphere", "torus", "cone", "cylinder", "knot" };
 

@@ -85,11 +85,6 @@ void sheet_put(sheet *s, int col, int row, const silk_target *frame, const char 
     }
 }
 
-silk_status sheet_write(const sheet *s, const char *path, silk_error *err)
-{
-    return silk_image_write(&s->img, path, err);
-}
-
 void sheet_free(sheet *s)
 {
     free(s->img.color);
@@ -161,27 +156,5 @@ int pattern_path(const char *pattern, long k, char *buf, size_t n)
         o += len;
     }
     buf[o] = 0;
-    return 0;
-}
-
-/* ---- render modes by name ------------------------------------------------------- */
-
-int sheet_parse_mode(const char *name, silk_mode *mode, uint32_t *level)
-{
-    static const silk_mode all[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN };
-    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
-        if (strcmp(name, silk_mode_name(all[i])) == 0) {
-            *mode = all[i];
-            return 0;
-        }
-    if (strncmp(name, "pn", 2) != 0 || name[2] < '1' || name[2] > '9') return -1;
-    unsigned long l = 0;
-    for (const char *p = name + 2; *p; p++) {
-        if (*p < '0' || *p > '9') return -1;
-        l = l * 10 + (unsigned long)(*p - '0');
-        if (l > SILK_PN_MAX_LEVEL) return -1;
-    }
-    *mode = SILK_MODE_PN;
-    *level = (uint32_t)l;
     return 0;
 }

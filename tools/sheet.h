@@ -36,9 +36,6 @@ int sheet_init(sheet *s, int cols, int rows, int cell_w, int cell_h, const char 
  * separated by '\n', each cut to the cell's width. */
 void sheet_put(sheet *s, int col, int row, const silk_target *frame, const char *label);
 
-/* Write the sheet atomically; PNG or PPM by the extension. */
-silk_status sheet_write(const sheet *s, const char *path, silk_error *err);
-
 void sheet_free(sheet *s);
 
 /* ---- numbered file names ------------------------------------------------------
@@ -51,13 +48,5 @@ void sheet_free(sheet *s);
  * does not fit n bytes (or the pattern is bad). */
 int pattern_check(const char *pattern);
 int pattern_path(const char *pattern, long k, char *buf, size_t n);
-
-/* ---- render modes by name ------------------------------------------------------
- *
- * silk_mode_name's "flat", "smooth", "blend", "pn" (PN triangles at the
- * default level), and "pnL" (level L, 1..SILK_PN_MAX_LEVEL), as in
- * `--modes flat,smooth,blend,pn3`.  sheet_parse_mode returns 0, or -1 for
- * an unknown name; *level is left alone unless the name gives one. */
-int sheet_parse_mode(const char *name, silk_mode *mode, uint32_t *level);
 
 #endif

@@ -1,20 +1,15 @@
 /*
  * silk.c - the `silk` command: main and the dispatch to its subcommands
- * (render, info, gen, view, bench, diff, simplify, hull, pack, profile, help),
+ * (render, info, gen, view, bench, diff, prepare, simplify, hull, pack,
+ * profile, help),
  * each in its own cmd_*.c file.
  */
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+#include "commands.h"
 #include "man.h"
-#include "measure.h"
-
-/* Small devices: tools/cmd_pack.c, cmd_profile.c, cmd_fbview.c. */
-int cmd_pack(int argc, char **argv);
-int cmd_view(int argc, char **argv);
-int cmd_profile(int argc, char **argv);
-int cmd_hull(int argc, char **argv);   /* tools/cmd_hull.c */
 
 typedef struct command {
     const char *name;
@@ -23,7 +18,7 @@ typedef struct command {
 } command;
 
 static const command commands[] = {
-    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY, .silk) to PNG or PPM" },
+    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY, STL, .silk) to PNG or PPM" },
     { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
     { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility" },

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli.h"
 #include "simplify.h"
 #include "vec3.h"
 
@@ -26,6 +27,8 @@ void simp_opts_default(simp_opts *o, uint32_t target_tris)
     o->crease_deg = 60;
     o->feature_weight = 100;
     o->subset = 0;
+    o->progress = NULL;
+    o->progress_user = NULL;
 }
 
 void simp_free(simp_mesh *m)
@@ -389,7 +392,7 @@ static int collapse(state *s, const cand *c)
 /* Face quadrics, then constraint planes along boundary and crease edges. */
 static int init_quadrics(state *s)
 {
-    double cos_crease = cos(s->o->crease_deg * 3.14159265358979323846 / 180);
+    double cos_crease = cos(s->o->crease_deg * CLI_DEG);
     for (uint32_t f = 0; f < s->nt; f++) {
         const uint32_t *t = &s->tri[3 * f];
         double n[3];
@@ -495,6 +498,7 @@ static int run(state *s)
         }
         if (collapse(s, &c)) return -1;
         since_retry++;
+        if (s->o->progress) s->o->progress(s->o->progress_user, s->nt, s->alive_tris);
     }
     return 0;
 }

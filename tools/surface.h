@@ -45,10 +45,12 @@ typedef struct simp_result {
     simp_stats stats;
 } simp_result;
 
-/* Load IN, simplify it by so, check that a closed manifold stays one and,
- * with subset placement, take the detailed surface's normals.  0, or the
- * exit status after a one-line error; r is to be freed either way. */
-int simplify_pipeline(const char *in, const simp_opts *so, silk_decimal scale, simp_result *r);
+/* Load IN, simplify it by so (a progress line named what unless quiet),
+ * check that a closed manifold stays one and, with subset placement, take
+ * the detailed surface's normals.  0, or the exit status after a one-line
+ * error; r is to be freed either way. */
+int simplify_pipeline(const char *in, const simp_opts *so, silk_decimal scale, int quiet, const char *what,
+                      simp_result *r);
 void simp_result_free(simp_result *r);
 /* The warning when the target was not reached (every further collapse
  * would break the surface). */

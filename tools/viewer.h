@@ -87,9 +87,4 @@ void viewer_status(const viewer *v, char *buf, size_t n);
  * quit after that many frames, saving the last one as a screenshot. */
 int viewer_run_sdl(viewer *v, long frames);
 
-/* `silk view` without --fb / --fb-file (called by cmd_view in
- * tools/cmd_fbview.c): the window, --benchmark or --events.  Returns -1
- * when the arguments ask for a framebuffer, else the exit status. */
-int cmd_view_desktop(int argc, char **argv);
-
 #endif

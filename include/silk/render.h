@@ -80,6 +80,11 @@ typedef struct silk_render_opts {
 void silk_render_opts_default(silk_render_opts *o);
 /* "flat", "smooth", "pn", "blend"; "?" for anything else. */
 const char *silk_mode_name(silk_mode mode);
+/* The inverse (src/mode.c): a name silk_mode_name returns, or "pnL" for PN
+ * triangles at level L (1..SILK_PN_MAX_LEVEL, no leading zero).  Sets *mode
+ * and *level (0 when the name gives none) and returns 0, or returns -1 and
+ * leaves both alone. */
+int silk_mode_parse(const char *name, silk_mode *mode, uint32_t *level);
 
 typedef struct silk_frame_stats {
     uint32_t silhouette_tris, bridges, samples, tris_drawn, moved_vertices;

@@ -96,10 +96,25 @@ int tf_run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx 
     memset(st, 0, sizeof *st);
     f->a = a; f->m = m; f->v = v; f->tol = tol; f->vis = SILK_VIS_BRUTE;
     if (silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK) return 0;
-    if (!silk_perturb_alloc(f) || !silk_remesh_alloc(f, g)) return 0;
+    if (!silk_perturb_alloc(f)) return 0;
     silk_perturb(f);
-    silk_remesh_emit(f, g, st);
+    if (!silk_remesh_store(f, g)) return 0;
+    silk_remesh_stats(f, st);
     return 1;
+}
+
+silk_sil_seg *tf_segs(const silk_sil_frame *f)
+{
+    silk_sil_seg *s = f->nsegs ? malloc(f->nsegs * sizeof *s) : NULL;
+    uint32_t n = 0;
+    for (uint32_t t = 0; s && t < f->m->ntris && n < f->nsegs; t++)
+        if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &s[n])) n++;
+    return s;
+}
+
+uint32_t tf_side_rec(const silk_sil_frame *f, const silk_frame_geom *g, uint32_t t, uint32_t k)
+{
+    return silk_remesh_corner_rec(f, t, k, g->part_rec[t]) + 1;
 }
 
 /* Six bit patterns: a directed edge (two positions), or a position and its normal. */

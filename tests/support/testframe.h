@@ -47,6 +47,12 @@ silk_status tf_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *
 /* The stages exactly as silk_frame_smooth runs them when memory suffices
  * (brute-force visibility), keeping the internal frame for inspection.
  * Returns 0 when a stage fails. */
+/* The silhouette segments of plan f in triangle order (f->nsegs of them,
+ * silk_remesh_seg), malloc'd; NULL when there are none. */
+silk_sil_seg *tf_segs(const silk_sil_frame *f);
+/* The first record of side k's chain of triangle t in a stored frame g. */
+uint32_t tf_side_rec(const silk_sil_frame *f, const silk_frame_geom *g, uint32_t t, uint32_t k);
+
 int tf_run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol, silk_sil_frame *f,
                  silk_frame_geom *g, silk_frame_stats *st);
 

@@ -1,14 +1,14 @@
 /*
- * cmd_fbview.c - `silk view MESH --fb /dev/fb0`: the model turning on a
+ * view_fb.c - `silk view MESH --fb /dev/fb0`: the model turning on a
  * Linux framebuffer until Ctrl-C, rendered in bands straight into the
  * screen memory (silk_render_bands() with the platform/fb.h sink), as a
  * device without a second frame buffer would.
  *
  * `--fb-file PATH --fb-geometry WxHxBPP` does the same into a file-backed
  * framebuffer (the same code apart from the ioctls): how the tests and a
- * headless machine use it.  `view` is one subcommand for every display: it
- * dispatches on --fb / --fb-file here, and a desktop (SDL) viewer takes the
- * case where neither is given.
+ * headless machine use it.  `view` is one subcommand for every display:
+ * cmd_view (tools/cmd_view.c) hands --fb / --fb-file here and keeps the
+ * window (SDL) for itself.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -20,6 +20,7 @@
 #include <time.h>
 
 #include "cli.h"
+#include "commands.h"
 #include "viewer.h"
 #include "../platform/fb.h"
 
@@ -64,7 +65,7 @@ static void help(FILE *f)
             "", "", "",
 #endif
             VIEW_DEFAULT_SPIN, SILK_BOARD_BAND_ROWS);
-    cli_print_scene_help(f);
+    cli_print_scene_help(f, CLI_OPT_ALL);
     fprintf(f,
             "\n"
             "examples:\n"
@@ -105,19 +106,13 @@ typedef struct view_opts {
     int have_size, have_format;
 } view_opts;
 
-/* The default eye, turned by deg about the vertical through the target. */
-static int turn_camera(cli_scene_opts *o, const silk_mesh *m, const silk_camera *c0, double deg,
-                       silk_camera *cam)
+/* The camera turned by deg about the up axis through the target: the
+ * scene's --yaw plus deg (cli_camera), so --eye, --pitch and --up-axis hold. */
+static int turn_camera(const cli_scene_opts *o, const silk_mesh *m, double deg, silk_camera *cam)
 {
-    double a = deg * 3.14159265358979323846 / 180, ca = cos(a), sa = sin(a);
-    double t[3] = { cli_fx_to_double(c0->target.x), cli_fx_to_double(c0->target.y), cli_fx_to_double(c0->target.z) };
-    double d[3] = { cli_fx_to_double(c0->eye.x) - t[0], cli_fx_to_double(c0->eye.y) - t[1],
-                    cli_fx_to_double(c0->eye.z) - t[2] };
-    o->eye[0] = t[0] + d[0] * ca + d[2] * sa;
-    o->eye[1] = t[1] + d[1];
-    o->eye[2] = t[2] - d[0] * sa + d[2] * ca;
-    o->have_eye = 1;
-    return cli_camera(o, m, cam);
+    cli_scene_opts t = *o;
+    t.yaw = fmod(o->yaw + deg, 360);
+    return cli_camera(&t, m, cam);
 }
 
 static double now_ms(void)
@@ -156,8 +151,6 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
     uint8_t *color = rc ? NULL : malloc(px * silk_pixfmt_bytes(o->fmt));
     uint32_t *depth = rc ? NULL : malloc(px * sizeof *depth);
     if (!rc && (!color || !depth)) rc = cli_fail(CLI_EXIT_INPUT, "out of memory for a band of %d rows", rows);
-    silk_camera c0;
-    if (!rc) rc = cli_camera(o, &s.mesh, &c0);
 
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -174,13 +167,13 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
     for (; !rc && !stop_requested && (v->frames == 0 || frames < v->frames); frames++) {
         silk_camera cam;
         silk_view view;
-        rc = turn_camera(o, &s.mesh, &c0, (double)frames * v->spin, &cam);
+        rc = turn_camera(o, &s.mesh, (double)frames * v->spin, &cam);
         if (rc) break;
         if (silk_view_init(&view, &cam, &err) != SILK_OK) {
             rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
             break;
         }
-        silk_phong_default(&s.phong, &view);
+        cli_phong(o, &view, &s.phong);
         silk_hal_phong(&s.hal, &s.phong);
         silk_frame_stats fs;
         if (silk_render_bands(&s.arena, &s.mesh, &view, &s.hal, &o->render, &band, &sink, &fs, &err) != SILK_OK)
@@ -197,11 +190,8 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
     return rc;
 }
 
-int cmd_view(int argc, char **argv)
+int view_fb(int argc, char **argv)
 {
-    /* Without --fb / --fb-file: the window (tools/cmd_view.c). */
-    int desktop = cmd_view_desktop(argc, argv);
-    if (desktop >= 0) return desktop;
     cli_scene_opts o;
     cli_scene_opts_default(&o);
     view_opts v;
@@ -243,6 +233,7 @@ int cmd_view(int argc, char **argv)
     }
     if (rc) return rc;
     if (!o.mesh_path) return cli_fail(CLI_EXIT_USAGE, "view: no mesh given (silk view MESH --fb /dev/fb0)");
+    if (o.bg_none) return cli_fail(CLI_EXIT_USAGE, "view: --bg none is for images (silk render); give a colour");
     if (v.fb_dev && v.fb_file) return cli_fail(CLI_EXIT_USAGE, "view: give --fb or --fb-file, not both");
     if (v.fb_file && !v.have_geo)
         return cli_fail(CLI_EXIT_USAGE, "view: --fb-file needs --fb-geometry WxHxBPP, e.g. 320x240x16");
