@@ -17,6 +17,7 @@
 #include "check.h"
 #include "support/testmesh.h"
 #include "support/testvec.h"
+#include "../tools/closest.h"
 #include "../tools/gen.h"
 #include "../tools/hull.h"
 
@@ -43,7 +44,7 @@ static double surface_distance(const simp_mesh *m, const double p[3])
     double best = INFINITY;
     for (uint32_t f = 0; f < m->ntris; f++) {
         const uint32_t *t = &m->tri[3 * f];
-        best = fmin(best, tm_point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]));
+        best = fmin(best, point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]));
     }
     return sqrt(best);
 }
@@ -77,7 +78,7 @@ static uint32_t nearest_face(const simp_mesh *m, const double p[3], double *dist
     uint32_t at = 0;
     for (uint32_t f = 0; f < m->ntris; f++) {
         const uint32_t *t = &m->tri[3 * f];
-        double d = tm_point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]);
+        double d = point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]);
         if (d < best) best = d, at = f;
     }
     *dist = sqrt(best);

@@ -39,7 +39,7 @@ static void one_way(const simp_mesh *a, const simp_mesh *b, double *sum, double 
         double best = INFINITY;
         for (uint32_t f = 0; f < b->ntris; f++) {
             const uint32_t *t = &b->tri[3 * f];
-            double d = tm_point_tri_d2(&a->pos[3 * i], &b->pos[3 * t[0]], &b->pos[3 * t[1]], &b->pos[3 * t[2]]);
+            double d = point_tri_d2(&a->pos[3 * i], &b->pos[3 * t[0]], &b->pos[3 * t[1]], &b->pos[3 * t[2]]);
             if (d < best) best = d;
         }
         best = sqrt(best);

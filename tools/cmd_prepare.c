@@ -134,8 +134,6 @@ int cmd_prepare(int argc, char **argv)
     so.target_tris = (uint32_t)args.target;
     if (silk_file_same(in, args.out))
         return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
-    /* A failed run leaves no model at OUT (written atomically; an earlier one is removed). */
-    rc = prepare(in, args.out, &so, args.scale, args.quiet, fit);
-    if (rc) silk_file_remove_stale(args.out);
-    return rc;
+    /* A failed run leaves OUT as it was (written atomically), as every command. */
+    return prepare(in, args.out, &so, args.scale, args.quiet, fit);
 }
