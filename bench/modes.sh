@@ -5,6 +5,10 @@
 # meshes against their fine originals (../shared/meshes or $SILK_MESHES,
 # skipped when absent), and bunny-fine simplified to 500 triangles by
 # `silk simplify`.  Writes OUTDIR/bench.md, bench.csv and bench.png.
+# Then the shipped coarse scans against the same detailed models made into
+# prepared models by `silk prepare` (500 triangles, default options, and
+# with --fit), flat, smooth and pn3: OUTDIR/bench-prepared.md and
+# bench-prepared.csv.
 # BENCH_VIEWS, BENCH_SIZE and BENCH_REPS override the defaults.
 set -eu
 silk=${1:-build/silk}
@@ -45,3 +49,27 @@ fi
 } > "$out/bench.md"
 rm -f "$out/bench.md.tmp"
 echo "bench/modes.sh: wrote $out/bench.md, $out/bench.csv, $out/bench.png"
+
+# Shipped coarse scans against prepared models of the same detailed ones.
+pairs=""
+for m in bunny armadillo spot feline; do
+  c=$meshes/$m-500.obj f=$meshes/$m-fine.obj
+  if [ -f "$c" ] && [ -f "$f" ]; then
+    "$silk" prepare "$f" -o "$work/$m-prepared-500.silk" --triangles 500 >/dev/null
+    "$silk" prepare "$f" -o "$work/$m-prepared-fit-500.silk" --triangles 500 --fit >/dev/null
+    pairs="$pairs --pair $c:$f --pair $work/$m-prepared-500.silk:$f --pair $work/$m-prepared-fit-500.silk:$f"
+  else
+    echo "bench/modes.sh: skipping $m (not in $meshes)"
+  fi
+done
+if [ -n "$pairs" ]; then
+  # shellcheck disable=SC2086
+  "$silk" bench $pairs --views "$views" --size "$size" --reps "$reps" --modes flat,smooth,pn3 \
+    --csv "$out/bench-prepared.csv" --md "$out/bench-prepared.md.tmp"
+  {
+    echo "<!-- make bench, $(date -u +%Y-%m-%dT%H:%M:%SZ), $(uname -m), $(nproc 2>/dev/null || echo ?) cores -->"
+    cat "$out/bench-prepared.md.tmp"
+  } > "$out/bench-prepared.md"
+  rm -f "$out/bench-prepared.md.tmp"
+  echo "bench/modes.sh: wrote $out/bench-prepared.md, $out/bench-prepared.csv"
+fi

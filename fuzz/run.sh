@@ -13,7 +13,7 @@ set -u
 fb=$1
 secs=$2
 shift 2
-harnesses=${*:-fuzz_obj fuzz_ply fuzz_stl fuzz_pack fuzz_render fuzz_math}
+harnesses=${*:-fuzz_obj fuzz_ply fuzz_stl fuzz_pack fuzz_render fuzz_math fuzz_model}
 status=0
 mkdir -p "$fb/artifacts"
 for h in $harnesses; do

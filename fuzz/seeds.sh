@@ -1,7 +1,7 @@
 #!/bin/sh
 # seeds.sh SILK MKSEED OUT - the seed corpora of the fuzz harnesses, written
 # into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_stl, OUT/fuzz_render,
-# OUT/fuzz_pack and OUT/fuzz_math from:
+# OUT/fuzz_pack, OUT/fuzz_math, OUT/fuzz_ppm and OUT/fuzz_model from:
 #   - the malformed-input corpus tests/bad/ (each file one error path),
 #   - the regression inputs tests/regress/HARNESS/ (every finding so far),
 #   - small meshes from `silk gen` (every shape, few triangles) and a few
@@ -19,7 +19,8 @@ out=$3
 meshes=${SILK_MESHES:-../shared/meshes}
 
 rm -rf "$out"
-mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_stl" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" "$out/fuzz_ppm" "$out/shapes"
+mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_stl" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" \
+    "$out/fuzz_ppm" "$out/fuzz_model" "$out/shapes"
 
 # small generated shapes
 "$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
@@ -56,7 +57,7 @@ for f in "$out/shapes/"*.obj; do
 done
 # fuzz_ppm: a small render as PPM, besides its regression inputs
 "$silk" render "$out/shapes/sphere.obj" -o "$out/fuzz_ppm/sphere.ppm" --size 8x6 >/dev/null
-for h in obj ply stl render pack math ppm; do
+for h in obj ply stl render pack math ppm model; do
     if [ -d "tests/regress/$h" ]; then
         for f in tests/regress/"$h"/*; do
             [ -f "$f" ] && [ "${f%.expected}" = "$f" ] && cp "$f" "$out/fuzz_$h/"
@@ -95,4 +96,9 @@ for sel in 0 1 2 3 4 5; do
     { printf "\\00$sel"; tail -c 400 "$out/fuzz_ply/knot-le.ply"; } >"$out/fuzz_math/case-$sel-mesh"
 done
 printf '\001-1024.00002e0 3E+2 .5e-3 18446744073709551616' >"$out/fuzz_math/text"
+# fuzz_model: the closed shapes prepared (silk prepare), and tests/bad/*.silk
+for b in sphere torus cylinder knot; do
+    "$silk" prepare "$out/shapes/$b.obj" -o "$out/fuzz_model/$b.silk" --triangles 64 >/dev/null
+done
+cp tests/bad/*.silk "$out/fuzz_model/"
 rm -rf "$out/shapes"

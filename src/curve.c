@@ -14,6 +14,14 @@
  * products then fit in an int64, and every length and ratio keeps about 30
  * bits - far more than the 16 fractional bits of the result.
  *
+ * The bulge bound (curve.h, SILK_BULGE_DIV): eq. 4 follows a circle, and
+ * a circle over a chord whose end tangents turn far from it is a dome
+ * reaching half the chord's length away from it - on a coarse mesh that
+ * is a visible bulge past the outline.  The tangent is shortened so that
+ * its Bezier control point (t / 3 from the end) stays within |chord| / 6
+ * of the chord's line, the furthest a PN triangle's edge control point
+ * (Vlachos et al.) can be; the curve then stays within |chord| / 8 of it.
+ *
  * Overflow policy: eq. 4's length 2|chord|/(1 + cos theta) grows without
  * bound as the tangent turns back along the chord.  It is clamped at
  * SILK_ARC_MAX_RATIO * |chord| (see curve.h); a result that still does not
@@ -132,6 +140,23 @@ static void arc_tangent_wide(const wvec *dir, const wvec *chord, int64_t out[3])
         prod = silk_shr_round64(prod, s);
     }
     int64_t g = div_round(mul_pow2(prod, 30), den);    /* <= 2^30 * max ratio / 2 */
+    /* The bulge bound: L sin theta <= |chord| / SILK_BULGE_DIV (curve.h),
+     * i.e. g <= 2^30 / (2 SILK_BULGE_DIV sin theta), sin theta =
+     * |dir x chord| / (|dir||chord|).  The cross product's components are
+     * < 2^61; taken to 2^-30 their squares sum below 2^64. */
+    int64_t cr[3] = { dir->c[1] * chord->c[2] - dir->c[2] * chord->c[1],
+                      dir->c[2] * chord->c[0] - dir->c[0] * chord->c[2],
+                      dir->c[0] * chord->c[1] - dir->c[1] * chord->c[0] };
+    uint64_t cr2 = 0;
+    for (int k = 0; k < 3; k++) {
+        int64_t q = silk_shr_round64(cr[k], 30);
+        cr2 += (uint64_t)(q * q);
+    }
+    int64_t cross30 = (int64_t)sqrt_round(cr2);        /* |dir x chord| / 2^30, < 2^33 */
+    if (cross30 > 0) {
+        int64_t cap = div_round(ld * lc, cross30 * 2 * SILK_BULGE_DIV);
+        if (g > cap) g = cap;
+    }
     int64_t len = silk_shr_round64(lc * g, 29);        /* 2|chord| g, in chord's scale */
     for (int k = 0; k < 3; k++) out[k] = div_round(dir->c[k] * len, ld);
 }

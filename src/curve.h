@@ -18,6 +18,20 @@
  * (tests/test_curve.c). */
 silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
 
+/* The bulge bound, applied by silk_arc_tangent and silk_bridge after eq. 4
+ * and its clamp: the tangent length L is cut to |chord| / (SILK_BULGE_DIV
+ * sin theta) where eq. 4 would give more.  The Hermite curve's Bezier
+ * control points p0 + t0/3 and p1 - t1/3 then lie within |chord| / 6 of the
+ * chord's line, exactly the most a PN triangle's edge control points can
+ * (|chord| sin 2phi / 6, phi the normal's tilt towards the chord, at most
+ * 1/6 at 45 degrees), and every point of the curve lies within 3/4 of that,
+ * |chord| / 8, of the chord's line (the cubic's offset 3u(1-u)((1-u)d0 +
+ * u d1) is at most 3/4 max(d0, d1)).  Eq. 4 is left as it is up to
+ * theta = 2 atan(1/4) = 28.07 degrees: circular arcs of up to 56 degrees,
+ * whose sagitta is 1/8 of their chord, are still followed exactly; wider
+ * ones are flattened to that height instead of bulging to a half disc. */
+#define SILK_BULGE_DIV 2
+
 /* The clamp of eq. 4: L <= SILK_ARC_MAX_RATIO * |chord|, reached when
  * cos theta <= -1/2 (theta >= 120 degrees, an arc of 240 degrees).  A bridge
  * never gets there (its tangents are the chord projected onto a plane, so

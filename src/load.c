@@ -9,6 +9,7 @@
  */
 #include <string.h>
 #include "load.h"
+#include "silk/model.h"
 
 /* The dihedral angle above which an edge is a crease (docs/formats.md). */
 const silk_fx SILK_DEFAULT_CREASE_DEG = SILK_FX_C(60, 1);
@@ -18,7 +19,7 @@ void silk_load_opts_default(silk_load_opts *o)
     o->scale.mant = 1;
     o->scale.exp10 = 0;
     o->crease_deg = SILK_DEFAULT_CREASE_DEG;
-    o->normals = SILK_NORMALS_COMPUTE;
+    o->normals = SILK_NORMALS_AUTO;
     o->orient = SILK_ORIENT_FIX;
 }
 
@@ -105,6 +106,7 @@ silk_status silk_load_mesh(const void *data, size_t len, const char *name,
 {
     const unsigned char *p = data;
     if (!data) return silk_load_obj(data, len, name, opts, a, out, err);   /* reports it */
+    if (silk_is_model(data, len)) return silk_load_model(data, len, name, opts, a, out, err);
     if (len >= 4 && memcmp(p, "ply", 3) == 0 && (p[3] == '\n' || p[3] == '\r'))
         return silk_load_ply(data, len, name, opts, a, out, err);
     /* A binary STL has exactly the size its header gives; an OBJ of that

@@ -10,7 +10,8 @@
  * angle-weighted average of its face normals (Thurmer & Wuthrich 1998, the
  * paper's [18]), so a vertex on a crease has one normal per side.  With
  * file normals on every corner, the groups are the corners of a vertex that
- * share a file normal, and that normal is used as given (normalised).
+ * share a file normal, and that normal is used as given (normalised); an
+ * edge across which they differ is a feature edge too.
  */
 #include <string.h>
 #include "mesh_build.h"
@@ -74,6 +75,21 @@ static void mark_group_changes(silk_mesh *m, const uint32_t *tri_group)
         silk_edge *ed = &m->edge[e];
         if (ed->t[1] == SILK_NO_INDEX || ed->v[0] == ed->v[1]) continue;
         if (tri_group[ed->t[0]] != tri_group[ed->t[1]]) ed->flags |= SILK_EDGE_GROUPS;
+    }
+}
+
+/* With file normals: an edge whose two triangles give one of its ends
+ * different normals is a feature (flagged like a smoothing-group change),
+ * or the curves the two sides build along it (III-C) would differ and
+ * open a crack. */
+static void mark_normal_splits(silk_mesh *m)
+{
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        silk_edge *ed = &m->edge[e];
+        if (ed->t[1] == SILK_NO_INDEX || ed->v[0] == ed->v[1]) continue;
+        for (int end = 0; end < 2; end++)
+            if (m->tri_normal[corner_at(m, ed->t[0], ed->v[end])] != m->tri_normal[corner_at(m, ed->t[1], ed->v[end])])
+                ed->flags |= SILK_EDGE_GROUPS;
     }
 }
 
@@ -248,7 +264,7 @@ static void file_normals(const silk_mesh *m, const silk_mesh_input *in, const si
 
 static int have_file_normals(const silk_mesh_input *in, const silk_load_opts *opts)
 {
-    if (opts->normals != SILK_NORMALS_FILE || !in->file_normal || !in->tri_file_normal || in->nfile_normals == 0)
+    if (opts->normals == SILK_NORMALS_COMPUTE || !in->file_normal || !in->tri_file_normal || in->nfile_normals == 0)
         return 0;
     for (uint32_t c = 0; c < 3 * in->ntris; c++)
         if (in->tri_file_normal[c] == SILK_NO_INDEX) return 0;
@@ -265,6 +281,7 @@ silk_status silk_build_normals(const silk_mesh_input *in, const silk_load_opts *
     }
     uint32_t nc = 3 * m->ntris, nv = m->nverts;
     int from_file = have_file_normals(in, opts);
+    m->normals_used = from_file ? SILK_NORMALS_FILE : SILK_NORMALS_COMPUTE;
     silk_status st = SILK_OK;
     silk_arena_mark mark = silk_arena_top_mark(a);
 
@@ -324,7 +341,10 @@ silk_status silk_build_normals(const silk_mesh_input *in, const silk_load_opts *
         }
     }
 
-    if (from_file) file_normals(m, in, fn, m->normal);
+    if (from_file) {
+        file_normals(m, in, fn, m->normal);
+        mark_normal_splits(m);
+    }
     else if (average_normals(m, fn, a, m->normal) != SILK_OK) goto out_of_memory;
     silk_arena_top_release(a, &mark);
     return st;

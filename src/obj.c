@@ -285,7 +285,7 @@ silk_status silk_load_obj(const void *data, size_t len, const char *name,
     obj_fill f;
     memset(&f, 0, sizeof f);
     f.want_uv = c.all_uv && c.vt > 0;
-    f.want_n = c.all_n && c.vn > 0 && opts->normals == SILK_NORMALS_FILE;
+    f.want_n = c.all_n && c.vn > 0 && opts->normals != SILK_NORMALS_COMPUTE;
 
     size_t need = 0;
     int ok = silk_ld_need(&need, c.v, sizeof(silk_vec3)) && silk_ld_need(&need, c.tris * 3, sizeof(silk_index));

@@ -625,7 +625,7 @@ silk_status silk_load_ply(const void *data, size_t len, const char *name,
     ply_fill f;
     memset(&f, 0, sizeof f);
     uint64_t nv = r.elem[r.vertex].count;
-    f.want_n = r.has_normals && opts->normals == SILK_NORMALS_FILE;
+    f.want_n = r.has_normals && opts->normals != SILK_NORMALS_COMPUTE;
     f.want_uv = r.has_uv;
     size_t need = 0;
     int ok = silk_ld_need(&need, nv, sizeof(silk_vec3)) && silk_ld_need(&need, r.tris * 3, sizeof(silk_index));

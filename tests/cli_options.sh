@@ -18,6 +18,7 @@ gen|gen sphere
 bench|bench
 bench-visibility|bench --visibility
 simplify|simplify
+prepare|prepare
 hull|hull
 diff|diff
 pack|pack

@@ -28,6 +28,18 @@ else
     echo "skip: no shared meshes in $meshes"
 fi
 
+# --for smooth: every corner carries a normal, and silk uses them by default
+run_silk simplify "$tmp/sphere.obj" "$tmp/smooth.obj" --triangles 200 --for smooth
+check "--for smooth: 200 triangles" grep -q "triangles=200 " "$out"
+check "--for smooth: every face has normals" [ "$(grep -c '^f [0-9]*//[0-9]* [0-9]*//[0-9]* [0-9]*//[0-9]*$' "$tmp/smooth.obj")" = 200 ]
+"$SILK" info "$tmp/smooth.obj" --size 64x64 >"$tmp/info" 2>&1
+check "--for smooth: silk info uses the file's normals" [ "$(info_value "$tmp/info" "normals from")" = "the file" ]
+want="--for smooth writes OBJ" expect_usage "--for smooth to PLY" simplify "$tmp/sphere.obj" "$tmp/smooth.ply" --triangles 200 --for smooth
+check "... writes nothing" [ ! -e "$tmp/smooth.ply" ]
+"$SILK" info "$tmp/smooth.obj" --size 64x64 --normals compute >"$tmp/info" 2>&1
+check "--normals compute: computed" grep -q "^normals from: *computed" "$tmp/info"
+expect_usage "bad --for" simplify "$tmp/sphere.obj" "$tmp/x.obj" --triangles 10 --for pn
+
 # a target above the input's count copies it
 run_silk simplify "$tmp/sphere.obj" "$tmp/same.obj" --triangles 100000
 check "target above the input: unchanged" grep -q "triangles=3120 .* collapses=0 " "$out"

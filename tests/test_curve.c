@@ -50,9 +50,11 @@ static dvec ref_arc_tangent(dvec dir, dvec chord)
     double lc = dlen(chord), ld = dlen(dir);
     if (lc == 0) return dmk(0, 0, 0);
     if (ld == 0) return chord;
-    double cth = ddot(dir, chord) / (ld * lc);
+    double cth = ddot(dir, chord) / (ld * lc), sth = dlen(dcross(dir, chord)) / (ld * lc);
     double den = fmax(1 + cth, 2.0 / SILK_ARC_MAX_RATIO);
-    dvec t = dscale(dir, 2 * lc / den / ld);
+    double L = 2 * lc / den;
+    if (sth > 0) L = fmin(L, lc / (SILK_BULGE_DIV * sth));   /* the bulge bound */
+    dvec t = dscale(dir, L / ld);
     double m = maxabs(t), lim = SILK_FX_MAX / 65536.0;
     return m > lim ? dscale(t, lim / m) : t;
 }
@@ -101,12 +103,16 @@ TEST(arc_tangent_special)
     /* theta = 0: a straight line, L = |chord|. */
     silk_vec3 t = silk_arc_tangent(silk_v3(5, 0, 0), c);
     CHECKF(t.x == SILK_FX_ONE && t.y == 0 && t.z == 0, "%d %d %d", t.x, t.y, t.z);
-    /* theta = 90 degrees (semicircle): L = 2|chord|. */
+    /* theta = 90 degrees: eq. 4's semicircle (L = 2|chord|) is cut by the
+     * bulge bound to L = |chord| / 2. */
     t = silk_arc_tangent(silk_v3(0, 3 * SILK_FX_ONE, 0), c);
-    CHECKF(t.x == 0 && t.y == 2 * SILK_FX_ONE && t.z == 0, "%d %d %d", t.x, t.y, t.z);
-    /* theta = 60 degrees: L = 2/(1.5) = 4/3. */
+    CHECKF(t.x == 0 && t.y == SILK_FX_ONE / 2 && t.z == 0, "%d %d %d", t.x, t.y, t.z);
+    /* theta = 60 degrees: eq. 4 says 4/3, the bound 1 / (2 sin 60) = 0.577. */
     t = silk_arc_tangent(silk_v3(SILK_FX_ONE, fx(sqrt(3.0)), 0), c);
-    CHECKF(abs(t.x - fx(2.0 / 3)) <= 1 && abs(t.y - fx(2.0 / 3 * sqrt(3.0))) <= 1, "%d %d", t.x, t.y);
+    CHECKF(abs(t.x - fx(0.5 / sqrt(3.0))) <= 1 && abs(t.y - fx(0.5)) <= 1, "%d %d", t.x, t.y);
+    /* theta = 20 degrees: eq. 4 as it is, 2 / (1 + cos 20). */
+    t = silk_arc_tangent(fx3(dmk(cos(20 * PI / 180), sin(20 * PI / 180), 0)), c);
+    CHECKF(fabs(dlen(dv(t)) - 2 / (1 + cos(20 * PI / 180))) < 4 * ULP, "len %.9g", dlen(dv(t)));
     /* dir == 0: the chord. */
     silk_vec3 ch = silk_v3(123456, -7, 99);
     t = silk_arc_tangent(silk_v3(0, 0, 0), ch);
@@ -114,23 +120,24 @@ TEST(arc_tangent_special)
     /* chord == 0: zero tangent, whatever dir. */
     t = silk_arc_tangent(silk_v3(1, 2, 3), silk_v3(0, 0, 0));
     CHECK(t.x == 0 && t.y == 0 && t.z == 0);
-    /* pointing backwards: clamped at SILK_ARC_MAX_RATIO |chord|, from
-     * theta = 120 degrees on, continuously. */
+    /* pointing backwards: clamped at SILK_ARC_MAX_RATIO |chord| where the
+     * bulge bound leaves it longer (within 7 degrees of straight back),
+     * continuously. */
     t = silk_arc_tangent(silk_v3(-SILK_FX_ONE, 0, 0), c);
     CHECKF(t.x == -SILK_ARC_MAX_RATIO * SILK_FX_ONE && t.y == 0 && t.z == 0, "%d", t.x);
     t = silk_arc_tangent(silk_v3(-SILK_FX_ONE, 1, 0), c);     /* dir turned by 2^-16 rad */
     CHECKF(t.x == -SILK_ARC_MAX_RATIO * SILK_FX_ONE && t.y == SILK_ARC_MAX_RATIO, "%d %d", t.x, t.y);
-    double th = 120.0 * PI / 180;
+    double th = 175.0 * PI / 180;
     t = silk_arc_tangent(fx3(dmk(cos(th), sin(th), 0)), c);
     CHECKF(fabs(dlen(dv(t)) - SILK_ARC_MAX_RATIO) < 4 * ULP, "len %.9g", dlen(dv(t)));
     th = 119.0 * PI / 180;
     t = silk_arc_tangent(fx3(dmk(cos(th), sin(th), 0)), c);
-    CHECKF(fabs(dlen(dv(t)) - 2 / (1 + cos(th))) < 4 * ULP, "len %.9g", dlen(dv(t)));
+    CHECKF(fabs(dlen(dv(t)) - 0.5 / sin(th)) < 4 * ULP, "len %.9g", dlen(dv(t)));
     /* 1-ulp vectors. */
-    t = silk_arc_tangent(silk_v3(0, 1, 0), silk_v3(1, 0, 0));
-    CHECKF(t.x == 0 && t.y == 2 && t.z == 0, "%d %d %d", t.x, t.y, t.z);
+    t = silk_arc_tangent(silk_v3(0, 1, 0), silk_v3(2, 0, 0));
+    CHECKF(t.x == 0 && t.y == 1 && t.z == 0, "%d %d %d", t.x, t.y, t.z);
     t = silk_arc_tangent(silk_v3(0, SILK_FX_MAX, 0), silk_v3(1, 1, 0));
-    CHECKF(t.x == 0 && abs(t.y - fx(2 * sqrt(2.0) / (1 + sqrt(0.5)) * ULP)) <= 1, "%d %d", t.x, t.y);
+    CHECKF(t.x == 0 && t.y == 1, "%d %d", t.x, t.y);
     /* The largest chords: the result is shortened as a whole, never wraps
      * and keeps its direction. */
     silk_vec3 big = silk_v3(SILK_FX_MAX, SILK_FX_MAX, -SILK_FX_MAX);
@@ -231,10 +238,11 @@ TEST(bridge_special)
     CHECK(cv.t0.x == 0 && cv.t0.y == 0 && cv.t0.z == SILK_FX_ONE);
     CHECK(cv.t1.x == 0 && cv.t1.y == 0 && cv.t1.z == SILK_FX_ONE);
     /* A quarter circle: from (1,0,0) with normal x to (0,1,0) with normal y,
-     * both tangents at 45 degrees to the chord, L = 2 sqrt 2 / (1 + sqrt .5). */
+     * both tangents at 45 degrees to the chord: eq. 4's 2 sqrt 2 / (1 +
+     * sqrt .5) cut by the bulge bound to sqrt 2 / (2 sin 45) = 1. */
     silk_bridge(silk_v3(SILK_FX_ONE, 0, 0), silk_v3(SILK_FX_ONE, 0, 0), silk_v3(0, SILK_FX_ONE, 0),
                 silk_v3(0, SILK_FX_ONE, 0), &cv);
-    double lq = 2 * sqrt(2.0) / (1 + sqrt(0.5));
+    double lq = 1;
     CHECKF(cv.t0.x == 0 && abs(cv.t0.y - fx(lq)) <= 1 && cv.t0.z == 0, "%d %d", cv.t0.x, cv.t0.y);
     CHECKF(abs(cv.t1.x + fx(lq)) <= 1 && cv.t1.y == 0 && cv.t1.z == 0, "%d %d", cv.t1.x, cv.t1.y);
     /* A zero normal is treated as "no information": the chord. */
@@ -283,7 +291,8 @@ static double circle_deviation(dvec p0, dvec p1, dvec t0, dvec t1, dvec ctr, dve
 TEST(bridge_follows_circle)
 {
     static const double radii[] = { 0.01, 0.3, 1, 25, 700 };
-    static const double arcs[] = { 5, 20, 36, 60, 90 };
+    /* up to 2 atan(1/4) = 56.1 degrees, where the bulge bound starts */
+    static const double arcs[] = { 5, 20, 36, 48, 56 };
     double worst_excess = 0, worst_own[5] = { 0 };
     for (int ri = 0; ri < 5; ri++)
         for (int ai = 0; ai < 5; ai++)
@@ -318,9 +327,89 @@ TEST(bridge_follows_circle)
                 CHECKF(dev <= own + quant, "R %g arc %g: deviation %.3g (construction %.3g, rounding allowance %.3g)",
                        R, arcs[ai], dev, own, quant);
             }
-    printf("  circle: construction off by %.2g %.2g %.2g %.2g %.2g R at 5 20 36 60 90 degrees;\n"
+    printf("  circle: construction off by %.2g %.2g %.2g %.2g %.2g R at 5 20 36 48 56 degrees;\n"
            "          fixed point adds at most %.2f ulp\n",
            worst_own[0], worst_own[1], worst_own[2], worst_own[3], worst_own[4], worst_excess / ULP);
+}
+
+/* Largest distance of a Hermite curve from its chord's line, over 129 points. */
+static double chord_deviation(dvec p0, dvec p1, dvec t0, dvec t1)
+{
+    dvec e = dnorm(dsub(p1, p0));
+    double dev = 0;
+    for (int s = 0; s <= 128; s++) {
+        dvec rel = dsub(hermite(p0, p1, t0, t1, s / 128.0), p0);
+        double d = dlen(dsub(rel, dscale(e, ddot(rel, e))));
+        if (d > dev) dev = d;
+    }
+    return dev;
+}
+
+/* The bulge bound (curve.h): every bridge and every arc tangent curve stays
+ * within |chord| / 8 of the chord's line, whatever the normals - in double
+ * from the reference construction, and in fixed point up to the rounding of
+ * its tangents (4/27 of their error each, plus the end points').  A PN
+ * triangle's edge curve over the same edge and normals (control points
+ * p + (chord - (chord.n) n) / 3, Vlachos et al.) has the same bound, and
+ * reaches it: the rule takes smooth mode's curves no further out than PN
+ * triangles' may go.  Arcs of up to 56 degrees are untouched (see
+ * bridge_follows_circle); a semicircle is flattened to |chord| / 8. */
+TEST(bulge_bound)
+{
+    double worst_ref = 0, worst_fx = 0, worst_pn = 0;
+    int bad = 0;
+    for (int i = 0; i < 20000; i++) {
+        dvec p0 = dscale(dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 500);
+        dvec c = dscale(rand_unit(), pow(2.0, check_uniform(-6, 9)));
+        dvec p1 = dadd(p0, c);
+        dvec n0 = rand_unit(), n1 = i % 2 ? rand_unit() : dnorm(dadd(n0, dscale(rand_unit(), 0.5)));
+        silk_vec3 fp0 = fx3(p0), fp1 = fx3(p1), fn0 = fx3(n0), fn1 = fx3(n1);
+        dvec c_fx = dsub(dv(fp1), dv(fp0));
+        double lc = dlen(c_fx);
+        if (lc == 0) continue;
+        dvec t0, t1;
+        double cond;
+        ref_bridge(dv(fp0), dv(fn0), dv(fp1), dv(fn1), &t0, &t1, &cond);
+        double dref = chord_deviation(dv(fp0), dv(fp1), t0, t1);
+        silk_curve cv;
+        silk_bridge(fp0, fn0, fp1, fn1, &cv);
+        double dfx = chord_deviation(dv(cv.p0), dv(cv.p1), dv(cv.t0), dv(cv.t1));
+        double slack = 4.0 / 27 * (dlen(dsub(dv(cv.t0), t0)) + dlen(dsub(dv(cv.t1), t1))) + 2 * ULP;
+        /* the PN edge curve as a Hermite curve: tangents 3 (b1 - p0), 3 (p1 - b2) */
+        dvec m0 = dnorm(dv(fn0)), m1 = dnorm(dv(fn1));
+        dvec pn0 = dsub(c_fx, dscale(m0, ddot(c_fx, m0))), pn1 = dsub(c_fx, dscale(m1, ddot(c_fx, m1)));
+        double dpn = chord_deviation(dv(fp0), dv(fp1), pn0, pn1);
+        if (dref / lc > worst_ref) worst_ref = dref / lc;
+        if (dfx / lc > worst_fx) worst_fx = dfx / lc;
+        if (dpn / lc > worst_pn) worst_pn = dpn / lc;
+        if (dref > lc / 8 * (1 + 1e-12) || dfx > lc / 8 + slack || dpn > lc / 8 * (1 + 1e-12)) {
+            if (bad++ < 5)
+                CHECKF(0, "chord %g: deviations %.6g (double) %.6g (fixed) %.6g (PN) of the chord, bound 1/8", lc,
+                       dref / lc, dfx / lc, dpn / lc);
+        }
+    }
+    CHECKF(bad == 0, "%d curves beyond |chord| / 8", bad);
+    CHECKF(worst_ref > 0.124 && worst_pn > 0.124, "the bound is reached: %.4f %.4f", worst_ref, worst_pn);
+    /* feature curves: eq. 4 tangents from any directions */
+    int bad_arc = 0;
+    for (int i = 0; i < 20000; i++) {
+        dvec c = dscale(rand_unit(), pow(2.0, check_uniform(-6, 9)));
+        silk_vec3 fc = fx3(c);
+        dvec cc = dv(fc);
+        if (dlen(cc) == 0) continue;
+        silk_vec3 ta = silk_arc_tangent(fx3(rand_unit()), fc), tb = silk_arc_tangent(fx3(rand_unit()), fc);
+        double d = chord_deviation(dmk(0, 0, 0), cc, dv(ta), dv(tb));
+        bad_arc += d > dlen(cc) / 8 + 4 * ULP;
+    }
+    CHECKF(bad_arc == 0, "%d feature curves beyond |chord| / 8", bad_arc);
+    /* a semicircle (feature tangents at right angles to the chord) is
+     * flattened to exactly |chord| / 8, from eq. 4's |chord| / 2 */
+    silk_vec3 ch = silk_v3(2 * SILK_FX_ONE, 0, 0);
+    silk_vec3 ta = silk_arc_tangent(silk_v3(0, SILK_FX_ONE, 0), ch), tb = silk_arc_tangent(silk_v3(0, -SILK_FX_ONE, 0), ch);
+    double d = chord_deviation(dmk(0, 0, 0), dv(ch), dv(ta), dv(tb));
+    CHECKF(fabs(d - 2.0 / 8) < 4 * ULP, "semicircle: %.9g", d);
+    printf("  bulge: worst deviation / chord %.5f (double), %.5f (fixed point), PN edge curves %.5f; bound 0.125\n",
+           worst_ref, worst_fx, worst_pn);
 }
 
 /* ---- eqs. 6-7 reference ----------------------------------------------------- */
@@ -611,6 +700,7 @@ int main(void)
     RUN(bridge_random);
     RUN(bridge_special);
     RUN(bridge_follows_circle);
+    RUN(bulge_bound);
     RUN(silhouette_param_random);
     RUN(silhouette_param_special);
     RUN(silhouette_on_sphere);

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "../src/curve.h"
 #include "silk/silk.h"
 #include "../src/frame.h"
 #include "support/testmesh.h"
@@ -56,12 +57,14 @@ static dvec circle_tangent(dvec p, dvec q, dvec r, dvec x)
     return dcross(n, dsub(x, o));
 }
 
-/* Eq. 4 with curve.h's clamp (SILK_ARC_MAX_RATIO = 4 chord lengths). */
+/* Eq. 4 with curve.h's clamp (SILK_ARC_MAX_RATIO = 4 chord lengths) and
+ * its bulge bound (L sin theta <= |chord| / SILK_BULGE_DIV). */
 static dvec arc_length_scaled(dvec dir, dvec chord)
 {
-    double lc = dlen(chord), c = ddot(dir, chord) / (dlen(dir) * lc);
+    double lc = dlen(chord), c = ddot(dir, chord) / (dlen(dir) * lc), s = dlen(dcross(dir, chord)) / (dlen(dir) * lc);
     double l = 2 * lc / (1 + c);
     if (!(l < 4 * lc)) l = 4 * lc;
+    if (s > 0) l = fmin(l, lc / (SILK_BULGE_DIV * s));
     return dscale(dir, l / dlen(dir));
 }
 

@@ -17,6 +17,7 @@
 #include "check.h"
 #include "support/testmesh.h"
 #include "support/testvec.h"
+#include "../tools/closest.h"
 #include "../tools/gen.h"
 #include "../tools/hull.h"
 
@@ -43,7 +44,7 @@ static double surface_distance(const simp_mesh *m, const double p[3])
     double best = INFINITY;
     for (uint32_t f = 0; f < m->ntris; f++) {
         const uint32_t *t = &m->tri[3 * f];
-        best = fmin(best, tm_point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]));
+        best = fmin(best, point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]));
     }
     return sqrt(best);
 }
@@ -67,11 +68,7 @@ static uint32_t outside(const simp_mesh *outer, const double *pts, uint32_t n, d
 
 static void copy_mesh(const simp_mesh *src, simp_mesh *dst)
 {
-    dst->nverts = src->nverts, dst->ntris = src->ntris;
-    dst->pos = malloc(3 * sizeof(double) * src->nverts);
-    dst->tri = malloc(3 * sizeof(uint32_t) * src->ntris);
-    memcpy(dst->pos, src->pos, 3 * sizeof(double) * src->nverts);
-    memcpy(dst->tri, src->tri, 3 * sizeof(uint32_t) * src->ntris);
+    CHECK(simp_copy(src, dst) == 0);
 }
 
 /* The nearest face of m to p, and its distance. */
@@ -81,7 +78,7 @@ static uint32_t nearest_face(const simp_mesh *m, const double p[3], double *dist
     uint32_t at = 0;
     for (uint32_t f = 0; f < m->ntris; f++) {
         const uint32_t *t = &m->tri[3 * f];
-        double d = tm_point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]);
+        double d = point_tri_d2(p, &m->pos[3 * t[0]], &m->pos[3 * t[1]], &m->pos[3 * t[2]]);
         if (d < best) best = d, at = f;
     }
     *dist = sqrt(best);
@@ -181,7 +178,7 @@ static int from_gen(gen_shape s, int segments, int bands, simp_mesh *m)
     p.segments = segments, p.bands = bands;
     gen_mesh g;
     if (gen_build(&p, &g)) return -1;
-    m->nverts = g.nverts, m->ntris = g.ntris, m->pos = g.pos, m->tri = g.tri;
+    m->nverts = g.nverts, m->ntris = g.ntris, m->pos = g.pos, m->tri = g.tri, m->origin = NULL;
     return 0;
 }
 
@@ -206,7 +203,7 @@ TEST(hull_cube_is_its_own_hull)
     double pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 };
     uint32_t tri[] = { 0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
                        1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7 };
-    simp_mesh m = { 8, 12, malloc(sizeof pos), malloc(sizeof tri) };
+    simp_mesh m = { 8, 12, malloc(sizeof pos), malloc(sizeof tri), NULL };
     memcpy(m.pos, pos, sizeof pos), memcpy(m.tri, tri, sizeof tri);
     CHECK(hull_volume(&m) > 0.999 && hull_volume(&m) < 1.001);
     hull_opts o;
@@ -224,6 +221,7 @@ static int load_shared(const char *name, simp_mesh *out)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", check_meshes_dir(), name);
+    out->origin = NULL;
     int r = tm_load_doubles(path, &out->pos, &out->nverts, &out->tri, &out->ntris);
     CHECKF(r >= 0, "%s does not load", name);
     return r == 1 ? 0 : -1;

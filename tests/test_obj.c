@@ -151,10 +151,32 @@ TEST(corner_forms)
     CHECK(mesh.uv[0].x == SILK_FX_HALF && mesh.uv[0].y == 0);
 }
 
+/* --normals auto (the default): the file's normals when every corner has
+ * one, computed ones otherwise; the mesh says which it used. */
+TEST(normals_auto)
+{
+    const char *all = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 1 1\nf 1//1 2//1 3//1\n";
+    const char *some = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 1 1\nf 1//1 2 3//1\n";
+    silk_load_opts o;
+    silk_load_opts_default(&o);
+    CHECK(load_opts(all, &o) == SILK_OK && mesh.normals_used == SILK_NORMALS_FILE);
+    CHECK(mesh.normal[0].y == mesh.normal[0].z && mesh.normal[0].y > 0 && mesh.normal[0].x == 0);
+    CHECK(load_opts(some, &o) == SILK_OK && mesh.normals_used == SILK_NORMALS_COMPUTE);
+    CHECK(mesh.normal[0].z == SILK_FX_ONE);
+    CHECK(load("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n") == SILK_OK && mesh.normals_used == SILK_NORMALS_COMPUTE);
+    o.normals = SILK_NORMALS_COMPUTE;
+    CHECK(load_opts(all, &o) == SILK_OK && mesh.normals_used == SILK_NORMALS_COMPUTE && mesh.normal[0].z == SILK_FX_ONE);
+    o.normals = SILK_NORMALS_FILE;
+    CHECK(load_opts(all, &o) == SILK_OK && mesh.normals_used == SILK_NORMALS_FILE);
+}
+
 TEST(file_normals_ignored_when_computing)
 {
     /* The file's normal points the wrong way; compute mode must not use it. */
-    CHECK(load("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\n") == SILK_OK);
+    silk_load_opts o;
+    silk_load_opts_default(&o);
+    o.normals = SILK_NORMALS_COMPUTE;
+    CHECK(load_opts("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\n", &o) == SILK_OK);
     CHECK(mesh.normal[mesh.tri_normal[0]].z == SILK_FX_ONE);
 }
 
@@ -395,7 +417,7 @@ TEST(dispatch)
     silk_load_opts o;
     silk_load_opts_default(&o);
     CHECK(o.crease_deg == SILK_DEFAULT_CREASE_DEG && o.scale.mant == 1 && o.scale.exp10 == 0);
-    CHECK(o.normals == SILK_NORMALS_COMPUTE);
+    CHECK(o.normals == SILK_NORMALS_AUTO);
 }
 
 TEST(truncation_and_corruption)
@@ -515,6 +537,7 @@ int main(void)
     RUN(random_values_round_exactly);
     RUN(vertex_extras);
     RUN(corner_forms);
+    RUN(normals_auto);
     RUN(file_normals_ignored_when_computing);
     RUN(negative_and_forward_indices);
     RUN(polygons_are_fanned);

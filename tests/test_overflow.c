@@ -373,7 +373,8 @@ TEST(image_size)
 }
 
 /* Eq. 4 as 1 + cos theta -> 0: the tangent is clamped at
- * SILK_ARC_MAX_RATIO |chord| and keeps its direction; the longest chord
+ * SILK_ARC_MAX_RATIO |chord| (or shorter, by the bulge bound) and keeps
+ * its direction; the longest chord
  * the coordinate range allows still fits Q16.16. */
 TEST(tangent_length)
 {
@@ -389,6 +390,8 @@ TEST(tangent_length)
                          ts_fx2d(t.z) * ts_fx2d(dirs[i].z)) / (l * dl);
         double cos_theta = (ts_fx2d(dirs[i].x) + ts_fx2d(dirs[i].y) + ts_fx2d(dirs[i].z)) * 2048 / (dl * lc);
         double want = 1 + cos_theta <= 2.0 / SILK_ARC_MAX_RATIO ? SILK_ARC_MAX_RATIO * lc : 2 * lc / (1 + cos_theta);
+        double sin_theta = sqrt(fmax(0, 1 - cos_theta * cos_theta));
+        if (sin_theta > 0) want = fmin(want, lc / (SILK_BULGE_DIV * sin_theta));   /* the bulge bound */
         CHECKF(fabs(l - want) < 1e-3 * want, "dir %zu: length %.3f, want %.3f", i, l, want);
         CHECKF(cosang > 1 - 1e-9, "dir %zu: turned (cos %.12f)", i, cosang);
     }

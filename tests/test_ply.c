@@ -369,7 +369,8 @@ TEST(normals_and_uvs)
         CHECK(mesh.tri_uv[0] == 0 && mesh.tri_uv[1] == 1 && mesh.tri_uv[2] == 2);
         /* the file says -z although the winding says +z: file mode believes the file */
         for (int c = 0; c < 3; c++) CHECK(mesh.normal[mesh.tri_normal[c]].z == -SILK_FX_ONE);
-        CHECK(load_buf(&B) == SILK_OK && mesh.normal[mesh.tri_normal[0]].z == SILK_FX_ONE);
+        o.normals = SILK_NORMALS_COMPUTE;
+        CHECK(load_buf_opts(&B, &o) == SILK_OK && mesh.normal[mesh.tri_normal[0]].z == SILK_FX_ONE);
     }
 }
 

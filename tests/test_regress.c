@@ -2,7 +2,7 @@
  * test_regress.c - every input the fuzz harnesses ever found a problem
  * with (tests/regress/HARNESS/, see tests/regress/README.md), run again
  * through the same harness code, plus the malformed-input corpus
- * tests/bad/ through the OBJ, PLY and STL harnesses.
+ * tests/bad/ through the OBJ, PLY, STL and prepared-model harnesses.
  *
  * The harnesses (fuzz/fuzz_*.c) are compiled in here without libFuzzer,
  * each under its own entry name; their checks abort with a "fuzz: ..."
@@ -35,6 +35,9 @@
 #undef FUZZ_ENTRY
 #define FUZZ_ENTRY fuzz_ppm_entry
 #include "../fuzz/fuzz_ppm.c"
+#undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_model_entry
+#include "../fuzz/fuzz_model.c"
 #undef FUZZ_ENTRY
 
 typedef int (*entry_fn)(const uint8_t *data, size_t size);
@@ -141,6 +144,14 @@ TEST(regress_ppm)
     CHECKF(n >= 5, "%d inputs", n);
 }
 
+TEST(regress_model)
+{
+    int n = run_dir("tests/regress/model", "", fuzz_model_entry);
+    int bad = run_dir("tests/bad", ".silk", fuzz_model_entry);
+    CHECKF(bad >= 10, "only %d prepared models in tests/bad", bad);
+    printf("  %d regression inputs, %d malformed files\n", n, bad);
+}
+
 int main(void)
 {
     RUN(regress_obj);
@@ -150,5 +161,6 @@ int main(void)
     RUN(regress_render);
     RUN(regress_math);
     RUN(regress_ppm);
+    RUN(regress_model);
     return check_done();
 }

@@ -48,7 +48,7 @@ static void to_eye_d(const silk_view *v, silk_vec3 p, double d[3])
 
 /* ---- references ------------------------------------------------------------ */
 
-/* Eqs. 2-5: tangents of the bridge over p0 -> p1. */
+/* Eqs. 2-5: tangents of the bridge over p0 -> p1, with the bulge bound. */
 static void bridge_ref(const double p0[3], const double n0[3], const double p1[3], const double n1[3],
                        double t0[3], double t1[3])
 {
@@ -61,7 +61,8 @@ static void bridge_ref(const double p0[3], const double n0[3], const double p1[3
         double d[3] = { c[0] - cn * n[k][0], c[1] - cn * n[k][1], c[2] - cn * n[k][2] };
         double dl = sqrt(dot3(d, d));
         double cos_t = dl > 0 ? dot3(d, c) / (dl * cl) : 1;
-        double len = 2 * cl / (1 + cos_t);
+        double len = 2 * cl / (1 + cos_t), sin_t = sqrt(fmax(0, 1 - cos_t * cos_t));
+        if (sin_t > 0) len = fmin(len, cl / (SILK_BULGE_DIV * sin_t));   /* the bulge bound, curve.h */
         for (int i = 0; i < 3; i++) t[k][i] = dl > 0 ? d[i] / dl * len : c[i];
     }
 }

@@ -16,6 +16,8 @@
 #include "silk/silk.h"
 #include "../platform/platform.h"
 #include "../tools/simplify.c"
+#include "../tools/surface.c"
+#include "../tools/closest.c"
 
 /* Load with silk's loader, as the command does. */
 static int load(const char *name, simp_mesh *out)
@@ -37,7 +39,7 @@ static void one_way(const simp_mesh *a, const simp_mesh *b, double *sum, double 
         double best = INFINITY;
         for (uint32_t f = 0; f < b->ntris; f++) {
             const uint32_t *t = &b->tri[3 * f];
-            double d = tm_point_tri_d2(&a->pos[3 * i], &b->pos[3 * t[0]], &b->pos[3 * t[1]], &b->pos[3 * t[2]]);
+            double d = point_tri_d2(&a->pos[3 * i], &b->pos[3 * t[0]], &b->pos[3 * t[1]], &b->pos[3 * t[2]]);
             if (d < best) best = d;
         }
         best = sqrt(best);
@@ -76,23 +78,29 @@ static void closed_manifold(const simp_mesh *m, int euler, const char *what)
     CHECKF(t.euler == euler, "%s: Euler characteristic %d, the input's %d", what, t.euler, euler);
 }
 
+/* The fine mesh, the reference made from it and a copy of the fine one to
+ * simplify; the fine mesh's Euler characteristic.  -1 (skipped) when the
+ * shared meshes are not there. */
+static int load_pair(const char *fine_name, const char *ref_name, simp_mesh *fine, simp_mesh *ref, simp_mesh *out,
+                     int *euler)
+{
+    if (load(fine_name, fine)) return -1;
+    if (load(ref_name, ref)) {
+        simp_free(fine);
+        return -1;
+    }
+    simp_topology t;
+    CHECK(simp_topology_check(fine, &t) == 0);
+    *euler = t.euler;
+    CHECK(simp_copy(fine, out) == 0);
+    return 0;
+}
+
 static void simplify_like_reference(const char *fine_name, const char *ref_name, uint32_t target)
 {
     simp_mesh fine, out, ref;
-    if (load(fine_name, &fine)) return;
-    if (load(ref_name, &ref)) {
-        simp_free(&fine);
-        return;
-    }
-    simp_topology t;
-    CHECK(simp_topology_check(&fine, &t) == 0);
-    int euler = t.euler;
-    out.nverts = fine.nverts;
-    out.ntris = fine.ntris;
-    out.pos = malloc(3 * sizeof(double) * fine.nverts);
-    out.tri = malloc(3 * sizeof(uint32_t) * fine.ntris);
-    memcpy(out.pos, fine.pos, 3 * sizeof(double) * fine.nverts);
-    memcpy(out.tri, fine.tri, 3 * sizeof(uint32_t) * fine.ntris);
+    int euler;
+    if (load_pair(fine_name, ref_name, &fine, &ref, &out, &euler)) return;
     simp_opts o;
     simp_opts_default(&o, target);
     simp_stats st;
@@ -115,11 +123,111 @@ TEST(bunny_to_500) { simplify_like_reference("bunny-fine.obj", "bunny-500.obj", 
 TEST(sphere_to_200) { simplify_like_reference("sphere-fine.obj", "sphere-200.obj", 200); }
 TEST(fandisk_to_128) { simplify_like_reference("fandisk-fine.obj", "fandisk-128.obj", 128); }
 
+/* Subset placement (--for smooth): every output vertex is the input vertex
+ * origin[] names, bit for bit; the count and topology hold as with optimal
+ * placement; the surface stays about as close to the fine one (it cannot
+ * be quite as close: no vertex may leave the surface); and the normals are
+ * the fine mesh's: at a vertex with one normal, the angle-weighted normal
+ * of the fine faces around it, computed here independently. */
+static void on_surface(const char *fine_name, const char *ref_name, uint32_t target, int want_splits)
+{
+    simp_mesh fine, out, ref;
+    int euler;
+    if (load_pair(fine_name, ref_name, &fine, &ref, &out, &euler)) return;
+    simp_opts o;
+    simp_opts_default(&o, target);
+    o.subset = 1;
+    simp_stats st;
+    CHECK(simp_run(&out, &o, &st) == 0);
+    CHECKF(fabs((double)out.ntris - target) <= 0.02 * target, "%s: %u triangles for %u", fine_name, out.ntris, target);
+    closed_manifold(&out, euler, fine_name);
+    uint32_t moved = 0;
+    for (uint32_t v = 0; v < out.nverts; v++)
+        moved += memcmp(&out.pos[3 * v], &fine.pos[3 * out.origin[v]], 3 * sizeof(double)) != 0;
+    CHECKF(moved == 0, "%s: %u vertices are not input vertices", fine_name, moved);
+    dist ours = distance(&out, &fine), theirs = distance(&ref, &fine);
+    printf("  %s -> %u on the surface: distance/diagonal mean %.2e max %.2e; %s: mean %.2e max %.2e\n", fine_name,
+           out.ntris, ours.mean, ours.max, ref_name, theirs.mean, theirs.max);
+    CHECKF(ours.mean <= 2 * theirs.mean, "%s: mean distance %.3g, MeshLab's %.3g", fine_name, ours.mean, theirs.mean);
+
+    surf_normals sn;
+    CHECK(surf_normals_compute(&fine, &out, 60, &sn) == 0);
+    uint32_t *count = calloc(out.nverts, sizeof *count), *first = malloc(out.nverts * sizeof *first), split = 0;
+    for (uint32_t c = 0; c < 3 * out.ntris; c++) {
+        uint32_t v = out.tri[c], n = sn.tri_normal[c];
+        CHECK(n < sn.nnormals && fabs(len3(&sn.normal[3 * n]) - 1) < 1e-12);
+        if (count[v]++ == 0) first[v] = n;
+        else if (first[v] != n && first[v] != UINT32_MAX) first[v] = UINT32_MAX, split++;
+    }
+    double worst = 0;
+    for (uint32_t v = 0; v < out.nverts; v++) {
+        if (first[v] == UINT32_MAX) continue;
+        double ref_n[3] = { 0, 0, 0 };
+        uint32_t f = out.origin[v];
+        for (uint32_t ft = 0; ft < fine.ntris; ft++)
+            for (int k = 0; k < 3; k++) {
+                if (fine.tri[3 * ft + k] != f) continue;
+                const double *p = &fine.pos[3 * f], *a = &fine.pos[3 * fine.tri[3 * ft + (k + 1) % 3]],
+                             *b = &fine.pos[3 * fine.tri[3 * ft + (k + 2) % 3]];
+                double e1[3], e2[3], n[3];
+                sub3(a, p, e1);
+                sub3(b, p, e2);
+                cross3(e1, e2, n);
+                double l = len3(n), ang = acos(dot3(e1, e2) / (len3(e1) * len3(e2)));
+                for (int j = 0; j < 3; j++) ref_n[j] += ang * n[j] / l;
+            }
+        double l = len3(ref_n), d = 0;
+        for (int j = 0; j < 3; j++) d += fabs(ref_n[j] / l - sn.normal[3 * first[v] + j]);
+        if (d > worst) worst = d;
+    }
+    CHECKF(worst < 1e-9, "%s: a normal differs from the fine angle-weighted normal by %.3g", fine_name, worst);
+    CHECKF(want_splits ? split > 0 : split == 0, "%s: %u vertices with split normals", fine_name, split);
+    printf("  %s: %u normals for %u vertices, %u split\n", fine_name, sn.nnormals, out.nverts, split);
+    free(count), free(first);
+    surf_normals_free(&sn);
+    simp_free(&fine);
+    simp_free(&out);
+    simp_free(&ref);
+}
+
+/* The box hierarchy (tools/closest.c) against brute force: the same
+ * squared distance, bit for bit, from points near and far from bunny-fine. */
+TEST(closest_point_tree)
+{
+    simp_mesh fine;
+    if (load("bunny-fine.obj", &fine)) return;
+    cp_tree t;
+    CHECK(cp_build(&t, fine.pos, fine.tri, fine.ntris) == 0);
+    int bad = 0;
+    for (int i = 0; i < 200; i++) {
+        const double *v = &fine.pos[3 * ((uint32_t)i * 2654435761u % fine.nverts)];
+        double s = i < 150 ? 0.02 : 1.5, p[3] = { v[0] + s * check_uniform(-1, 1), v[1] + s * check_uniform(-1, 1),
+                                                   v[2] + s * check_uniform(-1, 1) };
+        double best = INFINITY;
+        for (uint32_t f = 0; f < fine.ntris; f++) {
+            const uint32_t *tr = &fine.tri[3 * f];
+            double d = point_tri_d2(p, &fine.pos[3 * tr[0]], &fine.pos[3 * tr[1]], &fine.pos[3 * tr[2]]);
+            if (d < best) best = d;
+        }
+        uint32_t ft;
+        double got = cp_nearest(&t, p, &ft);
+        const uint32_t *tr = &fine.tri[3 * ft];
+        bad += got != best || point_tri_d2(p, &fine.pos[3 * tr[0]], &fine.pos[3 * tr[1]], &fine.pos[3 * tr[2]]) != got;
+    }
+    CHECKF(bad == 0, "%d of 200 distances differ from brute force", bad);
+    cp_free(&t);
+    simp_free(&fine);
+}
+
+TEST(bunny_on_surface) { on_surface("bunny-fine.obj", "bunny-500.obj", 500, 1); }
+TEST(fandisk_on_surface) { on_surface("fandisk-fine.obj", "fandisk-128.obj", 128, 1); }
+TEST(sphere_on_surface) { on_surface("sphere-fine.obj", "sphere-200.obj", 200, 0); }
+
 /* A torus (genus 1) as a U x V grid of quads, two triangles each. */
 static simp_mesh grid_torus(int U, int V)
 {
     simp_mesh m = { (uint32_t)(U * V), (uint32_t)(2 * U * V), malloc(3 * sizeof(double) * U * V),
-                    malloc(6 * sizeof(uint32_t) * U * V) };
+                    malloc(6 * sizeof(uint32_t) * U * V), NULL };
     for (int i = 0; i < U; i++)
         for (int j = 0; j < V; j++) {
             double a = 2 * 3.14159265358979 * i / U, b = 2 * 3.14159265358979 * j / V;
@@ -180,7 +288,7 @@ TEST(open_mesh_keeps_its_boundary)
 {
     enum { N = 30 };
     simp_mesh m = { (N + 1) * (N + 1), 2 * N * N, malloc(3 * sizeof(double) * (N + 1) * (N + 1)),
-                    malloc(6 * sizeof(uint32_t) * N * N) };
+                    malloc(6 * sizeof(uint32_t) * N * N), NULL };
     for (int i = 0; i <= N; i++)
         for (int j = 0; j <= N; j++) {
             double *p = &m.pos[3 * (i * (N + 1) + j)];
@@ -223,6 +331,10 @@ int main(void)
     RUN(bunny_to_500);
     RUN(sphere_to_200);
     RUN(fandisk_to_128);
+    RUN(closest_point_tree);
+    RUN(bunny_on_surface);
+    RUN(fandisk_on_surface);
+    RUN(sphere_on_surface);
     RUN(torus_keeps_its_genus);
     RUN(link_condition);
     RUN(open_mesh_keeps_its_boundary);

@@ -318,7 +318,9 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "                       model coordinates must end up within +-1024)\n"
             "  --crease DEG         dihedral angle above which an edge is a sharp feature\n"
             "                       (0..180, default %g)\n"
-            "  --normals compute|file  shading normals computed (default) or the file's\n"
+            "  --normals auto|compute|file  shading normals: auto (default) the file's\n"
+            "                       where every corner has one, computed otherwise;\n"
+            "                       compute always computed; file the same as auto\n"
             "  --orient fix|keep    fix (default): wind the triangles consistently and\n"
             "                       closed surfaces outward; keep: the file's winding\n"
             "  --visibility auto|brute|gauss  visibility of normals: auto builds the\n"
@@ -440,8 +442,10 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         r = parse_fx(opt, v, 0, 180, &o->load.crease_deg);
     } else if (cli_is(arg, "--normals")) {
         VALUE();
-        if (!(r = cli_parse_choice(opt, v, "compute", "file", &c)))
-            o->load.normals = c ? SILK_NORMALS_FILE : SILK_NORMALS_COMPUTE;
+        if (strcmp(v, "auto") == 0) o->load.normals = SILK_NORMALS_AUTO;
+        else if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
+        else if (strcmp(v, "file") == 0) o->load.normals = SILK_NORMALS_FILE;
+        else r = cli_fail(-1, "%s must be auto, compute or file (got \"%s\")", opt, v);
     } else if (cli_is(arg, "--orient")) {
         VALUE();
         if (!(r = cli_parse_choice(opt, v, "fix", "keep", &c))) o->load.orient = c ? SILK_ORIENT_KEEP : SILK_ORIENT_FIX;

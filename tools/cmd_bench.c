@@ -748,7 +748,8 @@ int cmd_bench(int argc, char **argv)
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i], *v;
         long num;
-#define VALUE() do { if (!(v = cli_value(argc, argv, &i))) { rc = CLI_EXIT_USAGE; break; } } while (0)
+/* not wrapped in do-while: its break must leave the option loop */
+#define VALUE() if (!(v = cli_value(argc, argv, &i))) { rc = CLI_EXIT_USAGE; break; }
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             help(stdout);
             goto done;

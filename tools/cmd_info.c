@@ -67,6 +67,7 @@ static void print_mesh(const cli_scene *s, const cli_scene_opts *o)
     line("vertices", "%u", m->nverts);
     line("triangles", "%u", m->ntris);
     line("normals", "%u", m->nnormals);
+    line("normals from", "%s", m->normals_used == SILK_NORMALS_FILE ? "the file" : "computed (angle-weighted)");
     line("uvs", "%u", m->nuvs);
     line("edges", "%u", m->nedges);
     line("feature edges", "%u", m->nfeature_edges);

@@ -37,8 +37,8 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n"
             "\n"
-            "Render MESH (OBJ, PLY or STL; - for standard input) to an image; the format\n"
-            "follows OUT's extension.\n"
+            "Render MESH (OBJ, PLY, STL or a prepared .silk model; - for standard input)\n"
+            "to an image; the format follows OUT's extension.\n"
             "\n"
             "  -o, --output OUT     the image to write (.png or .ppm); written atomically;\n"
             "                       - writes it to standard output\n"

@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "progress.h"
 #include "simplify.h"
+#include "surface.h"
 #include "../platform/platform.h"
 
 static void help(FILE *f)
@@ -22,9 +23,10 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk simplify IN OUT.obj|OUT.ply --triangles N [options]\n"
             "\n"
-            "Simplify the mesh IN (OBJ, PLY or STL; - for standard input) to N triangles\n"
-            "by quadric-error edge collapse (Garland-Heckbert) and write OUT atomically: as\n"
-            "ascii PLY when its name ends in .ply, else as OBJ (- for standard output).\n"
+            "Simplify the mesh IN (OBJ, PLY, STL or .silk; - for standard input) to N\n"
+            "triangles by quadric-error edge collapse (Garland-Heckbert) and write OUT\n"
+            "atomically: as ascii PLY when its name ends in .ply, else as OBJ (- for\n"
+            "standard output).\n"
             "Boundary and crease edges are kept where possible; a closed manifold input\n"
             "gives a closed manifold output (no collapse that breaks the surface or turns\n"
             "a triangle over).  Prints one line:\n"
@@ -35,6 +37,11 @@ static void help(FILE *f)
             "  --triangles N       the triangle count to reach (at least 4)\n"
             "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
             "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
+            "  --for flat|smooth   flat: quadric-optimal vertex placement [default];\n"
+            "                      smooth: the mesh smooth mode wants: every vertex stays a\n"
+            "                      vertex of IN (on its surface), and OUT carries IN's\n"
+            "                      normals there (vn), split along feature edges\n"
+            "                      (OBJ only)\n"
             "  --scale S           multiply coordinates by S while reading (as silk render)\n"
             "  --quiet             no progress line on a terminal\n"
             "\n"
@@ -85,13 +92,16 @@ static int wants_ply(const char *path)
     return strcmp(ext, "ply") == 0;
 }
 
-int simp_write_mesh(const simp_mesh *m, const double *normals, const char *path, const char *comment)
+/* OBJ or PLY; normals, when given, are nnormals and tri_normal names each
+ * corner's (NULL: the vertex's own; PLY has only that). */
+static int write_mesh(const simp_mesh *m, const double *normals, uint32_t nnormals, const uint32_t *tri_normal,
+                      const char *path, const char *comment)
 {
     silk_outfile o;
     silk_error err;
+    int ply = wants_ply(path);
     if (silk_outfile_open(&o, path, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     FILE *f = o.fp;
-    int ply = wants_ply(path);
     if (ply) {
         fprintf(f, "ply\nformat ascii 1.0\ncomment %s\nelement vertex %u\n"
                    "property float x\nproperty float y\nproperty float z\n", comment, m->nverts);
@@ -106,19 +116,30 @@ int simp_write_mesh(const simp_mesh *m, const double *normals, const char *path,
         if (ply) fputc('\n', f);
     }
     if (normals && !ply)
-        for (uint32_t i = 0; i < m->nverts; i++)
+        for (uint32_t i = 0; i < nnormals; i++)
             fprintf(f, "vn %.6f %.6f %.6f\n", normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
     for (uint32_t i = 0; i < m->ntris; i++) {
-        const uint32_t *t = &m->tri[3 * i];
+        const uint32_t *t = &m->tri[3 * i], *n = tri_normal ? &tri_normal[3 * i] : t;
         if (ply)
             fprintf(f, "3 %u %u %u\n", t[0], t[1], t[2]);
         else if (normals)
-            fprintf(f, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1);
+            fprintf(f, "f %u//%u %u//%u %u//%u\n", t[0] + 1, n[0] + 1, t[1] + 1, n[1] + 1, t[2] + 1, n[2] + 1);
         else
             fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
     }
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
+}
+
+int simp_write_mesh(const simp_mesh *m, const double *normals, const char *path, const char *comment)
+{
+    return write_mesh(m, normals, normals ? m->nverts : 0, NULL, path, comment);
+}
+
+int simp_write_obj_corners(const simp_mesh *m, const double *normals, uint32_t nnormals, const uint32_t *tri_normal,
+                           const char *path, const char *comment)
+{
+    return write_mesh(m, normals, nnormals, tri_normal, path, comment);
 }
 
 int simp_common_option(int argc, char **argv, int *i, simp_args *args)
@@ -151,45 +172,79 @@ static void on_collapse(void *user, uint32_t tris_in, uint32_t tris_left)
     progress_update(p, (double)tris_in - tris_left, todo > 0 ? todo : 1);
 }
 
-static int simplify(const char *in, const char *out, const simp_opts *so_in, silk_decimal scale, int quiet)
+int simplify_pipeline(const char *in, const simp_opts *so_in, silk_decimal scale, int quiet, const char *what,
+                      simp_result *r)
 {
-    simp_mesh m;
+    memset(r, 0, sizeof *r);
     int closed = 0, rc;
-    char comment[1024];
-    const char *name = cli_input_name(in);
-    snprintf(comment, sizeof comment, "silk simplify %s --triangles %u", name, so_in->target_tris);
-    if ((rc = simp_load(in, scale, quiet, &m, &closed)) != 0) {
-        simp_free(&m);
-        return rc;
-    }
-    simp_opts so_run = *so_in;
-    const simp_opts *so = &so_run;
-    progress pr;
-    progress_start(&pr, quiet, "simplify");
-    void *user[2] = { (void *)so_in, &pr };
-    so_run.progress = on_collapse;
-    so_run.progress_user = user;
-    simp_stats st;
     simp_topology topo;
-    int run = simp_run(&m, so, &st);
+    const char *name = cli_input_name(in);
+    if ((rc = simp_load(in, scale, quiet, &r->mesh, &closed)) != 0) return rc;
+    if (so_in->subset && simp_copy(&r->mesh, &r->fine) != 0) return cli_fail(CLI_EXIT_INPUT, "%s: out of memory", name);
+    simp_opts so = *so_in;
+    progress pr;
+    progress_start(&pr, quiet, what);
+    void *user[2] = { (void *)so_in, &pr };
+    so.progress = on_collapse;
+    so.progress_user = user;
+    int run = simp_run(&r->mesh, &so, &r->stats);
     progress_end(&pr);
-    if (run != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", name);
-    else if (simp_topology_check(&m, &topo) != 0) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", name);
-    else if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
+    if (run != 0 || simp_topology_check(&r->mesh, &topo) != 0 ||
+        (so.subset && surf_normals_compute(&r->fine, &r->mesh, so.crease_deg, &r->normals) != 0))
+        return cli_fail(CLI_EXIT_INPUT, "%s: out of memory while simplifying", name);
+    if (closed && (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges))
         /* the checks in simplify.c should make this impossible */
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
-                      "%u non-manifold vertices, %u misoriented edges); not written",
-                      name, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts,
-                      topo.misoriented_edges);
-    else if ((rc = simp_write_mesh(&m, NULL, out, comment)) == 0) {
+        return cli_fail(CLI_EXIT_INPUT, "%s: the result is not a closed manifold (%u boundary, %u non-manifold edges, "
+                        "%u non-manifold vertices, %u misoriented edges); not written",
+                        name, topo.boundary_edges, topo.nonmanifold_edges, topo.nonmanifold_verts,
+                        topo.misoriented_edges);
+    return 0;
+}
+
+void simplify_warn_short(const char *in, const simp_mesh *m, uint32_t target)
+{
+    if (m->ntris > target + target / 50)
+        fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
+                        "surface\n", cli_input_name(in), m->ntris);
+}
+
+void simp_result_free(simp_result *r)
+{
+    simp_free(&r->mesh);
+    simp_free(&r->fine);
+    surf_normals_free(&r->normals);
+}
+
+int simplify_option(int argc, char **argv, int *i, simp_opts *so)
+{
+    const char *a = argv[*i], *v;
+    if (cli_is(a, "--crease")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--crease", v, 0, 180, &so->crease_deg)) return -1;
+    } else if (cli_is(a, "--feature-weight")) {
+        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so->feature_weight))
+            return -1;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale, int quiet)
+{
+    simp_result r;
+    char comment[1024];
+    snprintf(comment, sizeof comment, "silk simplify %s --triangles %u%s", cli_input_name(in), so->target_tris,
+             so->subset ? " --for smooth" : "");
+    int rc = simplify_pipeline(in, so, scale, quiet, "simplify", &r);
+    if (rc == 0 && (rc = so->subset ? simp_write_obj_corners(&r.mesh, r.normals.normal, r.normals.nnormals,
+                                                              r.normals.tri_normal, out, comment)
+                                    : simp_write_mesh(&r.mesh, NULL, out, comment)) == 0) {
         if (!silk_path_is_stdio(out))
             printf("simplify %s %s triangles=%u vertices=%u target=%u collapses=%u feature_edges=%u\n", in, out,
-                   m.ntris, m.nverts, so->target_tris, st.collapses, st.feature_edges);
-        if (m.ntris > so->target_tris + so->target_tris / 50)
-            fprintf(stderr, "silk: warning: %s: stopped at %u triangles: every further collapse would break the "
-                            "surface\n", name, m.ntris);
+                   r.mesh.ntris, r.mesh.nverts, so->target_tris, r.stats.collapses, r.stats.feature_edges);
+        simplify_warn_short(in, &r.mesh, so->target_tris);
     }
-    simp_free(&m);
+    simp_result_free(&r);
     return rc;
 }
 
@@ -205,12 +260,13 @@ int cmd_simplify(int argc, char **argv)
         if (cli_help(a, help)) return 0;
         if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
             if (k < 0) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--crease")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--crease", v, 0, 180, &so.crease_deg))
-                rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--feature-weight")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so.feature_weight))
-                rc = CLI_EXIT_USAGE;
+        } else if ((k = simplify_option(argc, argv, &i, &so)) != 0) {
+            if (k < 0) rc = CLI_EXIT_USAGE;
+        } else if (cli_is(a, "--for")) {
+            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
+            else if (strcmp(v, "smooth") == 0) so.subset = 1;
+            else if (strcmp(v, "flat") == 0) so.subset = 0;
+            else rc = cli_fail(CLI_EXIT_USAGE, "--for must be flat or smooth (got \"%s\")", v);
         } else if (a[0] == '-' && a[1]) {
             rc = cli_unknown_option("simplify", a);
         } else if (!in) {
@@ -224,6 +280,9 @@ int cmd_simplify(int argc, char **argv)
     if (!rc && (!in || !args.out))
         rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
+    if (!rc && so.subset && wants_ply(args.out))
+        rc = cli_fail(CLI_EXIT_USAGE, "simplify: --for smooth writes OBJ (its normals are split along feature edges, "
+                      "which PLY cannot hold); name OUT .obj");
     so.target_tris = (uint32_t)args.target;
     if (rc) return rc;
     /* A failed run leaves OUT as it was (written atomically). */

@@ -1,6 +1,7 @@
 /*
  * silk.c - the `silk` command: main and the dispatch to its subcommands
- * (render, info, gen, view, bench, diff, simplify, hull, pack, profile, help),
+ * (render, info, gen, view, bench, diff, prepare, simplify, hull, pack,
+ * profile, help),
  * each in its own cmd_*.c file.
  */
 #include <stdio.h>
@@ -17,10 +18,12 @@ typedef struct command {
 } command;
 
 static const command commands[] = {
-    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY, STL) to PNG or PPM" },
+    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY, STL, .silk) to PNG or PPM" },
     { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
     { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
     { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility" },
+    { "prepare", cmd_prepare, "prepare FINE -o MODEL.silk --triangles N",
+      "a detailed mesh made into a prepared model for silk" },
     { "simplify", cmd_simplify, "simplify IN OUT --triangles N", "fewer triangles, by quadric edge collapse" },
     { "hull", cmd_hull, "hull FINE -o HULL.obj", "a coarse mesh around FINE (--triangles N; --inner)" },
     { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },

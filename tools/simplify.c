@@ -19,12 +19,14 @@
 
 #include "cli.h"
 #include "simplify.h"
+#include "vec3.h"
 
 void simp_opts_default(simp_opts *o, uint32_t target_tris)
 {
     o->target_tris = target_tris;
     o->crease_deg = 60;
     o->feature_weight = 100;
+    o->subset = 0;
     o->progress = NULL;
     o->progress_user = NULL;
 }
@@ -33,7 +35,24 @@ void simp_free(simp_mesh *m)
 {
     free(m->pos);
     free(m->tri);
+    free(m->origin);
     memset(m, 0, sizeof *m);
+}
+
+int simp_copy(const simp_mesh *m, simp_mesh *out)
+{
+    memset(out, 0, sizeof *out);
+    out->pos = malloc(3 * (size_t)(m->nverts ? m->nverts : 1) * sizeof *out->pos);
+    out->tri = malloc(3 * (size_t)(m->ntris ? m->ntris : 1) * sizeof *out->tri);
+    if (!out->pos || !out->tri) {
+        simp_free(out);
+        return -1;
+    }
+    memcpy(out->pos, m->pos, 3 * (size_t)m->nverts * sizeof *out->pos);
+    memcpy(out->tri, m->tri, 3 * (size_t)m->ntris * sizeof *out->tri);
+    out->nverts = m->nverts;
+    out->ntris = m->ntris;
+    return 0;
 }
 
 /* ---- quadrics --------------------------------------------------------------- */
@@ -80,30 +99,6 @@ static int q_minimum(const quadric *q, double x[3])
     x[1] = (c01 * b0 + c11 * b1 + c12 * b2) / det;
     x[2] = (c02 * b0 + c12 * b1 + c22 * b2) / det;
     return isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]);
-}
-
-/* ---- small vector math -------------------------------------------------------- */
-
-static void sub3(const double *a, const double *b, double *r)
-{
-    r[0] = a[0] - b[0], r[1] = a[1] - b[1], r[2] = a[2] - b[2];
-}
-static void cross3(const double *a, const double *b, double *r)
-{
-    r[0] = a[1] * b[2] - a[2] * b[1];
-    r[1] = a[2] * b[0] - a[0] * b[2];
-    r[2] = a[0] * b[1] - a[1] * b[0];
-}
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static double len3(const double *a) { return sqrt(dot3(a, a)); }
-
-/* Twice the area vector of triangle (a, b, c). */
-static void tri_normal(const double *a, const double *b, const double *c, double *n)
-{
-    double e1[3], e2[3];
-    sub3(b, a, e1);
-    sub3(c, a, e2);
-    cross3(e1, e2, n);
 }
 
 /* 1 for an equilateral triangle, 0 for a degenerate one. */
@@ -256,7 +251,7 @@ static void price(const state *s, uint32_t u, uint32_t v, cand *c)
     double mid[3] = { (pu[0] + pv[0]) / 2, (pu[1] + pv[1]) / 2, (pu[2] + pv[2]) / 2 }, e[3], x[3], d[3];
     sub3(pv, pu, e);
     double best = INFINITY;
-    if (q_minimum(&q, x)) {
+    if (!s->o->subset && q_minimum(&q, x)) {
         sub3(x, mid, d);
         if (len3(d) <= len3(e)) {
             best = q_eval(&q, x);
@@ -264,7 +259,7 @@ static void price(const state *s, uint32_t u, uint32_t v, cand *c)
         }
     }
     const double *opt[3] = { pu, pv, mid };
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < (s->o->subset ? 2 : 3); k++) {
         double cost = q_eval(&q, opt[k]);
         if (cost < best) {
             best = cost;
@@ -356,7 +351,14 @@ static int check(state *s, const cand *c)
 static int collapse(state *s, const cand *c)
 {
     uint32_t u = c->u, v = c->v;
-    if (s->vf[v].n > s->vf[u].n) {   /* keep the vertex with more faces: less to move */
+    if (s->o->subset) {
+        /* the survivor is the end the edge collapses onto, so it keeps its
+         * identity (and its place on the input surface) */
+        if (memcmp(c->w, &s->pos[3 * v], sizeof c->w) == 0) {
+            u = c->v;
+            v = c->u;
+        }
+    } else if (s->vf[v].n > s->vf[u].n) {   /* keep the vertex with more faces: less to move */
         uint32_t t = u;
         u = v;
         v = t;
@@ -544,11 +546,11 @@ int simp_run(simp_mesh *m, const simp_opts *o, simp_stats *st)
     if (run(&s)) goto done;
 
     /* Compact: live faces, and the vertices they use, in their old order. */
-    uint32_t *remap = malloc(nv * sizeof *remap);
+    uint32_t *remap = malloc(nv * sizeof *remap), *origin = malloc(nv * sizeof *origin);
     double *pos = malloc(3 * nv * sizeof *pos);
     uint32_t *tri = malloc(3 * (size_t)(s.alive_tris ? s.alive_tris : 1) * sizeof *tri);
-    if (!remap || !pos || !tri) {
-        free(remap), free(pos), free(tri);
+    if (!remap || !origin || !pos || !tri) {
+        free(remap), free(origin), free(pos), free(tri);
         goto done;
     }
     for (uint32_t i = 0; i < s.nv; i++) remap[i] = UINT32_MAX;
@@ -559,6 +561,7 @@ int simp_run(simp_mesh *m, const simp_opts *o, simp_stats *st)
             uint32_t x = s.tri[3 * f + k];
             if (remap[x] == UINT32_MAX) {
                 remap[x] = vn;
+                origin[vn] = x;
                 memcpy(&pos[3 * vn], &s.pos[3 * x], 3 * sizeof *pos);
                 vn++;
             }
@@ -569,6 +572,8 @@ int simp_run(simp_mesh *m, const simp_opts *o, simp_stats *st)
     free(remap);
     free(m->pos);
     free(m->tri);
+    free(m->origin);
+    m->origin = origin;
     m->pos = pos;
     m->tri = tri;
     m->nverts = vn;

@@ -11,11 +11,17 @@
  * over or squashed to a sliver, and a closed edge never pinching two
  * boundary vertices together.  A closed manifold input stays closed and
  * manifold; every collapse then removes exactly two triangles.
+ *
+ * With subset placement (simp_opts.subset, `silk simplify --for smooth`)
+ * an edge collapses onto whichever end has the smaller quadric error, never
+ * to a new point: every output vertex is an input vertex, so it lies on
+ * the detailed surface exactly and simp_mesh.origin names it there.
  */
 #ifndef SILK_TOOLS_SIMPLIFY_H
 #define SILK_TOOLS_SIMPLIFY_H
 
 #include <stdint.h>
+#include "silk/fixed.h"
 
 #include "silk/silk.h"
 
@@ -23,12 +29,14 @@ typedef struct simp_mesh {
     uint32_t nverts, ntris;
     double *pos;             /* 3 * nverts, malloc'd */
     uint32_t *tri;           /* 3 * ntris, malloc'd, counter-clockwise from outside */
+    uint32_t *origin;        /* after simp_run: each vertex's index in the input, malloc'd */
 } simp_mesh;
 
 typedef struct simp_opts {
     uint32_t target_tris;    /* stop at this many triangles or fewer */
     double crease_deg;       /* dihedral angle above which an edge is a feature */
     double feature_weight;   /* constraint planes' weight against the faces' (area-weighted) */
+    int subset;              /* collapse only onto one of the edge's ends (vertices stay input vertices) */
     /* called after each collapse with the triangles left (may be NULL) */
     void (*progress)(void *user, uint32_t tris_in, uint32_t tris_left);
     void *progress_user;
@@ -62,6 +70,9 @@ typedef struct simp_topology {
 } simp_topology;
 int simp_topology_check(const simp_mesh *m, simp_topology *t);
 
+/* A copy of m's positions and triangles (origin left NULL): 0, or -1 when
+ * out of memory. */
+int simp_copy(const simp_mesh *m, simp_mesh *out);
 void simp_free(simp_mesh *m);
 
 /* The command's input and output (tools/cmd_simplify.c), shared by the
@@ -76,6 +87,11 @@ void simp_free(simp_mesh *m);
  * "-" for stdout; 0 or an exit code after printing the error. */
 int simp_load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold);
 int simp_write_mesh(const simp_mesh *m, const double *normals, const char *path, const char *comment);
+/* OBJ with nnormals normals and the normal of each corner named by
+ * tri_normal (3 per triangle): faces "f a//n ..." (PLY has one normal per
+ * vertex, so normals split along feature edges are written as OBJ only). */
+int simp_write_obj_corners(const simp_mesh *m, const double *normals, uint32_t nnormals, const uint32_t *tri_normal,
+                           const char *path, const char *comment);
 
 /* Their common options: --triangles N (4..1e8), --scale S, -o/--output OUT,
  * --quiet.

@@ -59,6 +59,14 @@ typedef struct silk_feature_seg {
 
 struct silk_vis;   /* Gaussian-sphere hierarchy, silk/visibility.h */
 
+/* Where the shading normals come from (silk_load_opts.normals) and, in
+ * silk_mesh.normals_used, where they came from. */
+typedef enum silk_normals_source {
+    SILK_NORMALS_AUTO = 0,    /* the file's where every corner has one, computed otherwise (default) */
+    SILK_NORMALS_COMPUTE,     /* angle-weighted, split at feature edges (paper III-B) */
+    SILK_NORMALS_FILE         /* the file's vn / nx ny nz: the same rule as AUTO, its older name */
+} silk_normals_source;
+
 typedef struct silk_mesh {
     uint32_t nverts, ntris, nnormals, nuvs, nedges;
     uint32_t nfeature_edges, nboundary_edges, nnonmanifold_edges, ndegenerate_tris;
@@ -90,12 +98,9 @@ typedef struct silk_mesh {
     const struct silk_vis *vis;    /* visibility hierarchy, or NULL (built on request) */
 
     silk_vec3 bbox_min, bbox_max;
+    silk_normals_source normals_used;   /* COMPUTE or FILE: what the loader did (0, AUTO, when no loader set it) */
 } silk_mesh;
 
-typedef enum silk_normals_source {
-    SILK_NORMALS_COMPUTE = 0, /* angle-weighted, split at feature edges (paper III-B) */
-    SILK_NORMALS_FILE         /* the file's vn / nx ny nz, where every corner has one */
-} silk_normals_source;
 
 typedef enum silk_orient_mode {
     SILK_ORIENT_FIX = 0,      /* wind triangles consistently, closed parts outward (docs/formats.md) */
@@ -123,7 +128,8 @@ silk_status silk_load_ply(const void *data, size_t len, const char *name,
  * Corners with bit-identical Q16.16 coordinates become one vertex. */
 silk_status silk_load_stl(const void *data, size_t len, const char *name,
                           const silk_load_opts *opts, silk_arena *a, silk_mesh *out, silk_error *err);
-/* Picks the reader from the content: "ply" magic, the size of a binary STL
+/* Picks the reader from the content: a prepared model's signature
+ * (silk/model.h), "ply" magic, the size of a binary STL
  * or an ascii STL's "solid", else OBJ; binary data in a file whose name
  * ends in ".stl" is read as a (damaged) binary STL.  Files of other formats (glTF, FBX, 3DS,
  * OFF, compressed or archived files, binary data) fail with a line naming

@@ -11,6 +11,7 @@
 #include "arena.h"
 #include "error.h"
 #include "mesh.h"
+#include "model.h"
 #include "camera.h"
 #include "raster.h"
 #include "hal.h"

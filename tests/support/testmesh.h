@@ -72,8 +72,4 @@ static inline int tm_fixture_read_shared(tm_fixture *f, const char *name)
  * does not load (after printing why). */
 int tm_load_doubles(const char *path, double **pos, uint32_t *nv, uint32_t **tri, uint32_t *nt);
 
-/* Squared distance from point p to triangle abc, in double (closest point
- * by regions). */
-double tm_point_tri_d2(const double *p, const double *a, const double *b, const double *c);
-
 #endif

@@ -1,0 +1,276 @@
+/*
+ * model.c - reading a prepared model (silk/model.h, docs/formats.md
+ * "Prepared models"): the container (header, section table, CRC-32 of
+ * each section) and its MESH section, the coarse mesh whose vertices lie
+ * on the detailed surface with that surface's normals (the input side of
+ * paper section III: the mesh M and the shading normals of III-B).
+ *
+ * Every field is read byte by byte as little-endian, so the buffer needs
+ * no alignment and the result is the same on every host; every count is
+ * checked against the bytes present before anything is decoded, and every
+ * index against its array, before silk_mesh_build sees it.
+ */
+#include <string.h>
+#include "load.h"
+#include "silk/model.h"
+
+#define BAD(...) silk_fail(err, SILK_ERR_PARSE, name, 0, __VA_ARGS__)
+#define UL(x) ((unsigned long)(x))
+
+/* The fixed part of a MESH section before its arrays. */
+#define MESH_HEAD_BYTES 16
+/* |n|^2 of a stored normal within 1 +- 1/64, in Q32.32 (as validate.c). */
+#define UNIT_SLACK ((int64_t)1 << 26)
+
+static uint32_t rd32(const uint8_t *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+static uint16_t rd16(const uint8_t *p) { return (uint16_t)(p[0] | p[1] << 8); }
+static int32_t rd32s(const uint8_t *p)
+{
+    uint32_t u = rd32(p);
+    return u <= 0x7fffffffu ? (int32_t)u : -(int32_t)(~u) - 1;
+}
+
+uint32_t silk_crc32(uint32_t crc, const void *data, size_t len)
+{
+    const uint8_t *p = data;
+    crc = ~crc;
+    for (size_t i = 0; i < len; i++) {
+        crc ^= p[i];
+        for (int k = 0; k < 8; k++) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+int silk_is_model(const void *data, size_t len)
+{
+    return data && len >= 8 && memcmp(data, SILK_MODEL_MAGIC, 8) == 0;
+}
+
+/* "MESH", or "0x..." for a type that is not four printable characters. */
+static const char *type_name(uint32_t type, char buf[12])
+{
+    for (int i = 0; i < 4; i++) {
+        unsigned char c = (unsigned char)(type >> (8 * i));
+        if (c < 0x21 || c > 0x7e) {
+            static const char hex[] = "0123456789abcdef";
+            buf[0] = '0', buf[1] = 'x';
+            for (int k = 0; k < 8; k++) buf[2 + k] = hex[(type >> (28 - 4 * k)) & 15];
+            buf[10] = '\0';
+            return buf;
+        }
+        buf[i] = (char)c;
+    }
+    buf[4] = '\0';
+    return buf;
+}
+
+void silk_model_section_at(const silk_model *m, uint32_t i, silk_model_section *out)
+{
+    const uint8_t *e = m->base + SILK_MODEL_HEADER_BYTES + (size_t)i * SILK_MODEL_ENTRY_BYTES;
+    out->type = rd32(e);
+    out->flags = rd32(e + 4);
+    out->data = m->base + rd32(e + 8);
+    out->size = rd32(e + 12);
+}
+
+int silk_model_find(const silk_model *m, uint32_t type, silk_model_section *out)
+{
+    for (uint32_t i = 0; i < m->nsections; i++) {
+        silk_model_section_at(m, i, out);
+        if (out->type == type) return 1;
+    }
+    return 0;
+}
+
+static int known_type(uint32_t type) { return type == SILK_SECTION_MESH; }
+
+silk_status silk_model_open(const void *data, size_t len, const char *name, silk_model *out, silk_error *err)
+{
+    const uint8_t *p = data;
+    if (!name) name = "model";
+    memset(out, 0, sizeof *out);
+    if (!silk_is_model(data, len)) return BAD("not a prepared model (no silk model signature)");
+    if (len < SILK_MODEL_HEADER_BYTES) return BAD("truncated: %lu bytes, the header alone is %u", UL(len), SILK_MODEL_HEADER_BYTES);
+    uint32_t major = rd16(p + 8), minor = rd16(p + 10), hsize = rd32(p + 12), fsize = rd32(p + 16);
+    uint32_t n = rd32(p + 20), table_crc = rd32(p + 24);
+    if (major != SILK_MODEL_VERSION_MAJOR)
+        return BAD("format version %lu.%lu; this silk reads version %u", UL(major), UL(minor), SILK_MODEL_VERSION_MAJOR);
+    if (hsize != SILK_MODEL_HEADER_BYTES) return BAD("header size %lu, expected %u", UL(hsize), SILK_MODEL_HEADER_BYTES);
+    if (fsize != len)
+        return BAD("the header says %lu bytes, the file has %lu (truncated or padded)", UL(fsize), UL(len));
+    if (rd32(p + 28) != 0) return BAD("reserved header field is not zero");
+    if (n == 0 || n > SILK_MODEL_MAX_SECTIONS)
+        return BAD("%lu sections (1..%u allowed)", UL(n), SILK_MODEL_MAX_SECTIONS);
+    size_t table_end = SILK_MODEL_HEADER_BYTES + (size_t)n * SILK_MODEL_ENTRY_BYTES;
+    if (table_end > len) return BAD("truncated: the table of %lu sections ends past the file's end", UL(n));
+    if (silk_crc32(0, p + SILK_MODEL_HEADER_BYTES, table_end - SILK_MODEL_HEADER_BYTES) != table_crc)
+        return BAD("section table checksum mismatch (the file is damaged)");
+    out->base = p;
+    out->len = len;
+    out->version_major = major;
+    out->version_minor = minor;
+    out->nsections = n;
+    for (uint32_t i = 0; i < n; i++) {
+        const uint8_t *e = p + SILK_MODEL_HEADER_BYTES + (size_t)i * SILK_MODEL_ENTRY_BYTES;
+        uint32_t type = rd32(e), flags = rd32(e + 4), off = rd32(e + 8), size = rd32(e + 12), crc = rd32(e + 16);
+        char tb[12];
+        if (off < table_end || off % 4 != 0 || off > len || size > len - off)
+            return BAD("section %lu (%s): bytes %lu..%lu lie outside the data (%lu..%lu, 4-byte aligned)", UL(i),
+                       type_name(type, tb), UL(off), UL((uint64_t)off + size), UL(table_end), UL(len));
+        for (uint32_t j = 0; j < i; j++) {
+            const uint8_t *f = p + SILK_MODEL_HEADER_BYTES + (size_t)j * SILK_MODEL_ENTRY_BYTES;
+            uint64_t o2 = rd32(f + 8), s2 = rd32(f + 12);
+            if ((uint64_t)off < o2 + s2 && o2 < (uint64_t)off + size)
+                return BAD("sections %lu and %lu overlap", UL(j), UL(i));
+        }
+        if (silk_crc32(0, p + off, size) != crc)
+            return BAD("section %lu (%s): checksum mismatch (the file is damaged)", UL(i), type_name(type, tb));
+        if ((flags & SILK_SECTION_REQUIRED) && !known_type(type))
+            return BAD("section %lu (%s) is required but unknown to this silk (a newer one wrote it)", UL(i),
+                       type_name(type, tb));
+    }
+    return SILK_OK;
+}
+
+/* The counts of a MESH section and the offsets of its arrays. */
+typedef struct mesh_layout {
+    uint32_t nverts, ntris, nnormals;
+    size_t pos, normal, tri, tri_normal;
+} mesh_layout;
+
+static silk_status mesh_layout_of(const silk_model_section *s, const char *name, mesh_layout *l, silk_error *err)
+{
+    if (s->size < MESH_HEAD_BYTES) return BAD("MESH section of %lu bytes is shorter than its counts", UL(s->size));
+    l->nverts = rd32(s->data);
+    l->ntris = rd32(s->data + 4);
+    l->nnormals = rd32(s->data + 8);
+    if (rd32(s->data + 12) != 0) return BAD("MESH section: reserved field is not zero");
+    if (l->nverts < 3 || l->ntris == 0 || l->nnormals == 0)
+        return BAD("MESH section: %lu vertices, %lu triangles, %lu normals (an empty mesh)", UL(l->nverts),
+                   UL(l->ntris), UL(l->nnormals));
+    if ((uint64_t)l->nverts >= (uint64_t)SILK_NO_INDEX || (uint64_t)l->nnormals >= (uint64_t)SILK_NO_INDEX ||
+        l->ntris > UINT32_MAX / 3)
+        return BAD("MESH section: too many elements (%lu vertices, %lu triangles, %lu normals)", UL(l->nverts),
+                   UL(l->ntris), UL(l->nnormals));
+    uint64_t want = MESH_HEAD_BYTES + 12 * (uint64_t)l->nverts + 12 * (uint64_t)l->nnormals + 24 * (uint64_t)l->ntris;
+    if (want != s->size)
+        return BAD("MESH section: %lu vertices, %lu normals and %lu triangles take %llu bytes, the section has %lu",
+                   UL(l->nverts), UL(l->nnormals), UL(l->ntris), (unsigned long long)want, UL(s->size));
+    l->pos = MESH_HEAD_BYTES;
+    l->normal = l->pos + 12 * (size_t)l->nverts;
+    l->tri = l->normal + 12 * (size_t)l->nnormals;
+    l->tri_normal = l->tri + 12 * (size_t)l->ntris;
+    return SILK_OK;
+}
+
+/* Every value of the section is one the mesh builder may take. */
+static silk_status mesh_check(const silk_model_section *s, const mesh_layout *l, const char *name, silk_error *err)
+{
+    const uint8_t *d = s->data;
+    silk_fx lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+    for (uint32_t v = 0; v < l->nverts; v++)
+        for (int k = 0; k < 3; k++) {
+            silk_fx c = rd32s(d + l->pos + 12 * (size_t)v + 4 * (size_t)k);
+            if (c > SILK_COORD_MAX || c < -SILK_COORD_MAX)
+                return BAD("MESH section: vertex %lu lies outside +-%d model units", UL(v), (int)(SILK_COORD_MAX >> 16));
+            if (v == 0 || c < lo[k]) lo[k] = c;
+            if (v == 0 || c > hi[k]) hi[k] = c;
+        }
+    int64_t diag2 = 0;
+    for (int k = 0; k < 3; k++) diag2 += (int64_t)(hi[k] - lo[k]) * (hi[k] - lo[k]);
+    if (diag2 < (int64_t)SILK_SIZE_MIN * SILK_SIZE_MIN)
+        return BAD("MESH section: the model is smaller than 1/16 unit across");
+    for (uint32_t i = 0; i < l->nnormals; i++) {
+        silk_vec3 n = silk_v3(rd32s(d + l->normal + 12 * (size_t)i), rd32s(d + l->normal + 12 * (size_t)i + 4),
+                              rd32s(d + l->normal + 12 * (size_t)i + 8));
+        /* components checked first, so the square cannot overflow */
+        const silk_fx lim = 2 * SILK_FX_ONE;
+        int big = n.x > lim || n.x < -lim || n.y > lim || n.y < -lim || n.z > lim || n.z < -lim;
+        int64_t n2 = big ? 0 : silk_v3_dot64(n, n);
+        if (n2 < ((int64_t)1 << 32) - UNIT_SLACK || n2 > ((int64_t)1 << 32) + UNIT_SLACK)
+            return BAD("MESH section: normal %lu is not of unit length", UL(i));
+    }
+    for (uint32_t c = 0; c < 3 * l->ntris; c++) {
+        uint32_t v = rd32(d + l->tri + 4 * (size_t)c), n = rd32(d + l->tri_normal + 4 * (size_t)c);
+        if (v >= l->nverts)
+            return BAD("MESH section: triangle %lu uses vertex %lu of %lu", UL(c / 3), UL(v), UL(l->nverts));
+        if (n >= l->nnormals)
+            return BAD("MESH section: triangle %lu uses normal %lu of %lu", UL(c / 3), UL(n), UL(l->nnormals));
+    }
+    return SILK_OK;
+}
+
+silk_status silk_load_model(const void *data, size_t len, const char *name, const silk_load_opts *opts,
+                            silk_arena *a, silk_mesh *out, silk_error *err)
+{
+    silk_load_opts defaults;
+    if (!name) name = "model";
+    if (!opts) {
+        silk_load_opts_default(&defaults);
+        opts = &defaults;
+    }
+    if (!a || !out || (!data && len))
+        return silk_fail(err, SILK_ERR_ARG, name, 0, "silk_load_model: missing buffer, arena or output");
+    const silk_decimal one = { 1, 0 };
+    if (silk_ld_dec_cmp(opts->scale, one) != 0)
+        return silk_fail(err, SILK_ERR_ARG, name, 0, "a prepared model keeps the scale it was prepared with "
+                                                      "(give --scale to silk prepare instead)");
+    memset(out, 0, sizeof *out);
+    silk_model m;
+    silk_model_section s;
+    mesh_layout l = { 0, 0, 0, 0, 0, 0, 0 };
+    silk_status st = silk_model_open(data, len, name, &m, err);
+    if (st) return st;
+    if (!silk_model_find(&m, SILK_SECTION_MESH, &s)) return BAD("no MESH section (no mesh to draw)");
+    if ((st = mesh_layout_of(&s, name, &l, err)) || (st = mesh_check(&s, &l, name, err))) return st;
+
+    int want_n = opts->normals != SILK_NORMALS_COMPUTE;
+    size_t need = 0;
+    int ok = silk_ld_need(&need, l.nverts, sizeof(silk_vec3)) && silk_ld_need(&need, 3 * (uint64_t)l.ntris, sizeof(silk_index));
+    if (want_n)
+        ok = ok && silk_ld_need(&need, l.nnormals, sizeof(silk_vec3)) &&
+             silk_ld_need(&need, 3 * (uint64_t)l.ntris, sizeof(silk_index));
+    if (!ok || need > silk_arena_free_bytes(a)) return silk_ld_nomem(err, name, ok ? need : SIZE_MAX, a);
+
+    silk_arena saved = *a;
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    silk_mesh_input in;
+    memset(&in, 0, sizeof in);
+    in.nverts = l.nverts;
+    in.ntris = l.ntris;
+    in.pos = silk_arena_array(a, l.nverts, sizeof(silk_vec3), SILK_MEM_MESH);
+    in.tri = silk_arena_array(a, 3 * (size_t)l.ntris, sizeof(silk_index), SILK_MEM_MESH);
+    if (want_n) {
+        in.nfile_normals = l.nnormals;
+        in.file_normal = silk_arena_array_top(a, l.nnormals, sizeof(silk_vec3), SILK_MEM_LOAD);
+        in.tri_file_normal = silk_arena_array_top(a, 3 * (size_t)l.ntris, sizeof(silk_index), SILK_MEM_LOAD);
+    }
+    const uint8_t *d = s.data;
+    for (uint32_t v = 0; v < l.nverts; v++) {
+        const uint8_t *q = d + l.pos + 12 * (size_t)v;
+        in.pos[v] = silk_v3(rd32s(q), rd32s(q + 4), rd32s(q + 8));
+    }
+    for (uint32_t c = 0; c < 3 * l.ntris; c++) in.tri[c] = (silk_index)rd32(d + l.tri + 4 * (size_t)c);
+    if (want_n) {
+        for (uint32_t i = 0; i < l.nnormals; i++) {
+            const uint8_t *q = d + l.normal + 12 * (size_t)i;
+            in.file_normal[i] = silk_v3(rd32s(q), rd32s(q + 4), rd32s(q + 8));
+        }
+        for (uint32_t c = 0; c < 3 * l.ntris; c++) in.tri_file_normal[c] = (silk_index)rd32(d + l.tri_normal + 4 * (size_t)c);
+    }
+    /* The model's normals say where the detailed surface has creases (an
+     * edge across which they differ is a feature); the coarse dihedral
+     * angle, large wherever the coarse mesh is coarse, is not consulted. */
+    silk_load_opts own = *opts;
+    if (want_n) own.crease_deg = SILK_FX_C(180, 1);
+    st = silk_mesh_build(&in, name, &own, a, out, err);
+    silk_arena_top_release(a, &mark);
+    if (st != SILK_OK) {
+        silk_ld_arena_restore(a, &saved);
+        memset(out, 0, sizeof *out);
+    }
+    return st;
+}
