@@ -24,9 +24,10 @@
  * writes to the host are the output's cost, not the renderer's).  Under
  * QEMU's -icount these are instructions (tools/profile_fw.sh converts them;
  * "fw timer" runs a loop of known length to check the rate).  After the
- * memory report, a second, unwritten pass over each frame wraps the HAL's two stages in ticks
- * ("fw stages"): the vertex and fragment stages' shares, each call's
- * timing overhead (measured on an empty stage) taken off.  The rest of the
+ * memory report, a second, unwritten pass over each frame times every call
+ * of the HAL's two stages ("fw stages"): the vertex and fragment stages'
+ * shares, each call's timing overhead (measured on an empty stage) taken
+ * off by profile_fw.sh.  The rest of the
  * frame (visibility, silhouette plan, emission, raster) is not split: that
  * needs hooks inside silk_render_bands().
  *
@@ -82,7 +83,7 @@ typedef struct band_out {
     int failed;
     uint32_t crc;                /* FNV-1a over the frame's pixels as rendered */
     uint32_t ticks;              /* fw_ticks() spent in send_band */
-    uint32_t frame_ticks;        /* ... and in the whole frame (kept here, not in another local: no stack) */
+    uint32_t frame_ticks;        /* ... and in the whole frame (here: no extra stack) */
 } band_out;
 
 static void put(band_out *o, const void *p, size_t n)
