@@ -23,6 +23,16 @@
 # buffers are in the arena) and code = flash other than the model.  --check
 # exits 1 when the board's budget is not met (a frame fell back, RAM over
 # budget, core code over 48 KiB).
+#
+# Speed: the firmware reads a timer around each frame and each HAL stage
+# call (platform/mps2/fw_main.c); under QEMU with `-icount shift=0` in
+# BOARD_RUN a tick is a fixed number of instructions, which the firmware's
+# loop of known length gives ("fw timer").  It prints instructions per frame
+# (the renderer's, without the sink's output work), the vertex and fragment
+# stages' shares, and frames per second at BOARD_CLOCK_HZ for each cycles-
+# per-instruction figure of BOARD_CPI; then a line
+#   speed BOARD MESH flat_instructions=N smooth_instructions=N
+# with the largest frame of each mode.
 set -u
 mesh=${1:?usage: profile_fw.sh MESH [--check]}
 check=0
@@ -48,7 +58,8 @@ lib_text=$("${BOARD_CROSS:-}size" -t "$FW_DIR/libsilk.a" 2>/dev/null | awk '/\(T
 
 awk -v board="$BOARD" -v mesh="$mesh" -v name="$name" -v dir="$dir" -v csv="$PROFILE_CSV" -v check="$check" \
     -v flash_budget="$BOARD_FLASH_BYTES" -v width="$BOARD_WIDTH" -v height="$BOARD_HEIGHT" \
-    -v band_rows="$BOARD_BAND_ROWS" -v lib_text="${lib_text:-0}" -v runner="${BOARD_RUN%% *}" '
+    -v band_rows="$BOARD_BAND_ROWS" -v lib_text="${lib_text:-0}" -v runner="${BOARD_RUN%% *}" \
+    -v clock_hz="${BOARD_CLOCK_HZ:-0}" -v cpis="${BOARD_CPI:-}" '
 function hex(s,    i, n, c) {
     n = 0
     s = tolower(s)
@@ -127,6 +138,15 @@ FILENAME ~ /report\.txt$/ {
         stack_size = field("size"); stack_used = field("used")
     } else if ($0 ~ /^fw static /) {
         data = field("data"); bss = field("bss")
+    } else if ($0 ~ /^fw timer /) {
+        loop_instr = field("loop_instructions"); loop_ticks = field("ticks")
+    } else if ($0 ~ /^fw time /) {
+        tf = field("frame"); tmode[tf] = $0 ~ / mode=smooth / ? "smooth" : "flat"; tcam[tf] = field("camera")
+        tticks[tf] = field("render_ticks"); ntime++
+    } else if ($0 ~ /^fw stages /) {
+        tf = field("frame"); ov = field("overhead_ticks_per_1000_calls") / 1000
+        vticks[tf] = field("vertex_ticks") - ov * field("vertex_calls"); vcalls[tf] = field("vertex_calls")
+        fticks[tf] = field("fragment_ticks") - ov * field("fragment_calls"); fcalls[tf] = field("fragment_calls")
     } else if ($0 ~ /^fw ram /) {
         ram_total = field("total"); ram_budget = field("budget")
     }
@@ -188,6 +208,29 @@ END {
     row("ram", "ram total", ram_total, sprintf("of %d budget (%s)", ram_budget, ram_total <= ram_budget ? "fits" : "OVER"))
     if (fell) printf "\n  %d of %d frames fell back (%d smooth): the arena could not hold their per-frame\n" \
         "  scratch, so part or all of the frame was drawn unsmoothed; see docs/small-devices.md.\n", fell, frames, smooth_fell
+    # ---- speed: ticks to instructions, from the loop of known length
+    ipt = loop_ticks > 0 ? loop_instr / loop_ticks : 0
+    if (ntime && ipt > 0 && ipt == int(ipt)) {
+        ncpi = split(cpis, cpi, " ")
+        printf "\nSPEED (instructions per frame; QEMU -icount shift=0, %d instructions a timer tick:\n", ipt
+        printf "  a loop of %d instructions took %d ticks)\n", loop_instr, loop_ticks
+        printf "  %-6s %-6s %12s %11s %11s %12s", "camera", "mode", "frame", "vertex", "fragment", "rest"
+        for (c = 1; c <= ncpi; c++) printf "  %11s", sprintf("fps CPI %s", cpi[c])
+        printf "\n"
+        for (f = 0; f < ntime; f++) {
+            n = tticks[f] * ipt; v = vticks[f] * ipt; g = fticks[f] * ipt
+            printf "  %-6d %-6s %12d %11d %11d %12d", tcam[f], tmode[f], n, v, g, n - v - g
+            for (c = 1; c <= ncpi; c++) printf "  %11.2f", clock_hz / (n * cpi[c])
+            printf "\n"
+            if (csv != "") printf "speed,camera %d %s instructions,%d\n", tcam[f], tmode[f], n >csv
+            if (n > worst[tmode[f]]) worst[tmode[f]] = n
+        }
+        printf "  vertex and fragment: the HAL stages (%d and %d calls in the first frame); rest: visibility,\n", vcalls[0], fcalls[0]
+        printf "  silhouette plan, emission and raster.  fps at %.0f MHz for each cycles-per-instruction figure.\n", clock_hz / 1e6
+        printf "speed %s %s flat_instructions=%d smooth_instructions=%d\n", board, name, worst["flat"], worst["smooth"]
+    } else if (ntime) {
+        printf "\nSPEED: not measured (the timer is not counting instructions: run QEMU with -icount shift=0)\n"
+    }
     if (csv != "") {
         printf "frames,fell_back,%d\n", fell >csv
         if (close(csv) != 0) { print "silk: profile: " csv ": write failed" >"/dev/stderr"; exit 1 }

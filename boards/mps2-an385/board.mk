@@ -31,8 +31,15 @@ BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # The firmware draws flat and smooth only; the reference methods (PN,
 # blend) stay in the host library, where they are measured against.
 BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES
-BOARD_RUN   := qemu-system-arm -M mps2-an385 -nographic -monitor none -serial none \
+# -icount shift=0: virtual time advances exactly 1 ns per instruction, so
+# the firmware's timer (25 MHz, 40 ns a tick) counts instructions.
+BOARD_RUN   := qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none \
                -semihosting-config enable=on,target=native -kernel
+# For the frames-per-second estimate of `make profile`: the usual clock of a
+# Cortex-M3 part (STM32F103: 72 MHz) and the cycles per instruction assumed,
+# a range (docs/small-devices.md, "Speed on the device").
+BOARD_CLOCK_HZ := 72000000
+BOARD_CPI      := 1.25 1.5
 
 # What the firmware renders: each model packed into flash, from BOARD_VIEWS
 # cameras around it (`silk pack --views`), each in flat and smooth mode.

@@ -32,6 +32,15 @@ __attribute__((noreturn))
 #endif
 void fw_exit(int status);
 
+/* A free-running 32-bit tick counter, counting up and wrapping; 0 on a
+ * machine without one.  On the MPS2 board it is the CMSDK APB timer 0
+ * (startup.c), clocked at 25 MHz: under QEMU's `-icount shift=0`, where one
+ * instruction takes exactly 1 ns of virtual time, a tick is 40 instructions. */
+uint32_t fw_ticks(void);
+/* Exactly n (> 0) passes of a two-instruction loop (subs, bne) on the board,
+ * 2n instructions, to check fw_ticks' rate; nothing on the host. */
+void fw_spin(uint32_t n);
+
 /* The program itself (fw_main.c); returns the exit status. */
 int fw_scene(void);
 

@@ -3,7 +3,8 @@
  * host too: `fw-host PREFIX` writes the same frames and report as the
  * board under QEMU, which is how tests/cli_qemu.sh tells a difference of
  * the target (compiler, 32-bit CPU) from a difference of the scene.  The
- * host measures no stack; static sizes are reported as 0.
+ * host measures no stack and has no instruction timer; static sizes and
+ * ticks are reported as 0.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -68,4 +69,14 @@ int main(int argc, char **argv)
         n += (size_t)w;
     }
     return fw_scene();
+}
+
+uint32_t fw_ticks(void)
+{
+    return 0;
+}
+
+void fw_spin(uint32_t n)
+{
+    (void)n;
 }

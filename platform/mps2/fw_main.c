@@ -18,6 +18,19 @@
  * written to PREFIX-cC-flat.ppm and PREFIX-cC-smooth.ppm.  Report lines are
  * "fw NAME key=value ..." on the console (docs/small-devices.md).
  *
+ * Speed: fw_ticks() is read around each silk_render_bands() call and around
+ * each band handed to the sink, so "fw time" gives the renderer's own ticks
+ * per frame (the frame's minus the sink's: checksum, widening and the
+ * writes to the host are the output's cost, not the renderer's).  Under
+ * QEMU's -icount these are instructions (tools/profile_fw.sh converts them;
+ * "fw timer" runs a loop of known length to check the rate).  After the
+ * memory report, a second, unwritten pass over each frame times every call
+ * of the HAL's two stages ("fw stages"): the vertex and fragment stages'
+ * shares, each call's timing overhead (measured on an empty stage) taken
+ * off by profile_fw.sh.  The rest of the
+ * frame (visibility, silhouette plan, emission, raster) is not split: that
+ * needs hooks inside silk_render_bands().
+ *
  * Built by the board's firmware rules (platform/mps2/firmware.mk) with
  * -DFW_BOARD, -DFW_BAND_ROWS, -DFW_ARENA_BYTES, -DFW_FORMAT and
  * -I<dir of fwmodel.h>.
@@ -69,6 +82,8 @@ typedef struct band_out {
     int handle;                  /* -1: no file */
     int failed;
     uint32_t crc;                /* FNV-1a over the frame's pixels as rendered */
+    uint32_t ticks;              /* fw_ticks() spent in send_band */
+    uint32_t frame_ticks;        /* ... and in the whole frame (here: no extra stack) */
 } band_out;
 
 static void put(band_out *o, const void *p, size_t n)
@@ -96,6 +111,7 @@ static void widen(const uint8_t *src, silk_pixfmt fmt, int n, uint8_t *out)
 static int send_band(void *user, const silk_target *t)
 {
     band_out *o = user;
+    uint32_t t0 = fw_ticks();
     size_t bpp = silk_pixfmt_bytes(t->fmt);
     uint8_t rgb[CHUNK_PIXELS * 3];
     for (int y = 0; y < t->rows; y++) {
@@ -107,7 +123,110 @@ static int send_band(void *user, const silk_target *t)
             put(o, rgb, (size_t)n * 3);
         }
     }
+    o->ticks += fw_ticks() - t0;
     return o->failed;
+}
+
+/* The HAL with each stage call timed: vertex and fragment ticks and calls.
+ * Summed over many calls the tick counts are the stages' time (each call's
+ * start falls anywhere within a tick), plus a fixed overhead per call. */
+typedef struct timed_hal {
+    silk_hal hal;                /* first: the core calls the stages with &hal */
+    const silk_hal *inner;
+    uint32_t vticks, vcalls, fticks, fcalls;
+} timed_hal;
+
+static void timed_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out)
+{
+    timed_hal *t = (timed_hal *)h;
+    uint32_t t0 = fw_ticks();
+    t->inner->vertex(t->inner, g, r, out);
+    t->vticks += fw_ticks() - t0;
+    t->vcalls++;
+}
+
+static uint32_t timed_fragment(const silk_hal *h, const silk_fx *var)
+{
+    timed_hal *t = (timed_hal *)h;
+    uint32_t t0 = fw_ticks();
+    uint32_t rgb = t->inner->fragment(t->inner, var);
+    t->fticks += fw_ticks() - t0;
+    t->fcalls++;
+    return rgb;
+}
+
+static void timed_hal_init(timed_hal *t, const silk_hal *inner)
+{
+    memset(t, 0, sizeof *t);
+    t->hal = *inner;
+    t->hal.vertex = timed_vertex;
+    t->hal.fragment = timed_fragment;
+    t->inner = inner;
+}
+
+static uint32_t empty_fragment(const silk_hal *h, const silk_fx *var)
+{
+    (void)h;
+    (void)var;
+    return 0;
+}
+
+/* Ticks per 1000 calls that timed_fragment adds around a stage.  The calls
+ * are spaced unevenly (fw_spin) so that they start at every point of a tick,
+ * as the core's calls do, instead of always at the same one. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static uint32_t timing_overhead(void)
+{
+    silk_hal empty = { 0 };
+    empty.fragment = empty_fragment;
+    timed_hal t;
+    timed_hal_init(&t, &empty);
+    silk_fx var[4] = { 0 };
+    for (uint32_t i = 0; i < 100000; i++) {
+        fw_spin(1 + i % 20);
+        t.hal.fragment(&t.hal, var);
+    }
+    return t.fticks / 100;
+}
+
+static int discard_band(void *user, const silk_target *t)
+{
+    (void)user;
+    (void)t;
+    return 0;
+}
+
+/* A pass over the frames: written to PREFIX (or nowhere), or the stage pass. */
+typedef struct fw_pass {
+    const char *prefix;
+    int stages;                  /* time the HAL's stages, write nothing */
+    uint32_t overhead;           /* timing_overhead(), for the report */
+} fw_pass;
+
+/* The stage pass of one frame: unwritten, the HAL's stages timed.  Never
+ * inlined, so its timed_hal adds nothing to the stack of the frames written. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int time_stages(silk_arena *a, const silk_mesh *m, const silk_view *view, const silk_hal *hal,
+                       const silk_render_opts *ro, silk_target *band, const fw_pass *pass, int frame, int k)
+{
+    timed_hal th;
+    timed_hal_init(&th, hal);
+    silk_sink none = { discard_band, NULL };
+    silk_frame_stats st;
+    silk_error err;
+    if (silk_render_bands(a, m, view, &th.hal, ro, band, &none, &st, &err) != SILK_OK) {
+        say("fw error frame=%d %s", frame, err.msg);
+        return 1;
+    }
+    say("fw stages frame=%d camera=%d mode=%s vertex_ticks=%lu vertex_calls=%lu fragment_ticks=%lu "
+        "fragment_calls=%lu overhead_ticks_per_1000_calls=%lu",
+        frame, k, ro->mode == SILK_MODE_FLAT ? "flat" : "smooth", (unsigned long)th.vticks, (unsigned long)th.vcalls,
+        (unsigned long)th.fticks, (unsigned long)th.fcalls, (unsigned long)pass->overhead);
+    return 0;
 }
 
 /* PREFIX from "PROGRAM PREFIX", or NULL. */
@@ -123,8 +242,9 @@ static const char *out_prefix(char *cmd, size_t size)
 }
 
 static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
-                      const char *prefix, int frame)
+                      const fw_pass *pass, int frame)
 {
+    const char *prefix = pass->prefix;
     const silk_camera *cam = fwmodel_camera(k);
     silk_view view;
     silk_error err;
@@ -140,8 +260,10 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
     silk_render_opts_default(&ro);
     ro.mode = mode;
     const char *mname = mode == SILK_MODE_FLAT ? "flat" : "smooth";
+    silk_frame_stats st;
+    if (pass->stages) return time_stages(a, m, &view, &hal, &ro, band, pass, frame, k);
 
-    band_out o = { -1, 0, 2166136261u };
+    band_out o = { -1, 0, 2166136261u, 0, 0 };
     char path[128];
     if (prefix) {
         snprintf(path, sizeof path, "%s-c%d-%s.ppm", prefix, k, mname);
@@ -154,8 +276,9 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
         put(&o, hdr, (size_t)n);
     }
     silk_sink sink = { send_band, &o };
-    silk_frame_stats st;
+    o.frame_ticks = fw_ticks();
     silk_status s = silk_render_bands(a, m, &view, &hal, &ro, band, &sink, &st, &err);
+    o.frame_ticks = fw_ticks() - o.frame_ticks;
     if (o.handle >= 0 && fw_close(o.handle) != 0) o.failed = 1;
     if (s != SILK_OK || o.failed) {
         say("fw error frame=%d %s", frame, s != SILK_OK ? err.msg : "writing to the host failed");
@@ -165,7 +288,34 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
         "crc=%08lx",
         frame, k, mname, (unsigned long)st.tris_drawn, (unsigned long)st.silhouette_tris,
         (unsigned long)st.samples, (unsigned long)st.frame_bytes, st.fell_back, (unsigned long)o.crc);
+    say("fw time frame=%d camera=%d mode=%s ticks=%lu sink_ticks=%lu render_ticks=%lu", frame, k, mname,
+        (unsigned long)o.frame_ticks, (unsigned long)o.ticks, (unsigned long)(o.frame_ticks - o.ticks));
+
     return 0;
+}
+
+/* What the frames written needed: the arena's high-water marks by purpose,
+ * the stack's, static RAM, and their total against the linked budget. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void report_memory(const silk_arena *a, size_t band_bytes)
+{
+    fw_mem mem;
+    fw_memory(&mem);
+    say("fw arena size=%lu peak=%lu band_buffers=%lu", (unsigned long)a->size, (unsigned long)a->peak,
+        (unsigned long)band_bytes);
+    for (int p = 0; p < SILK_MEM_COUNT; p++)
+        say("fw arena_purpose name=%s peak=%lu", silk_purpose_name((silk_purpose)p),
+            (unsigned long)a->peak_used[p]);
+    /* the arena is part of .bss; the host has no such figures */
+    size_t other_static = mem.data + mem.bss > sizeof arena_mem ? mem.data + mem.bss - sizeof arena_mem : 0;
+    say("fw stack size=%lu used=%lu", (unsigned long)mem.stack_size, (unsigned long)mem.stack_used);
+    say("fw static data=%lu bss=%lu arena_reserved=%lu other=%lu", (unsigned long)mem.data, (unsigned long)mem.bss,
+        (unsigned long)sizeof arena_mem, (unsigned long)other_static);
+    say("fw ram static=%lu arena_peak=%lu stack_used=%lu total=%lu budget=%lu", (unsigned long)other_static,
+        (unsigned long)a->peak, (unsigned long)mem.stack_used,
+        (unsigned long)(other_static + a->peak + mem.stack_used), (unsigned long)mem.ram_size);
 }
 
 int fw_scene(void)
@@ -185,6 +335,11 @@ int fw_scene(void)
     say("fw board=%s model=%s size=%dx%d format=%s band_rows=%d cameras=%d", FW_BOARD, FW_MODEL_NAME, c0->width,
         c0->height, FW_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", FW_BAND_ROWS, fwmodel_NCAMERAS);
 
+    /* The timer's rate, from a loop of a known number of instructions. */
+    uint32_t spin = 1000000u, t0 = fw_ticks();
+    fw_spin(spin);
+    say("fw timer loop_instructions=%lu ticks=%lu", (unsigned long)(2 * spin), (unsigned long)(fw_ticks() - t0));
+
     silk_arena arena;
     silk_arena_init(&arena, arena_mem, sizeof arena_mem);
     int rows = FW_BAND_ROWS < c0->height ? FW_BAND_ROWS : c0->height;
@@ -199,26 +354,18 @@ int fw_scene(void)
     silk_target band;
     silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
 
-    int rc = 0, frame = 0;
-    for (int k = 0; k < fwmodel_NCAMERAS && !rc; k++)
-        for (int mode = 0; mode < 2 && !rc; mode++)
-            rc = render_one(&arena, &mesh, k, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, &band, prefix, frame++);
-
-    fw_mem mem;
-    fw_memory(&mem);
-    say("fw arena size=%lu peak=%lu band_buffers=%lu", (unsigned long)arena.size, (unsigned long)arena.peak,
-        (unsigned long)band_bytes);
-    for (int p = 0; p < SILK_MEM_COUNT; p++)
-        say("fw arena_purpose name=%s peak=%lu", silk_purpose_name((silk_purpose)p),
-            (unsigned long)arena.peak_used[p]);
-    /* the arena is part of .bss; the host has no such figures */
-    size_t other_static = mem.data + mem.bss > sizeof arena_mem ? mem.data + mem.bss - sizeof arena_mem : 0;
-    say("fw stack size=%lu used=%lu", (unsigned long)mem.stack_size, (unsigned long)mem.stack_used);
-    say("fw static data=%lu bss=%lu arena_reserved=%lu other=%lu", (unsigned long)mem.data, (unsigned long)mem.bss,
-        (unsigned long)sizeof arena_mem, (unsigned long)other_static);
-    say("fw ram static=%lu arena_peak=%lu stack_used=%lu total=%lu budget=%lu", (unsigned long)other_static,
-        (unsigned long)arena.peak, (unsigned long)mem.stack_used,
-        (unsigned long)(other_static + arena.peak + mem.stack_used), (unsigned long)mem.ram_size);
+    int rc = 0;
+    fw_pass pass = { prefix, 0, 0 };
+    for (int p = 0; p < 2; p++) {
+        if (p == 1) {   /* the stage pass last, so that its timing adds nothing to the memory reported */
+            report_memory(&arena, band_bytes);
+            if (rc) break;
+            pass = (fw_pass){ NULL, 1, timing_overhead() };
+        }
+        for (int k = 0, frame = 0; k < fwmodel_NCAMERAS && !rc; k++)
+            for (int mode = 0; mode < 2 && !rc; mode++)
+                rc = render_one(&arena, &mesh, k, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, &band, &pass, frame++);
+    }
     say("fw result=%s", rc ? "error" : "ok");
     return rc;
 }
