@@ -1,0 +1,379 @@
+/*
+ * test_silmap_interp.c - the silhouette map's interpolation (paper
+ * section 5) against double-precision references written here: the
+ * rectification, the projective map to the current view, linear
+ * interpolation of two outlines as the silhouette of the two views' visual
+ * hull, the polytope triangle, and whole outlines of generated shapes and
+ * the shared bunny against the true silhouette drawn at the current view.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "support/testmesh.h"
+#include "../tools/gen.h"
+#include "../tools/silmap.h"
+
+static silk_fx fx(double v) { return (silk_fx)floor(v * 65536 + 0.5); }
+static double dbl(silk_fx v) { return v / 65536.0; }
+static void v3d(silk_vec3 v, double out[3]) { out[0] = dbl(v.x), out[1] = dbl(v.y), out[2] = dbl(v.z); }
+static double ddot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static void unit_rand(double d[3])
+{
+    double n;
+    do {
+        for (int k = 0; k < 3; k++) d[k] = check_uniform(-1, 1);
+        n = sqrt(ddot(d, d));
+    } while (n < 0.1 || n > 1);
+    for (int k = 0; k < 3; k++) d[k] /= n;
+}
+
+/* The reference projection by the (rounded) fixed-point camera. */
+static int project_d(const silk_silmap_cam *c, const double q[3], double out[2])
+{
+    double e[3], r[3], u[3], f[3];
+    v3d(c->eye, e), v3d(c->right, r), v3d(c->up, u), v3d(c->fwd, f);
+    double d[3] = { q[0] - e[0], q[1] - e[1], q[2] - e[2] };
+    double z = c->ortho ? 1 : ddot(d, f);
+    if (!(z > 0)) return -1;
+    out[0] = dbl(c->cx) + dbl(c->focal) * ddot(d, r) / z;
+    out[1] = dbl(c->cy) - dbl(c->focal) * ddot(d, u) / z;
+    return 0;
+}
+
+/* A map camera 3 radii from centre (radius 1) along dir. */
+static void map_cam(const double centre[3], const double dir[3], silk_silmap_cam *c)
+{
+    silmap_camera cam;
+    silmap_camera_at(centre, 1, dir, 3, 256, &cam);
+    CHECK(silmap_cam_export(&cam, c) == 0);
+}
+
+/* ---- parity fill of an outline at pixel centres ------------------------------------ */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* img[w * h] := 1 where the pixel centre is inside under the parity rule. */
+static void fill_outline(const silk_outline *o, int w, int h, uint8_t *img)
+{
+    memset(img, 0, (size_t)w * h);
+    double *xs = malloc((o->npts + 1) * sizeof *xs);
+    for (int y = 0; y < h; y++) {
+        double yc = y + 0.5;
+        uint32_t n = 0;
+        for (uint32_t l = 0; l < o->nloops; l++)
+            for (uint32_t i = o->start[l]; i < o->start[l + 1]; i++) {
+                silk_vec2 p = o->pt[i], q = o->pt[i + 1 < o->start[l + 1] ? i + 1 : o->start[l]];
+                double py = dbl(p.y), qy = dbl(q.y);
+                if ((py <= yc) == (qy <= yc)) continue;
+                xs[n++] = dbl(p.x) + (yc - py) * (dbl(q.x) - dbl(p.x)) / (qy - py);
+            }
+        qsort(xs, n, sizeof *xs, cmp_double);
+        for (uint32_t k = 0; k + 1 < n; k += 2)
+            for (int x = (int)fmax(0, ceil(xs[k] - 0.5)); x < w && x + 0.5 < xs[k + 1]; x++) img[y * w + x] = 1;
+    }
+    free(xs);
+}
+
+/* ---- the tests ---------------------------------------------------------------------- */
+
+/* Section 5.2: rectifying a view's image is exact (the 3x3 map lands every
+ * point where the rectified camera sees it), and the two rectified views
+ * see every point on the same scan line. */
+TEST(rectification)
+{
+    double worst = 0, epi = 0;
+    for (int trial = 0; trial < 40; trial++) {
+        double c[3] = { check_uniform(-3, 3), check_uniform(-3, 3), check_uniform(-3, 3) }, da[3], db[3];
+        unit_rand(da);
+        do {
+            unit_rand(db);
+        } while (ddot(da, db) < 0.9 || ddot(da, db) > 0.999);
+        silk_silmap_cam ca, cb, ra, rb;
+        map_cam(c, da, &ca);
+        map_cam(c, db, &cb);
+        silk_vec3 cf = { fx(c[0]), fx(c[1]), fx(c[2]) };
+        CHECK(silk_silmap_rectified(ca.eye, cb.eye, cf, ca.focal, &ra, &rb) == SILK_OK);
+        silk_h3 ha, hb;
+        CHECK(silk_h3_between(&ca, &ra, NULL, NULL, &ha) == SILK_OK);
+        CHECK(silk_h3_between(&cb, &rb, NULL, NULL, &hb) == SILK_OK);
+        for (int i = 0; i < 20; i++) {
+            double q[3], d[3];
+            unit_rand(d);
+            double rho = check_uniform(0, 1);
+            for (int k = 0; k < 3; k++) q[k] = c[k] + rho * d[k];
+            double pa[2], pb[2], refa[2], refb[2];
+            CHECK(project_d(&ca, q, pa) == 0 && project_d(&cb, q, pb) == 0);
+            CHECK(project_d(&ra, q, refa) == 0 && project_d(&rb, q, refb) == 0);
+            silk_vec2 ua, ub;
+            CHECK(silk_h3_apply(&ha, (silk_vec2){ fx(pa[0]), fx(pa[1]) }, &ua) == 0);
+            CHECK(silk_h3_apply(&hb, (silk_vec2){ fx(pb[0]), fx(pb[1]) }, &ub) == 0);
+            worst = fmax(worst, fmax(hypot(dbl(ua.x) - refa[0], dbl(ua.y) - refa[1]),
+                                     hypot(dbl(ub.x) - refb[0], dbl(ub.y) - refb[1])));
+            epi = fmax(epi, fabs(dbl(ua.y) - dbl(ub.y)));
+        }
+    }
+    CHECKF(worst < 0.02, "rectified point %.4f px off", worst);
+    CHECKF(epi < 0.03, "scan lines %.4f px apart", epi);
+    printf("  rectification: within %.5f px of the double reference, scan lines agree to %.5f px\n", worst, epi);
+}
+
+/* Section 5: points on the plane through the centre seen by a map view
+ * land, through the 3x3 map, where the current camera sees them;
+ * perspective and orthographic; and the current camera in the map's terms
+ * projects like silk_view_project. */
+TEST(projective_map)
+{
+    double worst = 0, conv = 0;
+    for (int trial = 0; trial < 60; trial++) {
+        double c[3] = { check_uniform(-2, 2), check_uniform(-2, 2), check_uniform(-2, 2) }, da[3], n[3], de[3];
+        unit_rand(da);
+        unit_rand(n);
+        unit_rand(de);
+        if (ddot(n, da) < 0) for (int k = 0; k < 3; k++) n[k] = -n[k];
+        if (ddot(de, da) < 0.3) for (int k = 0; k < 3; k++) de[k] = da[k];
+        silk_silmap_cam ca, cb;
+        map_cam(c, da, &ca);
+        silk_camera cam;
+        memset(&cam, 0, sizeof cam);
+        double dist = check_uniform(2.2, 6);
+        cam.eye = (silk_vec3){ fx(c[0] + dist * de[0]), fx(c[1] + dist * de[1]), fx(c[2] + dist * de[2]) };
+        cam.target = (silk_vec3){ fx(c[0] + 0.1), fx(c[1]), fx(c[2] - 0.1) };
+        cam.up = (silk_vec3){ 0, SILK_FX_ONE, 0 };
+        cam.ortho = trial & 1;
+        cam.fov_deg = fx(40);
+        cam.ortho_half_height = fx(1.5);
+        cam.znear = fx(0.1);
+        cam.zfar = fx(20);
+        cam.width = 320, cam.height = 240;
+        silk_view view;
+        silk_error err;
+        if (fabs(de[1]) > 0.95) continue;
+        CHECK(silk_view_init(&view, &cam, &err) == SILK_OK);
+        silk_silmap_cam_of_view(&view, &cb);
+        silk_vec3 nf, cf = { fx(c[0]), fx(c[1]), fx(c[2]) };
+        CHECK(silk_v3_normalize((silk_vec3){ fx(n[0]), fx(n[1]), fx(n[2]) }, &nf));
+        double nd[3];
+        v3d(nf, nd);
+        silk_h3 h;
+        CHECK(silk_h3_between(&ca, &cb, &nf, &cf, &h) == SILK_OK);
+        for (int i = 0; i < 20; i++) {
+            /* a point of the plane within the unit sphere */
+            double q[3], d[3];
+            unit_rand(d);
+            double s = ddot(d, nd), rho = check_uniform(0, 1);
+            for (int k = 0; k < 3; k++) q[k] = c[k] + rho * (d[k] - s * nd[k]);
+            double pa[2], ref[2];
+            CHECK(project_d(&ca, q, pa) == 0);
+            CHECK(project_d(&cb, q, ref) == 0);
+            silk_vec2 u;
+            CHECK(silk_h3_apply(&h, (silk_vec2){ fx(pa[0]), fx(pa[1]) }, &u) == 0);
+            worst = fmax(worst, hypot(dbl(u.x) - ref[0], dbl(u.y) - ref[1]));
+            silk_vec2 sv;
+            CHECK(silk_view_project(&view, (silk_vec3){ fx(q[0]), fx(q[1]), fx(q[2]) }, &sv));
+            conv = fmax(conv, hypot(dbl(sv.x) - ref[0], dbl(sv.y) - ref[1]));
+        }
+    }
+    CHECKF(worst < 0.05, "mapped point %.4f px off", worst);
+    CHECKF(conv < 0.05, "the current camera %.4f px off silk_view_project", conv);
+    printf("  projective map: within %.5f px of the double reference (camera conventions agree to %.5f px)\n",
+           worst, conv);
+}
+
+/* Intervals of a double-precision parity outline on scan line y. */
+static int spans_at(const silk_outline *o, double y, double *xs)
+{
+    int n = 0;
+    for (uint32_t l = 0; l < o->nloops; l++)
+        for (uint32_t i = o->start[l]; i < o->start[l + 1]; i++) {
+            silk_vec2 p = o->pt[i], q = o->pt[i + 1 < o->start[l + 1] ? i + 1 : o->start[l]];
+            double py = dbl(p.y), qy = dbl(q.y);
+            if ((py <= y) == (qy <= y)) continue;
+            xs[n++] = dbl(p.x) + (y - py) * (dbl(q.x) - dbl(p.x)) / (qy - py);
+        }
+    qsort(xs, (size_t)n, sizeof *xs, cmp_double);
+    return n & ~1;
+}
+
+/* The flatland visual hull: is (x, y) seen from the eye at alpha inside the
+ * silhouette of the intersection of the two views' cones?  Along its ray
+ * (t = focal * baseline / depth > 0) a point is seen at x + alpha t from a
+ * and x - (1 - alpha) t from b. */
+static int in_visual_hull(const double *xa, int na, const double *xb, int nb, double alpha, double x)
+{
+    for (int i = 0; i < na; i += 2)
+        for (int j = 0; j < nb; j += 2) {
+            double lo = fmax(0, fmax((xa[i] - x) / alpha, (x - xb[j + 1]) / (1 - alpha)));
+            double hi = fmin((xa[i + 1] - x) / alpha, (x - xb[j]) / (1 - alpha));
+            if (lo < hi) return 1;
+        }
+    return 0;
+}
+
+/* Pixels where the interpolated outline and the visual hull differ, not
+ * counting pixel centres within 0.01 px of the reference's boundary. */
+static int visual_hull_mismatch(const silk_outline *a, const silk_outline *b, double alpha, const silk_outline *out,
+                                int w, int h, int *inside)
+{
+    uint8_t *img = malloc((size_t)w * h);
+    double *xa = malloc((a->npts + 2) * sizeof *xa), *xb = malloc((b->npts + 2) * sizeof *xb);
+    fill_outline(out, w, h, img);
+    int bad = 0;
+    *inside = 0;
+    for (int y = 0; y < h; y++) {
+        int na = spans_at(a, y + 0.5, xa), nb = spans_at(b, y + 0.5, xb);
+        for (int x = 0; x < w; x++) {
+            int ref = in_visual_hull(xa, na, xb, nb, alpha, x + 0.5);
+            *inside += ref;
+            if (ref != img[y * w + x] && in_visual_hull(xa, na, xb, nb, alpha, x + 0.49) == ref &&
+                in_visual_hull(xa, na, xb, nb, alpha, x + 0.51) == ref)
+                bad++;
+        }
+    }
+    free(img);
+    free(xa);
+    free(xb);
+    return bad;
+}
+
+/* Projected points' convex hull (monotone chain) as one loop. */
+static uint32_t hull2d(double (*p)[2], uint32_t n, silk_vec2 *out)
+{
+    for (uint32_t i = 1; i < n; i++)
+        for (uint32_t j = i; j > 0 && (p[j - 1][0] > p[j][0] || (p[j - 1][0] == p[j][0] && p[j - 1][1] > p[j][1])); j--) {
+            double t0 = p[j][0], t1 = p[j][1];
+            p[j][0] = p[j - 1][0], p[j][1] = p[j - 1][1], p[j - 1][0] = t0, p[j - 1][1] = t1;
+        }
+    uint32_t k = 0;
+    double (*hq)[2] = malloc(2 * (n + 1) * sizeof *hq);
+    for (int pass = 0; pass < 2; pass++) {
+        uint32_t base = k;
+        for (uint32_t ii = 0; ii < n; ii++) {
+            uint32_t i = pass ? n - 1 - ii : ii;
+            while (k >= base + 2 && (hq[k - 1][0] - hq[k - 2][0]) * (p[i][1] - hq[k - 2][1]) -
+                                        (hq[k - 1][1] - hq[k - 2][1]) * (p[i][0] - hq[k - 2][0]) <= 0)
+                k--;
+            hq[k][0] = p[i][0], hq[k][1] = p[i][1];
+            k++;
+        }
+        k--;
+    }
+    for (uint32_t i = 0; i < k; i++) out[i] = (silk_vec2){ fx(hq[i][0]), fx(hq[i][1]) };
+    free(hq);
+    return k;
+}
+
+/* Section 5.2's property: for a convex polyhedron seen by two rectified
+ * views, the interpolated outline is the silhouette of the two views'
+ * visual hull, at every alpha. */
+TEST(lerp_convex_is_visual_hull)
+{
+    const int W = 200, H = 200;
+    const double f = 150, L = 1.5;
+    int worst = 0, inside = 0;
+    for (int trial = 0; trial < 12; trial++) {
+        double pc[3] = { check_uniform(0, L), check_uniform(-0.5, 0.5), check_uniform(4, 6) };
+        enum { N = 24 };
+        double pa[N][2], pb[N][2];
+        for (int i = 0; i < N; i++) {
+            double d[3];
+            unit_rand(d);
+            double q[3] = { pc[0] + d[0] * 1.5, pc[1] + d[1], pc[2] + d[2] };
+            pa[i][0] = W / 2.0 + f * q[0] / q[2], pa[i][1] = H / 2.0 - f * q[1] / q[2];
+            pb[i][0] = W / 2.0 + f * (q[0] - L) / q[2], pb[i][1] = pa[i][1];
+        }
+        silk_vec2 la[N + 1], lb[N + 1];
+        uint32_t sa[2] = { 0, hull2d(pa, N, la) }, sb[2] = { 0, hull2d(pb, N, lb) };
+        silk_outline a = { 1, sa[1], sa, la }, b = { 1, sb[1], sb, lb };
+        static uint8_t buf[1 << 20];
+        silk_arena ar;
+        for (double alpha = 0.125; alpha < 1; alpha += 0.25) {
+            silk_arena_init(&ar, buf, sizeof buf);
+            silk_outline out;
+            CHECK(silk_outline_lerp(&a, &b, fx(alpha), &ar, &out) == SILK_OK);
+            int in;
+            int bad = visual_hull_mismatch(&a, &b, alpha, &out, W, H, &in);
+            worst = bad > worst ? bad : worst;
+            inside += in;
+        }
+    }
+    CHECKF(worst == 0, "%d pixels differ from the visual hull's silhouette", worst);
+    printf("  convex polyhedra, 48 interpolations: at most %d of %d pixels differ from the visual hull\n", worst,
+           inside);
+}
+
+/* Two blobs side by side at different depths: one interval from one view,
+ * two from the other, and every mixture (the pants); the outlines traced
+ * from images.  The union is exact at the outlines' vertex scan lines and
+ * linear between them, so a few pixels may differ where a leg's end moves
+ * non-linearly. */
+TEST(lerp_pants)
+{
+    const int W = 240, H = 160;
+    const double f = 200, L = 2;
+    double worst_frac = 0;
+    int total_bad = 0, total_in = 0;
+    for (int trial = 0; trial < 8; trial++) {
+        double c1[3] = { check_uniform(-0.3, 0.3), check_uniform(-0.2, 0.2), 5 };
+        double c2[3] = { c1[0] + check_uniform(0.4, 1.2), c1[1] + check_uniform(-0.3, 0.3), check_uniform(7, 9) };
+        uint8_t *img = malloc((size_t)W * H);
+        silmap_contours tr[2];
+        for (int view = 0; view < 2; view++) {
+            memset(img, 0, (size_t)W * H);
+            const double *cs[2] = { c1, c2 };
+            for (int bl = 0; bl < 2; bl++) {
+                /* a ball of radius 0.35: its outline is a circle (nearly) */
+                double z = cs[bl][2], cx = W / 2.0 + f * (cs[bl][0] - view * L) / z, cy = H / 2.0 - f * cs[bl][1] / z;
+                double r = f * 0.35 / z;
+                for (int y = 0; y < H; y++)
+                    for (int x = 0; x < W; x++)
+                        if (hypot(x + 0.5 - cx, y + 0.5 - cy) < r) img[y * W + x] = 1;
+            }
+            CHECK(silmap_trace(img, W, H, &tr[view]) == 0);
+        }
+        free(img);
+        silk_outline o[2];
+        uint32_t *st[2];
+        silk_vec2 *pt[2];
+        for (int v = 0; v < 2; v++) {
+            st[v] = malloc((tr[v].nloops + 1) * sizeof **st);
+            pt[v] = malloc(tr[v].npts * sizeof **pt);
+            memcpy(st[v], tr[v].start, (tr[v].nloops + 1) * sizeof **st);
+            for (uint32_t i = 0; i < tr[v].npts; i++) pt[v][i] = (silk_vec2){ fx(tr[v].pt[2 * i]), fx(tr[v].pt[2 * i + 1]) };
+            o[v] = (silk_outline){ tr[v].nloops, tr[v].npts, st[v], pt[v] };
+        }
+        static uint8_t buf[1 << 21];
+        for (double alpha = 0.1; alpha < 1; alpha += 0.2) {
+            silk_arena ar;
+            silk_arena_init(&ar, buf, sizeof buf);
+            silk_outline out;
+            CHECK(silk_outline_lerp(&o[0], &o[1], fx(alpha), &ar, &out) == SILK_OK);
+            int in, bad = visual_hull_mismatch(&o[0], &o[1], alpha, &out, W, H, &in);
+            total_bad += bad, total_in += in;
+            worst_frac = fmax(worst_frac, in ? (double)bad / in : 0);
+        }
+        for (int v = 0; v < 2; v++) {
+            silmap_contours_free(&tr[v]);
+            free(st[v]);
+            free(pt[v]);
+        }
+    }
+    CHECKF(worst_frac < 0.002, "%.4f of the pixels differ from the visual hull", worst_frac);
+    printf("  two blobs (pants), 40 interpolations: %d of %d pixels differ from the visual hull\n", total_bad,
+           total_in);
+}
+
+int main(void)
+{
+    RUN(rectification);
+    RUN(projective_map);
+    RUN(lerp_convex_is_visual_hull);
+    RUN(lerp_pants);
+    return check_done();
+}
