@@ -162,8 +162,8 @@ static bfm image_to_dir(const silk_silmap_cam *c)
     bfm m;
     const silk_fx *r = &c->right.x, *u = &c->up.x, *f = &c->fwd.x;
     for (int i = 0; i < 3; i++) {
-        m.m[3 * i] = (int64_t)r[i] << 16;
-        m.m[3 * i + 1] = -((int64_t)u[i] << 16);
+        m.m[3 * i] = (int64_t)r[i] * 65536;
+        m.m[3 * i + 1] = -((int64_t)u[i] * 65536);
         m.m[3 * i + 2] = q32(c->focal, f[i]) - q32(c->cx, r[i]) + q32(c->cy, u[i]);
     }
     m.e[0] = m.e[1] = m.e[2] = -32;
@@ -184,7 +184,7 @@ static bfm dir_to_image(const silk_silmap_cam *c)
         } else {
             m[i] = q32(c->focal, r[i]) + q32(c->cx, f[i]);
             m[3 + i] = -q32(c->focal, u[i]) + q32(c->cy, f[i]);
-            m[6 + i] = (int64_t)f[i] << 16;
+            m[6 + i] = (int64_t)f[i] * 65536;
         }
     }
     return bf_q32(m, 3);
@@ -199,7 +199,7 @@ silk_status silk_h3_between(const silk_silmap_cam *a, const silk_silmap_cam *b, 
     if (!plane) {
         /* same eye: the direction is the point */
         full = bf_mul(&pb, 3, &ma);
-        int64_t fr[9] = { (int64_t)b->fwd.x << 16, (int64_t)b->fwd.y << 16, (int64_t)b->fwd.z << 16 };
+        int64_t fr[9] = { (int64_t)b->fwd.x * 65536, (int64_t)b->fwd.y * 65536, (int64_t)b->fwd.z * 65536 };
         bfm fb = bf_q32(fr, 1);
         depth = bf_mul(&fb, 1, &ma);
     } else {
@@ -213,7 +213,7 @@ silk_status silk_h3_between(const silk_silmap_cam *a, const silk_silmap_cam *b, 
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) gm[3 * i + j] = q32(dpp[i], n[j]) + (i == j ? k : 0);
         bfm g = bf_q32(gm, 3);
-        int64_t nm[9] = { (int64_t)n[0] << 16, (int64_t)n[1] << 16, (int64_t)n[2] << 16 };
+        int64_t nm[9] = { (int64_t)n[0] * 65536, (int64_t)n[1] * 65536, (int64_t)n[2] * 65536 };
         bfm nr = bf_q32(nm, 1);
         bfm p = bf_mul(&pb, 3, &g);
         if (b->ortho) {
@@ -222,7 +222,7 @@ silk_status silk_h3_between(const silk_silmap_cam *a, const silk_silmap_cam *b, 
             for (int j = 0; j < 3; j++) {
                 am[j] = q32(b->cx, n[j]);
                 am[3 + j] = q32(b->cy, n[j]);
-                am[6 + j] = (int64_t)n[j] << 16;
+                am[6 + j] = (int64_t)n[j] * 65536;
             }
             bfm add = bf_q32(am, 3);
             p = bf_add(&p, &add);
@@ -309,8 +309,8 @@ silk_status silk_silmap_rectified(silk_vec3 pa, silk_vec3 pb, silk_vec3 centre, 
     /* towards the centre, square to the base line */
     silk_vec3 z0 = silk_v3_sub(centre, pa);
     int64_t s = silk_v3_dot64(z0, x);   /* Q32.32 */
-    int64_t zz[3] = { ((int64_t)z0.x << 16) - s * x.x / 65536, ((int64_t)z0.y << 16) - s * x.y / 65536,
-                      ((int64_t)z0.z << 16) - s * x.z / 65536 };
+    int64_t zz[3] = { ((int64_t)z0.x * 65536) - s * x.x / 65536, ((int64_t)z0.y * 65536) - s * x.y / 65536,
+                      ((int64_t)z0.z * 65536) - s * x.z / 65536 };
     if (!unit64(zz, &z)) return SILK_ERR_ARG;
     silk_silmap_cam c;
     memset(&c, 0, sizeof c);
@@ -411,11 +411,12 @@ typedef struct trap { seg l, r; } trap;
 
 #define LERP_MAX_TRAPS 16            /* pairs of intervals per band united exactly */
 #define LERP_MAX_LINES (2 * LERP_MAX_TRAPS)
+#define LERP_SEAM ((silk_fx)64)      /* 1/1024 px: intervals this close are one */
 
 /* One outline's active edges on the way down. */
 typedef struct sweep {
     const ledge *e;
-    uint32_t n, next, nact;
+    uint32_t n, next, nact, nint;
     uint32_t *act;
     seg *x;                          /* the active edges' ends on the band, sorted */
 } sweep;
@@ -441,6 +442,22 @@ static void sweep_band(sweep *s, silk_fx ya, silk_fx yb)
         }
         s->x[j] = v;
     }
+    /* intervals under the parity rule; two that meet (an edge shared by
+     * two pieces of an interpolated outline) are one, and empty ones are
+     * none, so that the seams do not count as intervals */
+    uint32_t n = 0;
+    for (uint32_t i = 0; i + 1 < s->nact; i += 2) {
+        seg l = s->x[i], r = s->x[i + 1];
+        if (l.a >= r.a && l.b >= r.b) continue;
+        if (n && l.a - s->x[2 * n - 1].a <= LERP_SEAM && l.b - s->x[2 * n - 1].b <= LERP_SEAM) {
+            s->x[2 * n - 1] = r;
+            continue;
+        }
+        s->x[2 * n] = l;
+        s->x[2 * n + 1] = r;
+        n++;
+    }
+    s->nint = n;
 }
 
 static silk_fx lerp_fx(silk_fx p, silk_fx q, silk_fx t)
@@ -553,11 +570,15 @@ static uint32_t lerp_pass(lerp_ctx *c, silk_vec2 *pt)
         silk_fx ya = c->ys[k], yb = c->ys[k + 1];
         sweep_band(&c->sa, ya, yb);
         sweep_band(&c->sb, ya, yb);
-        uint32_t na = c->sa.nact / 2, nb = c->sb.nact / 2;
+        uint32_t na = c->sa.nint, nb = c->sb.nint;
         if (!na || !nb) continue;
         uint32_t nt = 0;
         for (uint32_t i = 0; i < na; i++)
             for (uint32_t j = 0; j < nb; j++) {
+                /* as many intervals on both sides: each its own clique,
+                 * matched in order (section 5.3, "mutant pants"), so that a
+                 * hole seen by both views stays open; otherwise the pants */
+                if (na == nb && i != j) continue;
                 const seg *al = &c->sa.x[2 * i], *ar = &c->sa.x[2 * i + 1];
                 const seg *bl = &c->sb.x[2 * j], *br = &c->sb.x[2 * j + 1];
                 silk_fx la, ra, lb, rb;

@@ -202,13 +202,16 @@ static int spans_at(const silk_outline *o, double y, double *xs)
 }
 
 /* The flatland visual hull: is (x, y) seen from the eye at alpha inside the
- * silhouette of the intersection of the two views' cones?  Along its ray
+ * silhouette of the intersection of the two views' cones?  With as many
+ * intervals in both views, the hull of each matched pair (the cliques of
+ * section 5.3), else of every pair (the pants).  Along its ray
  * (t = focal * baseline / depth > 0) a point is seen at x + alpha t from a
  * and x - (1 - alpha) t from b. */
 static int in_visual_hull(const double *xa, int na, const double *xb, int nb, double alpha, double x)
 {
     for (int i = 0; i < na; i += 2)
         for (int j = 0; j < nb; j += 2) {
+            if (na == nb && i != j) continue;   /* matched cliques */
             double lo = fmax(0, fmax((xa[i] - x) / alpha, (x - xb[j + 1]) / (1 - alpha)));
             double hi = fmin((xa[i + 1] - x) / alpha, (x - xb[j]) / (1 - alpha));
             if (lo < hi) return 1;
@@ -369,11 +372,217 @@ TEST(lerp_pants)
            total_in);
 }
 
+/* Section 4: the triangle the ray from the centre through the eye meets,
+ * found by walking from any triangle, against a double search over all. */
+TEST(locate_triangle)
+{
+    silmap_polytope poly;
+    CHECK(silmap_icosphere(2, &poly) == 0);
+    silmap m;
+    memset(&m, 0, sizeof m);
+    m.poly = poly;
+    m.radius = 1;
+    m.views = calloc(poly.nviews, sizeof *m.views);
+    double c[3] = { 0.25, -0.5, 1 };
+    for (uint32_t i = 0; i < poly.nviews; i++) silmap_camera_at(c, 1, &poly.dir[3 * i], 3, 64, &m.views[i].cam);
+    memcpy(m.centre, c, sizeof c);
+    silmap_fixed f;
+    CHECK(silmap_export(&m, &f) == 0);
+    int wrong = 0;
+    double worst = 0;
+    uint32_t hint = 0;
+    for (int trial = 0; trial < 2000; trial++) {
+        double d[3];
+        unit_rand(d);
+        double dist = check_uniform(0.2, 6);
+        silk_vec3 eye = { fx(c[0] + dist * d[0]), fx(c[1] + dist * d[1]), fx(c[2] + dist * d[2]) };
+        uint32_t t;
+        silk_fx b[3];
+        CHECK(silk_silmap_locate(&f.map, eye, trial & 1 ? hint : (uint32_t)trial % poly.ntris, &t, b) == SILK_OK);
+        hint = t;
+        /* the reference: every triangle's ray barycentrics */
+        double de[3];
+        v3d(eye, de);
+        for (int k = 0; k < 3; k++) de[k] -= dbl(f.map.centre.x) * (k == 0) + dbl(f.map.centre.y) * (k == 1) + dbl(f.map.centre.z) * (k == 2);
+        int found = 0;
+        for (uint32_t u = 0; u < poly.ntris && !found; u++) {
+            double a[3][3];
+            for (int k = 0; k < 3; k++) v3d(silk_v3_sub(f.map.views[poly.tri[3 * u + k]].cam.eye, f.map.centre), a[k]);
+            double w[3];
+            for (int k = 0; k < 3; k++) {
+                const double *p = a[(k + 1) % 3], *q = a[(k + 2) % 3];
+                double cr[3] = { p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0] };
+                w[k] = ddot(de, cr);
+            }
+            if (w[0] >= -1e-9 && w[1] >= -1e-9 && w[2] >= -1e-9) {
+                found = 1;
+                double sum = w[0] + w[1] + w[2];
+                if (u != t) {
+                    /* on an edge both are right: the weights must say so */
+                    double small = fmin(w[0], fmin(w[1], w[2])) / sum;
+                    if (small > 1e-4) wrong++;
+                } else
+                    for (int k = 0; k < 3; k++) worst = fmax(worst, fabs(w[k] / sum - dbl(b[k])));
+            }
+        }
+    }
+    CHECKF(wrong == 0, "%d eyes in the wrong triangle", wrong);
+    CHECKF(worst < 1e-3, "barycentric coordinates %.2g off", worst);
+    printf("  2000 eyes: the right triangle every time, barycentric coordinates within %.1e\n", worst);
+    silmap_fixed_free(&f);
+    silmap_free(&m);
+}
+
+/* An interpolated outline against the true silhouette from the same eye:
+ * the pixels that differ, per pixel of outline (the true image's boundary
+ * sides), which is about the mean distance in pixels.  The map's views are
+ * 3 radii away; the outline is carried to the current eye as if it lay in
+ * the plane through the centre (section 5), so eyes nearer or farther
+ * (orthographic: infinitely far) see it scaled: the sphere's contour seen
+ * from 3 radii lies a third of a radius in front of that plane. */
+typedef struct e2e_result { long bad, perimeter; double worst_ratio; int frames; } e2e_result;
+
+static void e2e_frame(const silmap_fixed *f, const double *pos, uint32_t nv, const uint32_t *tri, uint32_t nt,
+                      const double centre[3], double radius, const double dir[3], double dist, int ortho, int res,
+                      uint32_t *hint, e2e_result *r)
+{
+    silk_camera cam;
+    memset(&cam, 0, sizeof cam);
+    double e[3];
+    for (int k = 0; k < 3; k++) e[k] = centre[k] + dist * radius * dir[k];
+    cam.eye = (silk_vec3){ fx(e[0]), fx(e[1]), fx(e[2]) };
+    cam.target = (silk_vec3){ fx(centre[0]), fx(centre[1]), fx(centre[2]) };
+    cam.up = (silk_vec3){ 0, SILK_FX_ONE, 0 };
+    cam.ortho = ortho;
+    cam.fov_deg = fx(2 * asin(1 / dist) * 1.15 * 180 / 3.14159265358979323846);
+    cam.ortho_half_height = fx(radius * 1.15);
+    cam.znear = fx(radius * 0.01);
+    cam.zfar = fx(radius * 20);
+    cam.width = cam.height = res;
+    silk_view view;
+    silk_error err;
+    CHECK(silk_view_init(&view, &cam, &err) == SILK_OK);
+    static uint8_t buf[1 << 23];
+    silk_arena ar;
+    silk_arena_init(&ar, buf, sizeof buf);
+    silk_outline out;
+    silk_silmap_frame info;
+    silk_status st = silk_silmap_interp(&f->map, &view, *hint, &ar, &out, &info, &err);
+    CHECKF(st == SILK_OK, "%s", err.msg);
+    if (st) return;
+    *hint = info.tri;   /* tracked from frame to frame */
+    /* the truth: the detailed mesh drawn from the same camera (an
+     * orthographic one as a perspective one very far away) */
+    silmap_camera tc;
+    v3d(view.cam.eye, tc.eye), v3d(view.right, tc.right), v3d(view.upv, tc.up), v3d(view.forward, tc.fwd);
+    tc.focal = dbl(view.pixels_per_unit);
+    tc.res = res;
+    /* orthonormal in double: the rounded axes would tilt a far camera */
+    double nf = sqrt(ddot(tc.fwd, tc.fwd)), dr = ddot(tc.right, tc.fwd) / nf;
+    for (int k = 0; k < 3; k++) tc.fwd[k] /= nf;
+    for (int k = 0; k < 3; k++) tc.right[k] -= dr * tc.fwd[k];
+    double nr = sqrt(ddot(tc.right, tc.right));
+    for (int k = 0; k < 3; k++) tc.right[k] /= nr;
+    tc.up[0] = tc.right[1] * tc.fwd[2] - tc.right[2] * tc.fwd[1];
+    tc.up[1] = tc.right[2] * tc.fwd[0] - tc.right[0] * tc.fwd[2];
+    tc.up[2] = tc.right[0] * tc.fwd[1] - tc.right[1] * tc.fwd[0];
+    if (ortho) {
+        double far = 1e4 * radius, ce[3] = { dbl(view.cam.target.x), dbl(view.cam.target.y), dbl(view.cam.target.z) };
+        double along = ddot(tc.fwd, ce) - ddot(tc.fwd, tc.eye);
+        for (int k = 0; k < 3; k++) tc.eye[k] += (along - far) * tc.fwd[k];
+        tc.focal = dbl(view.pixels_per_unit) * far;
+    }
+    uint8_t *truth = malloc((size_t)res * res), *img = malloc((size_t)res * res);
+    CHECK(silmap_rasterize(&tc, pos, nv, tri, nt, truth) == 0);
+    fill_outline(&out, res, res, img);
+    long bad = 0, per = 0;
+    for (int y = 0; y < res; y++)
+        for (int x = 0; x < res; x++) {
+            bad += truth[y * res + x] != img[y * res + x];
+            if (x + 1 < res) per += truth[y * res + x] != truth[y * res + x + 1];
+            if (y + 1 < res) per += truth[y * res + x] != truth[(y + 1) * res + x];
+        }
+    r->bad += bad, r->perimeter += per, r->frames++;
+    if (per) r->worst_ratio = fmax(r->worst_ratio, (double)bad / per);
+    free(truth);
+    free(img);
+}
+
+static void e2e_mesh(const char *name, const double *pos, uint32_t nv, const uint32_t *tri, uint32_t nt, int level,
+                     int res, double limit)
+{
+    silmap_params p;
+    silmap_params_default(&p);
+    p.level = level;
+    p.res = res;
+    silmap m;
+    CHECK(silmap_build(pos, nv, tri, nt, &p, &m) == 0);
+    silmap_fixed f;
+    CHECK(silmap_export(&m, &f) == 0);
+    /* eyes inside the polytope (2.2 radii), on it (3) and outside (5) */
+    static const double dists[3] = { 2.2, 3, 5 };
+    e2e_result r[3][2];
+    memset(r, 0, sizeof r);
+    uint32_t hint = 0;
+    for (int i = 0; i < 36; i++) {
+        double d[3];
+        do unit_rand(d);
+        while (fabs(d[1]) > 0.9);
+        int di = i % 3, o = (i / 3) & 1;
+        e2e_frame(&f, pos, nv, tri, nt, m.centre, m.radius, d, dists[di], o, res, &hint, &r[di][o]);
+    }
+    for (int o = 0; o < 2; o++) {
+        printf("  %s, %u views, %d px, %s:", name, m.poly.nviews, res, o ? "orthographic" : "perspective ");
+        for (int di = 0; di < (o ? 1 : 3); di++)
+            printf("  %s%.3f px (worst %.3f)", o ? "" : di == 0 ? "inside " : di == 1 ? "on " : "outside ",
+                   (double)r[di][o].bad / r[di][o].perimeter, r[di][o].worst_ratio);
+        printf("\n");
+    }
+    CHECKF(r[1][0].worst_ratio < limit, "%s: %.3f px from eyes on the polytope", name, r[1][0].worst_ratio);
+    for (int di = 0; di < 3; di++)
+        for (int o = 0; o < 2; o++)
+            CHECKF(r[di][o].worst_ratio < 12, "%s: %.3f px", name, r[di][o].worst_ratio);
+    printf("  %s: map %u bytes in fixed point\n", name, silk_silmap_bytes(&f.map));
+    silmap_fixed_free(&f);
+    silmap_free(&m);
+}
+
+TEST(sphere_and_torus)
+{
+    gen_shape shapes[2] = { GEN_SPHERE, GEN_TORUS };
+    const char *names[2] = { "sphere", "torus" };
+    for (int s = 0; s < 2; s++) {
+        gen_params gp;
+        gen_defaults(shapes[s], &gp);
+        gen_mesh g;
+        CHECK(gen_build(&gp, &g) == 0);
+        e2e_mesh(names[s], g.pos, g.nverts, g.tri, g.ntris, 2, 256, s ? 3.0 : 1.5);
+        gen_free(&g);
+    }
+}
+
+TEST(bunny)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/bunny-fine.obj", check_meshes_dir());
+    double *pos;
+    uint32_t *tri, nv, nt;
+    int r = tm_load_doubles(path, &pos, &nv, &tri, &nt);
+    CHECK(r >= 0);
+    if (r != 1) return;
+    e2e_mesh("bunny-fine", pos, nv, tri, nt, 2, 256, 1.5);
+    free(pos);
+    free(tri);
+}
+
 int main(void)
 {
     RUN(rectification);
     RUN(projective_map);
     RUN(lerp_convex_is_visual_hull);
     RUN(lerp_pants);
+    RUN(locate_triangle);
+    RUN(sphere_and_torus);
+    RUN(bunny);
     return check_done();
 }
