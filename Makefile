@@ -80,8 +80,8 @@ $(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,hull.o
 $(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o)
 $(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
 $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
-$(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
-$(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
+$(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
+$(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 
 tests: $(TEST_BIN) $(BUILD)/silk
 

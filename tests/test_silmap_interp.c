@@ -14,6 +14,7 @@
 #include "support/testmesh.h"
 #include "../tools/gen.h"
 #include "../tools/silmap.h"
+#include "../tools/silmap_simplify.h"
 
 static silk_fx fx(double v) { return (silk_fx)floor(v * 65536 + 0.5); }
 static double dbl(silk_fx v) { return v / 65536.0; }
@@ -51,34 +52,10 @@ static void map_cam(const double centre[3], const double dir[3], silk_silmap_cam
     CHECK(silmap_cam_export(&cam, c) == 0);
 }
 
-/* ---- parity fill of an outline at pixel centres ------------------------------------ */
-
 static int cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
-}
-
-/* img[w * h] := 1 where the pixel centre is inside under the parity rule. */
-static void fill_outline(const silk_outline *o, int w, int h, uint8_t *img)
-{
-    memset(img, 0, (size_t)w * h);
-    double *xs = malloc((o->npts + 1) * sizeof *xs);
-    for (int y = 0; y < h; y++) {
-        double yc = y + 0.5;
-        uint32_t n = 0;
-        for (uint32_t l = 0; l < o->nloops; l++)
-            for (uint32_t i = o->start[l]; i < o->start[l + 1]; i++) {
-                silk_vec2 p = o->pt[i], q = o->pt[i + 1 < o->start[l + 1] ? i + 1 : o->start[l]];
-                double py = dbl(p.y), qy = dbl(q.y);
-                if ((py <= yc) == (qy <= yc)) continue;
-                xs[n++] = dbl(p.x) + (yc - py) * (dbl(q.x) - dbl(p.x)) / (qy - py);
-            }
-        qsort(xs, n, sizeof *xs, cmp_double);
-        for (uint32_t k = 0; k + 1 < n; k += 2)
-            for (int x = (int)fmax(0, ceil(xs[k] - 0.5)); x < w && x + 0.5 < xs[k + 1]; x++) img[y * w + x] = 1;
-    }
-    free(xs);
 }
 
 /* ---- the tests ---------------------------------------------------------------------- */
@@ -226,7 +203,7 @@ static int visual_hull_mismatch(const silk_outline *a, const silk_outline *b, do
 {
     uint8_t *img = malloc((size_t)w * h);
     double *xa = malloc((a->npts + 2) * sizeof *xa), *xb = malloc((b->npts + 2) * sizeof *xb);
-    fill_outline(out, w, h, img);
+    silmap_fill(out, w, h, img);
     int bad = 0;
     *inside = 0;
     for (int y = 0; y < h; y++) {
@@ -494,7 +471,7 @@ static void e2e_frame(const silmap_fixed *f, const double *pos, uint32_t nv, con
     }
     uint8_t *truth = malloc((size_t)res * res), *img = malloc((size_t)res * res);
     CHECK(silmap_rasterize(&tc, pos, nv, tri, nt, truth) == 0);
-    fill_outline(&out, res, res, img);
+    silmap_fill(&out, res, res, img);
     long bad = 0, per = 0;
     for (int y = 0; y < res; y++)
         for (int x = 0; x < res; x++) {
@@ -575,6 +552,61 @@ TEST(bunny)
     free(tri);
 }
 
+/* Section 6: the 42-view map of a torus simplified to 3 px: fewer views and
+ * bytes, the polytope still star-shaped (every triangle counter-clockwise
+ * about the centre), and every view of the dense map, dropped or not,
+ * predicted by what is left within the threshold. */
+TEST(simplify_map)
+{
+    gen_params gp;
+    gen_defaults(GEN_TORUS, &gp);
+    gen_mesh g;
+    CHECK(gen_build(&gp, &g) == 0);
+    silmap_params p;
+    silmap_params_default(&p);
+    p.level = 1;
+    p.res = 128;
+    silmap m, s;
+    CHECK(silmap_build(g.pos, g.nverts, g.tri, g.ntris, &p, &m) == 0);
+    silmap_simplify_stats st;
+    const double limit = 3.0;
+    CHECK(silmap_simplify_map(&m, limit, 4, &s, &st) == 0);
+    CHECKF(st.views_after < st.views_before && st.bytes_after < st.bytes_before, "%u -> %u views", st.views_before,
+           st.views_after);
+    CHECK(s.poly.nviews == st.views_after && s.poly.ntris == 2 * s.poly.nviews - 4);
+    int flipped = 0;
+    for (uint32_t t = 0; t < s.poly.ntris; t++) {
+        const double *a = &s.poly.dir[3 * s.poly.tri[3 * t]], *b = &s.poly.dir[3 * s.poly.tri[3 * t + 1]],
+                     *c = &s.poly.dir[3 * s.poly.tri[3 * t + 2]];
+        double cr[3] = { b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0] };
+        flipped += !(ddot(a, cr) > 0);
+    }
+    CHECKF(flipped == 0, "%d triangles turned over", flipped);
+    /* every dense view from the simplified map */
+    silmap_fixed f;
+    CHECK(silmap_export(&s, &f) == 0);
+    double worst = 0;
+    uint32_t hint = 0;
+    for (uint32_t v = 0; v < m.poly.nviews; v++) {
+        e2e_result r = { 0, 0, 0, 0 };
+        const double *d = &m.poly.dir[3 * v];
+        if (fabs(d[1]) > 0.9) continue;
+        e2e_frame(&f, g.pos, g.nverts, g.tri, g.ntris, m.centre, m.radius, d, p.distance, 0, p.res, &hint, &r);
+        worst = fmax(worst, r.worst_ratio);
+    }
+    /* against the true silhouette rather than the dense outline: the dense
+     * map's own error comes on top */
+    CHECKF(worst < limit + 0.6, "a view predicted %.3f px off", worst);
+    printf("  torus, %d px: %u -> %u views, %u -> %u bytes at %.1f px (worst collapse %.3f px, %u interpolations); "
+           "every dense view within %.3f px of the true silhouette\n",
+           p.res, st.views_before, st.views_after, st.bytes_before, st.bytes_after, limit, st.error, st.evaluations,
+           worst);
+    silmap_fixed_free(&f);
+    silmap_free(&s);
+    silmap_free(&m);
+    gen_free(&g);
+}
+
 int main(void)
 {
     RUN(rectification);
@@ -584,5 +616,6 @@ int main(void)
     RUN(locate_triangle);
     RUN(sphere_and_torus);
     RUN(bunny);
+    RUN(simplify_map);
     return check_done();
 }
