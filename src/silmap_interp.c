@@ -338,55 +338,42 @@ static silk_fx line_x(silk_fx y0, silk_fx x0, silk_fx y1, silk_fx x1, silk_fx y)
     return silk_fx_sat((int64_t)x0 + silk_fx_muldiv(silk_fx_sub(x1, x0), silk_fx_sub(y, y0), silk_fx_sub(y1, y0)));
 }
 
-static void sort_fx(silk_fx *v, uint32_t n)   /* heapsort */
+/* Heapsort (no recursion, no extra memory) by a silk_fx key. */
+typedef silk_fx (*sort_key)(const void *);
+
+static void swap_bytes(uint8_t *a, uint8_t *b, size_t n)
 {
-    for (uint32_t i = n / 2; i-- > 0;) {
-        for (uint32_t r = i;;) {
-            uint32_t c = 2 * r + 1;
-            if (c >= n) break;
-            if (c + 1 < n && v[c + 1] > v[c]) c++;
-            if (v[r] >= v[c]) break;
-            silk_fx t = v[r]; v[r] = v[c]; v[c] = t;
-            r = c;
-        }
-    }
-    for (uint32_t end = n; end-- > 1;) {
-        silk_fx t = v[0]; v[0] = v[end]; v[end] = t;
-        for (uint32_t r = 0;;) {
-            uint32_t c = 2 * r + 1;
-            if (c >= end) break;
-            if (c + 1 < end && v[c + 1] > v[c]) c++;
-            if (v[r] >= v[c]) break;
-            t = v[r]; v[r] = v[c]; v[c] = t;
-            r = c;
-        }
+    while (n--) {
+        uint8_t t = *a;
+        *a++ = *b;
+        *b++ = t;
     }
 }
 
-static void sort_edges(ledge *v, uint32_t n)  /* heapsort by y0 */
+static void sift_down(uint8_t *v, size_t size, uint32_t r, uint32_t n, sort_key key)
 {
-    for (uint32_t i = n / 2; i-- > 0;) {
-        for (uint32_t r = i;;) {
-            uint32_t c = 2 * r + 1;
-            if (c >= n) break;
-            if (c + 1 < n && v[c + 1].y0 > v[c].y0) c++;
-            if (v[r].y0 >= v[c].y0) break;
-            ledge t = v[r]; v[r] = v[c]; v[c] = t;
-            r = c;
-        }
-    }
-    for (uint32_t end = n; end-- > 1;) {
-        ledge t = v[0]; v[0] = v[end]; v[end] = t;
-        for (uint32_t r = 0;;) {
-            uint32_t c = 2 * r + 1;
-            if (c >= end) break;
-            if (c + 1 < end && v[c + 1].y0 > v[c].y0) c++;
-            if (v[r].y0 >= v[c].y0) break;
-            t = v[r]; v[r] = v[c]; v[c] = t;
-            r = c;
-        }
+    for (;;) {
+        uint32_t c = 2 * r + 1;
+        if (c >= n) return;
+        if (c + 1 < n && key(v + (c + 1) * size) > key(v + c * size)) c++;
+        if (key(v + r * size) >= key(v + c * size)) return;
+        swap_bytes(v + r * size, v + c * size, size);
+        r = c;
     }
 }
+
+static void heap_sort(void *base, uint32_t n, size_t size, sort_key key)
+{
+    uint8_t *v = base;
+    for (uint32_t i = n / 2; i-- > 0;) sift_down(v, size, i, n, key);
+    for (uint32_t end = n; end-- > 1;) {
+        swap_bytes(v, v + end * size, size);
+        sift_down(v, size, 0, end, key);
+    }
+}
+
+static silk_fx key_fx(const void *p) { return *(const silk_fx *)p; }
+static silk_fx key_edge_top(const void *p) { return ((const ledge *)p)->y0; }
 
 static uint32_t collect_edges(const silk_outline *o, ledge *e)
 {
@@ -401,7 +388,7 @@ static uint32_t collect_edges(const silk_outline *o, ledge *e)
             n++;
         }
     }
-    sort_edges(e, n);
+    heap_sort(e, n, sizeof *e, key_edge_top);
     return n;
 }
 
@@ -514,7 +501,7 @@ static uint32_t unite_band(const trap *t, uint32_t nt, silk_fx ya, silk_fx yb, s
                 if (y > ya && y < yb) cut[nc++] = (silk_fx)y;
             }
         }
-    sort_fx(cut, nc);
+    heap_sort(cut, nc, sizeof *cut, key_fx);
     uint32_t nq = 0;
     trap sub[LERP_MAX_TRAPS];
     for (uint32_t c = 0; c + 1 < nc; c++) {
@@ -622,7 +609,7 @@ silk_status silk_outline_lerp(const silk_outline *a, const silk_outline *b, silk
     if (!ys || !ea || !eb || !c.sa.act || !c.sb.act || !c.sa.x || !c.sb.x) return SILK_ERR_NOMEM;
     for (uint32_t i = 0; i < a->npts; i++) ys[i] = a->pt[i].y;
     for (uint32_t i = 0; i < b->npts; i++) ys[a->npts + i] = b->pt[i].y;
-    sort_fx(ys, n);
+    heap_sort(ys, n, sizeof *ys, key_fx);
     uint32_t nys = 0;
     for (uint32_t i = 0; i < n; i++)
         if (!nys || ys[i] != ys[nys - 1]) ys[nys++] = ys[i];
