@@ -94,6 +94,8 @@ $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines
 $(GEN_TESTS): $(BUILD)/obj/tools/gen.o
 $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
+$(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
+$(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 
 # The public headers from C++ (extern "C"): compiles and links against the core.
 $(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)

@@ -462,3 +462,99 @@ int silmap_build(const double *pos, uint32_t nverts, const uint32_t *tri, uint32
     free(img);
     return 0;
 }
+
+/* ---- the map as the renderer reads it ------------------------------------------ */
+
+uint32_t *silmap_adjacency(const silmap_polytope *p)
+{
+    uint32_t *adj = malloc((size_t)3 * (p->ntris ? p->ntris : 1) * sizeof *adj);
+    if (!adj) return NULL;
+    for (uint32_t t = 0; t < p->ntris; t++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t a = p->tri[3 * t + (k + 1) % 3], b = p->tri[3 * t + (k + 2) % 3];
+            adj[3 * t + k] = UINT32_MAX;
+            for (uint32_t u = 0; u < p->ntris && adj[3 * t + k] == UINT32_MAX; u++)
+                for (int j = 0; j < 3; j++)
+                    if (u != t && p->tri[3 * u + j] == b && p->tri[3 * u + (j + 1) % 3] == a) adj[3 * t + k] = u;
+        }
+    return adj;
+}
+
+static int to_fx(double v, silk_fx *out)
+{
+    double s = floor(v * 65536 + 0.5);
+    if (!(s > -2147483647.0 && s < 2147483647.0)) return -1;
+    *out = (silk_fx)s;
+    return 0;
+}
+
+static int to_v3(const double *v, silk_vec3 *out)
+{
+    return to_fx(v[0], &out->x) | to_fx(v[1], &out->y) | to_fx(v[2], &out->z);
+}
+
+int silmap_cam_export(const silmap_camera *cam, silk_silmap_cam *c)
+{
+    memset(c, 0, sizeof *c);
+    return to_v3(cam->eye, &c->eye) | to_v3(cam->right, &c->right) | to_v3(cam->up, &c->up) |
+           to_v3(cam->fwd, &c->fwd) | to_fx(cam->focal, &c->focal) | to_fx(cam->res / 2.0, &c->cx) |
+           to_fx(cam->res / 2.0, &c->cy);
+}
+
+void silmap_fixed_free(silmap_fixed *f)
+{
+    free(f->block);
+    memset(f, 0, sizeof *f);
+}
+
+int silmap_export(const silmap *m, silmap_fixed *out)
+{
+    memset(out, 0, sizeof *out);
+    silk_silmap *s = &out->map;
+    s->nviews = m->poly.nviews;
+    s->ntris = m->poly.ntris;
+    for (uint32_t i = 0; i < s->nviews; i++) {
+        s->nloops += m->views[i].outline.nloops;
+        s->npts += m->views[i].outline.npts;
+    }
+    size_t bytes = s->nviews * sizeof(silk_silmap_view) + (size_t)6 * s->ntris * sizeof(uint32_t) +
+                   (s->nloops + 1) * sizeof(uint32_t) + s->npts * sizeof(silk_vec2);
+    uint8_t *b = calloc(1, bytes);
+    uint32_t *adj = silmap_adjacency(&m->poly);
+    if (!b || !adj) {
+        free(b);
+        free(adj);
+        return -1;
+    }
+    out->block = b;
+    silk_silmap_view *views = (silk_silmap_view *)b;
+    uint32_t *tri = (uint32_t *)(views + s->nviews), *ad = tri + 3 * s->ntris, *start = ad + 3 * s->ntris;
+    silk_vec2 *pts = (silk_vec2 *)(start + s->nloops + 1);
+    memcpy(tri, m->poly.tri, 3 * sizeof *tri * s->ntris);
+    memcpy(ad, adj, 3 * sizeof *ad * s->ntris);
+    free(adj);
+    int bad = to_v3(m->centre, &s->centre);
+    uint32_t loop = 0, npt = 0;
+    for (uint32_t i = 0; i < s->nviews; i++) {
+        const silmap_view *v = &m->views[i];
+        bad |= silmap_cam_export(&v->cam, &views[i].cam);
+        views[i].first_loop = loop;
+        views[i].nloops = v->outline.nloops;
+        for (uint32_t l = 0; l < v->outline.nloops; l++) start[loop++] = npt + v->outline.start[l];
+        for (uint32_t k = 0; k < v->outline.npts; k++) {
+            bad |= to_fx(v->outline.pt[2 * k], &pts[npt + k].x) | to_fx(v->outline.pt[2 * k + 1], &pts[npt + k].y);
+        }
+        npt += v->outline.npts;
+    }
+    start[loop] = npt;
+    s->views = views;
+    s->tri = tri;
+    s->adj = ad;
+    s->loop_start = start;
+    s->pts = pts;
+    if (bad) {
+        silmap_fixed_free(out);
+        return -1;
+    }
+    return 0;
+}

@@ -11,6 +11,7 @@
 #define SILK_TOOLS_SILMAP_H
 
 #include <stdint.h>
+#include "../src/silmap_interp.h"
 
 /* The polytope: unit directions from the centre (its vertices on the unit
  * sphere) and its triangles, counter-clockwise seen from outside. */
@@ -116,5 +117,26 @@ typedef struct silmap {
 int silmap_build(const double *pos, uint32_t nverts, const uint32_t *tri, uint32_t ntris, const silmap_params *p,
                  silmap *m);
 void silmap_free(silmap *m);
+
+/* ---- the map as the renderer reads it ------------------------------------------- */
+
+/* The triangle across the edge opposite corner k of every triangle
+ * (3 * ntris, UINT32_MAX where none), from the polytope's shared edges. */
+uint32_t *silmap_adjacency(const silmap_polytope *p);
+
+/* A view's camera in fixed point; 0, or -1 when it does not fit Q16.16. */
+int silmap_cam_export(const silmap_camera *cam, silk_silmap_cam *c);
+
+/* The map in fixed point, its arrays in one heap block (block). */
+typedef struct silmap_fixed {
+    silk_silmap map;
+    void *block;
+} silmap_fixed;
+
+/* Round the map to the layout of src/silmap_interp.h: cameras and world
+ * points to Q16.16, outlines to Q16.16 pixels.  0, or -1 when out of memory
+ * or a number does not fit Q16.16. */
+int silmap_export(const silmap *m, silmap_fixed *out);
+void silmap_fixed_free(silmap_fixed *f);
 
 #endif
