@@ -13,7 +13,8 @@ set -u
 fb=$1
 secs=$2
 shift 2
-harnesses=${*:-fuzz_obj fuzz_ply fuzz_stl fuzz_pack fuzz_render fuzz_math fuzz_model}
+# every harness in fuzz/ unless some are named
+harnesses=${*:-$(for f in fuzz/fuzz_*.c; do basename "$f" .c; done)}
 status=0
 mkdir -p "$fb/artifacts"
 for h in $harnesses; do
