@@ -208,7 +208,8 @@ $(BUILD)/tests/test_regress: $(FUZZ_SRC) fuzz/fuzz.h
 -include $(wildcard $(FUZZ_BUILD)/obj/*/*.d)
 
 # ---- small devices (docs/small-devices.md) ----------------------------------
-# A device board's own rules (the firmware of boards/mps2-an385).
+# A device board's own rules (the firmware of boards/mps2-an385 and
+# boards/microbit).
 ifdef BOARD_RULES
 include $(BOARD_RULES)
 else
@@ -222,7 +223,7 @@ endif
 # `make clean` leaves the boards' build directories; this removes them.
 .PHONY: clean-boards
 clean-boards:
-	rm -rf build-mps2-an385 build-linux-fb
+	rm -rf build-mps2-an385 build-microbit build-linux-fb
 
 # The ARM toolchain and QEMU for the firmware (Debian, Ubuntu).
 DEPS_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
@@ -251,6 +252,7 @@ profile:
 	BOARD='$(BOARD)' FW_DIR='$(FW_DIR)' BOARD_RUN='$(BOARD_RUN)' BOARD_CROSS='$(BOARD_CROSS)' \
 	  BOARD_FLASH_BYTES='$(BOARD_FLASH_BYTES)' BOARD_WIDTH='$(BOARD_WIDTH)' BOARD_HEIGHT='$(BOARD_HEIGHT)' \
 	  BOARD_BAND_ROWS='$(BOARD_BAND_ROWS)' BOARD_CLOCK_HZ='$(BOARD_CLOCK_HZ)' BOARD_CPI='$(BOARD_CPI)' \
+	  BOARD_INSTR_PER_TICK='$(BOARD_INSTR_PER_TICK)' \
 	  PROFILE_CSV='$(PROFILE_CSV)' sh tools/profile_fw.sh '$(PROFILE_MESH)' $(PROFILE_ARGS)
 else
 profile: $(BUILD)/silk
@@ -264,11 +266,14 @@ ifeq ($(BOARD)$(HAVE_ARM),host1)
 ifneq ($(SAN),1)
 tests: firmware-for-tests
 .PHONY: firmware-for-tests
-# Its models are shared meshes: without them tests/cli_qemu.sh skips.
+# The Cortex-M3 board's models are shared meshes: without them
+# tests/cli_qemu.sh skips it.  The Cortex-M0 board always has its `silk gen`
+# model.
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
 	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k; \
-	else echo "silk: $(MESHES_DIR) is missing: no firmware for the tests (its models are shared meshes)"; fi
+	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD) firmware for the tests (its models are shared meshes)"; fi
+	$(MAKE) BOARD=microbit BUILD=build-microbit SAN= CFLAGS= firmware firmware-host firmware-256k
 endif
 endif
 

@@ -1,7 +1,7 @@
 #!/bin/sh
 # profile_fw.sh - where every byte of flash and RAM goes on a firmware board
-# (mps2-an385): the second half of `make profile`, after make has built the
-# firmware for the mesh.
+# (mps2-an385, microbit): the second half of `make profile`, after make has
+# built the firmware for the mesh.
 #
 #   sh tools/profile_fw.sh MESH [--check]
 #
@@ -9,8 +9,9 @@
 # boards/$(BOARD)/board.mk, as environment variables: BOARD, FW_DIR (where
 # the firmware of each model is: FW_DIR/NAME/fw.elf and fw.map), BOARD_RUN
 # (the emulator command line, QEMU), BOARD_CROSS, BOARD_FLASH_BYTES,
-# BOARD_WIDTH, BOARD_HEIGHT, BOARD_BAND_ROWS, and PROFILE_CSV (the CSV to
-# write).
+# BOARD_WIDTH, BOARD_HEIGHT, BOARD_BAND_ROWS, BOARD_INSTR_PER_TICK (the
+# instructions a tick of the board's timer is, 40 or 62.5) and PROFILE_CSV
+# (the CSV to write).
 #
 # It runs the firmware, which renders its views flat and smooth in bands and
 # reports its own arena high-water marks by purpose and its stack high-water
@@ -26,8 +27,8 @@
 #
 # Speed: the firmware reads a timer around each frame and each HAL stage
 # call (platform/mps2/fw_main.c); under QEMU with `-icount shift=0` in
-# BOARD_RUN a tick is a fixed number of instructions, which the firmware's
-# loop of known length gives ("fw timer").  It prints instructions per frame
+# BOARD_RUN a tick is a fixed number of instructions, BOARD_INSTR_PER_TICK,
+# which the firmware's loop of known length checks ("fw timer").  It prints instructions per frame
 # (the renderer's, without the sink's output work), the vertex and fragment
 # stages' shares, and frames per second at BOARD_CLOCK_HZ for each cycles-
 # per-instruction figure of BOARD_CPI; then a line
@@ -59,7 +60,7 @@ lib_text=$("${BOARD_CROSS:-}size" -t "$FW_DIR/libsilk.a" 2>/dev/null | awk '/\(T
 awk -v board="$BOARD" -v mesh="$mesh" -v name="$name" -v dir="$dir" -v csv="$PROFILE_CSV" -v check="$check" \
     -v flash_budget="$BOARD_FLASH_BYTES" -v width="$BOARD_WIDTH" -v height="$BOARD_HEIGHT" \
     -v band_rows="$BOARD_BAND_ROWS" -v lib_text="${lib_text:-0}" -v runner="${BOARD_RUN%% *}" \
-    -v clock_hz="${BOARD_CLOCK_HZ:-0}" -v cpis="${BOARD_CPI:-}" '
+    -v clock_hz="${BOARD_CLOCK_HZ:-0}" -v cpis="${BOARD_CPI:-}" -v ipt="${BOARD_INSTR_PER_TICK:-40}" '
 function hex(s,    i, n, c) {
     n = 0
     s = tolower(s)
@@ -208,14 +209,14 @@ END {
     row("ram", "ram total", ram_total, sprintf("of %d budget (%s)", ram_budget, ram_total <= ram_budget ? "fits" : "OVER"))
     if (fell) printf "\n  %d of %d frames fell back (%d smooth): the arena could not hold their per-frame\n" \
         "  scratch, so part or all of the frame was drawn unsmoothed; see docs/small-devices.md.\n", fell, frames, smooth_fell
-    # ---- speed: ticks to instructions, from the loop of known length
+    # ---- speed: ticks to instructions, checked on the loop of known length
     # The loop and the reads around it may straddle one more tick boundary
-    # than its length fills, so a whole number of instructions a tick is
-    # accepted when the ticks of the loop are that within one.
-    ipt = loop_ticks > 0 ? int(loop_instr / loop_ticks + 0.5) : 0
-    if (ntime && ipt > 0 && loop_instr / ipt - loop_ticks <= 1 && loop_ticks - loop_instr / ipt <= 1) {
+    # than its length fills, so the instructions a tick given are accepted
+    # when the ticks of the loop are that within one.
+    ipt += 0
+    if (ntime && ipt > 0 && loop_ticks > 0 && loop_instr / ipt - loop_ticks <= 1 && loop_ticks - loop_instr / ipt <= 1) {
         ncpi = split(cpis, cpi, " ")
-        printf "\nSPEED (instructions per frame; QEMU -icount shift=0, %d instructions a timer tick:\n", ipt
+        printf "\nSPEED (instructions per frame; QEMU -icount shift=0, %g instructions a timer tick:\n", ipt
         printf "  a loop of %d instructions took %d ticks)\n", loop_instr, loop_ticks
         printf "  %-6s %-6s %12s %11s %11s %12s", "camera", "mode", "frame", "vertex", "fragment", "rest"
         for (c = 1; c <= ncpi; c++) printf "  %11s", sprintf("fps CPI %s", cpi[c])

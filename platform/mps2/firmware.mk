@@ -1,7 +1,8 @@
-# platform/mps2/firmware.mk - building the Cortex-M3 firmware, included by
-# the Makefile when boards/$(BOARD)/board.mk sets BOARD_RULES to this file.
+# platform/mps2/firmware.mk - building the Cortex-M firmware (boards
+# mps2-an385 and microbit), included by the Makefile when
+# boards/$(BOARD)/board.mk sets BOARD_RULES to this file.
 #
-#   make BOARD=mps2-an385              the core for Cortex-M3, then one
+#   make BOARD=mps2-an385              the core for the board's CPU, then one
 #                                      firmware per model in BOARD_MESHES:
 #                                      $(BUILD)/fw/NAME/fw.elf (+ .map)
 #   make BOARD=mps2-an385 run          run each under QEMU; frames and the
@@ -12,7 +13,15 @@
 #                                      (STM32F429-class) in
 #                                      $(BUILD)/fw/ram256k/NAME: the smooth
 #                                      frames the 64 KiB budget cannot hold
-#                                      yet, for the bit-exactness test
+#                                      yet, for the bit-exactness test;
+#                                      a board whose machine has less RAM
+#                                      names another machine for it
+#                                      (BOARD_BIG_MACHINE, its timer
+#                                      BOARD_BIG_TIMER)
+#
+# Each output directory records the QEMU machine its firmware runs on
+# ($(FW_OUT)/machine) and the instructions a tick of its timer is under
+# -icount shift=0 ($(FW_OUT)/instr_per_tick), for the tests.
 #
 # The model is packed at build time by the host-side tool ($(BUILD)/silk,
 # built with the host compiler from the same sources) into
@@ -36,16 +45,33 @@ FW_PACK_ARGS := --size $(BOARD_WIDTH)x$(BOARD_HEIGHT) \
                 --format $(if $(filter SILK_PIX_RGB565,$(BOARD_FORMAT)),rgb565,rgb888) --views $(BOARD_VIEWS)
 
 FW_CORE_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/obj/%.o)
-FW_PLAT_OBJ := $(FW_DIR)/obj/platform/mps2/startup.o $(FW_DIR)/obj/platform/mps2/semihost.o
+# The tick counter (fw_ticks) of the board's machine.
+BOARD_TIMER ?= platform/mps2/timer_cmsdk.c
+BOARD_INSTR_PER_TICK ?= 40
+BOARD_MACHINE ?= mps2-an385
+FW_PLAT_OBJ := $(FW_DIR)/obj/platform/mps2/startup.o $(FW_DIR)/obj/platform/mps2/semihost.o \
+               $(BOARD_TIMER:%.c=$(FW_DIR)/obj/%.o)
 FW_NAMES    := $(basename $(notdir $(BOARD_MESHES)))
 FW_ELF      := $(FW_NAMES:%=$(FW_OUT)/%/fw.elf)
 FW_HOST     := $(FW_NAMES:%=$(FW_OUT)/%/fw-host)
 
 .PHONY: firmware firmware-host firmware-256k run FORCE
-firmware: $(FW_ELF)
+firmware: $(FW_ELF) $(FW_OUT)/machine $(FW_OUT)/instr_per_tick
 firmware-host: $(FW_HOST)
 firmware-256k: $(FW_DIR)/libsilk.a $(FW_PLAT_OBJ) $(BUILD)/silk
-	$(MAKE) FW_VARIANT=ram256k BOARD_RAM_BYTES=262144 BOARD_ARENA_BYTES=255488 firmware
+	$(MAKE) FW_VARIANT=ram256k BOARD_RAM_BYTES=262144 BOARD_ARENA_BYTES=255488 \
+	    $(if $(BOARD_BIG_MACHINE),BOARD_MACHINE=$(BOARD_BIG_MACHINE) BOARD_TIMER=$(BOARD_BIG_TIMER) \
+	    BOARD_INSTR_PER_TICK=$(BOARD_BIG_INSTR_PER_TICK)) firmware
+
+$(FW_OUT)/machine $(FW_OUT)/instr_per_tick: FORCE
+	@mkdir -p $(dir $@)
+	@v='$(if $(filter %/machine,$@),$(BOARD_MACHINE),$(BOARD_INSTR_PER_TICK))'; \
+	  echo "$$v" | cmp -s - $@ || echo "$$v" > $@
+
+# Meshes made by `silk gen` for BOARD_MESHES: $(BUILD)/gen/SHAPE.obj.
+$(BUILD)/gen/%.obj: $(BUILD)/silk
+	@mkdir -p $(dir $@)
+	$(BUILD)/silk gen $* -o $@
 
 $(FW_DIR)/obj/%.o: %.c boards/$(BOARD)/board.mk
 	@mkdir -p $(dir $@)
@@ -61,7 +87,7 @@ $(FW_OUT)/%/pack.args: FORCE
 
 # The sizes are compiled and linked in: remembered like the pack options.
 FW_SIZES := $(BOARD_FLASH_BYTES) $(BOARD_RAM_BYTES) $(BOARD_STACK_BYTES) $(BOARD_ARENA_BYTES) \
-            $(BOARD_BAND_ROWS) $(BOARD_FORMAT)
+            $(BOARD_BAND_ROWS) $(BOARD_FORMAT) $(BOARD_TIMER)
 $(FW_OUT)/defs.args: FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(FW_SIZES)' | cmp -s - $@ || echo '$(FW_SIZES)' > $@

@@ -34,8 +34,12 @@ void fw_exit(int status);
 
 /* A free-running 32-bit tick counter, counting up and wrapping; 0 on a
  * machine without one.  On the MPS2 board it is the CMSDK APB timer 0
- * (startup.c), clocked at 25 MHz: under QEMU's `-icount shift=0`, where one
- * instruction takes exactly 1 ns of virtual time, a tick is 40 instructions. */
+ * (timer_cmsdk.c), clocked at 25 MHz: under QEMU's `-icount shift=0`, where
+ * one instruction takes exactly 1 ns of virtual time, a tick is 40
+ * instructions; on the micro:bit the nRF51's TIMER0 at 16 MHz
+ * (timer_nrf51.c), 62.5 instructions.  fw_timer_start() starts it (the
+ * startup code calls it). */
+void fw_timer_start(void);
 uint32_t fw_ticks(void);
 /* Exactly n (> 0) passes of a two-instruction loop (subs, bne) on the board,
  * 2n instructions, to check fw_ticks' rate; nothing on the host. */

@@ -1,19 +1,14 @@
 /*
- * startup.c - reset and exceptions for the Cortex-M3 firmware: the vector
- * table, copying .data from flash, zeroing .bss, painting the stack so its
- * high-water mark can be measured, then the program, fw_scene().
+ * startup.c - reset and exceptions for the Cortex-M firmware (M3 and M0): the
+ * vector table, copying .data from flash, zeroing .bss, painting the stack so
+ * its high-water mark can be measured, starting the board's tick counter
+ * (fw_timer_start, timer_cmsdk.c or timer_nrf51.c), then the program,
+ * fw_scene().  Only Thumb-1 instructions: it runs on a Cortex-M0 too.
  *
  * Stack painting: every word of the stack region below the reset handler's
  * own frame is filled with a pattern before the program runs; afterwards the
  * lowest word no longer holding it is as deep as the stack ever reached.
  * The symbols come from mps2.ld.
- *
- * Timing: the CMSDK APB timer 0 of the MPS2 board (0x40000000, clocked by
- * the 25 MHz system clock) runs free from reload 0xFFFFFFFF; fw_ticks()
- * returns its count inverted, so it counts up.  It is 32 bits wide (SysTick
- * has 24, which wrap after 0.67 s at 25 MHz), so a frame never wraps it
- * twice.  Under QEMU with `-icount shift=0` virtual time is one nanosecond
- * per instruction, so one tick is exactly 40 instructions.
  */
 #include <stdint.h>
 #include <string.h>
@@ -23,11 +18,6 @@
 
 extern uint32_t _sidata, _sdata, _edata, _sbss, _ebss, _sstack, _estack;
 extern uint32_t __ram_size;          /* --defsym: the budget, as an address */
-
-/* CMSDK APB timer 0: control (bit 0 enable), current value, reload */
-#define TIMER0_CTRL (*(volatile uint32_t *)0x40000000u)
-#define TIMER0_VALUE (*(volatile uint32_t *)0x40000004u)
-#define TIMER0_RELOAD (*(volatile uint32_t *)0x40000008u)
 
 void Reset_Handler(void);
 void Fault_Handler(void);
@@ -41,9 +31,7 @@ void Reset_Handler(void)
     uint32_t *sp;
     __asm__ volatile("mov %0, sp" : "=r"(sp));
     for (uint32_t *p = &_sstack; p < sp - 16; p++) *p = STACK_PAINT;
-    TIMER0_RELOAD = 0xFFFFFFFFu;
-    TIMER0_VALUE = 0xFFFFFFFFu;
-    TIMER0_CTRL = 1u;
+    fw_timer_start();
     fw_exit(fw_scene());
 }
 
@@ -53,7 +41,8 @@ void Fault_Handler(void)
     fw_exit(3);
 }
 
-/* Cortex-M3: initial stack pointer, reset, then 14 system exceptions; the
+/* Initial stack pointer, reset, then 14 system exceptions (the Cortex-M0
+ * reserves the slots of MemManage, BusFault, UsageFault and DebugMon); the
  * scene uses no interrupts, so every exception is a fault here. */
 __attribute__((section(".vectors"), used)) static const uintptr_t vectors[16] = {
     (uintptr_t)&_estack, (uintptr_t)Reset_Handler, (uintptr_t)Fault_Handler, (uintptr_t)Fault_Handler,
@@ -73,12 +62,7 @@ void fw_memory(fw_mem *m)
     m->stack_used = (size_t)((uintptr_t)&_estack - (uintptr_t)p);
 }
 
-uint32_t fw_ticks(void)
-{
-    return ~TIMER0_VALUE;
-}
-
 void fw_spin(uint32_t n)
 {
-    __asm__ volatile("1: subs %0, %0, #1\n\tbne 1b" : "+r"(n) : : "cc");
+    __asm__ volatile(".syntax unified\n1:\tsubs %0, %0, #1\n\tbne 1b" : "+r"(n) : : "cc");
 }
