@@ -116,6 +116,8 @@ typedef struct silk_sil_frame {
     uint32_t *slot_vert, *slot_stamp, nslots;
     uint32_t *vert_offset;   /* nverts view of vert_slot after perturbation: offset index */
     silk_vec3 *offset;     uint32_t noffset;
+
+    silk_stage_clock *clock; /* per-stage timing (include/silk/render.h), or NULL */
 } silk_sil_frame;
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs

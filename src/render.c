@@ -24,6 +24,7 @@
 #include "smooth.h"
 #include "remesh.h"
 #include "lines.h"
+#include "stages.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -41,6 +42,20 @@ void silk_render_opts_default(silk_render_opts *o)
     o->lines_polygonal = 0;
     o->line_rgb = 0x000000;
     o->line_feature_rgb = 0x000000;
+    o->clock = NULL;
+}
+
+const char *silk_stage_name(silk_stage s)
+{
+    switch (s) {
+    case SILK_STAGE_VISIBILITY: return "visibility";
+    case SILK_STAGE_PLAN: return "plan";
+    case SILK_STAGE_EMIT: return "emit";
+    case SILK_STAGE_VERTEX: return "vertex";
+    case SILK_STAGE_RASTER: return "raster";
+    case SILK_STAGE_COUNT: break;
+    }
+    return "?";
 }
 
 const char *silk_mode_name(silk_mode mode)
@@ -68,6 +83,7 @@ typedef struct frame {
     uint32_t nparts;
     void (*part)(struct frame *f, uint32_t k);
     int smooth;
+    silk_stage_clock *clock;  /* per-stage timing, or NULL */
     silk_sil_frame sil;       /* SMOOTH: the plan */
     uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
 } frame;
@@ -123,8 +139,12 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         if (o->tolerance_px <= 0)
             return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_frame_smooth: tolerance must be positive");
         silk_arena_mark mark = silk_arena_top_mark(a);
-        f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, &f->sil, &f->g) &&
+        /* the plan's time without the visibility test's, which is inside it */
+        uint32_t vis0 = f->clock ? f->clock->ticks[SILK_STAGE_VISIBILITY] : 0, t0 = silk_stage_start(f->clock);
+        f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, f->clock, &f->sil, &f->g) &&
                     (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
+        silk_stage_stop(f->clock, SILK_STAGE_PLAN, t0);
+        if (f->clock) f->clock->ticks[SILK_STAGE_PLAN] -= f->clock->ticks[SILK_STAGE_VISIBILITY] - vis0;
         if (f->smooth) {
             silk_remesh_stats(&f->sil, stats);
             f->geom.curves = f->g.curve;
@@ -149,10 +169,14 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
 static void share_part(frame *f, uint32_t t)
 {
     silk_frame_geom *g = &f->g;
+    uint32_t t0 = silk_stage_start(f->clock);
     g->nvrec = g->ntri = g->ncurve = 0;
     if (f->smooth) silk_remesh_emit_tri(&f->sil, g, t);
     else silk_frame_flat_emit_tri(g, t);
+    silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
+    t0 = silk_stage_start(f->clock);
     for (uint32_t i = 0; i < g->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
+    silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
 }
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
@@ -208,6 +232,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
                          "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
                          "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
     memset(f, 0, sizeof *f);
+    f->clock = o->clock;
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
     f->nparts = 1;
@@ -288,7 +313,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[2];
+    uint32_t t0 = silk_stage_start(f->clock);
     silk_target_clear(t, o->bg_rgb);
+    silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
      * near as the nearest, so each pixel is shaded once (docs/raster.md).
      * In reverse order: of fragments at equal depth the first drawn keeps
@@ -302,7 +329,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
             if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
             f->part(f, k);
+            t0 = silk_stage_start(f->clock);
             draw_tris(f, o, t, pass);
+            silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
     t->depth_equal = 0;
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {

@@ -16,6 +16,7 @@
  */
 #include <string.h>
 #include "plan.h"
+#include "stages.h"
 #include "curve.h"
 
 /* ---- small helpers ---------------------------------------------------------- */
@@ -187,8 +188,10 @@ static silk_status find_triangles(silk_sil_frame *f)
 
     /* III-B.  The hierarchy may want scratch we do not have; the brute pass
      * gives the same answer without any. */
+    uint32_t t0 = silk_stage_start(f->clock);
     if (silk_visibility(m, v, f->vis, f->visible, a, NULL) != SILK_OK)
         silk_visibility_brute(m, v, f->visible);
+    silk_stage_stop(f->clock, SILK_STAGE_VISIBILITY, t0);
 
     /* Silhouette triangles, and which triangles next to a feature edge face us. */
     int features = m->nfeature_edges > 0 || m->nboundary_edges > 0 || m->nnonmanifold_edges > 0;

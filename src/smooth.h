@@ -11,9 +11,11 @@
 /* The plan of a frame into f and room for one input triangle's
  * share in local, all from the top of the arena (the caller releases it;
  * silk_remesh_stats gives the frame's counts).  tolerance_px > 0 (the
- * caller checks it).  Returns 0 when it does not fit: then nothing is
- * left allocated and the caller draws the coarse mesh. */
+ * caller checks it).  clock, when not NULL, times the visibility test.
+ * Returns 0 when it does not fit: then nothing is left allocated and the
+ * caller draws the coarse mesh. */
 int silk_frame_smooth_plan(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                           silk_vis_method vis, silk_sil_frame *f, silk_frame_geom *local);
+                           silk_vis_method vis, silk_stage_clock *clock, silk_sil_frame *f,
+                           silk_frame_geom *local);
 
 #endif

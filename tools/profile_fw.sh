@@ -25,13 +25,17 @@
 # exits 1 when the board's budget is not met (a frame fell back, RAM over
 # budget, core code over 48 KiB).
 #
-# Speed: the firmware reads a timer around each frame and each HAL stage
-# call (platform/mps2/fw_main.c); under QEMU with `-icount shift=0` in
-# BOARD_RUN a tick is a fixed number of instructions, BOARD_INSTR_PER_TICK,
-# which the firmware's loop of known length checks ("fw timer").  It prints instructions per frame
-# (the renderer's, without the sink's output work), the vertex and fragment
-# stages' shares, and frames per second at BOARD_CLOCK_HZ for each cycles-
-# per-instruction figure of BOARD_CPI; then a line
+# Speed: the firmware reads a timer around each frame, around each piece of
+# the renderer's stages (its stage clock) and each fragment stage call
+# (platform/mps2/fw_main.c); under QEMU with `-icount shift=0` in BOARD_RUN
+# a tick is a fixed number of instructions, BOARD_INSTR_PER_TICK, which the
+# firmware's loop of known length checks ("fw timer").  It prints
+# instructions per frame (the renderer's, without the sink's output work),
+# per stage (visibility, silhouette plan, emission, vertex stage,
+# rasterizer, fragment stage; each piece's measured timing overhead taken
+# off; "other" is the frame less the stages), and frames per second at
+# BOARD_CLOCK_HZ for each cycles-per-instruction figure of BOARD_CPI; then
+# a line
 #   speed BOARD MESH flat_instructions=N smooth_instructions=N
 # with the largest frame of each mode.
 set -u
@@ -148,6 +152,10 @@ FILENAME ~ /report\.txt$/ {
         tf = field("frame"); ov = field("overhead_ticks_per_1000_calls") / 1000
         vticks[tf] = field("vertex_ticks") - ov * field("vertex_calls"); vcalls[tf] = field("vertex_calls")
         fticks[tf] = field("fragment_ticks") - ov * field("fragment_calls"); fcalls[tf] = field("fragment_calls")
+    } else if ($0 ~ /^fw stage /) {
+        tf = field("frame"); sname = $6; sub(/^stage=/, "", sname)
+        sticks[tf, sname] = field("ticks") - field("overhead_ticks_per_1000_pieces") / 1000 * field("pieces")
+        nstage[tf]++
     } else if ($0 ~ /^fw ram /) {
         ram_total = field("total"); ram_budget = field("budget")
     }
@@ -218,19 +226,34 @@ END {
         ncpi = split(cpis, cpi, " ")
         printf "\nSPEED (instructions per frame; QEMU -icount shift=0, %g instructions a timer tick:\n", ipt
         printf "  a loop of %d instructions took %d ticks)\n", loop_instr, loop_ticks
-        printf "  %-6s %-6s %12s %11s %11s %12s", "camera", "mode", "frame", "vertex", "fragment", "rest"
+        split("visibility plan emit vertex raster", snames, " ")
+        printf "  %-6s %-6s %11s %10s %10s %10s %10s %10s %10s %8s", "camera", "mode", "frame", "visibility", "plan",
+            "emission", "vertex", "raster", "fragment", "other"
         for (c = 1; c <= ncpi; c++) printf "  %11s", sprintf("fps CPI %s", cpi[c])
         printf "\n"
         for (f = 0; f < ntime; f++) {
-            n = tticks[f] * ipt; v = vticks[f] * ipt; g = fticks[f] * ipt
-            printf "  %-6d %-6s %12d %11d %11d %12d", tcam[f], tmode[f], n, v, g, n - v - g
+            n = tticks[f] * ipt; g = fticks[f] * ipt
+            printf "  %-6d %-6s %11d", tcam[f], tmode[f], n
+            rest = n
+            for (s = 1; s <= 5; s++) {
+                x = sticks[f, snames[s]] * ipt
+                rest -= x
+                if (snames[s] == "raster") x -= g          # the fragment stage runs inside the rasterizer
+                printf " %10d", x
+                if (csv != "" && nstage[f]) printf "speed,camera %d %s %s instructions,%d\n", tcam[f], tmode[f], snames[s], x >csv
+            }
+            printf " %10d %8d", g, rest
             for (c = 1; c <= ncpi; c++) printf "  %11.2f", clock_hz / (n * cpi[c])
             printf "\n"
-            if (csv != "") printf "speed,camera %d %s instructions,%d\n", tcam[f], tmode[f], n >csv
+            if (csv != "") {
+                printf "speed,camera %d %s instructions,%d\n", tcam[f], tmode[f], n >csv
+                if (nstage[f]) printf "speed,camera %d %s fragment instructions,%d\n", tcam[f], tmode[f], g >csv
+            }
             if (n > worst[tmode[f]]) worst[tmode[f]] = n
         }
-        printf "  vertex and fragment: the HAL stages (%d and %d calls in the first frame); rest: visibility,\n", vcalls[0], fcalls[0]
-        printf "  silhouette plan, emission and raster.  fps at %.0f MHz for each cycles-per-instruction figure.\n", clock_hz / 1e6
+        printf "  Stages timed in a second pass (the stage clock of the renderer; the fragment stage, called from\n"
+        printf "  the rasterizer, timed call by call in a third: %d calls in the first frame) and taken off the\n", fcalls[0]
+        printf "  rasterizer; other: the frame less the stages.  fps at %.0f MHz for each cycles-per-instruction figure.\n", clock_hz / 1e6
         printf "speed %s %s flat_instructions=%d smooth_instructions=%d\n", board, name, worst["flat"], worst["smooth"]
     } else if (ntime) {
         printf "\nSPEED: not measured (the timer is not counting instructions: run QEMU with -icount shift=0)\n"

@@ -61,6 +61,36 @@ typedef enum silk_lines {
     SILK_LINES_ONLY = 2      /* the surface only hides lines: lines on the background */
 } silk_lines;
 
+/* Where a frame's time goes, for profiling on a device (docs/small-devices.md,
+ * "Speed on the device").  Optional: with render_opts.clock set, the
+ * renderer reads clock->now(clock->user), any free-running counter that
+ * counts up and wraps, before and after each piece of a stage and adds the
+ * difference to ticks[stage], counting the pieces in pieces[stage] (so the
+ * reads' own cost can be taken off).  The caller zeroes ticks and pieces.
+ * Timed: the visibility test and the silhouette plan of a SMOOTH frame drawn
+ * share by share (FLAT and SMOOTH without lines), every share's emission and
+ * vertex stage, and the rasterizer with the band clears (the fragment stage
+ * runs inside it; a HAL wrapper can time that alone).  Without a clock
+ * (NULL, the default) nothing is read. */
+typedef enum silk_stage {
+    SILK_STAGE_VISIBILITY = 0, /* which normals face the eye (III-B) */
+    SILK_STAGE_PLAN = 1,       /* silhouette plan: triangles, points, sampling, perturbation */
+    SILK_STAGE_EMIT = 2,       /* each input triangle's share: records, curves, triangles */
+    SILK_STAGE_VERTEX = 3,     /* the HAL's vertex stage over the share's records */
+    SILK_STAGE_RASTER = 4,     /* clears, spans, depth; the fragment stage included */
+    SILK_STAGE_COUNT = 5
+} silk_stage;
+
+typedef struct silk_stage_clock {
+    uint32_t (*now)(void *user);
+    void *user;
+    uint32_t ticks[SILK_STAGE_COUNT];
+    uint32_t pieces[SILK_STAGE_COUNT];
+} silk_stage_clock;
+
+/* "visibility", "plan", "emit", "vertex", "raster"; "?" for anything else. */
+const char *silk_stage_name(silk_stage s);
+
 typedef struct silk_render_opts {
     silk_mode mode;
     silk_fx tolerance_px;    /* e of eq. 8, 0.25 .. 4 (BLEND: the chord tolerance of its edges) */
@@ -75,6 +105,7 @@ typedef struct silk_render_opts {
     int lines_polygonal;     /* the coarse mesh's polygonal outline even in SMOOTH mode */
     uint32_t line_rgb;       /* silhouette lines */
     uint32_t line_feature_rgb; /* feature lines */
+    silk_stage_clock *clock; /* per-stage timing, or NULL (above) */
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);

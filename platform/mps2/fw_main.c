@@ -24,12 +24,13 @@
  * writes to the host are the output's cost, not the renderer's).  Under
  * QEMU's -icount these are instructions (tools/profile_fw.sh converts them;
  * "fw timer" runs a loop of known length to check the rate).  After the
- * memory report, a second, unwritten pass over each frame times every call
- * of the HAL's two stages ("fw stages"): the vertex and fragment stages'
- * shares, each call's timing overhead (measured on an empty stage) taken
- * off by profile_fw.sh.  The rest of the
- * frame (visibility, silhouette plan, emission, raster) is not split: that
- * needs hooks inside silk_render_bands().
+ * memory report, each frame is rendered twice more, unwritten ("fw
+ * stages"): once with the renderer's stage clock (render_opts.clock, the
+ * ticks of visibility, silhouette plan, emission, vertex stage and
+ * rasterizer), once through a HAL whose fragment stage is timed call by
+ * call, to take the fragment stage out of the rasterizer's time.  Each
+ * timed piece's own overhead (measured on an empty piece) is taken off by
+ * profile_fw.sh.
  *
  * Built by the board's firmware rules (platform/mps2/firmware.mk) with
  * -DFW_BOARD, -DFW_BAND_ROWS, -DFW_ARENA_BYTES, -DFW_FORMAT and
@@ -42,6 +43,7 @@
 #include "silk/validate.h"
 #include "fw_io.h"
 #include "fwmodel.h"
+#include "../../src/stages.h"      /* the core's own timing of a piece, to measure its overhead */
 
 #ifndef FW_BOARD
 #define FW_BOARD "unknown"
@@ -191,6 +193,29 @@ static uint32_t timing_overhead(void)
     return t.fticks / 100;
 }
 
+static uint32_t clock_now(void *user)
+{
+    (void)user;
+    return fw_ticks();
+}
+
+/* Ticks per 1000 pieces that the renderer's stage clock adds around a
+ * piece: the core's own start/stop (src/stages.h) around nothing, spaced
+ * unevenly as timing_overhead() does. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static uint32_t clock_overhead(void)
+{
+    silk_stage_clock c = { clock_now, NULL, { 0 }, { 0 } };
+    for (uint32_t i = 0; i < 100000; i++) {
+        fw_spin(1 + i % 20);
+        uint32_t t0 = silk_stage_start(&c);
+        silk_stage_stop(&c, SILK_STAGE_EMIT, t0);
+    }
+    return c.ticks[SILK_STAGE_EMIT] / 100;
+}
+
 static int discard_band(void *user, const silk_target *t)
 {
     (void)user;
@@ -203,6 +228,7 @@ typedef struct fw_pass {
     const char *prefix;
     int stages;                  /* time the HAL's stages, write nothing */
     uint32_t overhead;           /* timing_overhead(), for the report */
+    uint32_t clock_overhead;     /* clock_overhead(), for the report */
 } fw_pass;
 
 /* The stage pass of one frame: unwritten, the HAL's stages timed.  Never
@@ -218,14 +244,23 @@ static int time_stages(silk_arena *a, const silk_mesh *m, const silk_view *view,
     silk_sink none = { discard_band, NULL };
     silk_frame_stats st;
     silk_error err;
-    if (silk_render_bands(a, m, view, &th.hal, ro, band, &none, &st, &err) != SILK_OK) {
+    silk_stage_clock clock = { clock_now, NULL, { 0 }, { 0 } };
+    silk_render_opts clocked = *ro;
+    clocked.clock = &clock;
+    if (silk_render_bands(a, m, view, hal, &clocked, band, &none, &st, &err) != SILK_OK ||
+        silk_render_bands(a, m, view, &th.hal, ro, band, &none, &st, &err) != SILK_OK) {
         say("fw error frame=%d %s", frame, err.msg);
         return 1;
     }
+    const char *mname = ro->mode == SILK_MODE_FLAT ? "flat" : "smooth";
     say("fw stages frame=%d camera=%d mode=%s vertex_ticks=%lu vertex_calls=%lu fragment_ticks=%lu "
         "fragment_calls=%lu overhead_ticks_per_1000_calls=%lu",
-        frame, k, ro->mode == SILK_MODE_FLAT ? "flat" : "smooth", (unsigned long)th.vticks, (unsigned long)th.vcalls,
+        frame, k, mname, (unsigned long)th.vticks, (unsigned long)th.vcalls,
         (unsigned long)th.fticks, (unsigned long)th.fcalls, (unsigned long)pass->overhead);
+    for (int s = 0; s < SILK_STAGE_COUNT; s++)
+        say("fw stage frame=%d camera=%d mode=%s stage=%s ticks=%lu pieces=%lu overhead_ticks_per_1000_pieces=%lu",
+            frame, k, mname, silk_stage_name((silk_stage)s), (unsigned long)clock.ticks[s],
+            (unsigned long)clock.pieces[s], (unsigned long)pass->clock_overhead);
     return 0;
 }
 
@@ -355,12 +390,12 @@ int fw_scene(void)
     silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
 
     int rc = 0;
-    fw_pass pass = { prefix, 0, 0 };
+    fw_pass pass = { prefix, 0, 0, 0 };
     for (int p = 0; p < 2; p++) {
         if (p == 1) {   /* the stage pass last, so that its timing adds nothing to the memory reported */
             report_memory(&arena, band_bytes);
             if (rc) break;
-            pass = (fw_pass){ NULL, 1, timing_overhead() };
+            pass = (fw_pass){ NULL, 1, timing_overhead(), clock_overhead() };
         }
         for (int k = 0, frame = 0; k < fwmodel_NCAMERAS && !rc; k++)
             for (int mode = 0; mode < 2 && !rc; mode++)
