@@ -31,8 +31,17 @@
 
 /* ---- small integer helpers -------------------------------------------------- */
 
+/* floor(n / d), d > 0.  Most operands here fit in 32 bits (subpixel
+ * coordinates, areas of small triangles): those take a 32-bit division, a
+ * single instruction on a Cortex-M3 and a short library routine on a
+ * Cortex-M0, where libgcc's 64-bit one costs several hundred instructions.
+ * The quotient is the same either way. */
 static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
 {
+    if (d <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
+        int32_t n32 = (int32_t)n, d32 = (int32_t)d, q32 = n32 / d32;
+        return (n32 % d32 != 0 && n32 < 0) ? q32 - 1 : q32;
+    }
     int64_t q = n / d;
     return (n % d != 0 && n < 0) ? q - 1 : q;
 }
