@@ -18,6 +18,8 @@
 #                                      names another machine for it
 #                                      (BOARD_BIG_MACHINE, its timer
 #                                      BOARD_BIG_TIMER)
+#   make BOARD=microbit profile-256k   `make profile` of that build: the
+#                                      smooth frames and the RAM they need
 #
 # Each output directory records the QEMU machine its firmware runs on
 # ($(FW_OUT)/machine) and the instructions a tick of its timer is under
@@ -58,10 +60,15 @@ FW_HOST     := $(FW_NAMES:%=$(FW_OUT)/%/fw-host)
 .PHONY: firmware firmware-host firmware-256k run FORCE
 firmware: $(FW_ELF) $(FW_OUT)/machine $(FW_OUT)/instr_per_tick
 firmware-host: $(FW_HOST)
+FW_256K := FW_VARIANT=ram256k BOARD_RAM_BYTES=262144 BOARD_ARENA_BYTES=255488 \
+           $(if $(BOARD_BIG_MACHINE),BOARD_MACHINE=$(BOARD_BIG_MACHINE) BOARD_TIMER=$(BOARD_BIG_TIMER) \
+           BOARD_INSTR_PER_TICK=$(BOARD_BIG_INSTR_PER_TICK))
 firmware-256k: $(FW_DIR)/libsilk.a $(FW_PLAT_OBJ) $(BUILD)/silk
-	$(MAKE) FW_VARIANT=ram256k BOARD_RAM_BYTES=262144 BOARD_ARENA_BYTES=255488 \
-	    $(if $(BOARD_BIG_MACHINE),BOARD_MACHINE=$(BOARD_BIG_MACHINE) BOARD_TIMER=$(BOARD_BIG_TIMER) \
-	    BOARD_INSTR_PER_TICK=$(BOARD_BIG_INSTR_PER_TICK)) firmware
+	$(MAKE) $(FW_256K) firmware
+
+.PHONY: profile-256k
+profile-256k: $(FW_DIR)/libsilk.a $(FW_PLAT_OBJ) $(BUILD)/silk
+	$(MAKE) $(FW_256K) profile
 
 $(FW_OUT)/machine $(FW_OUT)/instr_per_tick: FORCE
 	@mkdir -p $(dir $@)
