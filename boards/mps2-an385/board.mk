@@ -29,8 +29,14 @@ BOARD_ARENA_BYTES := 59136
 BOARD_CROSS := arm-none-eabi-
 BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # The firmware draws flat and smooth only; the reference methods (PN,
-# blend) stay in the host library, where they are measured against.
-BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES
+# blend) stay in the host library, where they are measured against, and so
+# do the pen-and-ink lines and --wire.
+BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES
+# Mesh indices in 16 bits: the packed model's index arrays and the frame's
+# plan records take half the bytes (`silk pack` refuses a model with more
+# than 65 534 vertices, normals, triangles or edges for it).  The host build
+# of the scene (fw-host) uses the same type, so its arena matches byte for byte.
+BOARD_CORE_DEFS := -DSILK_INDEX_T=uint16_t
 # -icount shift=0: virtual time advances exactly 1 ns per instruction, so
 # the firmware's timer (25 MHz, 40 ns a tick) counts instructions.
 BOARD_RUN   := qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none \
