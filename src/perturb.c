@@ -52,10 +52,10 @@ int silk_perturb_alloc(silk_sil_frame *f)
     f->lift = silk_arena_array_top(a, b, sizeof *f->lift, SILK_MEM_FRAME);
     f->slot_vert = silk_arena_array_top(a, b, sizeof *f->slot_vert, SILK_MEM_FRAME);
     f->slot_stamp = silk_arena_array_top(a, b, sizeof *f->slot_stamp, SILK_MEM_FRAME);
-    f->offset = silk_arena_array_top(a, b, sizeof *f->offset, SILK_MEM_FRAME);
-    if (!f->vert_slot || !f->acc || !f->lift || !f->slot_vert || !f->slot_stamp || !f->offset)
-        return 0;
-    memset(f->vert_slot, 0xFF, (size_t)f->m->nverts * sizeof *f->vert_slot);
+    /* the offsets are written over acc (offset j from slot j or a later one) */
+    f->offset = f->acc;
+    if (!f->vert_slot || !f->acc || !f->lift || !f->slot_vert || !f->slot_stamp) return 0;
+    memset(f->vert_slot, 0xFF, (size_t)f->m->nverts * sizeof *f->vert_slot);   /* SILK_NO_INDEX */
     return 1;
 }
 
@@ -63,10 +63,10 @@ int silk_perturb_alloc(silk_sil_frame *f)
 static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint32_t stamp, int pass)
 {
     uint32_t sl = f->vert_slot[vtx];
-    if (sl == SILK_SIL_NONE) {
+    if (sl == SILK_NO_INDEX) {
         if (f->nslots >= f->near_bound) return;   /* cannot happen: the bound counts every visit */
         sl = f->nslots++;
-        f->vert_slot[vtx] = sl;
+        f->vert_slot[vtx] = (silk_index)sl;       /* < near_bound <= nverts */
         f->slot_vert[sl] = vtx;
         f->acc[sl] = silk_v3(0, 0, 0);
         f->lift[sl] = 0;
@@ -114,7 +114,7 @@ static int silhouette_at(const silk_sil_frame *f, silk_index vtx)
     for (uint32_t i = m->vert_edge_start[vtx]; i < m->vert_edge_start[vtx + 1]; i++) {
         silk_index e = m->vert_edge[i];
         if (!silk_sil_chained(f, e)) continue;
-        const silk_sil_edge *w = &f->edges[f->edge_slot[e]];
+        const silk_sil_edge *w = &f->edges[silk_sil_slot(f, e)];
         /* the chain's point nearest vtx */
         silk_fx t = m->edge[e].v[0] == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
         silk_curve c;
@@ -148,10 +148,10 @@ void silk_perturb(silk_sil_frame *f)
     for (uint32_t sl = 0; sl < f->nslots; sl++) {
         silk_index vtx = f->slot_vert[sl];
         if (f->lift[sl] > 0 && !silhouette_at(f, vtx)) {
-            f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);
-            f->vert_slot[vtx] = f->noffset++;
+            f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);   /* noffset <= sl */
+            f->vert_slot[vtx] = (silk_index)f->noffset++;
         } else {
-            f->vert_slot[vtx] = SILK_SIL_NONE;
+            f->vert_slot[vtx] = SILK_NO_INDEX;
         }
     }
     f->vert_offset = f->vert_slot;

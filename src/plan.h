@@ -32,6 +32,7 @@
 #define SILK_PLAN_H
 
 #include "frame.h"
+#include "curve.h"        /* SILK_MAX_SAMPLES */
 
 #define SILK_SIL_NONE UINT32_MAX
 
@@ -61,17 +62,25 @@ typedef struct silk_sil_side {
 
 /* An edge that carries points this frame.  Its curve runs from edge.v[0] to
  * edge.v[1], exactly through the two vertices, so only the tangents are
- * kept (silk_sil_edge_curve makes the whole curve). */
+ * kept (silk_sil_edge_curve makes the whole curve).  The per-edge counts
+ * are 16 bits (an edge with more sides than SILK_SIL_SIDES_MAX makes the
+ * plan fail, and the frame falls back) and nfeat at most SILK_MAX_SAMPLES:
+ * 44 bytes an edge with 16-bit indices, the plan's largest part. */
 typedef struct silk_sil_edge {
     silk_vec3 t0, t1;        /* tangents of the bridge or of the feature segment */
-    uint32_t edge;           /* mesh edge index */
-    uint32_t pair0, npairs;  /* silhouette points */
-    uint32_t side0, nsides;  /* triangle sides on this edge, and where they start in a list of all (lines.c) */
-    uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
-    uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
+    uint32_t pair0;          /* its silhouette points: pairs[pair0 .. pair0 + npairs) */
+    uint32_t chain0;         /* its interior parameters, ascending, distinct: chain[chain0 .. chain0 + nchain) */
+    silk_index edge;         /* mesh edge index */
+    uint16_t npairs, nchain;
+    uint16_t nsides;         /* triangle sides on this edge */
+    uint8_t nfeat;           /* feature sampling intervals (0: not sampled) */
     uint8_t is_feature;
     uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
 } silk_sil_edge;
+
+/* The most sides one carrying edge may have: its chain (nfeat - 1 samples
+ * and a point per side at most) then fits nchain. */
+#define SILK_SIL_SIDES_MAX (UINT16_MAX - SILK_MAX_SAMPLES)
 
 /* The silhouette segment of one silhouette triangle (III-D) and its samples. */
 typedef struct silk_sil_seg {
@@ -93,7 +102,7 @@ typedef struct silk_sil_frame {
 
     uint8_t *visible;        /* nnormals */
     uint8_t *tri_state;      /* ntris, SILK_TS_*; read only after silhouette.c */
-    uint32_t *edge_slot;     /* nedges: index into edges[], or SILK_SIL_NONE */
+    silk_index *edge_slot;   /* nedges: index into edges[], or SILK_NO_INDEX (read it with silk_sil_slot) */
     uint32_t nsil;
 
     silk_sil_edge *edges;  uint32_t nedges;
@@ -110,12 +119,13 @@ typedef struct silk_sil_frame {
 
     /* perturbation (perturb.c) */
     uint32_t near_bound;     /* neighbour slots needed by the accepted concave segments */
-    uint32_t *vert_slot;     /* nverts: perturbation slot, or SILK_SIL_NONE */
+    silk_index *vert_slot;   /* nverts: perturbation slot, or SILK_NO_INDEX */
     silk_vec3 *acc;          /* per slot: sum of plane normals, then the unit R */
     silk_fx *lift;           /* per slot: how far to move down along R */
-    uint32_t *slot_vert, *slot_stamp, nslots;
-    uint32_t *vert_offset;   /* nverts view of vert_slot after perturbation: offset index */
-    silk_vec3 *offset;     uint32_t noffset;
+    silk_index *slot_vert;   /* per slot: its vertex */
+    uint32_t *slot_stamp, nslots;
+    silk_index *vert_offset; /* nverts view of vert_slot after perturbation: offset index, or SILK_NO_INDEX */
+    silk_vec3 *offset;     uint32_t noffset;   /* the offsets, in acc's memory */
 } silk_sil_frame;
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs
@@ -144,10 +154,17 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
  * chord). */
 uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol);
 
+/* The slot of mesh edge `edge` in edges[], or SILK_SIL_NONE. */
+static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
+{
+    silk_index w = f->edge_slot[edge];
+    return w == SILK_NO_INDEX ? SILK_SIL_NONE : w;
+}
+
 /* Whether mesh edge `edge` carries points this frame. */
 static inline int silk_sil_chained(const silk_sil_frame *f, uint32_t edge)
 {
-    uint32_t w = f->edge_slot[edge];
+    uint32_t w = silk_sil_slot(f, edge);
     return w != SILK_SIL_NONE && f->edges[w].nchain > 0;
 }
 

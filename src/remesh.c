@@ -48,7 +48,7 @@
 
 static silk_sil_edge *edge_at(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
-    uint32_t w = f->edge_slot[f->m->tri_edge[3 * t + k]];
+    uint32_t w = silk_sil_slot(f, f->m->tri_edge[3 * t + k]);
     return w == SILK_SIL_NONE ? NULL : &f->edges[w];
 }
 
@@ -302,10 +302,10 @@ static uint32_t put_curve_rec(silk_frame_geom *g, uint32_t curve, silk_fx t)
 static uint32_t put_corner(const silk_sil_frame *f, silk_frame_geom *g, uint32_t c)
 {
     silk_vrec *r = &g->vrec[g->nvrec];
-    uint32_t off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_SIL_NONE;
-    r->kind = off == SILK_SIL_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+    silk_index off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_NO_INDEX;
+    r->kind = off == SILK_NO_INDEX ? SILK_VREC_CORNER : SILK_VREC_MOVED;
     r->a = c;
-    r->b = off == SILK_SIL_NONE ? 0 : off;
+    r->b = off == SILK_NO_INDEX ? 0 : off;
     r->t = 0;
     return g->nvrec++;
 }

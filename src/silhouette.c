@@ -167,7 +167,7 @@ static uint32_t chain_index(const silk_fx *c, uint32_t n, silk_fx u)
 /* Mark edge e as carrying points; the first time, give it a slot. */
 static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
 {
-    if (f->edge_slot[e] == SILK_SIL_NONE) f->edge_slot[e] = (*n)++;
+    if (f->edge_slot[e] == SILK_NO_INDEX) f->edge_slot[e] = (silk_index)(*n)++;
 }
 
 /* Visibility of the normals (III-B), the silhouette triangles and the
@@ -235,7 +235,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
     for (uint32_t e = 0; e < m->nedges; e++) {
-        uint32_t w = f->edge_slot[e];
+        uint32_t w = silk_sil_slot(f, e);
         if (w == SILK_SIL_NONE) continue;
         f->edges[w].edge = e;
         f->edges[w].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
@@ -247,9 +247,10 @@ static silk_status lay_out_edges(silk_sil_frame *f)
         if (!silk_sil_tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
         for (uint32_t k = 0; k < 3; k++) {
-            uint32_t w = f->edge_slot[m->tri_edge[3 * t + k]];
+            uint32_t w = silk_sil_slot(f, m->tri_edge[3 * t + k]);
             if (w == SILK_SIL_NONE) continue;
             silk_sil_edge *we = &f->edges[w];
+            if (we->nsides == SILK_SIL_SIDES_MAX) return SILK_ERR_NOMEM;
             we->nsides++;
             if (st & SILK_TS_SIL) {
                 uint32_t lone = st & SILK_TS_LONE;
@@ -260,7 +261,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     }
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
-        f->edges[w].side0 = nsides; nsides += f->edges[w].nsides;
+        nsides += f->edges[w].nsides;
         f->edges[w].pair0 = npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
     }
     f->nsides = nsides;
@@ -321,8 +322,8 @@ static silk_status chain_points(silk_sil_frame *f)
                                  0, SILK_FX_ONE);
         }
         we->nfeat = 0;
-        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))
-            we->nfeat = silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
+        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))   /* at most SILK_MAX_SAMPLES */
+            we->nfeat = (uint8_t)silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
         nchain += (we->nfeat > 1 ? we->nfeat - 1 : 0) + we->npairs;
     }
     f->chain = silk_arena_array_top(a, nchain, sizeof *f->chain, SILK_MEM_FRAME);
@@ -340,7 +341,7 @@ static silk_status chain_points(silk_sil_frame *f)
             p->chain = chain_index(c, n, p->u);
         }
         we->chain0 = nchain;
-        we->nchain = n;
+        we->nchain = (uint16_t)n;
         nchain += n;
     }
     f->nchain = nchain;
