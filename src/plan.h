@@ -40,7 +40,8 @@
 enum {
     SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
-    SILK_TS_FRONT = 8       /* front-facing (computed only for triangles with a feature side) */
+    SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
+    SILK_TS_CONCAVE = 16    /* its silhouette segment is concave (III-E; set by remesh.c) */
 };
 
 /* A silhouette point (eqs. 6-7): one normal pair on one edge. */
@@ -115,10 +116,10 @@ typedef struct silk_sil_frame {
     uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
     /* the most one input triangle's share holds, and the frame's totals */
     uint32_t max_recs, max_tris, max_curves;
-    uint32_t near_total, out_tris, seg_samples;
+    uint32_t out_tris, seg_samples;
 
     /* perturbation (perturb.c) */
-    uint32_t near_bound;     /* neighbour slots needed by the accepted concave segments */
+    uint32_t near_bound;     /* vertices next to a concave segment: one slot each */
     silk_index *vert_slot;   /* nverts: perturbation slot, or SILK_NO_INDEX */
     silk_vec3 *acc;          /* per slot: sum of plane normals, then the unit R */
     silk_fx *lift;           /* per slot: how far to move down along R */

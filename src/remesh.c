@@ -219,7 +219,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     f->max_recs = 3;
     f->max_tris = 1;
     f->max_curves = 0;
-    f->near_total = f->seg_samples = 0;
+    f->seg_samples = 0;
     f->out_tris = m->ntris;
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg tmp, *s = NULL;
@@ -239,23 +239,10 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         if (tc.curves > f->max_curves) f->max_curves = tc.curves;
         if (s) {
             f->seg_samples += s->n - 1;
-            if (s->concave) {
-                /* the triangle's corners and everything one edge away */
-                uint32_t near = 3;
-                for (int k = 0; k < 3; k++) {
-                    silk_index vtx = m->tri[3 * t + k];
-                    near += m->vert_edge_start[vtx + 1] - m->vert_edge_start[vtx];
-                }
-                f->near_total = f->near_total > UINT32_MAX - near ? UINT32_MAX : f->near_total + near;
-            }
+            if (s->concave) f->tri_state[t] |= SILK_TS_CONCAVE;   /* perturb.c sizes its slots by them */
         }
     }
     return SILK_OK;
-}
-
-uint32_t silk_remesh_near_bound(const silk_sil_frame *f)
-{
-    return f->near_total > f->m->nverts ? f->m->nverts : f->near_total;
 }
 
 int silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g, uint64_t recs, uint64_t tris, uint64_t curves)
