@@ -14,7 +14,7 @@
 BOARD_WIDTH  := 320
 BOARD_HEIGHT := 240
 BOARD_FORMAT := SILK_PIX_RGB565
-BOARD_BAND_ROWS := 8
+BOARD_BAND_ROWS := 4
 BOARD_SINK   := semihosting
 
 # The part: flash, RAM, and how the RAM is split.  The arena holds the band
