@@ -95,7 +95,7 @@ static uint32_t *edge_sides(const silk_sil_frame *f, uint32_t **side0)
     for (uint32_t t = 0; t < m->ntris; t++) {
         if (!silk_sil_tri_ok(m, t)) continue;
         for (uint32_t k = 0; k < 3; k++) {
-            uint32_t w = silk_sil_slot(f, m->tri_edge[3 * t + k]);
+            uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
             if (w != SILK_SIL_NONE) at[s0[w] + n[w]++] = 3 * t + k;
         }
     }

@@ -48,7 +48,7 @@
 
 static silk_sil_edge *edge_at(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
-    uint32_t w = silk_sil_slot(f, f->m->tri_edge[3 * t + k]);
+    uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(f->m, t, k));
     return w == SILK_SIL_NONE ? NULL : &f->edges[w];
 }
 

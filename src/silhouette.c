@@ -55,7 +55,7 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
 {
     for (int k = 0; k < 3; k++)
         if (m->tri[3 * t + k] >= m->nverts || m->tri_normal[3 * t + k] >= m->nnormals ||
-            !edge_ok(m, m->tri_edge[3 * t + k]))
+            !edge_ok(m, silk_mesh_tri_edge(m, t, k)))
             return 0;
     return 1;
 }
@@ -101,7 +101,7 @@ static void edge_geometry(const silk_sil_frame *f, silk_sil_edge *w)
     const silk_edge *e = &m->edge[w->edge];
     silk_vec3 p0 = m->pos[e->v[0]], p1 = m->pos[e->v[1]];
     if (w->is_feature || w->npairs == 0) {
-        silk_index fi = m->edge_feature ? m->edge_feature[w->edge] : SILK_NO_INDEX;
+        silk_index fi = silk_mesh_edge_feature(m, w->edge);
         if (fi != SILK_NO_INDEX && fi < m->nfeature_edges && m->feature) {
             w->t0 = m->feature[fi].t0;
             w->t1 = m->feature[fi].t1;
@@ -204,17 +204,17 @@ static silk_status find_triangles(silk_sil_frame *f)
             uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
             st = (uint8_t)(SILK_TS_SIL | lone);
             f->nsil++;
-            mark_edge(f, m->tri_edge[3 * t + lone], &nwork);
-            mark_edge(f, m->tri_edge[3 * t + (lone + 2) % 3], &nwork);
+            mark_edge(f, silk_mesh_tri_edge(m, t, lone), &nwork);
+            mark_edge(f, silk_mesh_tri_edge(m, t, (lone + 2) % 3), &nwork);
         }
         if (features) {
             int has_feature = 0;
             for (int k = 0; k < 3; k++)
-                if (m->edge[m->tri_edge[3 * t + k]].flags & SILK_EDGE_FEATURE) has_feature = 1;
+                if (m->edge[silk_mesh_tri_edge(m, t, k)].flags & SILK_EDGE_FEATURE) has_feature = 1;
             if (has_feature && silk_sil_tri_front(m, v, t)) {
                 st |= SILK_TS_FRONT;
                 for (int k = 0; k < 3; k++) {
-                    silk_index e = m->tri_edge[3 * t + k];
+                    silk_index e = silk_mesh_tri_edge(m, t, k);
                     if (m->edge[e].flags & SILK_EDGE_FEATURE) mark_edge(f, e, &nwork);
                 }
             }
@@ -247,7 +247,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
         if (!silk_sil_tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
         for (uint32_t k = 0; k < 3; k++) {
-            uint32_t w = silk_sil_slot(f, m->tri_edge[3 * t + k]);
+            uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
             if (w == SILK_SIL_NONE) continue;
             silk_sil_edge *we = &f->edges[w];
             if (we->nsides == SILK_SIL_SIDES_MAX) return SILK_ERR_NOMEM;
@@ -281,7 +281,7 @@ static void fill_pairs(silk_sil_frame *f)
         uint32_t lone = st & SILK_TS_LONE;
         for (uint32_t k = 0; k < 3; k++) {
             if (k != lone && k != (lone + 2) % 3) continue;
-            silk_index e = m->tri_edge[3 * t + k];
+            silk_index e = silk_mesh_tri_edge(m, t, k);
             silk_sil_edge *we = &f->edges[f->edge_slot[e]];
             silk_sil_side s;
             silk_sil_side_attrs(m, t, k, &m->edge[e], &s);
