@@ -33,7 +33,8 @@ FW_LDFLAGS := $(BOARD_ARCH) -nostartfiles -specs=nano.specs -specs=nosys.specs -
               -T platform/mps2/mps2.ld -Wl,--defsym=__flash_size=$(BOARD_FLASH_BYTES) \
               -Wl,--defsym=__ram_size=$(BOARD_RAM_BYTES) -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES)
 FW_PACK_ARGS := --size $(BOARD_WIDTH)x$(BOARD_HEIGHT) \
-                --format $(if $(filter SILK_PIX_RGB565,$(BOARD_FORMAT)),rgb565,rgb888) --views $(BOARD_VIEWS)
+                --format $(if $(filter SILK_PIX_RGB565,$(BOARD_FORMAT)),rgb565,rgb888) --views $(BOARD_VIEWS) \
+                $(BOARD_PACK_ARGS)
 
 FW_CORE_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/obj/%.o)
 FW_PLAT_OBJ := $(FW_DIR)/obj/platform/mps2/startup.o $(FW_DIR)/obj/platform/mps2/semihost.o
