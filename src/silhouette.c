@@ -225,6 +225,29 @@ static silk_status find_triangles(silk_sil_frame *f)
     return SILK_OK;
 }
 
+/* Whether silhouette side k of triangle t, on mesh edge e, gives the same
+ * silhouette point as a silhouette side of the edge's other triangle, met
+ * earlier in triangle order: fill_pairs then keeps one point for both.  So
+ * the points are counted exactly on a manifold edge (two triangles); on a
+ * non-manifold one (edge.t holds only two of them) every side counts. */
+static int pair_seen(const silk_sil_frame *f, uint32_t t, uint32_t k, silk_index e)
+{
+    const silk_mesh *m = f->m;
+    const silk_edge *ed = &m->edge[e];
+    if (ed->flags & SILK_EDGE_NONMANIFOLD) return 0;
+    uint32_t o = ed->t[0] == t ? ed->t[1] : ed->t[0];
+    if (o >= t || !(f->tri_state[o] & SILK_TS_SIL)) return 0;   /* also SILK_NO_INDEX: no other */
+    uint32_t lone = f->tri_state[o] & SILK_TS_LONE;
+    silk_sil_side a, b;
+    silk_sil_side_attrs(m, t, k, ed, &a);
+    for (uint32_t ko = 0; ko < 3; ko++) {
+        if ((ko != lone && ko != (lone + 2) % 3) || silk_mesh_tri_edge(m, o, ko) != e) continue;
+        silk_sil_side_attrs(m, o, ko, ed, &b);
+        if (a.n0 == b.n0 && a.n1 == b.n1) return 1;
+    }
+    return 0;
+}
+
 /* The carrying edges, and room for their sides and silhouette points:
  * each edge's run of sides and of points laid out edge by edge. */
 static silk_status lay_out_edges(silk_sil_frame *f)
@@ -254,7 +277,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
             we->nsides++;
             if (st & SILK_TS_SIL) {
                 uint32_t lone = st & SILK_TS_LONE;
-                if (k == lone || k == (lone + 2) % 3) we->npairs++;
+                if ((k == lone || k == (lone + 2) % 3) && !pair_seen(f, t, k, we->edge)) we->npairs++;
             }
             if ((st & SILK_TS_FRONT) && we->is_feature) we->sampled = 1;
         }
