@@ -103,10 +103,10 @@ typedef struct silk_sil_frame {
 
     uint8_t *visible;        /* nnormals */
     uint8_t *tri_state;      /* ntris, SILK_TS_*; read only after silhouette.c */
-    silk_index *edge_slot;   /* nedges: index into edges[], or SILK_NO_INDEX (read it with silk_sil_slot) */
+    uint8_t *carrying;       /* nedges bits: the edges that carry points (find them with silk_sil_slot) */
     uint32_t nsil;
 
-    silk_sil_edge *edges;  uint32_t nedges;
+    silk_sil_edge *edges;  uint32_t nedges;   /* in mesh edge order */
     silk_sil_pair *pairs;  uint32_t npairs;
     uint32_t nsides;         /* triangle sides on carrying edges */
     silk_fx *chain;        uint32_t nchain;
@@ -155,11 +155,18 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
  * chord). */
 uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol);
 
-/* The slot of mesh edge `edge` in edges[], or SILK_SIL_NONE. */
+/* The slot of mesh edge `edge` in edges[], or SILK_SIL_NONE: a bit, then a
+ * binary search of the carrying edges (a bit per mesh edge instead of a
+ * slot index: the plan's RAM). */
 static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 {
-    silk_index w = f->edge_slot[edge];
-    return w == SILK_NO_INDEX ? SILK_SIL_NONE : w;
+    if (!(f->carrying[edge >> 3] & (1u << (edge & 7)))) return SILK_SIL_NONE;
+    uint32_t lo = 0, hi = f->nedges;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (f->edges[mid].edge < edge) lo = mid + 1; else hi = mid;
+    }
+    return lo < f->nedges && f->edges[lo].edge == edge ? lo : SILK_SIL_NONE;
 }
 
 /* Whether mesh edge `edge` carries points this frame. */

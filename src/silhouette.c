@@ -164,15 +164,17 @@ static uint32_t chain_index(const silk_fx *c, uint32_t n, silk_fx u)
 
 /* ---- the stage ----------------------------------------------------------------- */
 
-/* Mark edge e as carrying points; the first time, give it a slot. */
+/* Mark edge e as carrying points, counting it the first time. */
 static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
 {
-    if (f->edge_slot[e] == SILK_NO_INDEX) f->edge_slot[e] = (silk_index)(*n)++;
+    uint8_t bit = (uint8_t)(1u << (e & 7));
+    if (!(f->carrying[e >> 3] & bit)) (*n)++;
+    f->carrying[e >> 3] |= bit;
 }
 
 /* Visibility of the normals (III-B), the silhouette triangles and the
  * front-facing triangles next to a feature edge (tri_state), and a slot for
- * every edge that carries points this frame (edge_slot; f->nedges of them). */
+ * every edge that carries points this frame (carrying; f->nedges of them). */
 static silk_status find_triangles(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
@@ -181,9 +183,9 @@ static silk_status find_triangles(silk_sil_frame *f)
 
     f->visible = silk_arena_array_top(a, m->nnormals, 1, SILK_MEM_FRAME);
     f->tri_state = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
-    f->edge_slot = silk_arena_array_top(a, m->nedges, sizeof *f->edge_slot, SILK_MEM_FRAME);
-    if (!f->visible || !f->tri_state || !f->edge_slot) return SILK_ERR_NOMEM;
-    memset(f->edge_slot, 0xFF, (size_t)m->nedges * sizeof *f->edge_slot);
+    size_t bits = ((size_t)m->nedges + 7) / 8;
+    f->carrying = silk_arena_array_top(a, bits, 1, SILK_MEM_FRAME);   /* zeroed */
+    if (!f->visible || !f->tri_state || !f->carrying) return SILK_ERR_NOMEM;
 
     /* III-B.  The hierarchy may want scratch we do not have; the brute pass
      * gives the same answer without any. */
@@ -257,11 +259,10 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     uint32_t nwork = f->nedges;
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
-    for (uint32_t e = 0; e < m->nedges; e++) {
-        uint32_t w = silk_sil_slot(f, e);
-        if (w == SILK_SIL_NONE) continue;
-        f->edges[w].edge = e;
-        f->edges[w].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
+    for (uint32_t e = 0, w = 0; e < m->nedges; e++) {
+        if (!(f->carrying[e >> 3] & (1u << (e & 7)))) continue;
+        f->edges[w].edge = (silk_index)e;
+        f->edges[w++].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
     }
 
     /* Count the sides (every triangle side on a carrying edge) and the
@@ -305,7 +306,7 @@ static void fill_pairs(silk_sil_frame *f)
         for (uint32_t k = 0; k < 3; k++) {
             if (k != lone && k != (lone + 2) % 3) continue;
             silk_index e = silk_mesh_tri_edge(m, t, k);
-            silk_sil_edge *we = &f->edges[f->edge_slot[e]];
+            silk_sil_edge *we = &f->edges[silk_sil_slot(f, e)];
             silk_sil_side s;
             silk_sil_side_attrs(m, t, k, &m->edge[e], &s);
             uint32_t j;
