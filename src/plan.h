@@ -41,7 +41,8 @@ enum {
     SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
     SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
-    SILK_TS_CONCAVE = 16    /* its silhouette segment is concave (III-E; set by remesh.c) */
+    SILK_TS_CONCAVE = 16,   /* its silhouette segment is concave (III-E; set by remesh.c) */
+    SILK_TS_CARRY0 = 32     /* << k: side k lies on a carrying edge (whole triangles only) */
 };
 
 /* A silhouette point (eqs. 6-7): one normal pair on one edge. */
@@ -167,6 +168,15 @@ static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
         if (f->edges[mid].edge < edge) lo = mid + 1; else hi = mid;
     }
     return lo < f->nedges && f->edges[lo].edge == edge ? lo : SILK_SIL_NONE;
+}
+
+/* The carrying edge side k of triangle t lies on, or NULL: most sides are
+ * on none, and their tri_state bit says so without looking the edge up. */
+static inline silk_sil_edge *silk_sil_side_edge(const silk_sil_frame *f, uint32_t t, uint32_t k)
+{
+    if (!(f->tri_state[t] & (SILK_TS_CARRY0 << k))) return NULL;
+    uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(f->m, t, k));
+    return w == SILK_SIL_NONE ? NULL : &f->edges[w];
 }
 
 /* Whether mesh edge `edge` carries points this frame. */

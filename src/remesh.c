@@ -48,8 +48,7 @@
 
 static silk_sil_edge *edge_at(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
-    uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(f->m, t, k));
-    return w == SILK_SIL_NONE ? NULL : &f->edges[w];
+    return silk_sil_side_edge(f, t, k);
 }
 
 /* Points on side k of t this frame. */
@@ -210,8 +209,8 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
      * share, what a frame drawn share by share holds), all of them (a
      * stored frame), the perturbation's slots.  Segments (III-D) are made
      * here and again where they are needed; silhouette.c gave every
-     * silhouette triangle the points its segment needs, and tri_state is
-     * only read from here on. */
+     * silhouette triangle the points its segment needs, and tri_state
+     * only gains SILK_TS_CONCAVE here; it is only read from here on. */
     f->store_recs = 0;
     f->store_curves = 0;
     f->nsegs = 0;

@@ -275,6 +275,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
             if (w == SILK_SIL_NONE) continue;
             silk_sil_edge *we = &f->edges[w];
             if (we->nsides == SILK_SIL_SIDES_MAX) return SILK_ERR_NOMEM;
+            f->tri_state[t] |= (uint8_t)(SILK_TS_CARRY0 << k);
             we->nsides++;
             if (st & SILK_TS_SIL) {
                 uint32_t lone = st & SILK_TS_LONE;
