@@ -108,6 +108,8 @@ typedef struct silk_sil_frame {
     uint32_t nsil;
 
     silk_sil_edge *edges;  uint32_t nedges;   /* in mesh edge order */
+    uint32_t side_tri1;      /* memo of silk_sil_side_edge: the triangle + 1 (0: none) */
+    silk_sil_edge *side_edge[3];
     silk_sil_pair *pairs;  uint32_t npairs;
     uint32_t nsides;         /* triangle sides on carrying edges */
     silk_fx *chain;        uint32_t nchain;
@@ -171,12 +173,22 @@ static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 }
 
 /* The carrying edge side k of triangle t lies on, or NULL: most sides are
- * on none, and their tri_state bit says so without looking the edge up. */
+ * on none, and their tri_state bit says so without looking the edge up.
+ * The emitter asks for the same triangle's sides again and again, so the
+ * last triangle's three are kept (the frame's only mutable memo). */
 static inline silk_sil_edge *silk_sil_side_edge(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     if (!(f->tri_state[t] & (SILK_TS_CARRY0 << k))) return NULL;
-    uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(f->m, t, k));
-    return w == SILK_SIL_NONE ? NULL : &f->edges[w];
+    silk_sil_frame *memo = (silk_sil_frame *)f;
+    if (memo->side_tri1 != t + 1) {
+        memo->side_tri1 = t + 1;
+        for (uint32_t j = 0; j < 3; j++) {
+            uint32_t w = f->tri_state[t] & (SILK_TS_CARRY0 << j) ? silk_sil_slot(f, silk_mesh_tri_edge(f->m, t, j))
+                                                                 : SILK_SIL_NONE;
+            memo->side_edge[j] = w == SILK_SIL_NONE ? NULL : &f->edges[w];
+        }
+    }
+    return memo->side_edge[k];
 }
 
 /* Whether mesh edge `edge` carries points this frame. */
