@@ -27,8 +27,8 @@
 #define PACK_NAME "packed"
 
 enum {
-    A_POS, A_NORMAL, A_NORMAL_VERTEX, A_UV, A_TRI, A_TRI_NORMAL, A_TRI_UV, A_TRI_EDGE, A_EDGE,
-    A_VERT_EDGE_START, A_VERT_EDGE, A_EDGE_FEATURE, A_FEATURE, A_VIS_NODE, A_NARRAYS
+    A_POS, A_NORMAL, A_NORMAL_VERTEX, A_UV, A_TRI, A_TRI_NORMAL, A_TRI_UV, A_EDGE,
+    A_VERT_EDGE_START, A_VERT_EDGE, A_FEATURE, A_VIS_NODE, A_NARRAYS
 };
 
 /* The packed model: every array on its own, and the silk_vis they point at. */
@@ -61,12 +61,12 @@ static void pack(packed *p, const silk_mesh *src)
     m->tri = pack_copy(p, A_TRI, src->tri, nc * is);
     m->tri_normal = pack_copy(p, A_TRI_NORMAL, src->tri_normal, nc * is);
     m->tri_uv = pack_copy(p, A_TRI_UV, src->tri_uv, src->tri_uv ? nc * is : 0);
-    m->tri_edge = pack_copy(p, A_TRI_EDGE, src->tri_edge, nc * is);
+    m->tri_edge = NULL;   /* not packed: found from the vertex-edge lists */
     m->edge = pack_copy(p, A_EDGE, src->edge, src->nedges * sizeof *src->edge);
     m->vert_edge_start = pack_copy(p, A_VERT_EDGE_START, src->vert_edge_start,
                                    ((size_t)src->nverts + 1) * sizeof *src->vert_edge_start);
     m->vert_edge = pack_copy(p, A_VERT_EDGE, src->vert_edge, src->vert_edge_start[src->nverts] * is);
-    m->edge_feature = pack_copy(p, A_EDGE_FEATURE, src->edge_feature, src->edge_feature ? src->nedges * is : 0);
+    m->edge_feature = NULL;   /* not packed: counted along the edges */
     m->feature = pack_copy(p, A_FEATURE, src->feature, src->nfeature_edges * sizeof *src->feature);
     m->vis = NULL;
     if (src->vis) {

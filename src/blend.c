@@ -136,7 +136,7 @@ silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view 
     uint64_t nrec = 0, ntri = 0;
     uint32_t npatch = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        const silk_index *te = &m->tri_edge[3 * t];
+        silk_index te[3] = { silk_mesh_tri_edge(m, t, 0), silk_mesh_tri_edge(m, t, 1), silk_mesh_tri_edge(m, t, 2) };
         if (alpha[te[0]] == 0 && alpha[te[1]] == 0 && alpha[te[2]] == 0) {
             nrec += 3;
             ntri += 1;
@@ -158,7 +158,7 @@ silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view 
 
     uint32_t r = 0, nt = 0, p = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        const silk_index *te = &m->tri_edge[3 * t];
+        silk_index te[3] = { silk_mesh_tri_edge(m, t, 0), silk_mesh_tri_edge(m, t, 1), silk_mesh_tri_edge(m, t, 2) };
         silk_fx sa[3] = { alpha[te[0]], alpha[te[1]], alpha[te[2]] };
         if (sa[0] == 0 && sa[1] == 0 && sa[2] == 0) {
             for (uint32_t k = 0; k < 3; k++) {

@@ -24,9 +24,15 @@ static silk_status nomem(silk_error *err, const char *name, const silk_arena *a)
                      (unsigned long)a->failed_request, (unsigned long)silk_arena_free_bytes(a));
 }
 
-static int is_feature(const silk_edge *e)
+static int is_feature(const silk_edge *e) { return silk_edge_has_feature(e); }
+
+silk_index silk_mesh_edge_feature(const silk_mesh *m, uint32_t e)
 {
-    return (e->flags & SILK_EDGE_FEATURE) && e->v[0] != e->v[1];
+    if (m->edge_feature) return m->edge_feature[e];
+    if (!m->feature || !is_feature(&m->edge[e])) return SILK_NO_INDEX;
+    uint32_t f = 0;
+    for (uint32_t i = 0; i < e; i++) f += (uint32_t)is_feature(&m->edge[i]);
+    return (silk_index)f;
 }
 
 static silk_index other_end(const silk_edge *e, silk_index v)

@@ -82,21 +82,24 @@ static uint32_t point_key(const silk_mesh *m, const silk_frame_geom *g, uint32_t
 /* ---- SMOOTH mode ------------------------------------------------------------- */
 
 /* The sides on each carrying edge, in the plan's order (triangle by
- * triangle): at[e->side0 + i] is 3t+k of the edge's side i. */
-static uint32_t *edge_sides(const silk_sil_frame *f)
+ * triangle): at[side0[w] + i] is 3t+k of edge w's side i. */
+static uint32_t *edge_sides(const silk_sil_frame *f, uint32_t **side0)
 {
     const silk_mesh *m = f->m;
     uint32_t *at = silk_arena_array_top(f->a, f->nsides, sizeof *at, SILK_MEM_FRAME);
     uint32_t *n = silk_arena_array_top(f->a, f->nedges, sizeof *n, SILK_MEM_FRAME);
-    if (!at || !n) return NULL;
+    uint32_t *s0 = silk_arena_array_top(f->a, f->nedges, sizeof *s0, SILK_MEM_FRAME);
+    if (!at || !n || !s0) return NULL;
     memset(n, 0, (size_t)f->nedges * sizeof *n);
+    for (uint32_t w = 0, k = 0; w < f->nedges; k += f->edges[w++].nsides) s0[w] = k;
     for (uint32_t t = 0; t < m->ntris; t++) {
         if (!silk_sil_tri_ok(m, t)) continue;
         for (uint32_t k = 0; k < 3; k++) {
-            uint32_t w = f->edge_slot[m->tri_edge[3 * t + k]];
-            if (w != SILK_SIL_NONE) at[f->edges[w].side0 + n[w]++] = 3 * t + k;
+            uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
+            if (w != SILK_SIL_NONE) at[s0[w] + n[w]++] = 3 * t + k;
         }
     }
+    *side0 = s0;
     return at;
 }
 
@@ -110,7 +113,7 @@ static uint32_t side_rec(const silk_sil_frame *f, const silk_frame_geom *g, uint
  * mesh vertex for its corners; for the copies of an edge's point made by
  * sides with the same normals and uvs, the first such side's record; any
  * other record is its own point. */
-static int point_keys(const silk_sil_frame *f, silk_frame_geom *g, const uint32_t *at)
+static int point_keys(const silk_sil_frame *f, silk_frame_geom *g, const uint32_t *at, const uint32_t *side0)
 {
     const silk_mesh *m = f->m;
     uint32_t *key = silk_arena_array_top(f->a, g->nvrec, sizeof *key, SILK_MEM_FRAME);
@@ -121,10 +124,10 @@ static int point_keys(const silk_sil_frame *f, silk_frame_geom *g, const uint32_
         const silk_sil_edge *e = &f->edges[w];
         for (uint32_t i = 0; e->nchain && i < e->nsides; i++) {
             silk_sil_side s, o;
-            uint32_t c = at[e->side0 + i], own = c;
+            uint32_t c = at[side0[w] + i], own = c;
             silk_sil_side_attrs(m, c / 3, c % 3, &m->edge[e->edge], &s);
             for (uint32_t j = 0; j < i; j++) {
-                own = at[e->side0 + j];
+                own = at[side0[w] + j];
                 silk_sil_side_attrs(m, own / 3, own % 3, &m->edge[e->edge], &o);
                 if (o.n0 == s.n0 && o.n1 == s.n1 && o.uv0 == s.uv0 && o.uv1 == s.uv1) break;
                 own = c;
@@ -148,8 +151,8 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
         nlines++;
         nrec += 2 + e->nchain;
     }
-    uint32_t *at = edge_sides(f);
-    if (!at || !point_keys(f, g, at) || !lines_alloc(f->a, g, nlines, nrec)) return SILK_ERR_NOMEM;
+    uint32_t *side0 = NULL, *at = edge_sides(f, &side0);
+    if (!at || !point_keys(f, g, at, side0) || !lines_alloc(f->a, g, nlines, nrec)) return SILK_ERR_NOMEM;
 
     /* Each silhouette segment through A, its samples and B: the records
      * of its triangle's share (the samples follow the boundary). */
@@ -169,7 +172,7 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
     for (uint32_t w = 0; w < f->nedges; w++) {
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;
-        uint32_t c = at[e->side0], t = c / 3, k = c % 3, k1 = (k + 1) % 3;
+        uint32_t c = at[side0[w]], t = c / 3, k = c % 3, k1 = (k + 1) % 3;
         int fwd = m->tri[c] == m->edge[e->edge].v[0];
         uint32_t r0 = silk_remesh_corner_rec(f, t, k, g->part_rec[t]);
         uint32_t r1 = silk_remesh_corner_rec(f, t, k1, g->part_rec[t]);

@@ -59,6 +59,17 @@ int silk_v3_normalize64(const int64_t v[3], silk_vec3 *out)
     return silk_v3_normalize(w, out);
 }
 
+silk_index silk_mesh_find_edge(const silk_mesh *m, silk_index a, silk_index b)
+{
+    silk_index lo = a < b ? a : b, hi = a < b ? b : a;
+    if (hi >= m->nverts) return SILK_NO_INDEX;
+    for (uint32_t i = m->vert_edge_start[lo]; i < m->vert_edge_start[lo + 1]; i++) {
+        silk_index e = m->vert_edge[i];
+        if (e < m->nedges && m->edge[e].v[0] == lo && m->edge[e].v[1] == hi) return e;
+    }
+    return SILK_NO_INDEX;
+}
+
 silk_vec3 silk_mesh_face_normal(const silk_mesh *m, uint32_t t)
 {
     silk_vec3 n = silk_v3(0, 0, 0);
@@ -212,7 +223,12 @@ static silk_status build_vertex_edges(const char *name, silk_arena *a, silk_mesh
     uint32_t nv = m->nverts;
     m->vert_edge_start = silk_arena_array(a, (size_t)nv + 1, sizeof *m->vert_edge_start, SILK_MEM_ADJACENCY);
     if (!m->vert_edge_start) return nomem(err, name, a, "the vertex-edge links");
-    uint32_t *start = m->vert_edge_start;
+    silk_index *start = m->vert_edge_start;
+    uint64_t ends = 0;
+    for (uint32_t e = 0; e < m->nedges; e++) ends += m->edge[e].v[1] != m->edge[e].v[0] ? 2 : 1;
+    if (ends >= SILK_NO_INDEX)
+        return silk_fail(err, SILK_ERR_RANGE, name, 0, "%lu edge ends do not fit silk_index (%lu bits)",
+                         (unsigned long)ends, (unsigned long)(8 * sizeof(silk_index)));
     for (uint32_t e = 0; e < m->nedges; e++) {
         start[m->edge[e].v[0] + 1]++;
         if (m->edge[e].v[1] != m->edge[e].v[0]) start[m->edge[e].v[1] + 1]++;
@@ -309,7 +325,7 @@ void silk_mesh_bytes_used(const silk_mesh *m, silk_mesh_bytes *b)
     b->triangles = arena_bytes(corners, sizeof(silk_index));
     b->edges = arena_bytes(m->nedges, sizeof(silk_edge)) +
                (m->tri_edge ? arena_bytes(corners, sizeof(silk_index)) : 0);
-    b->vertex_edges = m->vert_edge_start ? arena_bytes((size_t)m->nverts + 1, sizeof(uint32_t)) +
+    b->vertex_edges = m->vert_edge_start ? arena_bytes((size_t)m->nverts + 1, sizeof(silk_index)) +
                                            arena_bytes(m->vert_edge_start[m->nverts], sizeof(silk_index))
                                          : 0;
     b->features = (m->edge_feature ? arena_bytes(m->nedges, sizeof(silk_index)) : 0) +

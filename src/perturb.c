@@ -38,35 +38,50 @@
 #define MIN_COS ((int64_t)1 << 30)     /* 1/4 in Q32.32 */
 #define RISE_CAP (2 * SILK_FX_ONE)      /* times the segment's rise */
 
+static void visit_near(silk_sil_frame *f, uint32_t t, const silk_sil_seg *s, uint32_t stamp, int pass);
+
 int silk_perturb_alloc(silk_sil_frame *f)
 {
     silk_arena *a = f->a;
+    const silk_mesh *m = f->m;
     f->vert_slot = f->vert_offset = NULL;
     f->offset = NULL;
-    f->noffset = f->nslots = 0;
-    f->near_bound = silk_remesh_near_bound(f);
-    if (!f->near_bound) return 1;
-    uint32_t b = f->near_bound;
-    f->vert_slot = silk_arena_array_top(a, f->m->nverts, sizeof *f->vert_slot, SILK_MEM_FRAME);
+    f->noffset = f->nslots = f->near_bound = 0;
+    uint32_t t;
+    for (t = 0; t < m->ntris && !(f->tri_state[t] & SILK_TS_CONCAVE); t++) continue;
+    if (t == m->ntris) return 1;   /* no concave segment: nothing moves */
+    f->vert_slot = silk_arena_array_top(a, m->nverts, sizeof *f->vert_slot, SILK_MEM_FRAME);
+    if (!f->vert_slot) return 0;
+    /* Exactly the vertices visit_near will visit: one slot each. */
+    memset(f->vert_slot, 0xFF, (size_t)m->nverts * sizeof *f->vert_slot);   /* SILK_NO_INDEX */
+    for (; t < m->ntris; t++)
+        if (f->tri_state[t] & SILK_TS_CONCAVE) visit_near(f, t, NULL, 0, -1);
+    memset(f->vert_slot, 0xFF, (size_t)m->nverts * sizeof *f->vert_slot);
+    uint32_t b = f->near_bound = f->nslots;
+    f->nslots = 0;
     f->acc = silk_arena_array_top(a, b, sizeof *f->acc, SILK_MEM_FRAME);
     f->lift = silk_arena_array_top(a, b, sizeof *f->lift, SILK_MEM_FRAME);
     f->slot_vert = silk_arena_array_top(a, b, sizeof *f->slot_vert, SILK_MEM_FRAME);
     f->slot_stamp = silk_arena_array_top(a, b, sizeof *f->slot_stamp, SILK_MEM_FRAME);
-    f->offset = silk_arena_array_top(a, b, sizeof *f->offset, SILK_MEM_FRAME);
-    if (!f->vert_slot || !f->acc || !f->lift || !f->slot_vert || !f->slot_stamp || !f->offset)
-        return 0;
-    memset(f->vert_slot, 0xFF, (size_t)f->m->nverts * sizeof *f->vert_slot);
-    return 1;
+    /* the offsets are written over acc (offset j from slot j or a later one) */
+    f->offset = f->acc;
+    return f->acc && f->lift && f->slot_vert && f->slot_stamp;
 }
 
-/* One neighbouring vertex of segment s, once per stamp. */
+/* One neighbouring vertex of segment s, once per stamp.  Pass -1 only
+ * counts the vertices (nslots), marking them in vert_slot. */
 static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint32_t stamp, int pass)
 {
     uint32_t sl = f->vert_slot[vtx];
-    if (sl == SILK_SIL_NONE) {
+    if (pass < 0) {
+        if (sl == SILK_NO_INDEX) f->nslots++;
+        f->vert_slot[vtx] = 0;
+        return;
+    }
+    if (sl == SILK_NO_INDEX) {
         if (f->nslots >= f->near_bound) return;   /* cannot happen: the bound counts every visit */
         sl = f->nslots++;
-        f->vert_slot[vtx] = sl;
+        f->vert_slot[vtx] = (silk_index)sl;       /* < near_bound <= nverts */
         f->slot_vert[sl] = vtx;
         f->acc[sl] = silk_v3(0, 0, 0);
         f->lift[sl] = 0;
@@ -89,11 +104,12 @@ static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint
     if (lift > f->lift[sl]) f->lift[sl] = lift;
 }
 
-static void visit_near(silk_sil_frame *f, const silk_sil_seg *s, uint32_t stamp, int pass)
+/* visit() for triangle t's corners and every vertex one edge away. */
+static void visit_near(silk_sil_frame *f, uint32_t t, const silk_sil_seg *s, uint32_t stamp, int pass)
 {
     const silk_mesh *m = f->m;
     for (int c = 0; c < 3; c++) {
-        silk_index vtx = m->tri[3 * s->tri + c];
+        silk_index vtx = m->tri[3 * t + c];
         visit(f, vtx, s, stamp, pass);
         for (uint32_t i = m->vert_edge_start[vtx]; i < m->vert_edge_start[vtx + 1]; i++) {
             const silk_edge *e = &m->edge[m->vert_edge[i]];
@@ -114,7 +130,7 @@ static int silhouette_at(const silk_sil_frame *f, silk_index vtx)
     for (uint32_t i = m->vert_edge_start[vtx]; i < m->vert_edge_start[vtx + 1]; i++) {
         silk_index e = m->vert_edge[i];
         if (!silk_sil_chained(f, e)) continue;
-        const silk_sil_edge *w = &f->edges[f->edge_slot[e]];
+        const silk_sil_edge *w = &f->edges[silk_sil_slot(f, e)];
         /* the chain's point nearest vtx */
         silk_fx t = m->edge[e].v[0] == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
         silk_curve c;
@@ -138,7 +154,7 @@ void silk_perturb(silk_sil_frame *f)
             const silk_sil_seg *s = silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
             i++;
             if (!s || !s->concave) continue;
-            visit_near(f, s, pass * ns + i, pass);
+            visit_near(f, t, s, pass * ns + i, pass);
         }
         if (pass == 0)
             for (uint32_t sl = 0; sl < f->nslots; sl++)
@@ -148,10 +164,10 @@ void silk_perturb(silk_sil_frame *f)
     for (uint32_t sl = 0; sl < f->nslots; sl++) {
         silk_index vtx = f->slot_vert[sl];
         if (f->lift[sl] > 0 && !silhouette_at(f, vtx)) {
-            f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);
-            f->vert_slot[vtx] = f->noffset++;
+            f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);   /* noffset <= sl */
+            f->vert_slot[vtx] = (silk_index)f->noffset++;
         } else {
-            f->vert_slot[vtx] = SILK_SIL_NONE;
+            f->vert_slot[vtx] = SILK_NO_INDEX;
         }
     }
     f->vert_offset = f->vert_slot;

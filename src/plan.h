@@ -32,6 +32,7 @@
 #define SILK_PLAN_H
 
 #include "frame.h"
+#include "curve.h"        /* SILK_MAX_SAMPLES */
 
 #define SILK_SIL_NONE UINT32_MAX
 
@@ -39,7 +40,9 @@
 enum {
     SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
-    SILK_TS_FRONT = 8       /* front-facing (computed only for triangles with a feature side) */
+    SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
+    SILK_TS_CONCAVE = 16,   /* its silhouette segment is concave (III-E; set by remesh.c) */
+    SILK_TS_CARRY0 = 32     /* << k: side k lies on a carrying edge (whole triangles only) */
 };
 
 /* A silhouette point (eqs. 6-7): one normal pair on one edge. */
@@ -61,17 +64,25 @@ typedef struct silk_sil_side {
 
 /* An edge that carries points this frame.  Its curve runs from edge.v[0] to
  * edge.v[1], exactly through the two vertices, so only the tangents are
- * kept (silk_sil_edge_curve makes the whole curve). */
+ * kept (silk_sil_edge_curve makes the whole curve).  The per-edge counts
+ * are 16 bits (an edge with more sides than SILK_SIL_SIDES_MAX makes the
+ * plan fail, and the frame falls back) and nfeat at most SILK_MAX_SAMPLES:
+ * 44 bytes an edge with 16-bit indices, the plan's largest part. */
 typedef struct silk_sil_edge {
     silk_vec3 t0, t1;        /* tangents of the bridge or of the feature segment */
-    uint32_t edge;           /* mesh edge index */
-    uint32_t pair0, npairs;  /* silhouette points */
-    uint32_t side0, nsides;  /* triangle sides on this edge, and where they start in a list of all (lines.c) */
-    uint32_t chain0, nchain; /* interior parameters, ascending, distinct */
-    uint32_t nfeat;          /* feature sampling intervals (0: not sampled) */
+    uint32_t pair0;          /* its silhouette points: pairs[pair0 .. pair0 + npairs) */
+    uint32_t chain0;         /* its interior parameters, ascending, distinct: chain[chain0 .. chain0 + nchain) */
+    silk_index edge;         /* mesh edge index */
+    uint16_t npairs, nchain;
+    uint16_t nsides;         /* triangle sides on this edge */
+    uint8_t nfeat;           /* feature sampling intervals (0: not sampled) */
     uint8_t is_feature;
     uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
 } silk_sil_edge;
+
+/* The most sides one carrying edge may have: its chain (nfeat - 1 samples
+ * and a point per side at most) then fits nchain. */
+#define SILK_SIL_SIDES_MAX (UINT16_MAX - SILK_MAX_SAMPLES)
 
 /* The silhouette segment of one silhouette triangle (III-D) and its samples. */
 typedef struct silk_sil_seg {
@@ -93,10 +104,12 @@ typedef struct silk_sil_frame {
 
     uint8_t *visible;        /* nnormals */
     uint8_t *tri_state;      /* ntris, SILK_TS_*; read only after silhouette.c */
-    uint32_t *edge_slot;     /* nedges: index into edges[], or SILK_SIL_NONE */
+    uint8_t *carrying;       /* nedges bits: the edges that carry points (find them with silk_sil_slot) */
     uint32_t nsil;
 
-    silk_sil_edge *edges;  uint32_t nedges;
+    silk_sil_edge *edges;  uint32_t nedges;   /* in mesh edge order */
+    uint32_t side_tri1;      /* memo of silk_sil_side_edge: the triangle + 1 (0: none) */
+    silk_sil_edge *side_edge[3];
     silk_sil_pair *pairs;  uint32_t npairs;
     uint32_t nsides;         /* triangle sides on carrying edges */
     silk_fx *chain;        uint32_t nchain;
@@ -106,16 +119,17 @@ typedef struct silk_sil_frame {
     uint32_t *poly;          /* 2 * max_poly: scratch for one triangle's boundary */
     /* the most one input triangle's share holds, and the frame's totals */
     uint32_t max_recs, max_tris, max_curves;
-    uint32_t near_total, out_tris, seg_samples;
+    uint32_t out_tris, seg_samples;
 
     /* perturbation (perturb.c) */
-    uint32_t near_bound;     /* neighbour slots needed by the accepted concave segments */
-    uint32_t *vert_slot;     /* nverts: perturbation slot, or SILK_SIL_NONE */
+    uint32_t near_bound;     /* vertices next to a concave segment: one slot each */
+    silk_index *vert_slot;   /* nverts: perturbation slot, or SILK_NO_INDEX */
     silk_vec3 *acc;          /* per slot: sum of plane normals, then the unit R */
     silk_fx *lift;           /* per slot: how far to move down along R */
-    uint32_t *slot_vert, *slot_stamp, nslots;
-    uint32_t *vert_offset;   /* nverts view of vert_slot after perturbation: offset index */
-    silk_vec3 *offset;     uint32_t noffset;
+    silk_index *slot_vert;   /* per slot: its vertex */
+    uint32_t *slot_stamp, nslots;
+    silk_index *vert_offset; /* nverts view of vert_slot after perturbation: offset index, or SILK_NO_INDEX */
+    silk_vec3 *offset;     uint32_t noffset;   /* the offsets, in acc's memory */
 
     silk_stage_clock *clock; /* per-stage timing (include/silk/render.h), or NULL */
 } silk_sil_frame;
@@ -146,10 +160,43 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
  * chord). */
 uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos_alpha, silk_fx tol);
 
+/* The slot of mesh edge `edge` in edges[], or SILK_SIL_NONE: a bit, then a
+ * binary search of the carrying edges (a bit per mesh edge instead of a
+ * slot index: the plan's RAM). */
+static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
+{
+    if (!(f->carrying[edge >> 3] & (1u << (edge & 7)))) return SILK_SIL_NONE;
+    uint32_t lo = 0, hi = f->nedges;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (f->edges[mid].edge < edge) lo = mid + 1; else hi = mid;
+    }
+    return lo < f->nedges && f->edges[lo].edge == edge ? lo : SILK_SIL_NONE;
+}
+
+/* The carrying edge side k of triangle t lies on, or NULL: most sides are
+ * on none, and their tri_state bit says so without looking the edge up.
+ * The emitter asks for the same triangle's sides again and again, so the
+ * last triangle's three are kept (the frame's only mutable memo). */
+static inline silk_sil_edge *silk_sil_side_edge(const silk_sil_frame *f, uint32_t t, uint32_t k)
+{
+    if (!(f->tri_state[t] & (SILK_TS_CARRY0 << k))) return NULL;
+    silk_sil_frame *memo = (silk_sil_frame *)f;
+    if (memo->side_tri1 != t + 1) {
+        memo->side_tri1 = t + 1;
+        for (uint32_t j = 0; j < 3; j++) {
+            uint32_t w = f->tri_state[t] & (SILK_TS_CARRY0 << j) ? silk_sil_slot(f, silk_mesh_tri_edge(f->m, t, j))
+                                                                 : SILK_SIL_NONE;
+            memo->side_edge[j] = w == SILK_SIL_NONE ? NULL : &f->edges[w];
+        }
+    }
+    return memo->side_edge[k];
+}
+
 /* Whether mesh edge `edge` carries points this frame. */
 static inline int silk_sil_chained(const silk_sil_frame *f, uint32_t edge)
 {
-    uint32_t w = f->edge_slot[edge];
+    uint32_t w = silk_sil_slot(f, edge);
     return w != SILK_SIL_NONE && f->edges[w].nchain > 0;
 }
 

@@ -159,7 +159,7 @@ void silk_patch_build(const silk_mesh *m, uint32_t t, const silk_fx *alpha, silk
     int64_t side_sum[3] = { 0, 0, 0 };
     for (int k = 0; k < 3; k++) {
         int k1 = (k + 1) % 3;
-        uint32_t e = m->tri_edge[3 * t + k];
+        uint32_t e = silk_mesh_tri_edge(m, t, k);
         silk_vec3 c[2];
         silk_patch_edge_curve(m, e, c);
         int fwd = m->edge[e].v[0] == v[k];
@@ -223,7 +223,7 @@ void silk_patch_eval(const silk_patch *p, uint32_t point, silk_vertex_attr *out)
 
 silk_status silk_patch_check_mesh(const silk_mesh *m, const char *who, silk_error *err)
 {
-    if (m->ntris > 0 && (!m->pos || !m->tri || !m->normal || !m->tri_normal || !m->tri_edge || !m->edge))
+    if (m->ntris > 0 && (!m->pos || !m->tri || !m->normal || !m->tri_normal || !m->edge))
         return silk_fail(err, SILK_ERR_ARG, NULL, 0,
                          "%s: the mesh has no shading normals or edges (build it with silk_mesh_build)", who);
     return SILK_OK;

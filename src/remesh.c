@@ -48,8 +48,7 @@
 
 static silk_sil_edge *edge_at(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
-    uint32_t w = f->edge_slot[f->m->tri_edge[3 * t + k]];
-    return w == SILK_SIL_NONE ? NULL : &f->edges[w];
+    return silk_sil_side_edge(f, t, k);
 }
 
 /* Points on side k of t this frame. */
@@ -210,8 +209,8 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
      * share, what a frame drawn share by share holds), all of them (a
      * stored frame), the perturbation's slots.  Segments (III-D) are made
      * here and again where they are needed; silhouette.c gave every
-     * silhouette triangle the points its segment needs, and tri_state is
-     * only read from here on. */
+     * silhouette triangle the points its segment needs, and tri_state
+     * only gains SILK_TS_CONCAVE here; it is only read from here on. */
     f->store_recs = 0;
     f->store_curves = 0;
     f->nsegs = 0;
@@ -219,7 +218,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     f->max_recs = 3;
     f->max_tris = 1;
     f->max_curves = 0;
-    f->near_total = f->seg_samples = 0;
+    f->seg_samples = 0;
     f->out_tris = m->ntris;
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_sil_seg tmp, *s = NULL;
@@ -239,23 +238,10 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         if (tc.curves > f->max_curves) f->max_curves = tc.curves;
         if (s) {
             f->seg_samples += s->n - 1;
-            if (s->concave) {
-                /* the triangle's corners and everything one edge away */
-                uint32_t near = 3;
-                for (int k = 0; k < 3; k++) {
-                    silk_index vtx = m->tri[3 * t + k];
-                    near += m->vert_edge_start[vtx + 1] - m->vert_edge_start[vtx];
-                }
-                f->near_total = f->near_total > UINT32_MAX - near ? UINT32_MAX : f->near_total + near;
-            }
+            if (s->concave) f->tri_state[t] |= SILK_TS_CONCAVE;   /* perturb.c sizes its slots by them */
         }
     }
     return SILK_OK;
-}
-
-uint32_t silk_remesh_near_bound(const silk_sil_frame *f)
-{
-    return f->near_total > f->m->nverts ? f->m->nverts : f->near_total;
 }
 
 int silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g, uint64_t recs, uint64_t tris, uint64_t curves)
@@ -302,10 +288,10 @@ static uint32_t put_curve_rec(silk_frame_geom *g, uint32_t curve, silk_fx t)
 static uint32_t put_corner(const silk_sil_frame *f, silk_frame_geom *g, uint32_t c)
 {
     silk_vrec *r = &g->vrec[g->nvrec];
-    uint32_t off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_SIL_NONE;
-    r->kind = off == SILK_SIL_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+    silk_index off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_NO_INDEX;
+    r->kind = off == SILK_NO_INDEX ? SILK_VREC_CORNER : SILK_VREC_MOVED;
     r->a = c;
-    r->b = off == SILK_SIL_NONE ? 0 : off;
+    r->b = off == SILK_NO_INDEX ? 0 : off;
     r->t = 0;
     return g->nvrec++;
 }

@@ -12,7 +12,6 @@ silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments counted, costs 
 /* The silhouette segment of silhouette triangle t; 0 when a silhouette
  * point is missing (silhouette.c gives every silhouette triangle both). */
 int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);
-uint32_t silk_remesh_near_bound(const silk_sil_frame *f);   /* perturbation slots needed */
 /* Room in g for recs records, tris triangles and curves curves (f->max_*
  * for one share, f->store_* and f->out_tris for a whole frame), and the
  * emitter's scratch; 0 when it does not fit. */

@@ -18,13 +18,20 @@
  * A device that draws only FLAT and SMOOTH frames may build the core with
  * -DSILK_NO_REFERENCE_MODES: PN and BLEND (the comparison methods of
  * docs/methods.md, about 9 KiB of Cortex-M3 code) are then left out, and
- * asking for them is SILK_ERR_ARG.
+ * asking for them is SILK_ERR_ARG.  -DSILK_NO_LINES leaves out the
+ * pen-and-ink lines and --wire (lines.c and the rasterizer's lines, about
+ * 7 KiB); with both flags every frame is drawn share by share, so the stored
+ * frame's code goes too.
  */
 #include <string.h>
 #include "smooth.h"
 #include "remesh.h"
 #include "lines.h"
 #include "stages.h"
+
+#if defined(SILK_NO_LINES) && defined(SILK_NO_REFERENCE_MODES)
+#define STREAMED_ONLY 1       /* every frame this build can draw is drawn share by share */
+#endif
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -99,12 +106,14 @@ static const silk_vertex_out *vertex_out(const frame *f, uint32_t i, silk_vertex
 }
 
 /* Vertex i of the lines, lifted off the triangles it lies on. */
+#ifndef SILK_NO_LINES
 static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 {
     if (f->line_cache) *out = f->line_cache[i];
     else f->hal->vertex(f->hal, &f->geom, &f->g.line_vrec[i], out);
     silk_lines_apply_lift(out, f->line_lift ? f->line_lift[i] : 0);
 }
+#endif
 
 /* ---- Frames drawn share by share ------------------------------------------------
  *
@@ -210,12 +219,14 @@ static void share_rows(frame *f, silk_arena *a, int height)
     }
 }
 
+#ifndef STREAMED_ONLY
 /* A stored frame's one part is there already. */
 static void stored_part(frame *f, uint32_t k)
 {
     (void)f;
     (void)k;
 }
+#endif
 
 static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                  const silk_hal *h, const silk_render_opts *o,
@@ -231,9 +242,20 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         return silk_fail(err, SILK_ERR_ARG, NULL, 0,
                          "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
                          "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
+#ifdef SILK_NO_LINES
+    if (o->lines || o->wire)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: lines and wire are not built in (SILK_NO_LINES)");
+#endif
     memset(f, 0, sizeof *f);
     f->clock = o->clock;
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
+#ifdef STREAMED_ONLY
+    if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_NO_REFERENCE_MODES)",
+                         silk_mode_name(o->mode));
+    return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
+}
+#else
     f->hal = h;
     f->nparts = 1;
     f->part = stored_part;
@@ -284,6 +306,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     stats->tris_drawn = f->g.ntri;
     return SILK_OK;
 }
+#endif
 
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
@@ -300,10 +323,15 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
         if (pass <= 0)
             silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
                                  vertex_out(f, c[2], &tmp[2]));
+#ifndef SILK_NO_LINES
         else if (added == pass - 1)
             for (int e = 0; e < 3; e++)
                 silk_raster_line(t, vertex_out(f, c[e], &tmp[0]), vertex_out(f, c[(e + 1) % 3], &tmp[1]),
                                  added ? o->wire_new_rgb : o->wire_rgb);
+#else
+        (void)added;
+        (void)o;
+#endif
     }
 }
 
@@ -334,6 +362,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
     t->depth_equal = 0;
+#ifndef SILK_NO_LINES
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
         uint32_t j = g->line_start[i], end = g->line_start[i + 1];
@@ -345,6 +374,10 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             tmp[0] = tmp[1];
         }
     }
+#else
+    (void)g;
+    (void)tmp;
+#endif
 }
 
 /* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its

@@ -56,7 +56,7 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
 {
     for (int k = 0; k < 3; k++)
         if (m->tri[3 * t + k] >= m->nverts || m->tri_normal[3 * t + k] >= m->nnormals ||
-            !edge_ok(m, m->tri_edge[3 * t + k]))
+            !edge_ok(m, silk_mesh_tri_edge(m, t, k)))
             return 0;
     return 1;
 }
@@ -102,7 +102,7 @@ static void edge_geometry(const silk_sil_frame *f, silk_sil_edge *w)
     const silk_edge *e = &m->edge[w->edge];
     silk_vec3 p0 = m->pos[e->v[0]], p1 = m->pos[e->v[1]];
     if (w->is_feature || w->npairs == 0) {
-        silk_index fi = m->edge_feature ? m->edge_feature[w->edge] : SILK_NO_INDEX;
+        silk_index fi = silk_mesh_edge_feature(m, w->edge);
         if (fi != SILK_NO_INDEX && fi < m->nfeature_edges && m->feature) {
             w->t0 = m->feature[fi].t0;
             w->t1 = m->feature[fi].t1;
@@ -165,15 +165,17 @@ static uint32_t chain_index(const silk_fx *c, uint32_t n, silk_fx u)
 
 /* ---- the stage ----------------------------------------------------------------- */
 
-/* Mark edge e as carrying points; the first time, give it a slot. */
+/* Mark edge e as carrying points, counting it the first time. */
 static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
 {
-    if (f->edge_slot[e] == SILK_SIL_NONE) f->edge_slot[e] = (*n)++;
+    uint8_t bit = (uint8_t)(1u << (e & 7));
+    if (!(f->carrying[e >> 3] & bit)) (*n)++;
+    f->carrying[e >> 3] |= bit;
 }
 
 /* Visibility of the normals (III-B), the silhouette triangles and the
  * front-facing triangles next to a feature edge (tri_state), and a slot for
- * every edge that carries points this frame (edge_slot; f->nedges of them). */
+ * every edge that carries points this frame (carrying; f->nedges of them). */
 static silk_status find_triangles(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
@@ -182,9 +184,9 @@ static silk_status find_triangles(silk_sil_frame *f)
 
     f->visible = silk_arena_array_top(a, m->nnormals, 1, SILK_MEM_FRAME);
     f->tri_state = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
-    f->edge_slot = silk_arena_array_top(a, m->nedges, sizeof *f->edge_slot, SILK_MEM_FRAME);
-    if (!f->visible || !f->tri_state || !f->edge_slot) return SILK_ERR_NOMEM;
-    memset(f->edge_slot, 0xFF, (size_t)m->nedges * sizeof *f->edge_slot);
+    size_t bits = ((size_t)m->nedges + 7) / 8;
+    f->carrying = silk_arena_array_top(a, bits, 1, SILK_MEM_FRAME);   /* zeroed */
+    if (!f->visible || !f->tri_state || !f->carrying) return SILK_ERR_NOMEM;
 
     /* III-B.  The hierarchy may want scratch we do not have; the brute pass
      * gives the same answer without any. */
@@ -207,17 +209,17 @@ static silk_status find_triangles(silk_sil_frame *f)
             uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
             st = (uint8_t)(SILK_TS_SIL | lone);
             f->nsil++;
-            mark_edge(f, m->tri_edge[3 * t + lone], &nwork);
-            mark_edge(f, m->tri_edge[3 * t + (lone + 2) % 3], &nwork);
+            mark_edge(f, silk_mesh_tri_edge(m, t, lone), &nwork);
+            mark_edge(f, silk_mesh_tri_edge(m, t, (lone + 2) % 3), &nwork);
         }
         if (features) {
             int has_feature = 0;
             for (int k = 0; k < 3; k++)
-                if (m->edge[m->tri_edge[3 * t + k]].flags & SILK_EDGE_FEATURE) has_feature = 1;
+                if (m->edge[silk_mesh_tri_edge(m, t, k)].flags & SILK_EDGE_FEATURE) has_feature = 1;
             if (has_feature && silk_sil_tri_front(m, v, t)) {
                 st |= SILK_TS_FRONT;
                 for (int k = 0; k < 3; k++) {
-                    silk_index e = m->tri_edge[3 * t + k];
+                    silk_index e = silk_mesh_tri_edge(m, t, k);
                     if (m->edge[e].flags & SILK_EDGE_FEATURE) mark_edge(f, e, &nwork);
                 }
             }
@@ -226,6 +228,29 @@ static silk_status find_triangles(silk_sil_frame *f)
     }
     f->nedges = nwork;
     return SILK_OK;
+}
+
+/* Whether silhouette side k of triangle t, on mesh edge e, gives the same
+ * silhouette point as a silhouette side of the edge's other triangle, met
+ * earlier in triangle order: fill_pairs then keeps one point for both.  So
+ * the points are counted exactly on a manifold edge (two triangles); on a
+ * non-manifold one (edge.t holds only two of them) every side counts. */
+static int pair_seen(const silk_sil_frame *f, uint32_t t, uint32_t k, silk_index e)
+{
+    const silk_mesh *m = f->m;
+    const silk_edge *ed = &m->edge[e];
+    if (ed->flags & SILK_EDGE_NONMANIFOLD) return 0;
+    uint32_t o = ed->t[0] == t ? ed->t[1] : ed->t[0];
+    if (o >= t || !(f->tri_state[o] & SILK_TS_SIL)) return 0;   /* also SILK_NO_INDEX: no other */
+    uint32_t lone = f->tri_state[o] & SILK_TS_LONE;
+    silk_sil_side a, b;
+    silk_sil_side_attrs(m, t, k, ed, &a);
+    for (uint32_t ko = 0; ko < 3; ko++) {
+        if ((ko != lone && ko != (lone + 2) % 3) || silk_mesh_tri_edge(m, o, ko) != e) continue;
+        silk_sil_side_attrs(m, o, ko, ed, &b);
+        if (a.n0 == b.n0 && a.n1 == b.n1) return 1;
+    }
+    return 0;
 }
 
 /* The carrying edges, and room for their sides and silhouette points:
@@ -237,11 +262,10 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     uint32_t nwork = f->nedges;
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
-    for (uint32_t e = 0; e < m->nedges; e++) {
-        uint32_t w = f->edge_slot[e];
-        if (w == SILK_SIL_NONE) continue;
-        f->edges[w].edge = e;
-        f->edges[w].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
+    for (uint32_t e = 0, w = 0; e < m->nedges; e++) {
+        if (!(f->carrying[e >> 3] & (1u << (e & 7)))) continue;
+        f->edges[w].edge = (silk_index)e;
+        f->edges[w++].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
     }
 
     /* Count the sides (every triangle side on a carrying edge) and the
@@ -250,20 +274,22 @@ static silk_status lay_out_edges(silk_sil_frame *f)
         if (!silk_sil_tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
         for (uint32_t k = 0; k < 3; k++) {
-            uint32_t w = f->edge_slot[m->tri_edge[3 * t + k]];
+            uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
             if (w == SILK_SIL_NONE) continue;
             silk_sil_edge *we = &f->edges[w];
+            if (we->nsides == SILK_SIL_SIDES_MAX) return SILK_ERR_NOMEM;
+            f->tri_state[t] |= (uint8_t)(SILK_TS_CARRY0 << k);
             we->nsides++;
             if (st & SILK_TS_SIL) {
                 uint32_t lone = st & SILK_TS_LONE;
-                if (k == lone || k == (lone + 2) % 3) we->npairs++;
+                if ((k == lone || k == (lone + 2) % 3) && !pair_seen(f, t, k, we->edge)) we->npairs++;
             }
             if ((st & SILK_TS_FRONT) && we->is_feature) we->sampled = 1;
         }
     }
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
-        f->edges[w].side0 = nsides; nsides += f->edges[w].nsides;
+        nsides += f->edges[w].nsides;
         f->edges[w].pair0 = npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
     }
     f->nsides = nsides;
@@ -283,8 +309,8 @@ static void fill_pairs(silk_sil_frame *f)
         uint32_t lone = st & SILK_TS_LONE;
         for (uint32_t k = 0; k < 3; k++) {
             if (k != lone && k != (lone + 2) % 3) continue;
-            silk_index e = m->tri_edge[3 * t + k];
-            silk_sil_edge *we = &f->edges[f->edge_slot[e]];
+            silk_index e = silk_mesh_tri_edge(m, t, k);
+            silk_sil_edge *we = &f->edges[silk_sil_slot(f, e)];
             silk_sil_side s;
             silk_sil_side_attrs(m, t, k, &m->edge[e], &s);
             uint32_t j;
@@ -324,8 +350,8 @@ static silk_status chain_points(silk_sil_frame *f)
                                  0, SILK_FX_ONE);
         }
         we->nfeat = 0;
-        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))
-            we->nfeat = silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
+        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))   /* at most SILK_MAX_SAMPLES */
+            we->nfeat = (uint8_t)silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
         nchain += (we->nfeat > 1 ? we->nfeat - 1 : 0) + we->npairs;
     }
     f->chain = silk_arena_array_top(a, nchain, sizeof *f->chain, SILK_MEM_FRAME);
@@ -343,7 +369,7 @@ static silk_status chain_points(silk_sil_frame *f)
             p->chain = chain_index(c, n, p->u);
         }
         we->chain0 = nchain;
-        we->nchain = n;
+        we->nchain = (uint16_t)n;
         nchain += n;
     }
     f->nchain = nchain;

@@ -39,7 +39,7 @@ static int edge_joins(const silk_edge *e, silk_index a, silk_index b)
 static int tri_has_edge(const silk_mesh *m, silk_index t, uint32_t e)
 {
     for (int k = 0; k < 3; k++)
-        if (m->tri_edge[3 * (size_t)t + k] == e) return 1;
+        if (silk_mesh_tri_edge(m, t, k) == e) return 1;
     return 0;
 }
 
@@ -54,14 +54,14 @@ static silk_status check_counts(const silk_mesh *m, const char *name, silk_error
         (uint64_t)m->nedges >= SILK_NO_INDEX || (uint64_t)m->nuvs >= SILK_NO_INDEX)
         return BAD("%lu vertices, %lu normals, %lu edges or %lu uvs do not fit silk_index", UL(m->nverts),
                    UL(m->nnormals), UL(m->nedges), UL(m->nuvs));
-    if (!m->pos || !m->tri || !m->normal || !m->normal_vertex || !m->tri_normal || !m->tri_edge || !m->edge ||
+    if (!m->pos || !m->tri || !m->normal || !m->normal_vertex || !m->tri_normal || !m->edge ||
         !m->vert_edge_start || !m->vert_edge)
         return BAD("an array is missing (positions, triangles, normals, edges or vertex edges)");
     if ((m->uv != NULL) != (m->tri_uv != NULL) || (m->uv && !m->nuvs))
         return BAD("texture coordinates (%lu) without their indices, or indices without them", UL(m->nuvs));
     if (m->nfeature_edges > m->nedges)
         return BAD("%lu feature edges of %lu edges", UL(m->nfeature_edges), UL(m->nedges));
-    if (m->nfeature_edges && (!m->feature || !m->edge_feature))
+    if (m->nfeature_edges && !m->feature)
         return BAD("%lu feature edges but no feature segments", UL(m->nfeature_edges));
     return SILK_OK;
 }
@@ -86,7 +86,7 @@ static silk_status check_triangles(const silk_mesh *m, const char *name, silk_er
     for (uint32_t t = 0; t < m->ntris; t++) {
         for (uint32_t k = 0; k < 3; k++) {
             size_t c = 3 * (size_t)t + k;
-            silk_index v = m->tri[c], n = m->tri_normal[c], e = m->tri_edge[c];
+            silk_index v = m->tri[c], n = m->tri_normal[c];
             if (v >= m->nverts)
                 return BAD("triangle %lu uses vertex %lu (%lu vertices)", UL(t), UL(v), UL(m->nverts));
             if (n >= m->nnormals)
@@ -97,13 +97,18 @@ static silk_status check_triangles(const silk_mesh *m, const char *name, silk_er
             if (m->tri_uv && m->tri_uv[c] >= m->nuvs)
                 return BAD("triangle %lu uses texture coordinate %lu (%lu given)", UL(t), UL(m->tri_uv[c]),
                            UL(m->nuvs));
-            if (e >= m->nedges) return BAD("triangle %lu uses edge %lu (%lu edges)", UL(t), UL(e), UL(m->nedges));
         }
-        /* all three corners are in range now */
+        /* all three corners are in range now; so are the vertex-edge lists
+         * (checked first) that find a side's edge without tri_edge */
         for (uint32_t k = 0; k < 3; k++) {
             size_t c = 3 * (size_t)t + k, c1 = 3 * (size_t)t + (k + 1) % 3;
-            if (!edge_joins(&m->edge[m->tri_edge[c]], m->tri[c], m->tri[c1]))
-                return BAD("triangle %lu: side %lu is not its edge %lu", UL(t), UL(k), UL(m->tri_edge[c]));
+            silk_index e = silk_mesh_tri_edge(m, t, k);
+            if (!m->tri_edge && e == SILK_NO_INDEX)
+                return BAD("triangle %lu: no edge joins its corners %lu and %lu", UL(t), UL(m->tri[c]),
+                           UL(m->tri[c1]));
+            if (e >= m->nedges) return BAD("triangle %lu uses edge %lu (%lu edges)", UL(t), UL(e), UL(m->nedges));
+            if (!edge_joins(&m->edge[e], m->tri[c], m->tri[c1]))
+                return BAD("triangle %lu: side %lu is not its edge %lu", UL(t), UL(k), UL(e));
         }
     }
     return SILK_OK;
@@ -111,13 +116,12 @@ static silk_status check_triangles(const silk_mesh *m, const char *name, silk_er
 
 static silk_status check_edges(const silk_mesh *m, const char *name, silk_error *err)
 {
-    uint64_t ends = 0;
+    uint32_t nfe = 0;
     for (uint32_t e = 0; e < m->nedges; e++) {
         const silk_edge *ed = &m->edge[e];
         if (ed->v[0] > ed->v[1] || ed->v[1] >= m->nverts)
             return BAD("edge %lu joins vertices %lu and %lu (out of order or range)", UL(e), UL(ed->v[0]),
                        UL(ed->v[1]));
-        ends += ed->v[0] == ed->v[1] ? 1 : 2;
         for (int s = 0; s < 2; s++) {
             silk_index t = ed->t[s];
             if (s == 1 && t == SILK_NO_INDEX) continue;
@@ -127,9 +131,21 @@ static silk_status check_edges(const silk_mesh *m, const char *name, silk_error 
         if (m->edge_feature && m->edge_feature[e] != SILK_NO_INDEX && m->edge_feature[e] >= m->nfeature_edges)
             return BAD("edge %lu has feature segment %lu (%lu segments)", UL(e), UL(m->edge_feature[e]),
                        UL(m->nfeature_edges));
+        nfe += (uint32_t)silk_edge_has_feature(ed);
     }
+    /* without edge_feature the segments are counted along the edges */
+    if (!m->edge_feature && m->feature && nfe > m->nfeature_edges)
+        return BAD("%lu feature edges but %lu feature segments", UL(nfe), UL(m->nfeature_edges));
+    return SILK_OK;
+}
 
-    const uint32_t *start = m->vert_edge_start;
+/* Before the triangles: without tri_edge, their sides' edges are found in
+ * these lists. */
+static silk_status check_vertex_edges(const silk_mesh *m, const char *name, silk_error *err)
+{
+    uint64_t ends = 0;
+    for (uint32_t e = 0; e < m->nedges; e++) ends += m->edge[e].v[0] == m->edge[e].v[1] ? 1 : 2;
+    const silk_index *start = m->vert_edge_start;
     if (start[0] != 0) return BAD("the vertex-edge lists start at %lu, not 0", UL(start[0]));
     for (uint32_t v = 0; v < m->nverts; v++) {
         if (start[v + 1] < start[v] || start[v + 1] > ends)
@@ -177,6 +193,7 @@ silk_status silk_mesh_validate(const silk_mesh *m, const char *name, silk_error 
     if (!m) return silk_fail(err, SILK_ERR_ARG, name, 0, "no mesh given");
     silk_status st = check_counts(m, name, err);
     if (st == SILK_OK) st = check_vertices(m, name, err);
+    if (st == SILK_OK) st = check_vertex_edges(m, name, err);
     if (st == SILK_OK) st = check_triangles(m, name, err);
     if (st == SILK_OK) st = check_edges(m, name, err);
     if (st == SILK_OK) st = check_vis(m, name, err);

@@ -98,7 +98,7 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
         }
         /* a vertex with a point of its edges' chains exactly on it stays put */
         for (uint32_t i = m->vert_edge_start[v]; i < m->vert_edge_start[v + 1]; i++) {
-            uint32_t e = m->vert_edge[i], w = f->edge_slot[e];
+            uint32_t e = m->vert_edge[i], w = silk_sil_slot(f, e);
             if (w == SILK_SIL_NONE || !f->edges[w].nchain) continue;
             const silk_sil_edge *we = &f->edges[w];
             silk_fx t = m->edge[e].v[0] == v ? f->chain[we->chain0] : f->chain[we->chain0 + we->nchain - 1];
@@ -110,8 +110,8 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
                 ps->pinned++;
             }
         }
-        uint32_t sl = f->vert_offset ? f->vert_offset[v] : SILK_SIL_NONE;
-        int moved = sl != SILK_SIL_NONE;
+        uint32_t sl = f->vert_offset ? f->vert_offset[v] : SILK_NO_INDEX;
+        int moved = sl != SILK_NO_INDEX;
         int ref = lift > 2.0 / 65536;          /* below that, rounding decides */
         ref_moved += ref;
         if (moved != ref && lift > 4.0 / 65536) ps->wrong_moved++;
@@ -141,9 +141,9 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
     ps->ref_moved += ref_moved;
     /* every corner at a moved vertex is a MOVED record with that vertex's offset */
     for (uint32_t c = 0; c < 3 * m->ntris; c++) {
-        uint32_t sl = f->vert_offset ? f->vert_offset[m->tri[c]] : SILK_SIL_NONE;
+        uint32_t sl = f->vert_offset ? f->vert_offset[m->tri[c]] : SILK_NO_INDEX;
         const silk_vrec *r = &g->vrec[silk_remesh_corner_rec(f, c / 3, c % 3, g->part_rec[c / 3])];
-        if (sl == SILK_SIL_NONE ? r->kind != SILK_VREC_CORNER : (r->kind != SILK_VREC_MOVED || r->b != sl))
+        if (sl == SILK_NO_INDEX ? r->kind != SILK_VREC_CORNER : (r->kind != SILK_VREC_MOVED || r->b != sl))
             ps->wrong_records++;
         if (r->a != c) ps->wrong_records++;
     }
@@ -255,8 +255,8 @@ TEST(moves_down_to_the_plane)
         check_view(&m, &f, &g, &ps);
         silk_sil_seg *segs = tf_segs(&f);
         for (uint32_t vtx = 0; vtx < m.nverts; vtx++) {
-            uint32_t sl = f.vert_offset ? f.vert_offset[vtx] : SILK_SIL_NONE;
-            if (sl == SILK_SIL_NONE) continue;
+            uint32_t sl = f.vert_offset ? f.vert_offset[vtx] : SILK_NO_INDEX;
+            if (sl == SILK_NO_INDEX) continue;
             found++;
             /* every concave plane here has a normal with n.z > 0 near the saddle's middle:
              * moving down means the offset has a negative component along the plane normals */

@@ -552,7 +552,7 @@ TEST(uvs_interpolate_linearly_across_seams)
             /* A on side lone (corner lone -> lone+1), at its pair's parameter */
             for (int end = 0; end < 2; end++) {
                 uint32_t k = end == 0 ? lone : (lone + 2) % 3;
-                const silk_sil_edge *e = &f.edges[f.edge_slot[m.tri_edge[3 * t + k]]];
+                const silk_sil_edge *e = &f.edges[silk_sil_slot(&f, m.tri_edge[3 * t + k])];
                 silk_sil_side sdv, *sd = &sdv;
                 silk_sil_side_attrs(&m, t, k, &m.edge[e->edge], sd);
                 const silk_sil_pair *p = NULL;

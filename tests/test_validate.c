@@ -119,9 +119,43 @@ TEST(damage_is_caught)
     CHECK(silk_mesh_validate(&m, "p", &err) == SILK_OK);
 }
 
+/* A packed mesh has neither tri_edge nor edge_feature (silk pack): the
+ * renderer finds the edges from the vertex-edge lists and counts the
+ * feature segments, which must give the loader's arrays exactly; the
+ * validator checks what those lookups rely on. */
+TEST(packed_form_without_tri_edge)
+{
+    silk_arena a;
+    silk_mesh m;
+    silk_error err;
+    /* a tetrahedron: every edge is a crease, so every edge has a segment */
+    CHECK(load("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", &a, &m, &err) ==
+          SILK_OK);
+    CHECK(m.nfeature_edges > 0);
+    silk_mesh p = m;
+    p.tri_edge = NULL;
+    p.edge_feature = NULL;
+    int same = 1;
+    for (uint32_t t = 0; t < m.ntris; t++)
+        for (uint32_t k = 0; k < 3; k++) same &= silk_mesh_tri_edge(&p, t, k) == m.tri_edge[3 * t + k];
+    for (uint32_t e = 0; e < m.nedges; e++) same &= silk_mesh_edge_feature(&p, e) == m.edge_feature[e];
+    CHECK(same);
+    CHECK(silk_mesh_validate(&p, "p", &err) == SILK_OK);
+    /* a side whose corners no edge joins, and more feature edges than segments */
+    silk_index saved = p.vert_edge[0];
+    p.vert_edge[0] = p.vert_edge[1];
+    CHECK(silk_mesh_validate(&p, "p", &err) == SILK_ERR_PARSE && strstr(err.msg, "no edge joins its corners"));
+    p.vert_edge[0] = saved;
+    p.nfeature_edges--;
+    CHECK(silk_mesh_validate(&p, "p", &err) == SILK_ERR_PARSE && strstr(err.msg, "feature segments"));
+    p.nfeature_edges++;
+    CHECK(silk_mesh_validate(&p, "p", &err) == SILK_OK);
+}
+
 int main(void)
 {
     RUN(loaded_meshes_pass);
     RUN(damage_is_caught);
+    RUN(packed_form_without_tri_edge);
     return check_done();
 }

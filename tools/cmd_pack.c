@@ -4,8 +4,12 @@
  *
  * Everything silk_load_mesh() and silk_vis_build() compute at load time is
  * written out as `const` arrays of exact integers (Q16.16 for coordinates):
- * positions, normals, normal_vertex, triangles, tri_normal, tri_edge, edges,
- * the vertex->edge CSR, feature segments and the visibility hierarchy.  The
+ * positions, normals, normal_vertex, triangles, tri_normal, edges, the
+ * vertex->edge CSR, feature segments and the visibility hierarchy; not
+ * tri_edge, which the renderer finds from the vertex-edge lists (2 index
+ * bytes a corner less in flash, silk_mesh_tri_edge), nor edge_feature,
+ * which it counts for the few feature edges a frame uses
+ * (silk_mesh_edge_feature).  The
  * header's NAME_mesh() points a silk_mesh at them, so the device does no
  * loading at all and keeps none of it in RAM; the pointers cast const away
  * because silk_mesh is shared with the loaders, but the renderer only reads.
@@ -130,13 +134,6 @@ static void put_index_array(writer *w, const char *field, const silk_index *v, s
     array_close(w, n);
 }
 
-static void put_u32_array(writer *w, const char *field, const uint32_t *v, size_t n, int kind)
-{
-    array_open(w, "uint32_t", field, n, kind, sizeof(uint32_t));
-    for (size_t i = 0; i < n; i++) item(w, "%lu", (unsigned long)v[i]);
-    array_close(w, n);
-}
-
 static void put_vec3_array(writer *w, const char *field, const silk_vec3 *v, size_t n, int kind)
 {
     array_open(w, "silk_vec3", field, n, kind, sizeof(silk_vec3));
@@ -220,6 +217,7 @@ static unsigned long max_index(const silk_mesh *m)
     if (m->ntris > mx) mx = m->ntris;
     if (m->nedges > mx) mx = m->nedges;
     if (m->nuvs > mx) mx = m->nuvs;
+    if (m->vert_edge_start[m->nverts] > mx) mx = m->vert_edge_start[m->nverts];
     return mx;
 }
 
@@ -245,11 +243,11 @@ static void put_mesh_fn(writer *w, const silk_mesh *m)
     if (m->uv) fprintf(f, "    m->uv = (silk_vec2 *)%s_uv;\n    m->tri_uv = (silk_index *)%s_tri_uv;\n", n, n);
     fprintf(f, "    m->tri = (silk_index *)%s_tri;\n", n);
     fprintf(f, "    m->tri_normal = (silk_index *)%s_tri_normal;\n", n);
-    fprintf(f, "    m->tri_edge = (silk_index *)%s_tri_edge;\n", n);
+    fprintf(f, "    m->tri_edge = NULL;   /* found from the vertex-edge lists (silk_mesh_tri_edge) */\n");
     fprintf(f, "    m->edge = (silk_edge *)%s_edge;\n", n);
-    fprintf(f, "    m->vert_edge_start = (uint32_t *)%s_vert_edge_start;\n", n);
+    fprintf(f, "    m->vert_edge_start = (silk_index *)%s_vert_edge_start;\n", n);
     fprintf(f, "    m->vert_edge = (silk_index *)%s_vert_edge;\n", n);
-    if (m->edge_feature) fprintf(f, "    m->edge_feature = (silk_index *)%s_edge_feature;\n", n);
+    fprintf(f, "    m->edge_feature = NULL;   /* counted along the edges (silk_mesh_edge_feature) */\n");
     fprintf(f, "    m->feature = (silk_feature_seg *)%s_feature;\n", n);
     if (m->vis) fprintf(f, "    m->vis = &%s_vis;\n", n);
     fprintf(f, "    m->bbox_min = silk_v3(%ld, %ld, %ld);\n", (long)m->bbox_min.x, (long)m->bbox_min.y,
@@ -293,11 +291,9 @@ static int write_header(writer *w, const char *mesh_path, const cli_scene *s, co
     }
     put_index_array(w, "tri", m->tri, corners, K_TRI);
     put_index_array(w, "tri_normal", m->tri_normal, corners, K_NORMAL);
-    put_index_array(w, "tri_edge", m->tri_edge, corners, K_EDGE);
     put_edges(w, m->edge, m->nedges);
-    put_u32_array(w, "vert_edge_start", m->vert_edge_start, (size_t)m->nverts + 1, K_VERT_EDGE);
+    put_index_array(w, "vert_edge_start", m->vert_edge_start, (size_t)m->nverts + 1, K_VERT_EDGE);
     put_index_array(w, "vert_edge", m->vert_edge, m->vert_edge_start[m->nverts], K_VERT_EDGE);
-    if (m->edge_feature) put_index_array(w, "edge_feature", m->edge_feature, m->nedges, K_FEATURE);
     put_features(w, m->feature, m->nfeature_edges);
     if (m->vis) put_vis(w, m->vis);
     put_cameras(w, cams, ncams);

@@ -23,7 +23,7 @@
 # with ram_total = static RAM + arena high-water + stack high-water (the band
 # buffers are in the arena) and code = flash other than the model.  --check
 # exits 1 when the board's budget is not met (a frame fell back, RAM over
-# budget, core code over 48 KiB).
+# budget, core code over 40 KiB).
 #
 # Speed: the firmware reads a timer around each frame, around each piece of
 # the renderer's stages (its stage clock) and each fragment stage call
@@ -200,7 +200,7 @@ END {
     code += fill + data_init
     print "  model (silk pack):"
     for (i = 1; i <= nkinds; i++) { model_total += model[kinds[i]]; if (model[kinds[i]]) row("flash", "model " kinds[i], model[kinds[i]], "") }
-    printf "  %-34s %9d  (limit 48 KiB = 49152: %s)\n", "core code (.text of libsilk)", core_text, core_text <= 49152 ? "ok" : "OVER"
+    printf "  %-34s %9d  (limit 40 KiB = 40960: %s)\n", "core code (.text of libsilk)", core_text, core_text <= 40960 ? "ok" : "OVER"
     printf "  %-34s %9d\n", "core constants (.rodata)", core_ro
     if (lib_text) printf "  %-34s %9d  (every module, loaders too: `size` of fw/libsilk.a)\n", "core library .text", lib_text
     row("flash", "code total", code, "everything but the model")
@@ -264,7 +264,7 @@ END {
         printf "\ncsv: %s\n", csv
     }
     printf "footprint %s %s ram_total_bytes=%d code_bytes=%d model_bytes=%d\n", board, name, ram_total, code, model_total
-    if (check && (fell || ram_total > ram_budget || core_text > 49152)) {
+    if (check && (fell || ram_total > ram_budget || core_text > 40960)) {
         printf "silk: profile: %s does not meet its budget (%d frames fell back)\n", board, fell >"/dev/stderr"
         exit 1
     }

@@ -14,7 +14,7 @@
 BOARD_WIDTH  := 320
 BOARD_HEIGHT := 240
 BOARD_FORMAT := SILK_PIX_RGB565
-BOARD_BAND_ROWS := 8
+BOARD_BAND_ROWS := 4
 BOARD_SINK   := semihosting
 
 # The part: flash, RAM, and how the RAM is split.  The arena holds the band
@@ -29,8 +29,14 @@ BOARD_ARENA_BYTES := 59136
 BOARD_CROSS := arm-none-eabi-
 BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # The firmware draws flat and smooth only; the reference methods (PN,
-# blend) stay in the host library, where they are measured against.
-BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES
+# blend) stay in the host library, where they are measured against, and so
+# do the pen-and-ink lines and --wire.
+BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES
+# Mesh indices in 16 bits: the packed model's index arrays and the frame's
+# plan records take half the bytes (`silk pack` refuses a model with more
+# than 65 534 vertices, normals, triangles or edges for it).  The host build
+# of the scene (fw-host) uses the same type, so its arena matches byte for byte.
+BOARD_CORE_DEFS := -DSILK_INDEX_T=uint16_t
 # -icount shift=0: virtual time advances exactly 1 ns per instruction, so
 # the firmware's timer (25 MHz, 40 ns a tick) counts instructions.
 BOARD_RUN   := qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none \
@@ -45,6 +51,9 @@ BOARD_CPI      := 1.25 1.5
 # cameras around it (`silk pack --views`), each in flat and smooth mode.
 BOARD_MESHES ?= $(MESHES_DIR)/bunny-500.obj $(MESHES_DIR)/knot-480.obj
 BOARD_VIEWS  := 3
+# No visibility hierarchy in flash (860 bytes for bunny-500): a few hundred
+# normals are tested one by one about as fast, with the same result.
+BOARD_PACK_ARGS := --visibility brute
 
 BOARD_CFLAGS := -DSILK_BOARD_WIDTH=$(BOARD_WIDTH) -DSILK_BOARD_HEIGHT=$(BOARD_HEIGHT) \
                 -DSILK_BOARD_FORMAT=$(BOARD_FORMAT)

@@ -47,7 +47,8 @@ typedef struct silk_edge {
     silk_index v[2];          /* v[0] < v[1] (equal only on a zero-length DEGENERATE edge) */
     silk_index t[2];          /* incident triangles; t[1] == SILK_NO_INDEX on a boundary.
                                  On a non-manifold edge the first two found. */
-    uint32_t flags;           /* enum silk_edge_flag */
+    uint8_t flags;            /* enum silk_edge_flag (all fit 8 bits: 10 bytes an edge in flash
+                                 with 16-bit indices) */
 } silk_edge;
 
 /* A feature segment (paper III-A): the Hermite tangents of one feature edge,
@@ -83,16 +84,19 @@ typedef struct silk_mesh {
     silk_index *tri;          /* 3*ntris vertex indices, counter-clockwise seen from outside */
     silk_index *tri_normal;   /* 3*ntris: index into normal[] for each corner */
     silk_index *tri_uv;       /* 3*ntris indices into uv[], or NULL */
-    silk_index *tri_edge;     /* 3*ntris: edge k joins corners k and (k+1)%3 */
+    silk_index *tri_edge;     /* 3*ntris: edge k joins corners k and (k+1)%3; or NULL (a packed
+                                 mesh): found in the vertex-edge lists.  Read it with
+                                 silk_mesh_tri_edge(). */
     silk_edge  *edge;         /* nedges */
 
     /* vertex -> incident edges, CSR: edges of vertex v are
      * vert_edge[vert_edge_start[v] .. vert_edge_start[v+1]-1] */
-    uint32_t   *vert_edge_start;   /* nverts + 1 */
+    silk_index *vert_edge_start;   /* nverts + 1; the edge ends (at most 2 nedges) fit silk_index */
     silk_index *vert_edge;
 
-    /* feature segments, one per feature edge (purpose FEATURES) */
-    silk_index *edge_feature;      /* nedges: index into feature[], or SILK_NO_INDEX */
+    /* feature segments, one per feature edge (purpose FEATURES), in edge order */
+    silk_index *edge_feature;      /* nedges: index into feature[], or SILK_NO_INDEX; NULL in a packed
+                                      mesh (read it with silk_mesh_edge_feature()) */
     silk_feature_seg *feature;     /* nfeature_edges */
 
     const struct silk_vis *vis;    /* visibility hierarchy, or NULL (built on request) */
@@ -151,6 +155,31 @@ typedef struct silk_mesh_input {
 
 silk_status silk_mesh_build(const silk_mesh_input *in, const char *name, const silk_load_opts *opts,
                             silk_arena *a, silk_mesh *out, silk_error *err);
+
+/* The edge joining vertices a and b (SILK_NO_INDEX when there is none),
+ * from the vertex-edge lists. */
+silk_index silk_mesh_find_edge(const silk_mesh *m, silk_index a, silk_index b);
+
+/* Edge k of triangle t, joining corners k and (k+1)%3: tri_edge's entry,
+ * or, without tri_edge, the edge found from the two corners (a few
+ * comparisons: what a packed mesh saves 2 index bytes a corner with). */
+static inline silk_index silk_mesh_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k)
+{
+    const silk_index *c = &m->tri[3 * (size_t)t];
+    return m->tri_edge ? m->tri_edge[3 * (size_t)t + k] : silk_mesh_find_edge(m, c[k], c[k == 2 ? 0 : k + 1]);
+}
+
+/* Whether edge e has a feature segment: a feature edge of nonzero length. */
+static inline int silk_edge_has_feature(const silk_edge *e)
+{
+    return (e->flags & SILK_EDGE_FEATURE) && e->v[0] != e->v[1];
+}
+
+/* The feature segment of edge e (its index in feature[]), or SILK_NO_INDEX:
+ * edge_feature's entry, or without it the number of feature segments before
+ * e (segments are in edge order).  That count walks the edges before e, so
+ * it is for the few feature edges a frame looks up, not for every edge. */
+silk_index silk_mesh_edge_feature(const silk_mesh *m, uint32_t e);
 
 /* Unit face normal of triangle t (zero vector for a degenerate triangle).
  * Computed in 64 bits, so tiny triangles keep their direction. */

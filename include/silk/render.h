@@ -11,8 +11,8 @@
  * triangle's records are rebuilt and evaluated when a band needs them (same
  * pixels, a fraction of the memory: docs/small-devices.md).  Per-frame
  * memory comes from the top of the arena and is released before it returns.
- * A device build may leave PN and BLEND out with -DSILK_NO_REFERENCE_MODES
- * (src/render.c).
+ * A device build may leave PN and BLEND out with -DSILK_NO_REFERENCE_MODES,
+ * and the pen-and-ink lines and wire with -DSILK_NO_LINES (src/render.c).
  */
 #ifndef SILK_RENDER_H
 #define SILK_RENDER_H

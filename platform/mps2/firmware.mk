@@ -37,14 +37,15 @@ FW_DIR   := $(BUILD)/fw
 # Per-model outputs; a variant (FW_VARIANT=ram256k) gets its own directory.
 FW_VARIANT ?=
 FW_OUT   := $(FW_DIR)$(if $(FW_VARIANT),/$(FW_VARIANT))
-FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
+FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) $(BOARD_CORE_DEFS) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
 FW_DEFS  := -DFW_BOARD='"$(BOARD)"' -DFW_BAND_ROWS=$(BOARD_BAND_ROWS) -DFW_ARENA_BYTES=$(BOARD_ARENA_BYTES) \
             -DFW_FORMAT=$(BOARD_FORMAT)
 FW_LDFLAGS := $(BOARD_ARCH) -nostartfiles -specs=nano.specs -specs=nosys.specs -Wl,--gc-sections \
               -T platform/mps2/mps2.ld -Wl,--defsym=__flash_size=$(BOARD_FLASH_BYTES) \
               -Wl,--defsym=__ram_size=$(BOARD_RAM_BYTES) -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES)
 FW_PACK_ARGS := --size $(BOARD_WIDTH)x$(BOARD_HEIGHT) \
-                --format $(if $(filter SILK_PIX_RGB565,$(BOARD_FORMAT)),rgb565,rgb888) --views $(BOARD_VIEWS)
+                --format $(if $(filter SILK_PIX_RGB565,$(BOARD_FORMAT)),rgb565,rgb888) --views $(BOARD_VIEWS) \
+                $(BOARD_PACK_ARGS)
 
 FW_CORE_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/obj/%.o)
 # The tick counter (fw_ticks) of the board's machine.
@@ -87,6 +88,17 @@ $(FW_DIR)/obj/%.o: %.c boards/$(BOARD)/board.mk
 $(FW_DIR)/libsilk.a: $(FW_CORE_OBJ)
 	rm -f $@ && $(FW_AR) rcs $@ $^
 
+# The core for the host with the board's core settings (index type): what
+# fw-host links, so that its mesh and plan records are the firmware's.
+FW_HOST_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/host-obj/%.o)
+FW_HOST_LIB := $(FW_DIR)/host-obj/libsilk.a
+$(FW_DIR)/host-obj/%.o: %.c boards/$(BOARD)/board.mk
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) -MMD -MP -c $< -o $@
+
+$(FW_HOST_LIB): $(FW_HOST_OBJ)
+	rm -f $@ && $(AR) rcs $@ $^
+
 # The pack options are remembered, so that changing them repacks.
 $(FW_OUT)/%/pack.args: FORCE
 	@mkdir -p $(dir $@)
@@ -113,9 +125,9 @@ $(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk
 	    $(FW_DIR)/libsilk.a
 
 $(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
-                        $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args $(BUILD)/libsilk.a
-	$(CC) $(ALL_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) -o $$@ \
-	    platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(BUILD)/libsilk.a
+                        $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
+	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) \
+	    -o $$@ platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
 
 run-$(1): $(FW_OUT)/$(1)/fw.elf
 	timeout 120 $(BOARD_RUN) $(FW_OUT)/$(1)/fw.elf -append $(FW_OUT)/$(1)/frame 2>&1 | tee $(FW_OUT)/$(1)/report.txt
@@ -124,4 +136,4 @@ $(foreach m,$(BOARD_MESHES),$(eval $(call fw_model,$(basename $(notdir $(m))),$(
 
 run: $(FW_NAMES:%=run-%)
 
--include $(wildcard $(FW_DIR)/obj/*/*.d $(FW_DIR)/obj/*/*/*.d)
+-include $(wildcard $(FW_DIR)/obj/*/*.d $(FW_DIR)/obj/*/*/*.d $(FW_DIR)/host-obj/*/*.d)

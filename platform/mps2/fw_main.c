@@ -276,6 +276,25 @@ static const char *out_prefix(char *cmd, size_t size)
     return *p ? p : NULL;
 }
 
+/* PREFIX-cK-MODE.ppm opened on the host and its header written.  Not
+ * inlined: its buffers would otherwise stay on the stack under the frame. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int open_frame(band_out *o, const char *prefix, int k, const char *mname, const silk_camera *cam)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s-c%d-%s.ppm", prefix, k, mname);
+    if ((o->handle = fw_open_write(path)) < 0) {
+        say("fw error cannot open %s on the host", path);
+        return 0;
+    }
+    char hdr[32];
+    int n = snprintf(hdr, sizeof hdr, "P6\n%d %d\n255\n", cam->width, cam->height);
+    put(o, hdr, (size_t)n);
+    return 1;
+}
+
 static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
                       const fw_pass *pass, int frame)
 {
@@ -299,17 +318,7 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
     if (pass->stages) return time_stages(a, m, &view, &hal, &ro, band, pass, frame, k);
 
     band_out o = { -1, 0, 2166136261u, 0, 0 };
-    char path[128];
-    if (prefix) {
-        snprintf(path, sizeof path, "%s-c%d-%s.ppm", prefix, k, mname);
-        if ((o.handle = fw_open_write(path)) < 0) {
-            say("fw error cannot open %s on the host", path);
-            return 1;
-        }
-        char hdr[32];
-        int n = snprintf(hdr, sizeof hdr, "P6\n%d %d\n255\n", cam->width, cam->height);
-        put(&o, hdr, (size_t)n);
-    }
+    if (prefix && !open_frame(&o, prefix, k, mname, cam)) return 1;
     silk_sink sink = { send_band, &o };
     o.frame_ticks = fw_ticks();
     silk_status s = silk_render_bands(a, m, &view, &hal, &ro, band, &sink, &st, &err);
@@ -353,6 +362,22 @@ static void report_memory(const silk_arena *a, size_t band_bytes)
         (unsigned long)(other_static + a->peak + mem.stack_used), (unsigned long)mem.ram_size);
 }
 
+/* The arrays in flash were not loaded by silk: check them once, so a
+ * damaged or hand-edited header is an error, not a wild read.  Not inlined:
+ * its error message would otherwise stay on the stack under every frame. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int model_ok(const silk_mesh *mesh, const silk_camera *c0)
+{
+    silk_error err;
+    if (silk_mesh_validate(mesh, FW_MODEL_NAME, &err) != SILK_OK || !c0) {
+        say("fw error %s", c0 ? err.msg : "the model has no camera");
+        return 0;
+    }
+    return 1;
+}
+
 int fw_scene(void)
 {
     char cmd[160];
@@ -360,13 +385,7 @@ int fw_scene(void)
     silk_mesh mesh;
     fwmodel_mesh(&mesh);
     const silk_camera *c0 = fwmodel_camera(0);
-    /* The arrays in flash were not loaded by silk: check them once, so a
-     * damaged or hand-edited header is an error, not a wild read. */
-    silk_error err;
-    if (silk_mesh_validate(&mesh, FW_MODEL_NAME, &err) != SILK_OK || !c0) {
-        say("fw error %s", c0 ? err.msg : "the model has no camera");
-        return 1;
-    }
+    if (!model_ok(&mesh, c0)) return 1;
     say("fw board=%s model=%s size=%dx%d format=%s band_rows=%d cameras=%d", FW_BOARD, FW_MODEL_NAME, c0->width,
         c0->height, FW_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", FW_BAND_ROWS, fwmodel_NCAMERAS);
 
