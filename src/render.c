@@ -24,6 +24,7 @@
 #include "smooth.h"
 #include "remesh.h"
 #include "lines.h"
+#include "clip.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -41,6 +42,9 @@ void silk_render_opts_default(silk_render_opts *o)
     o->lines_polygonal = 0;
     o->line_rgb = 0x000000;
     o->line_feature_rgb = 0x000000;
+    o->silmap = NULL;
+    o->silmap_hint = 0;
+    o->clip_antialias = 1;
 }
 
 const char *silk_mode_name(silk_mode mode)
@@ -50,6 +54,7 @@ const char *silk_mode_name(silk_mode mode)
     case SILK_MODE_SMOOTH: return "smooth";
     case SILK_MODE_PN: return "pn";
     case SILK_MODE_BLEND: return "blend";
+    case SILK_MODE_CLIP: return "clip";
     }
     return "?";
 }
@@ -70,6 +75,7 @@ typedef struct frame {
     int smooth;
     silk_sil_frame sil;       /* SMOOTH: the plan */
     uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
+    silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -106,7 +112,8 @@ static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 
 static int by_shares(const silk_render_opts *o)
 {
-    return o->lines == SILK_LINES_NONE && (o->mode == SILK_MODE_FLAT || o->mode == SILK_MODE_SMOOTH);
+    return o->lines == SILK_LINES_NONE &&
+           (o->mode == SILK_MODE_FLAT || o->mode == SILK_MODE_SMOOTH || o->mode == SILK_MODE_CLIP);
 }
 
 static void share_part(frame *f, uint32_t t);
@@ -194,7 +201,7 @@ static void stored_part(frame *f, uint32_t k)
 }
 
 static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
-                                 const silk_hal *h, const silk_render_opts *o,
+                                 const silk_hal *h, const silk_render_opts *o, int band_rows,
                                  silk_frame_stats *stats, silk_error *err)
 {
     if (!a || !m || !v || !h || !o || !h->vertex || !h->fragment)
@@ -208,6 +215,23 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
                          "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
                          "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
     memset(f, 0, sizeof *f);
+    if (o->mode == SILK_MODE_CLIP) {
+        /* the hull drawn as flat draws a mesh, through the stencil */
+        if (!o->silmap)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode needs the model's silhouette map");
+        if (o->lines)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: no lines in clip mode (the outline is the map's)");
+        f->clip = silk_arena_alloc_top(a, sizeof *f->clip, SILK_MEM_FRAME);
+        if (!f->clip) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "silk_render: the arena is full");
+        silk_status st = silk_clip_prepare(f->clip, a, o->silmap, v, o->silmap_hint, band_rows, o->clip_antialias, err);
+        if (st != SILK_OK) return st;
+        stats->clip_tri = f->clip->info.tri;
+        stats->clip_points = f->clip->npts;
+        silk_clip *c = f->clip;
+        st = shares_prepare(f, a, m, v, h, o, stats, err);
+        f->clip = c;
+        return st;
+    }
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
     f->nparts = 1;
@@ -289,6 +313,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[2];
     silk_target_clear(t, o->bg_rgb);
+    if (f->clip) silk_clip_stencil(f->clip, t);
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
      * near as the nearest, so each pixel is shaded once (docs/raster.md).
      * In reverse order: of fragments at equal depth the first drawn keeps
@@ -305,6 +330,10 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             draw_tris(f, o, t, pass);
         }
     t->depth_equal = 0;
+    if (f->clip) {
+        t->mask = NULL;
+        silk_clip_antialias(f->clip, t, o->bg_rgb);
+    }
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
         uint32_t j = g->line_start[i], end = g->line_start[i + 1];
@@ -342,8 +371,9 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;
     frame f;
-    silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
+    silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
     if (st == SILK_OK) frame_draw(&f, o, t);
+    if (f.clip) stats->clip_spans = f.clip->spans;
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;
@@ -363,7 +393,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;
     frame f;
-    silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
+    silk_status st = frame_prepare(&f, a, m, v, h, o, band->rows, stats, err);
     const int rows = band->rows;
     if (st == SILK_OK && f.nparts > 1 && rows < band->height) share_rows(&f, a, band->height);
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
@@ -375,6 +405,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     }
     band->y0 = 0;
     band->rows = rows;
+    if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;

@@ -89,10 +89,10 @@ static int add_mesh(model_out *mo, uint32_t type, uint32_t flags, const simp_mes
 
 /* The map's eyes sit where silk's default perspective camera sits for a
  * 640x480 frame (the camera of silk render and silk bench's path): the
- * hull's framing sphere (tools/cli.c cli_mesh_radius) just fits the field
- * of view.  The interpolated outline is mapped to the current view through
+ * framing sphere (tools/cli.c cli_mesh_radius) of the model's coarse mesh
+ * just fits the field of view.  The interpolated outline is mapped to the current view through
  * a plane (section 5), exact only for eyes at the map's own distance. */
-static double map_distance(const simp_mesh *hull, const double centre[3], double fine_radius)
+static double map_distance(const simp_mesh *hull, double fine_radius)
 {
     double lo[3], hi[3], c[3], r2 = 0;
     for (int k = 0; k < 3; k++) lo[k] = hi[k] = hull->pos[k];
@@ -105,14 +105,13 @@ static double map_distance(const simp_mesh *hull, const double centre[3], double
     }
     double half_v = CLI_DEFAULT_FOV * CLI_DEG / 2, half_h = atan(tan(half_v) * 640.0 / 480.0);
     double dist = 1.05 * sqrt(r2) / sin(fmin(half_v, half_h));
-    (void)centre;
     return fmax(1.5, dist / fine_radius);
 }
 
 /* HULL and SMAP sections for fine.  0, or an exit status after a one-line
  * error; 1 (with a note) when fine is not a closed manifold. */
-static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, uint32_t target, const clip_opts *co,
-                    clip_stats *cs)
+static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const simp_mesh *coarse, uint32_t target,
+                    const clip_opts *co, clip_stats *cs)
 {
     simp_topology topo;
     simp_mesh h = { 0, 0, NULL, NULL, NULL };
@@ -146,7 +145,7 @@ static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, uint32
     }
     have_map = 1;
     /* the eyes at the rendering distance: rebuild with it (cheap next to the hull) */
-    double dist = map_distance(&h, map.centre, map.radius);
+    double dist = map_distance(coarse, map.radius);
     silmap_free(&map);
     have_map = 0;
     mp.distance = dist;
@@ -214,7 +213,7 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
                             r.normals.nnormals, r.normals.tri_normal))
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", out);
     if (rc == 0 && co->on) {
-        rc = add_clip(&mo, in, &r.fine, so->target_tris, co, &cs);
+        rc = add_clip(&mo, in, &r.fine, &r.mesh, so->target_tris, co, &cs);
         clip = rc == 0;
         if (rc == 1) rc = 0;
     }
