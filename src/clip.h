@@ -9,21 +9,31 @@
 #include "silk/render.h"
 #include "silmap_interp.h"
 
-/* One outline edge, top (smaller y) first, clamped to +-2^14 pixels. */
+/* One outline edge, top (smaller y) first, clamped to +-2^14 pixels:
+ * x = x0 + (y - y0) * slope on y0 <= y < y1. */
 typedef struct silk_clip_edge {
-    silk_fx y0, y1, x0, x1;
+    silk_fx y0, y1, x0;
+    int32_t slope;               /* Q16.16 pixels per row, within +-2^15 */
 } silk_clip_edge;
+
+/* One loop of the outline: its edges and the rows they reach. */
+typedef struct silk_clip_loop {
+    uint32_t first, n;           /* edges first .. first + n - 1 */
+    int32_t row0, row1;          /* rows row0 .. row1 */
+} silk_clip_loop;
 
 typedef struct silk_clip {
     int width, height;
     int antialias;               /* blend the outline's coverage (else: pixel centres only) */
     silk_silmap_frame info;      /* the interpolation's triangle and views */
     uint32_t npts;               /* the interpolated polygon's vertices */
-    uint32_t nedges;             /* its non-horizontal edges, by first row */
+    uint32_t nedges, nloops;     /* its non-horizontal edges, loop by loop */
     silk_clip_edge *edge;
-    uint32_t *row_start;         /* height + 1: edges whose first row is r are row_start[r] .. [r + 1] - 1 */
-    uint32_t *active;            /* scratch: the edges crossing a row */
-    silk_fx *xs;                 /* scratch: crossings on a scan line */
+    silk_clip_loop *loop;        /* by first row */
+    uint32_t *row_start;         /* height + 2: loops whose first row is r are row_start[r] .. [r + 1] - 1 */
+    uint32_t *active, nactive;   /* the loops that reach the current row */
+    int active_row;              /* that row; -1: none yet */
+    silk_fx *xs;                 /* scratch: one loop's crossings on a scan line */
     uint32_t *cov;               /* scratch: one row's coverage, 256 = the whole pixel */
     uint8_t *mask;               /* the stencil: one band's rows, (width + 7) / 8 bytes each */
     int mask_rows;
