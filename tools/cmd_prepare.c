@@ -50,8 +50,6 @@ static void help(FILE *f)
             "  silk prepare bunny-fine.obj -o bunny.silk --triangles 500\n");
 }
 
-static silk_fx to_fx(double x) { return (silk_fx)llround(x * 65536.0); }
-
 /* What clip mode needs (docs/clipping.md): the outer hull and the
  * silhouette map of the detailed mesh. */
 typedef struct clip_opts {
@@ -65,26 +63,11 @@ typedef struct clip_stats {
     uint32_t hull_tris, hull_verts, views, views_before, map_bytes, map_bytes_before;
 } clip_stats;
 
-/* A mesh with one normal per corner (or per vertex when tri_normal is
- * NULL) in Q16.16 as a section of the given type. */
+/* A mesh of doubles as a section (model_add_mesh_doubles). */
 static int add_mesh(model_out *mo, uint32_t type, uint32_t flags, const simp_mesh *m, const double *normal,
                     uint32_t nnormals, const uint32_t *tri_normal)
 {
-    silk_vec3 *pos = malloc((m->nverts ? m->nverts : 1) * sizeof *pos);
-    silk_vec3 *nrm = malloc((nnormals ? nnormals : 1) * sizeof *nrm);
-    int rc = -1;
-    if (pos && nrm) {
-        /* Input vertices and hull vertices lie on the Q16.16 grid: exact. */
-        for (uint32_t i = 0; i < m->nverts; i++)
-            pos[i] = silk_v3(to_fx(m->pos[3 * i]), to_fx(m->pos[3 * i + 1]), to_fx(m->pos[3 * i + 2]));
-        for (uint32_t i = 0; i < nnormals; i++)
-            nrm[i] = silk_v3(to_fx(normal[3 * i]), to_fx(normal[3 * i + 1]), to_fx(normal[3 * i + 2]));
-        rc = model_add_mesh_as(mo, type, flags, m->nverts, pos, nnormals, nrm, m->ntris, m->tri,
-                               tri_normal ? tri_normal : m->tri);
-    }
-    free(pos);
-    free(nrm);
-    return rc;
+    return model_add_mesh_doubles(mo, type, flags, m->nverts, m->pos, nnormals, normal, m->ntris, m->tri, tri_normal);
 }
 
 /* The map's eyes sit where silk's default perspective camera sits for a

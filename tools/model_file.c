@@ -1,6 +1,7 @@
 /*
  * model_file.c - laying out and writing a prepared model (model_file.h).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -50,6 +51,27 @@ int model_add_mesh_as(model_out *m, uint32_t type, uint32_t flags, uint32_t nver
     for (size_t i = 0; i < 3 * (size_t)ntris; i++, p += 4) wr32(p, tri_normal[i]);
     int rc = model_add(m, type, flags, b, size);
     free(b);
+    return rc;
+}
+
+static silk_fx to_fx(double x) { return (silk_fx)llround(x * 65536.0); }
+
+int model_add_mesh_doubles(model_out *m, uint32_t type, uint32_t flags, uint32_t nverts, const double *pos,
+                           uint32_t nnormals, const double *normal, uint32_t ntris, const uint32_t *tri,
+                           const uint32_t *tri_normal)
+{
+    silk_vec3 *p = malloc((nverts ? nverts : 1) * sizeof *p);
+    silk_vec3 *n = malloc((nnormals ? nnormals : 1) * sizeof *n);
+    int rc = -1;
+    if (p && n) {
+        /* Input vertices and hull vertices lie on the Q16.16 grid: exact. */
+        for (uint32_t i = 0; i < nverts; i++) p[i] = silk_v3(to_fx(pos[3 * i]), to_fx(pos[3 * i + 1]), to_fx(pos[3 * i + 2]));
+        for (uint32_t i = 0; i < nnormals; i++)
+            n[i] = silk_v3(to_fx(normal[3 * i]), to_fx(normal[3 * i + 1]), to_fx(normal[3 * i + 2]));
+        rc = model_add_mesh_as(m, type, flags, nverts, p, nnormals, n, ntris, tri, tri_normal ? tri_normal : tri);
+    }
+    free(p);
+    free(n);
     return rc;
 }
 

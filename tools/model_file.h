@@ -31,6 +31,12 @@ int model_add_mesh_as(model_out *m, uint32_t type, uint32_t flags, uint32_t nver
                       uint32_t nnormals, const silk_vec3 *normal, uint32_t ntris, const uint32_t *tri,
                       const uint32_t *tri_normal);
 
+/* The same from doubles (rounded to Q16.16); tri_normal NULL: one normal
+ * per vertex. */
+int model_add_mesh_doubles(model_out *m, uint32_t type, uint32_t flags, uint32_t nverts, const double *pos,
+                           uint32_t nnormals, const double *normal, uint32_t ntris, const uint32_t *tri,
+                           const uint32_t *tri_normal);
+
 /* An SMAP section: the silhouette map in the layout silk_model_silmap
  * reads.  0 or -1. */
 int model_add_silmap(model_out *m, const silk_silmap *map);
