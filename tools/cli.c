@@ -239,7 +239,7 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
         p += len + 1;
         continue;
     bad:
-        return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn or pnL (L 1..%u) separated "
+        return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn, pnL (L 1..%u) or clip separated "
                         "by commas", opt, (int)len, p, SILK_PN_MAX_LEVEL);
     }
 }

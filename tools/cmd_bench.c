@@ -102,7 +102,7 @@ static void help(FILE *f)
             "  --pair COARSE:FINE  a coarse mesh and its fine reference (repeatable)\n"
             "  --views N           views per projection along the camera path [12]\n"
             "  --size WxH          image size [640x480]\n"
-            "  --modes LIST        comma-separated: flat, smooth, blend, pnL (PN triangles\n"
+            "  --modes LIST        comma-separated: flat, smooth, blend, clip, pnL (PN triangles\n"
             "                      at level L = 1..%u) [flat,smooth,blend,pn2,pn3]\n"
             "  --projection ortho|perspective|both   [both]\n"
             "  --reps N            timed renders per view, the fastest kept [3]\n"
