@@ -38,14 +38,24 @@ static int32_t clamp_row(int32_t r, int height) { return r < 0 ? 0 : r > height 
 silk_status silk_clip_prepare(silk_clip *c, silk_arena *a, const silk_silmap *map, const silk_view *v,
                               uint32_t hint, int band_rows, int antialias, silk_error *err)
 {
+    silk_outline o;
+    silk_silmap_frame info;
+    silk_status st = silk_silmap_interp(map, v, hint, a, &o, &info, err);
+    if (st) return st;
+    st = silk_clip_outline(c, a, &o, v->cam.width, v->cam.height, band_rows, antialias, err);
+    c->info = info;
+    return st;
+}
+
+silk_status silk_clip_outline(silk_clip *c, silk_arena *a, const silk_outline *out, int width, int height,
+                              int band_rows, int antialias, silk_error *err)
+{
     memset(c, 0, sizeof *c);
-    c->width = v->cam.width;
-    c->height = v->cam.height;
+    c->width = width;
+    c->height = height;
     c->antialias = antialias;
     c->active_row = -1;
-    silk_outline o;
-    silk_status st = silk_silmap_interp(map, v, hint, a, &o, &c->info, err);
-    if (st) return st;
+    const silk_outline o = *out;
     c->npts = o.npts;
     const int h = c->height;
     size_t np = o.npts ? o.npts : 1, nl = o.nloops ? o.nloops : 1;

@@ -46,6 +46,12 @@ typedef struct silk_clip {
 silk_status silk_clip_prepare(silk_clip *c, silk_arena *a, const silk_silmap *map, const silk_view *v,
                               uint32_t hint, int band_rows, int antialias, silk_error *err);
 
+/* The same for a given outline in a width x height frame (the second half
+ * of silk_clip_prepare; the tests feed it polygons).  Its loops must be
+ * disjoint: coverages of different loops are added. */
+silk_status silk_clip_outline(silk_clip *c, silk_arena *a, const silk_outline *o, int width, int height,
+                              int band_rows, int antialias, silk_error *err);
+
 /* Scan-convert the outline into the stencil for t's band (parity rule) and
  * point t->mask at it: the hull's fragments outside it are discarded. */
 void silk_clip_stencil(silk_clip *c, silk_target *t);
