@@ -3,8 +3,10 @@
  * detailed mesh made into a prepared model (silk/model.h): the coarse mesh
  * smooth mode wants - simplified by subset placement so every vertex lies
  * on the detailed surface (tools/simplify.c), with the detailed surface's
- * normals there, split along feature edges (tools/surface.c) - in fixed
- * point, in one checked binary file (tools/model_file.c).
+ * normals there, split along feature edges (tools/surface.c) - and what
+ * clip mode draws: the outer hull (tools/hull.c, paper section 7) and the
+ * silhouette map (tools/silmap.c, sections 4 and 6), in fixed point, in
+ * one checked binary file (tools/model_file.c).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -33,14 +35,23 @@ static void help(FILE *f)
             "FINE (so they lie on its surface) and whose normals are FINE's normals there,\n"
             "split along feature edges - the mesh smooth mode draws best.  flat, smooth, pn\n"
             "and blend draw it; every silk command that takes a mesh takes MODEL.silk.\n"
+            "With it, for clip mode: FINE's outer hull of N triangles, shaded with FINE's\n"
+            "normals, and FINE's silhouette map (its outlines from many views).\n"
             "Written atomically.  Prints:\n"
-            "  prepare FINE MODEL triangles=N vertices=N normals=N bytes=N\n"
+            "  prepare FINE MODEL triangles=N vertices=N normals=N hull_triangles=N\n"
+            "          map_views=N map_bytes=N bytes=N\n"
             "\n"
             "options:\n"
             "  -o, --output FILE   the prepared model (.silk)\n"
             "  --triangles N       triangles of the coarse mesh (at least 4)\n"
             "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
             "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
+            "  --views N           silhouette map views: 12, 42, 162 (default), 642, ...\n"
+            "  --map-resolution R  each map view's image, R x R pixels [256]\n"
+            "  --map-error PX      simplify the map while a dropped view's outline is\n"
+            "                      predicted within PX pixels [0: keep every view]\n"
+            "  --no-clip           no outer hull and silhouette map (clip mode)\n"
+            "  --no-mesh           only the hull and map (flat mode then draws the hull)\n"
             "  --fit               move each normal (up to 30 degrees) so that the curves\n"
             "                      smooth mode builds over its edges follow FINE closer\n"
             "  --scale S           multiply coordinates by S while reading (as silk render)\n"
@@ -54,6 +65,7 @@ static void help(FILE *f)
  * silhouette map of the detailed mesh. */
 typedef struct clip_opts {
     int on;                  /* --no-clip: 0 */
+    int mesh;                /* --no-mesh: 0, the hull and map only (flat then draws the hull) */
     int level;               /* icosahedron subdivisions: 10 * 4^level + 2 views */
     int res;                 /* --map-resolution */
     double map_error;        /* --map-error: 0 keeps every view */
@@ -192,13 +204,14 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
     int rc = simplify_pipeline(in, so, scale, quiet, "prepare", &r);
     if (rc == 0 && fit && fit_normals(&r.fine, &r.mesh, &r.normals, &fs) != 0)
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory while fitting normals", in);
-    if (rc == 0 && add_mesh(&mo, SILK_SECTION_MESH, SILK_SECTION_REQUIRED, &r.mesh, r.normals.normal,
-                            r.normals.nnormals, r.normals.tri_normal))
+    if (rc == 0 && co->mesh &&
+        add_mesh(&mo, SILK_SECTION_MESH, SILK_SECTION_REQUIRED, &r.mesh, r.normals.normal, r.normals.nnormals,
+                 r.normals.tri_normal))
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", out);
     if (rc == 0 && co->on) {
         rc = add_clip(&mo, in, &r.fine, &r.mesh, so->target_tris, co, &cs);
         clip = rc == 0;
-        if (rc == 1) rc = 0;
+        if (rc == 1) rc = co->mesh ? 0 : cli_fail(CLI_EXIT_INPUT, "%s: --no-mesh leaves nothing to write", in);
     }
     uint8_t *probe = NULL;
     if (rc == 0 && !(probe = model_bytes(&mo, &bytes))) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", out);
@@ -230,7 +243,7 @@ int cmd_prepare(int argc, char **argv)
     simp_opts_default(&so, 0);
     so.subset = 1;
     int rc = 0, fit = 0, k;
-    clip_opts co = { 1, 2, 256, 0 };
+    clip_opts co = { 1, 1, 2, 256, 0 };
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -242,6 +255,8 @@ int cmd_prepare(int argc, char **argv)
             fit = 1;
         } else if (strcmp(a, "--no-clip") == 0) {
             co.on = 0;
+        } else if (strcmp(a, "--no-mesh") == 0) {
+            co.mesh = 0;
         } else if (strcmp(a, "--views") == 0 || strcmp(a, "--map-resolution") == 0 || strcmp(a, "--map-error") == 0) {
             double v;
             if (i + 1 >= argc) rc = cli_fail(CLI_EXIT_USAGE, "prepare: %s needs a value", a);
@@ -273,6 +288,7 @@ int cmd_prepare(int argc, char **argv)
     if (!rc && !in) rc = cli_fail(CLI_EXIT_USAGE, "prepare: give FINE (silk prepare FINE -o MODEL.silk --triangles N)");
     if (!rc && !args.out) rc = cli_fail(CLI_EXIT_USAGE, "prepare: -o MODEL.silk is needed");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --triangles N is needed");
+    if (!rc && !co.on && !co.mesh) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --no-clip and --no-mesh leave nothing to write");
     if (rc) return rc;
     so.target_tris = (uint32_t)args.target;
     if (silk_file_same(in, args.out))
