@@ -67,8 +67,10 @@ silk_status silk_clip_outline(silk_clip *c, silk_arena *a, const silk_outline *o
     c->cov = silk_arena_array_top(a, (size_t)c->width + 1, sizeof *c->cov, SILK_MEM_FRAME);
     c->mask_rows = band_rows < h ? band_rows : h;
     c->mask = silk_arena_array_top(a, (size_t)c->mask_rows * (((size_t)c->width + 7) / 8), 1, SILK_MEM_FRAME);
+    c->partial = antialias ? silk_arena_array_top(a, (size_t)c->mask_rows * (size_t)c->width, 1, SILK_MEM_FRAME) : NULL;
     silk_clip_loop *tmp = silk_arena_array_top(a, nl, sizeof *tmp, SILK_MEM_FRAME);
-    if (!c->edge || !c->loop || !c->row_start || !c->active || !c->xs || !c->cov || !c->mask || !tmp)
+    if (!c->edge || !c->loop || !c->row_start || !c->active || !c->xs || !c->cov || !c->mask || !tmp ||
+        (antialias && !c->partial))
         return silk_fail(err, SILK_ERR_NOMEM, "clip", 0, "the arena is too small for the silhouette stencil");
 
     /* every loop's non-horizontal edges with their slopes (one division
@@ -209,9 +211,12 @@ void silk_clip_stencil(silk_clip *c, silk_target *t)
         uint8_t *bits = c->mask + (size_t)r * stride;
         advance(c, y);
         if (c->antialias) {
+            uint8_t *part = c->partial + (size_t)r * (size_t)c->width;
             row_coverage(c, y);
-            for (int x = 0; x < c->width; x++)
+            for (int x = 0; x < c->width; x++) {
                 if (c->cov[x]) bits[x >> 3] |= (uint8_t)(1u << (x & 7));
+                part[x] = c->cov[x] < FULL ? (uint8_t)c->cov[x] : 0;
+            }
         } else {
             row_centres(c, y, bits);
         }
@@ -238,15 +243,14 @@ static uint32_t mix(uint32_t a, uint32_t b, uint32_t w)
 void silk_clip_antialias(silk_clip *c, silk_target *t, uint32_t bg_rgb)
 {
     if (!c->antialias) return;
-    for (int r = 0; r < t->rows; r++) {
+    int rows = t->rows < c->mask_rows ? t->rows : c->mask_rows;
+    for (int r = 0; r < rows; r++) {
         int y = t->y0 + r;
-        advance(c, y);
-        if (!c->nactive) continue;
-        row_coverage(c, y);
+        const uint8_t *part = c->partial + (size_t)r * (size_t)c->width;
         const uint32_t *zrow = t->depth ? t->depth + (size_t)r * (size_t)t->width : NULL;
         for (int x = 0; x < c->width; x++) {
-            uint32_t w = c->cov[x];
-            if (w == 0 || w == FULL) continue;
+            uint32_t w = part[x];
+            if (w == 0) continue;
             uint32_t drawn = silk_target_get(t, x, y);
             /* nothing drawn there (the hull fell short of the outline): background stays */
             if (zrow ? zrow[x] == 0 : drawn == (bg_rgb & 0xFFFFFF)) continue;

@@ -36,6 +36,7 @@ typedef struct silk_clip {
     silk_fx *xs;                 /* scratch: one loop's crossings on a scan line */
     uint32_t *cov;               /* scratch: one row's coverage, 256 = the whole pixel */
     uint8_t *mask;               /* the stencil: one band's rows, (width + 7) / 8 bytes each */
+    uint8_t *partial;            /* anti-aliasing: the band's coverage where partial (1..255), else 0 */
     int mask_rows;
     uint32_t spans;              /* stencil spans drawn this frame */
 } silk_clip;
@@ -58,7 +59,7 @@ void silk_clip_stencil(silk_clip *c, silk_target *t);
 
 /* After the hull is drawn (t->mask cleared): the band's pixels the outline
  * covers only partly, blended between what was drawn there and bg_rgb by
- * the polygon's coverage. */
+ * the polygon's coverage, as silk_clip_stencil found it for this band. */
 void silk_clip_antialias(silk_clip *c, silk_target *t, uint32_t bg_rgb);
 
 #endif
