@@ -18,7 +18,8 @@
  * A device that draws only FLAT and SMOOTH frames may build the core with
  * -DSILK_NO_REFERENCE_MODES: PN and BLEND (the comparison methods of
  * docs/methods.md, about 9 KiB of Cortex-M3 code) are then left out, and
- * asking for them is SILK_ERR_ARG.
+ * asking for them is SILK_ERR_ARG.  -DSILK_NO_CLIP_MODE likewise leaves out
+ * CLIP (clip.c and the silhouette interpolation, about 11 KiB).
  */
 #include <string.h>
 #include "smooth.h"
@@ -215,7 +216,11 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
                          "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
                          "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
     memset(f, 0, sizeof *f);
+    (void)band_rows;   /* the stencil's height: clip mode's only */
     if (o->mode == SILK_MODE_CLIP) {
+#ifdef SILK_NO_CLIP_MODE
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode is not built in (SILK_NO_CLIP_MODE)");
+#else
         /* the hull drawn as flat draws a mesh, through the stencil */
         if (!o->silmap)
             return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode needs the model's silhouette map");
@@ -231,6 +236,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         st = shares_prepare(f, a, m, v, h, o, stats, err);
         f->clip = c;
         return st;
+#endif
     }
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
     f->hal = h;
@@ -313,7 +319,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[2];
     silk_target_clear(t, o->bg_rgb);
+#ifndef SILK_NO_CLIP_MODE
     if (f->clip) silk_clip_stencil(f->clip, t);
+#endif
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
      * near as the nearest, so each pixel is shaded once (docs/raster.md).
      * In reverse order: of fragments at equal depth the first drawn keeps
@@ -330,10 +338,12 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             draw_tris(f, o, t, pass);
         }
     t->depth_equal = 0;
+#ifndef SILK_NO_CLIP_MODE
     if (f->clip) {
         t->mask = NULL;
         silk_clip_antialias(f->clip, t, o->bg_rgb);
     }
+#endif
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
         uint32_t j = g->line_start[i], end = g->line_start[i + 1];
