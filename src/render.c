@@ -383,7 +383,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
     if (st == SILK_OK) frame_draw(&f, o, t);
-    if (f.clip) stats->clip_spans = f.clip->spans;
+    if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;
