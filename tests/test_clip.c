@@ -97,6 +97,20 @@ static void to_outline(double p[NLOOPS][4][2], uint32_t *start, silk_vec2 *pt, s
     *o = (silk_outline){ NLOOPS, 4 * NLOOPS, start, pt };
 }
 
+/* One random polygon: its loops in double and as a Q16.16 outline. */
+typedef struct poly {
+    double p[NLOOPS][4][2];
+    uint32_t start[NLOOPS + 1];
+    silk_vec2 pt[4 * NLOOPS];
+    silk_outline o;
+} poly;
+
+static void make_poly(unsigned seed, poly *q)
+{
+    make_loops(seed, q->p);
+    to_outline(q->p, q->start, q->pt, &q->o);
+}
+
 /* The frame as clip mode leaves it when the hull covers everything in
  * black: stencil, "draw" where it lets through, anti-alias. */
 static void draw(const silk_outline *o, int aa, int band, uint8_t *out)
@@ -131,19 +145,15 @@ static void draw(const silk_outline *o, int aa, int band, uint8_t *out)
 TEST(centres_follow_the_parity_rule)
 {
     for (unsigned seed = 1; seed <= 20; seed++) {
-        double p[NLOOPS][4][2];
-        uint32_t start[NLOOPS + 1];
-        silk_vec2 pt[4 * NLOOPS];
-        silk_outline o;
-        make_loops(seed, p);
-        to_outline(p, start, pt, &o);
+        static poly q;
+        make_poly(seed, &q);
         uint8_t img[W * H];
-        draw(&o, 0, H, img);
+        draw(&q.o, 0, H, img);
         int bad = 0, checked = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 double near;
-                int in = inside(p, x + 0.5, y + 0.5, &near);
+                int in = inside(q.p, x + 0.5, y + 0.5, &near);
                 if (near < 1e-3) continue;
                 checked++;
                 bad += in != (img[y * W + x] == 0);
@@ -156,18 +166,14 @@ TEST(coverage_is_the_area_inside_each_pixel)
 {
     double worst = 0;
     for (unsigned seed = 1; seed <= 20; seed++) {
-        double p[NLOOPS][4][2];
-        uint32_t start[NLOOPS + 1];
-        silk_vec2 pt[4 * NLOOPS];
-        silk_outline o;
-        make_loops(seed, p);
-        to_outline(p, start, pt, &o);
+        static poly q;
+        make_poly(seed, &q);
         uint8_t img[W * H];
-        draw(&o, 1, H, img);
+        draw(&q.o, 1, H, img);
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 double area = 0;
-                for (int k = 0; k < NLOOPS; k++) area += clipped_area(p[k], x, y);
+                for (int k = 0; k < NLOOPS; k++) area += clipped_area(q.p[k], x, y);
                 double got = (255 - img[y * W + x]) / 255.0;
                 if (fabs(got - area) > worst) worst = fabs(got - area);
                 CHECKF(fabs(got - area) <= 0.25, "seed %u pixel %d,%d: coverage %.3f, area %.3f", seed, x, y, got, area);
@@ -180,17 +186,13 @@ TEST(coverage_is_the_area_inside_each_pixel)
 
 TEST(bands_give_the_whole_frame)
 {
-    double p[NLOOPS][4][2];
-    uint32_t start[NLOOPS + 1];
-    silk_vec2 pt[4 * NLOOPS];
-    silk_outline o;
-    make_loops(7, p);
-    to_outline(p, start, pt, &o);
+    static poly q;
+    make_poly(7, &q);
     for (int aa = 0; aa < 2; aa++) {
         uint8_t whole[W * H], banded[W * H];
-        draw(&o, aa, H, whole);
+        draw(&q.o, aa, H, whole);
         for (int band = 1; band <= 17; band += 4) {
-            draw(&o, aa, band, banded);
+            draw(&q.o, aa, band, banded);
             CHECKF(memcmp(whole, banded, sizeof whole) == 0, "antialias %d, bands of %d rows differ", aa, band);
         }
     }
