@@ -94,6 +94,10 @@ $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines
 $(GEN_TESTS): $(BUILD)/obj/tools/gen.o
 $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
+# clip mode's golden frames draw a model prepared as silk prepare makes one
+CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,gen.o hull.o lp.o simplify.o closest.o silmap.o model_file.o)
+$(BUILD)/tests/test_golden: $(CLIP_TOOL_OBJ)
+$(BUILD)/tests/test_golden: TEST_TOOL_OBJ = $(CLIP_TOOL_OBJ)
 $(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 $(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 

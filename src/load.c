@@ -21,6 +21,7 @@ void silk_load_opts_default(silk_load_opts *o)
     o->crease_deg = SILK_DEFAULT_CREASE_DEG;
     o->normals = SILK_NORMALS_AUTO;
     o->orient = SILK_ORIENT_FIX;
+    o->part = SILK_PART_COARSE;
 }
 
 /* ---- choosing the reader --------------------------------------------------- */

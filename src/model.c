@@ -13,6 +13,7 @@
 #include <string.h>
 #include "load.h"
 #include "silk/model.h"
+#include "silmap_interp.h"
 
 #define BAD(...) silk_fail(err, SILK_ERR_PARSE, name, 0, __VA_ARGS__)
 #define UL(x) ((unsigned long)(x))
@@ -85,7 +86,10 @@ int silk_model_find(const silk_model *m, uint32_t type, silk_model_section *out)
     return 0;
 }
 
-static int known_type(uint32_t type) { return type == SILK_SECTION_MESH; }
+static int known_type(uint32_t type)
+{
+    return type == SILK_SECTION_MESH || type == SILK_SECTION_HULL || type == SILK_SECTION_SMAP;
+}
 
 silk_status silk_model_open(const void *data, size_t len, const char *name, silk_model *out, silk_error *err)
 {
@@ -141,23 +145,24 @@ typedef struct mesh_layout {
     size_t pos, normal, tri, tri_normal;
 } mesh_layout;
 
-static silk_status mesh_layout_of(const silk_model_section *s, const char *name, mesh_layout *l, silk_error *err)
+static silk_status mesh_layout_of(const silk_model_section *s, const char *sec, const char *name, mesh_layout *l,
+                                  silk_error *err)
 {
-    if (s->size < MESH_HEAD_BYTES) return BAD("MESH section of %lu bytes is shorter than its counts", UL(s->size));
+    if (s->size < MESH_HEAD_BYTES) return BAD("%s section of %lu bytes is shorter than its counts", sec, UL(s->size));
     l->nverts = rd32(s->data);
     l->ntris = rd32(s->data + 4);
     l->nnormals = rd32(s->data + 8);
-    if (rd32(s->data + 12) != 0) return BAD("MESH section: reserved field is not zero");
+    if (rd32(s->data + 12) != 0) return BAD("%s section: reserved field is not zero", sec);
     if (l->nverts < 3 || l->ntris == 0 || l->nnormals == 0)
-        return BAD("MESH section: %lu vertices, %lu triangles, %lu normals (an empty mesh)", UL(l->nverts),
+        return BAD("%s section: %lu vertices, %lu triangles, %lu normals (an empty mesh)", sec, UL(l->nverts),
                    UL(l->ntris), UL(l->nnormals));
     if ((uint64_t)l->nverts >= (uint64_t)SILK_NO_INDEX || (uint64_t)l->nnormals >= (uint64_t)SILK_NO_INDEX ||
         l->ntris > UINT32_MAX / 3)
-        return BAD("MESH section: too many elements (%lu vertices, %lu triangles, %lu normals)", UL(l->nverts),
+        return BAD("%s section: too many elements (%lu vertices, %lu triangles, %lu normals)", sec, UL(l->nverts),
                    UL(l->ntris), UL(l->nnormals));
     uint64_t want = MESH_HEAD_BYTES + 12 * (uint64_t)l->nverts + 12 * (uint64_t)l->nnormals + 24 * (uint64_t)l->ntris;
     if (want != s->size)
-        return BAD("MESH section: %lu vertices, %lu normals and %lu triangles take %llu bytes, the section has %lu",
+        return BAD("%s section: %lu vertices, %lu normals and %lu triangles take %llu bytes, the section has %lu", sec,
                    UL(l->nverts), UL(l->nnormals), UL(l->ntris), (unsigned long long)want, UL(s->size));
     l->pos = MESH_HEAD_BYTES;
     l->normal = l->pos + 12 * (size_t)l->nverts;
@@ -167,7 +172,8 @@ static silk_status mesh_layout_of(const silk_model_section *s, const char *name,
 }
 
 /* Every value of the section is one the mesh builder may take. */
-static silk_status mesh_check(const silk_model_section *s, const mesh_layout *l, const char *name, silk_error *err)
+static silk_status mesh_check(const silk_model_section *s, const char *sec, const mesh_layout *l, const char *name,
+                              silk_error *err)
 {
     const uint8_t *d = s->data;
     silk_fx lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
@@ -175,14 +181,14 @@ static silk_status mesh_check(const silk_model_section *s, const mesh_layout *l,
         for (int k = 0; k < 3; k++) {
             silk_fx c = rd32s(d + l->pos + 12 * (size_t)v + 4 * (size_t)k);
             if (c > SILK_COORD_MAX || c < -SILK_COORD_MAX)
-                return BAD("MESH section: vertex %lu lies outside +-%d model units", UL(v), (int)(SILK_COORD_MAX >> 16));
+                return BAD("%s section: vertex %lu lies outside +-%d model units", sec, UL(v), (int)(SILK_COORD_MAX >> 16));
             if (v == 0 || c < lo[k]) lo[k] = c;
             if (v == 0 || c > hi[k]) hi[k] = c;
         }
     int64_t diag2 = 0;
     for (int k = 0; k < 3; k++) diag2 += (int64_t)(hi[k] - lo[k]) * (hi[k] - lo[k]);
     if (diag2 < (int64_t)SILK_SIZE_MIN * SILK_SIZE_MIN)
-        return BAD("MESH section: the model is smaller than 1/16 unit across");
+        return BAD("%s section: the model is smaller than 1/16 unit across", sec);
     for (uint32_t i = 0; i < l->nnormals; i++) {
         silk_vec3 n = silk_v3(rd32s(d + l->normal + 12 * (size_t)i), rd32s(d + l->normal + 12 * (size_t)i + 4),
                               rd32s(d + l->normal + 12 * (size_t)i + 8));
@@ -191,17 +197,19 @@ static silk_status mesh_check(const silk_model_section *s, const mesh_layout *l,
         int big = n.x > lim || n.x < -lim || n.y > lim || n.y < -lim || n.z > lim || n.z < -lim;
         int64_t n2 = big ? 0 : silk_v3_dot64(n, n);
         if (n2 < ((int64_t)1 << 32) - UNIT_SLACK || n2 > ((int64_t)1 << 32) + UNIT_SLACK)
-            return BAD("MESH section: normal %lu is not of unit length", UL(i));
+            return BAD("%s section: normal %lu is not of unit length", sec, UL(i));
     }
     for (uint32_t c = 0; c < 3 * l->ntris; c++) {
         uint32_t v = rd32(d + l->tri + 4 * (size_t)c), n = rd32(d + l->tri_normal + 4 * (size_t)c);
         if (v >= l->nverts)
-            return BAD("MESH section: triangle %lu uses vertex %lu of %lu", UL(c / 3), UL(v), UL(l->nverts));
+            return BAD("%s section: triangle %lu uses vertex %lu of %lu", sec, UL(c / 3), UL(v), UL(l->nverts));
         if (n >= l->nnormals)
-            return BAD("MESH section: triangle %lu uses normal %lu of %lu", UL(c / 3), UL(n), UL(l->nnormals));
+            return BAD("%s section: triangle %lu uses normal %lu of %lu", sec, UL(c / 3), UL(n), UL(l->nnormals));
     }
     return SILK_OK;
 }
+
+static silk_status smap_check(const silk_model_section *sp, const char *name, silk_silmap *out, silk_error *err);
 
 silk_status silk_load_model(const void *data, size_t len, const char *name, const silk_load_opts *opts,
                             silk_arena *a, silk_mesh *out, silk_error *err)
@@ -224,8 +232,21 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
     mesh_layout l = { 0, 0, 0, 0, 0, 0, 0 };
     silk_status st = silk_model_open(data, len, name, &m, err);
     if (st) return st;
-    if (!silk_model_find(&m, SILK_SECTION_MESH, &s)) return BAD("no MESH section (no mesh to draw)");
-    if ((st = mesh_layout_of(&s, name, &l, err)) || (st = mesh_check(&s, &l, name, err))) return st;
+    /* clip mode draws the hull; the other modes the coarse mesh, or the hull when that is all there is */
+    const char *sec = "HULL";
+    if (opts->part == SILK_PART_HULL) {
+        if (!silk_model_find(&m, SILK_SECTION_HULL, &s))
+            return BAD("no HULL section (prepared without the outer hull clip mode draws)");
+    } else if (silk_model_find(&m, SILK_SECTION_MESH, &s)) {
+        sec = "MESH";
+    } else if (!silk_model_find(&m, SILK_SECTION_HULL, &s)) {
+        return BAD("no MESH or HULL section (no mesh to draw)");
+    }
+    if ((st = mesh_layout_of(&s, sec, name, &l, err)) || (st = mesh_check(&s, sec, &l, name, err))) return st;
+    /* a damaged map fails the model however it is drawn, as a damaged mesh does */
+    silk_model_section ms;
+    silk_silmap map;
+    if (silk_model_find(&m, SILK_SECTION_SMAP, &ms) && (st = smap_check(&ms, name, &map, err))) return st;
 
     int want_n = opts->normals != SILK_NORMALS_COMPUTE;
     size_t need = 0;
@@ -273,4 +294,129 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
         memset(out, 0, sizeof *out);
     }
     return st;
+}
+
+/* ---- SMAP: the silhouette map ------------------------------------------------- */
+
+/* The fixed part of an SMAP section before its arrays (docs/formats.md). */
+#define SMAP_HEAD_BYTES 36
+#define SMAP_VIEW_WORDS 18
+/* Image points within +-2^14 pixels, focal lengths below 2^14 pixels:
+ * what the interpolation's 64-bit products are sized for. */
+#define SMAP_PX_MAX ((silk_fx)16384 << 16)
+#define SMAP_FOCAL_MAX ((silk_fx)16383 << 16)
+
+/* The arrays are read in place, so their layout must be this host's. */
+_Static_assert(sizeof(silk_silmap_view) == 4 * SMAP_VIEW_WORDS, "silk_silmap_view is 18 words");
+_Static_assert(sizeof(silk_vec2) == 8 && sizeof(silk_vec3) == 12, "vectors are packed words");
+
+static int unit_vec(const uint8_t *p)
+{
+    silk_vec3 n = silk_v3(rd32s(p), rd32s(p + 4), rd32s(p + 8));
+    const silk_fx lim = 2 * SILK_FX_ONE;
+    if (n.x > lim || n.x < -lim || n.y > lim || n.y < -lim || n.z > lim || n.z < -lim) return 0;
+    int64_t n2 = silk_v3_dot64(n, n);
+    return n2 >= ((int64_t)1 << 32) - UNIT_SLACK && n2 <= ((int64_t)1 << 32) + UNIT_SLACK;
+}
+
+static int in_coords(const uint8_t *p)
+{
+    for (int k = 0; k < 3; k++)
+        if (rd32s(p + 4 * k) > SILK_COORD_MAX || rd32s(p + 4 * k) < -SILK_COORD_MAX) return 0;
+    return 1;
+}
+
+/* Every count, index and number of an SMAP section, byte by byte (any
+ * alignment); the arrays' places on success. */
+static silk_status smap_check(const silk_model_section *sp, const char *name, silk_silmap *out, silk_error *err)
+{
+    const silk_model_section s = *sp;
+    const uint8_t *d = s.data;
+    if (s.size < SMAP_HEAD_BYTES) return BAD("SMAP section of %lu bytes is shorter than its counts", UL(s.size));
+    if (rd32(d) != SILK_SMAP_VERSION)
+        return BAD("SMAP section: map version %lu; this silk reads version %u", UL(rd32(d)), SILK_SMAP_VERSION);
+    uint32_t nviews = rd32(d + 4), ntris = rd32(d + 8), nloops = rd32(d + 12), npts = rd32(d + 16);
+    if (rd32(d + 32) != 0) return BAD("SMAP section: reserved field is not zero");
+    if (nviews < 4 || ntris < 4 || nviews > (1u << 20) || ntris > (1u << 21) || nloops > (1u << 24) ||
+        npts > (1u << 26))
+        return BAD("SMAP section: %lu views, %lu triangles, %lu loops, %lu points (4.. views and triangles, "
+                   "at most 2^20 views, 2^21 triangles, 2^24 loops, 2^26 points)",
+                   UL(nviews), UL(ntris), UL(nloops), UL(npts));
+    uint64_t want = SMAP_HEAD_BYTES + 4 * SMAP_VIEW_WORDS * (uint64_t)nviews + 24 * (uint64_t)ntris +
+                    4 * ((uint64_t)nloops + 1) + 8 * (uint64_t)npts;
+    if (want != s.size)
+        return BAD("SMAP section: %lu views, %lu triangles, %lu loops and %lu points take %llu bytes, the section "
+                   "has %lu", UL(nviews), UL(ntris), UL(nloops), UL(npts), (unsigned long long)want, UL(s.size));
+    if (!in_coords(d + 20)) return BAD("SMAP section: the centre lies outside +-%d model units", (int)(SILK_COORD_MAX >> 16));
+    const uint8_t *views = d + SMAP_HEAD_BYTES, *tri = views + 4 * SMAP_VIEW_WORDS * (size_t)nviews;
+    const uint8_t *adj = tri + 12 * (size_t)ntris, *start = adj + 12 * (size_t)ntris;
+    const uint8_t *pts = start + 4 * ((size_t)nloops + 1);
+    for (uint32_t v = 0; v < nviews; v++) {
+        const uint8_t *c = views + 4 * SMAP_VIEW_WORDS * (size_t)v;
+        silk_fx focal = rd32s(c + 48), cx = rd32s(c + 52), cy = rd32s(c + 56);
+        uint32_t first = rd32(c + 64), n = rd32(c + 68);
+        if (!in_coords(c)) return BAD("SMAP section: view %lu's eye lies outside +-%d model units", UL(v),
+                                      (int)(SILK_COORD_MAX >> 16));
+        if (!unit_vec(c + 12) || !unit_vec(c + 24) || !unit_vec(c + 36))
+            return BAD("SMAP section: view %lu's camera axes are not of unit length", UL(v));
+        if (focal <= 0 || focal > SMAP_FOCAL_MAX || cx < -SMAP_PX_MAX || cx > SMAP_PX_MAX || cy < -SMAP_PX_MAX ||
+            cy > SMAP_PX_MAX)
+            return BAD("SMAP section: view %lu's focal length or image centre is out of range", UL(v));
+        if (rd32(c + 60) != 0) return BAD("SMAP section: view %lu is not a perspective view", UL(v));
+        if (first > nloops || n > nloops - first)
+            return BAD("SMAP section: view %lu uses loops %lu..%lu of %lu", UL(v), UL(first), UL((uint64_t)first + n),
+                       UL(nloops));
+    }
+    for (uint32_t c = 0; c < 3 * ntris; c++) {
+        uint32_t v = rd32(tri + 4 * (size_t)c), t = rd32(adj + 4 * (size_t)c);
+        if (v >= nviews) return BAD("SMAP section: triangle %lu uses view %lu of %lu", UL(c / 3), UL(v), UL(nviews));
+        if (t >= ntris && t != UINT32_MAX)
+            return BAD("SMAP section: triangle %lu's neighbour %lu is not one of %lu", UL(c / 3), UL(t), UL(ntris));
+    }
+    for (uint32_t t = 0; t < ntris; t++) {
+        uint32_t a = rd32(tri + 12 * (size_t)t), b = rd32(tri + 12 * (size_t)t + 4), c = rd32(tri + 12 * (size_t)t + 8);
+        if (a == b || b == c || a == c) return BAD("SMAP section: triangle %lu repeats a view", UL(t));
+    }
+    if (rd32(start) != 0 || rd32(start + 4 * (size_t)nloops) != npts)
+        return BAD("SMAP section: the loops do not start at point 0 and end at point %lu", UL(npts));
+    for (uint32_t i = 0; i < nloops; i++)
+        if (rd32(start + 4 * (size_t)i + 4) < rd32(start + 4 * (size_t)i) ||
+            rd32(start + 4 * (size_t)i + 4) - rd32(start + 4 * (size_t)i) < 3)
+            return BAD("SMAP section: loop %lu has fewer than 3 points", UL(i));
+    for (uint32_t i = 0; i < 2 * npts; i++) {
+        silk_fx c = rd32s(pts + 4 * (size_t)i);
+        if (c < -SMAP_PX_MAX || c > SMAP_PX_MAX)
+            return BAD("SMAP section: point %lu lies outside +-%d pixels", UL(i / 2), (int)(SMAP_PX_MAX >> 16));
+    }
+    memset(out, 0, sizeof *out);
+    out->centre = silk_v3(rd32s(d + 20), rd32s(d + 24), rd32s(d + 28));
+    out->nviews = nviews;
+    out->ntris = ntris;
+    out->nloops = nloops;
+    out->npts = npts;
+    out->views = (const silk_silmap_view *)(const void *)views;
+    out->tri = (const uint32_t *)(const void *)tri;
+    out->adj = (const uint32_t *)(const void *)adj;
+    out->loop_start = (const uint32_t *)(const void *)start;
+    out->pts = (const silk_vec2 *)(const void *)pts;
+    return SILK_OK;
+}
+
+silk_status silk_model_silmap(const void *data, size_t len, const char *name, silk_silmap *out, silk_error *err)
+{
+    if (!name) name = "model";
+    memset(out, 0, sizeof *out);
+    const uint32_t one = 1;
+    if (*(const uint8_t *)&one != 1) return BAD("silhouette maps are read in place on little-endian hosts only");
+    silk_model m;
+    silk_model_section s;
+    silk_silmap map;
+    silk_status st = silk_model_open(data, len, name, &m, err);
+    if (st) return st;
+    if (!silk_model_find(&m, SILK_SECTION_SMAP, &s))
+        return BAD("no SMAP section (prepared without the silhouette map clip mode needs)");
+    if ((st = smap_check(&s, name, &map, err))) return st;
+    if ((uintptr_t)s.data % 4 != 0) return BAD("SMAP section: the model's bytes are not 4-byte aligned in memory");
+    *out = map;
+    return SILK_OK;
 }

@@ -353,9 +353,10 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
+    const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
     for (int x = xl; x < xr; x++) {
         uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
-        if (!zrow || z > zrow[x] - eq) {
+        if ((!mrow || (mrow[x >> 3] >> (x & 7) & 1)) && (!zrow || z > zrow[x] - eq)) {
             if (zrow) zrow[x] = z;
             if (wrow) wrow[x]++;
             if (h && h->fragment) {

@@ -21,7 +21,8 @@
  * asking for them is SILK_ERR_ARG.  -DSILK_NO_LINES leaves out the
  * pen-and-ink lines and --wire (lines.c and the rasterizer's lines, about
  * 7 KiB); with both flags every frame is drawn share by share, so the stored
- * frame's code goes too.
+ * frame's code goes too.  -DSILK_NO_CLIP_MODE likewise leaves out CLIP
+ * (clip.c and the silhouette interpolation, about 11 KiB).
  */
 #include <string.h>
 #include "smooth.h"
@@ -32,6 +33,7 @@
 #if defined(SILK_NO_LINES) && defined(SILK_NO_REFERENCE_MODES)
 #define STREAMED_ONLY 1       /* every frame this build can draw is drawn share by share */
 #endif
+#include "clip.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -49,6 +51,9 @@ void silk_render_opts_default(silk_render_opts *o)
     o->lines_polygonal = 0;
     o->line_rgb = 0x000000;
     o->line_feature_rgb = 0x000000;
+    o->silmap = NULL;
+    o->silmap_hint = 0;
+    o->clip_antialias = 1;
     o->clock = NULL;
 }
 
@@ -72,6 +77,7 @@ const char *silk_mode_name(silk_mode mode)
     case SILK_MODE_SMOOTH: return "smooth";
     case SILK_MODE_PN: return "pn";
     case SILK_MODE_BLEND: return "blend";
+    case SILK_MODE_CLIP: return "clip";
     }
     return "?";
 }
@@ -93,6 +99,7 @@ typedef struct frame {
     silk_stage_clock *clock;  /* per-stage timing, or NULL */
     silk_sil_frame sil;       /* SMOOTH: the plan */
     uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
+    silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -131,7 +138,8 @@ static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 
 static int by_shares(const silk_render_opts *o)
 {
-    return o->lines == SILK_LINES_NONE && (o->mode == SILK_MODE_FLAT || o->mode == SILK_MODE_SMOOTH);
+    return o->lines == SILK_LINES_NONE &&
+           (o->mode == SILK_MODE_FLAT || o->mode == SILK_MODE_SMOOTH || o->mode == SILK_MODE_CLIP);
 }
 
 static void share_part(frame *f, uint32_t t);
@@ -229,7 +237,7 @@ static void stored_part(frame *f, uint32_t k)
 #endif
 
 static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
-                                 const silk_hal *h, const silk_render_opts *o,
+                                 const silk_hal *h, const silk_render_opts *o, int band_rows,
                                  silk_frame_stats *stats, silk_error *err)
 {
     if (!a || !m || !v || !h || !o || !h->vertex || !h->fragment)
@@ -248,6 +256,28 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
 #endif
     memset(f, 0, sizeof *f);
     f->clock = o->clock;
+    (void)band_rows;   /* the stencil's height: clip mode's only */
+    if (o->mode == SILK_MODE_CLIP) {
+#ifdef SILK_NO_CLIP_MODE
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode is not built in (SILK_NO_CLIP_MODE)");
+#else
+        /* the hull drawn as flat draws a mesh, through the stencil */
+        if (!o->silmap)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode needs the model's silhouette map");
+        if (o->lines)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: no lines in clip mode (the outline is the map's)");
+        f->clip = silk_arena_alloc_top(a, sizeof *f->clip, SILK_MEM_FRAME);
+        if (!f->clip) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "silk_render: the arena is full");
+        silk_status st = silk_clip_prepare(f->clip, a, o->silmap, v, o->silmap_hint, band_rows, o->clip_antialias, err);
+        if (st != SILK_OK) return st;
+        stats->clip_tri = f->clip->info.tri;
+        stats->clip_points = f->clip->npts;
+        silk_clip *c = f->clip;
+        st = shares_prepare(f, a, m, v, h, o, stats, err);
+        f->clip = c;
+        return st;
+#endif
+    }
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
 #ifdef STREAMED_ONLY
     if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
@@ -344,6 +374,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     uint32_t t0 = silk_stage_start(f->clock);
     silk_target_clear(t, o->bg_rgb);
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+#ifndef SILK_NO_CLIP_MODE
+    if (f->clip) silk_clip_stencil(f->clip, t);
+#endif
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
      * near as the nearest, so each pixel is shaded once (docs/raster.md).
      * In reverse order: of fragments at equal depth the first drawn keeps
@@ -362,6 +395,12 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
     t->depth_equal = 0;
+#ifndef SILK_NO_CLIP_MODE
+    if (f->clip) {
+        t->mask = NULL;
+        silk_clip_antialias(f->clip, t, o->bg_rgb);
+    }
+#endif
 #ifndef SILK_NO_LINES
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
@@ -404,8 +443,9 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;
     frame f;
-    silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
+    silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
     if (st == SILK_OK) frame_draw(&f, o, t);
+    if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;
@@ -425,7 +465,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;
     frame f;
-    silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
+    silk_status st = frame_prepare(&f, a, m, v, h, o, band->rows, stats, err);
     const int rows = band->rows;
     if (st == SILK_OK && f.nparts > 1 && rows < band->height) share_rows(&f, a, band->height);
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
@@ -437,6 +477,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     }
     band->y0 = 0;
     band->rows = rows;
+    if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;

@@ -419,15 +419,20 @@ static void sweep_band(sweep *s, silk_fx ya, silk_fx yb)
         s->next++;
     }
     for (uint32_t i = 0; i < s->nact; i++) {
-        const ledge *d = &s->e[s->act[i]];
+        uint32_t id = s->act[i];
+        const ledge *d = &s->e[id];
         seg v = { line_x(d->y0, d->x0, d->y1, d->x1, ya), line_x(d->y0, d->x0, d->y1, d->x1, yb) };
-        /* insertion by the middle: edges do not cross inside a band */
+        /* insertion by the middle: edges do not cross inside a band.  The
+         * active list keeps the order found, so the next band, whose edges
+         * are mostly the same in the same order, sorts in about linear time */
         uint32_t j = i;
         while (j > 0 && (int64_t)s->x[j - 1].a + s->x[j - 1].b > (int64_t)v.a + v.b) {
             s->x[j] = s->x[j - 1];
+            s->act[j] = s->act[j - 1];
             j--;
         }
         s->x[j] = v;
+        s->act[j] = id;
     }
     /* intervals under the parity rule; two that meet (an edge shared by
      * two pieces of an interpolated outline) are one, and empty ones are

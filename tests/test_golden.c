@@ -32,6 +32,9 @@
 #include "../platform/platform.h"
 #include "../platform/png_read.h"
 #include "../tools/gen.h"
+#include "../tools/hull.h"
+#include "../tools/model_file.h"
+#include "../tools/silmap.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"
 
@@ -173,10 +176,11 @@ static int compare_golden(const silk_target *t, const char *name)
 }
 
 static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, const mode_case *mc,
-                        silk_pixfmt fmt, int one_row_bands)
+                        silk_pixfmt fmt, int one_row_bands, const silk_silmap *map, int antialias)
 {
     char name[128];
-    snprintf(name, sizeof name, "%s-%s-%s%s", mesh, vc->name, mc->name, fmt == SILK_PIX_RGB565 ? "-565" : "");
+    snprintf(name, sizeof name, "%s-%s-%s%s%s", mesh, vc->name, mc->name, map && !antialias ? "-centres" : "",
+             fmt == SILK_PIX_RGB565 ? "-565" : "");
     silk_view v;
     if (!tf_view_around_size(&f->m, vc->dir, vc->dist, vc->ortho, W, H, &v)) {
         CHECKF(0, "%s: no view", name);
@@ -193,6 +197,8 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
     ro.lines_polygonal = mc->polygonal;
     ro.wire = mc->wire;
     ro.bg_rgb = BG;
+    ro.silmap = map;
+    ro.clip_antialias = antialias;
 
     silk_arena_mark mk = silk_arena_top_mark(&f->a);
     size_t bpp = silk_pixfmt_bytes(fmt), bytes = (size_t)W * H * bpp;
@@ -238,13 +244,75 @@ static void golden_mesh(const char *mesh)
     if (got == 1) {
         for (size_t iv = 0; iv < sizeof views / sizeof views[0]; iv++)
             for (size_t im = 0; im < sizeof modes / sizeof modes[0]; im++)
-                golden_case(&f, mesh, &views[iv], &modes[im], SILK_PIX_RGB888, iv == 0);
+                golden_case(&f, mesh, &views[iv], &modes[im], SILK_PIX_RGB888, iv == 0, NULL, 0);
         /* RGB565: the default mode with and without lines, and flat, from the first view. */
-        golden_case(&f, mesh, &views[0], &modes[0], SILK_PIX_RGB565, 1);
-        golden_case(&f, mesh, &views[0], &modes[1], SILK_PIX_RGB565, 1);
-        golden_case(&f, mesh, &views[2], &modes[4], SILK_PIX_RGB565, 0);
+        golden_case(&f, mesh, &views[0], &modes[0], SILK_PIX_RGB565, 1, NULL, 0);
+        golden_case(&f, mesh, &views[0], &modes[1], SILK_PIX_RGB565, 1, NULL, 0);
+        golden_case(&f, mesh, &views[2], &modes[4], SILK_PIX_RGB565, 0, NULL, 0);
     }
     tm_fixture_free(&f);
+}
+
+/* A prepared model of a (2,3) knot of 2304 triangles in memory, as silk
+ * prepare makes one: its outer hull of 400 triangles with the detailed
+ * normals at its vertices (HULL), and its silhouette map of 42 views of
+ * 128 pixels (SMAP).  NULL when out of memory. */
+static uint8_t *knot_model(size_t *len)
+{
+    gen_params p;
+    gen_mesh gm;
+    gen_defaults(GEN_KNOT, &p);
+    p.p = 2; p.q = 3; p.R = 1; p.r = 0.4; p.tube = 0.2; p.segments = 96; p.bands = 12;
+    if (gen_build(&p, &gm) != 0) return NULL;
+    simp_mesh fine = { gm.nverts, gm.ntris, gm.pos, gm.tri, NULL }, h;
+    hull_opts ho;
+    hull_stats hs;
+    hull_fine hf = { NULL, NULL };
+    silmap_params mp;
+    silmap map;
+    silmap_fixed fx;
+    model_out mo = { 0 };
+    uint8_t *bytes = NULL;
+    hull_opts_default(&ho, 400);
+    silmap_params_default(&mp);
+    mp.level = 1;
+    mp.res = 128;
+    if (simp_copy(&fine, &h) == 0 && hull_run(&h, &ho, &hs, &hf) == 0 &&
+        silmap_build(gm.pos, gm.nverts, gm.tri, gm.ntris, &mp, &map) == 0) {
+        if (silmap_export(&map, &fx) == 0) {
+            if (model_add_mesh_doubles(&mo, SILK_SECTION_HULL, 0, h.nverts, h.pos, h.nverts, hf.normal, h.ntris,
+                                       h.tri, NULL) == 0 &&
+                model_add_silmap(&mo, &fx.map) == 0)
+                bytes = model_bytes(&mo, len);
+            silmap_fixed_free(&fx);
+        }
+        silmap_free(&map);
+    }
+    model_free(&mo);
+    simp_free(&h);
+    hull_fine_free(&hf);
+    gen_free(&gm);
+    return bytes;
+}
+
+static void golden_clip(void)
+{
+    size_t len = 0;
+    uint8_t *file = knot_model(&len);
+    CHECKF(file != NULL, "knot model: out of memory");
+    if (!file) return;
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
+    silk_silmap map;
+    f.opts.part = SILK_PART_HULL;
+    CHECKF(silk_load_model(file, len, "knot.silk", &f.opts, &f.a, &f.m, &f.err) == SILK_OK, "%s", f.err.msg);
+    CHECKF(silk_model_silmap(file, len, "knot.silk", &map, &f.err) == SILK_OK, "%s", f.err.msg);
+    static const mode_case clip = { "clip", SILK_MODE_CLIP, SILK_LINES_NONE, 0, 0 };
+    if (f.m.ntris)
+        for (size_t iv = 0; iv < sizeof views / sizeof views[0]; iv++)
+            for (int aa = 1; aa >= 0; aa--) golden_case(&f, "knot", &views[iv], &clip, SILK_PIX_RGB888, 1, &map, aa);
+    tm_fixture_free(&f);
+    free(file);
 }
 
 TEST(golden_sphere) { golden_mesh("sphere"); }
@@ -252,6 +320,7 @@ TEST(golden_torus) { golden_mesh("torus"); }
 TEST(golden_cone) { golden_mesh("cone"); }
 TEST(golden_knot) { golden_mesh("knot"); }
 TEST(golden_bunny) { golden_mesh("bunny"); }
+TEST(golden_knot_clip) { golden_clip(); }
 
 int main(int argc, char **argv)
 {
@@ -260,6 +329,7 @@ int main(int argc, char **argv)
     RUN(golden_torus);
     RUN(golden_cone);
     RUN(golden_knot);
+    RUN(golden_knot_clip);
     RUN(golden_bunny);
     if (update)
         printf("golden: %d changed, %d new, %d unchanged in %s\n", n_changed, n_new, n_same, golden_dir());

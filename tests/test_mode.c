@@ -11,7 +11,7 @@
 
 TEST(names_round_trip)
 {
-    const silk_mode all[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_PN, SILK_MODE_BLEND };
+    const silk_mode all[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_PN, SILK_MODE_BLEND, SILK_MODE_CLIP };
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) {
         silk_mode m = (silk_mode)99;
         uint32_t level = 99;

@@ -239,7 +239,7 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
         p += len + 1;
         continue;
     bad:
-        return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn or pnL (L 1..%u) separated "
+        return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn, pnL (L 1..%u) or clip separated "
                         "by commas", opt, (int)len, p, SILK_PN_MAX_LEVEL);
     }
 }
@@ -495,7 +495,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         VALUE();
         uint32_t level;
         if (silk_mode_parse(v, &o->render.mode, &level) != 0)
-            return cli_fail(-1, "--mode must be flat, smooth, pn, pnL (L 1..%u) or blend (got \"%s\")",
+            return cli_fail(-1, "--mode must be flat, smooth, pn, pnL (L 1..%u), blend or clip (got \"%s\")",
                             SILK_PN_MAX_LEVEL, v);
         if (level) o->render.level = level;
     } else if (cli_is(arg, "--level")) {
@@ -855,11 +855,24 @@ void cli_mesh_free(cli_mesh *m)
     memset(m, 0, sizeof *m);
 }
 
-int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
+int cli_silmap(const uint8_t *file, size_t len, const char *name, silk_silmap *out)
+{
+    silk_error err;
+    if (!silk_is_model(file, len))
+        return cli_fail(CLI_EXIT_INPUT, "%s: clip mode draws a prepared model (silk prepare FINE -o MODEL.silk "
+                        "--triangles N), not a mesh file", name);
+    if (silk_model_silmap(file, len, name, out, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    return 0;
+}
+
+int cli_scene_load(cli_scene *s, cli_scene_opts *o)
 {
     memset(s, 0, sizeof *s);
     cli_mesh lm;
-    int rc = cli_mesh_load(&lm, o->mesh_path, &o->load, !o->vis_brute, o->arena_bytes, raster_bytes(o),
+    silk_load_opts lo = o->load;
+    int clip = o->render.mode == SILK_MODE_CLIP;
+    if (clip) lo.part = SILK_PART_HULL;
+    int rc = cli_mesh_load(&lm, o->mesh_path, &lo, !o->vis_brute, o->arena_bytes, raster_bytes(o),
                            o->arena_doublings, o->quiet);
     /* the scene takes over the file and the arena */
     s->file = lm.file;
@@ -867,7 +880,9 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
     s->arena_buf = lm.buf;
     s->arena = lm.arena;
     s->mesh = lm.mesh;
+    if (!rc && clip) rc = cli_silmap(s->file, s->file_len, cli_input_name(o->mesh_path), &s->silmap);
     if (rc) return rc;
+    if (clip) o->render.silmap = &s->silmap;
     s->load_bytes = s->arena.bottom;
     if (o->orient_note) cli_orient_note(cli_input_name(o->mesh_path), &s->mesh);
 

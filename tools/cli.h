@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "silk/silk.h"
+#include "../src/silmap_interp.h"
 #include "../platform/platform.h"
 
 #define CLI_EXIT_INPUT 1      /* a file, a mesh or a render failed */
@@ -199,6 +200,7 @@ typedef struct cli_scene {
     silk_phong phong;
     silk_hal hal;
     size_t load_bytes;         /* arena bottom after loading the mesh */
+    silk_silmap silmap;        /* clip mode: the model's silhouette map, in file */
 } cli_scene;
 
 /* One line on stderr when loading turned triangles round, or found a
@@ -207,10 +209,16 @@ void cli_orient_note(const char *path, const silk_mesh *m);
 
 /* Read and load the mesh (with the orientation note unless o->orient_note
  * is 0), allocate the arena, set up the camera, the target (colour and
- * depth from the arena, purpose RASTER) and the Phong stages.
+ * depth from the arena, purpose RASTER) and the Phong stages.  In clip
+ * mode the mesh is the model's hull and o->render.silmap points at the
+ * scene's silhouette map.
  * Returns 0, or an exit code after printing the error; cli_scene_free
  * releases everything either way. */
-int cli_scene_load(cli_scene *s, const cli_scene_opts *o);
+int cli_scene_load(cli_scene *s, cli_scene_opts *o);
+
+/* The silhouette map of the prepared model in file (clip mode); 0 or an
+ * exit code after a one-line error. */
+int cli_silmap(const uint8_t *file, size_t len, const char *name, silk_silmap *out);
 void cli_scene_free(cli_scene *s);
 
 /* The camera for o and the loaded mesh: the options where given, the default

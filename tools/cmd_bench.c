@@ -79,6 +79,9 @@ typedef struct loaded {
     void *buf;
     silk_arena arena;
     silk_mesh mesh;
+    uint8_t *file;             /* the hull of a prepared model: the file, which holds its map */
+    silk_silmap silmap;
+    struct loaded *hull;       /* clip mode's mesh and map, when a mode is clip */
 } loaded;
 
 static void help(FILE *f)
@@ -99,7 +102,7 @@ static void help(FILE *f)
             "  --pair COARSE:FINE  a coarse mesh and its fine reference (repeatable)\n"
             "  --views N           views per projection along the camera path [12]\n"
             "  --size WxH          image size [640x480]\n"
-            "  --modes LIST        comma-separated: flat, smooth, blend, pnL (PN triangles\n"
+            "  --modes LIST        comma-separated: flat, smooth, blend, clip, pnL (PN triangles\n"
             "                      at level L = 1..%u) [flat,smooth,blend,pn2,pn3]\n"
             "  --projection ortho|perspective|both   [both]\n"
             "  --reps N            timed renders per view, the fastest kept [3]\n"
@@ -173,25 +176,36 @@ static void mesh_name(const char *path, char *out, size_t n)
 
 /* Load with room for the per-frame scratch on top: 8 MiB times 2^grow
  * besides the mesh (cli_mesh_load doubles it while the mesh does not fit). */
-static int load_mesh(loaded *l, const char *path, int vis, int grow)
+static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_part part)
 {
     memset(l, 0, sizeof *l);
     l->path = path;
     mesh_name(path, l->name, sizeof l->name);
     silk_load_opts lo;
     silk_load_opts_default(&lo);
+    lo.part = part;
     cli_mesh lm;
     int rc = cli_mesh_load(&lm, path, &lo, vis, 0, (size_t)8 << 20, grow, 1);
-    /* the arena is all a bench keeps */
-    free(lm.file);
+    /* the arena is all a bench keeps, and the hull's map */
     l->buf = lm.buf;
     l->arena = lm.arena;
     l->mesh = lm.mesh;
+    if (part == SILK_PART_HULL) {
+        l->file = lm.file;
+        if (!rc) rc = cli_silmap(lm.file, lm.file_len, lm.name, &l->silmap);
+    } else {
+        free(lm.file);
+    }
     return rc;
 }
 
 static void unload(loaded *l)
 {
+    if (l->hull) {
+        unload(l->hull);
+        free(l->hull);
+    }
+    free(l->file);
     free(l->buf);
     memset(l, 0, sizeof *l);
 }
@@ -272,9 +286,13 @@ static int measure(ctx *x, loaded *l, const silk_view *v, const silk_render_opts
     a->fell_back |= st.fell_back;
     double best = INFINITY;
     silk_frame_stats ignored;
+    /* clip mode's error is that of its stencil (pixel centres, as every
+     * mode draws them); its time includes the anti-aliased outline */
+    silk_render_opts timed = *ro;
+    timed.clip_antialias = 1;
     for (int r = 0; r < x->cfg->reps; r++) {
         double t0 = now_ms();
-        silk_render(ar, &l->mesh, v, &x->hal, ro, &x->fb.target, &ignored, &err);
+        silk_render(ar, &l->mesh, v, &x->hal, &timed, &x->fb.target, &ignored, &err);
         double t = now_ms() - t0;
         if (t < best) best = t;
     }
@@ -370,7 +388,13 @@ static int bench_proj(ctx *x, loaded *coarse, loaded *fine, int proj, acc *mode_
             if (a->failed) continue;
             ro.mode = c->mode[m].mode;
             if (c->mode[m].level) ro.level = c->mode[m].level;
-            if (measure(x, coarse, &view, &ro, a, k) != 0) {
+            loaded *drawn = coarse;
+            if (ro.mode == SILK_MODE_CLIP) {
+                drawn = coarse->hull;
+                ro.silmap = &drawn->silmap;
+                ro.clip_antialias = 0;
+            }
+            if (measure(x, drawn, &view, &ro, a, k) != 0) {
                 rc = CLI_EXIT_INPUT;   /* reported; the other modes go on */
                 continue;
             }
@@ -394,11 +418,19 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ro
         loaded coarse, fine;
         memset(&fine, 0, sizeof fine);
         rc = 0;
-        if ((rc = load_mesh(&coarse, coarse_path, 1, grow)) != 0) {
+        if ((rc = load_mesh(&coarse, coarse_path, 1, grow, SILK_PART_COARSE)) != 0) {
             unload(&coarse);
             return rc;
         }
-        if (fine_path && (rc = load_mesh(&fine, fine_path, 0, 0)) != 0) {
+        int clip = 0;
+        for (int m = 0; m < c->nmodes; m++) clip |= c->mode[m].mode == SILK_MODE_CLIP;
+        if (clip && (!(coarse.hull = malloc(sizeof *coarse.hull)) ||
+                     (rc = load_mesh(coarse.hull, coarse_path, 0, grow, SILK_PART_HULL)) != 0)) {
+            if (!coarse.hull) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
+            unload(&coarse);
+            return rc;
+        }
+        if (fine_path && (rc = load_mesh(&fine, fine_path, 0, 0, SILK_PART_COARSE)) != 0) {
             unload(&coarse);
             unload(&fine);
             return rc;

@@ -125,6 +125,14 @@ static void print_frame(const cli_scene *s, const cli_scene_opts *o, const silk_
     line("  triangles drawn", "%u", st->tris_drawn);
     line("  frame bytes", "%zu", st->frame_bytes);
     line("  fell back", "%s", st->fell_back ? "yes (the arena ran out; part of the frame not smoothed)" : "no");
+    if (o->render.mode == SILK_MODE_CLIP) {
+        const silk_silmap *m = &s->silmap;
+        line("  map views", "%u (%u polytope triangles, %u outline points, %u bytes)", m->nviews, m->ntris, m->npts,
+             silk_silmap_bytes(m));
+        line("  map triangle", "%u", st->clip_tri);
+        line("  polygon vertices", "%u", st->clip_points);
+        line("  stencil spans", "%u", st->clip_spans);
+    }
 }
 
 /* ---- JSON ------------------------------------------------------------------------------ */
@@ -177,9 +185,14 @@ static void print_json(const cli_scene *s, const cli_scene_opts *o, const silk_f
            c->ortho ? "orthographic" : "perspective", cli_fx_to_double(c->fov_deg),
            cli_fx_to_double(c->ortho_half_height));
     printf("    \"silhouette_triangles\": %u, \"bridges\": %u, \"samples\": %u, \"moved_vertices\": %u,\n"
-           "    \"triangles_drawn\": %u, \"frame_bytes\": %zu, \"fell_back\": %s}\n}\n",
+           "    \"triangles_drawn\": %u, \"frame_bytes\": %zu, \"fell_back\": %s",
            st->silhouette_tris, st->bridges, st->samples, st->moved_vertices, st->tris_drawn, st->frame_bytes,
            st->fell_back ? "true" : "false");
+    if (o->render.mode == SILK_MODE_CLIP)
+        printf(",\n    \"map_views\": %u, \"map_bytes\": %u, \"map_triangle\": %u, \"polygon_vertices\": %u, "
+               "\"stencil_spans\": %u", s->silmap.nviews, silk_silmap_bytes(&s->silmap), st->clip_tri, st->clip_points,
+               st->clip_spans);
+    printf("}\n}\n");
 }
 
 int cmd_info(int argc, char **argv)

@@ -105,9 +105,11 @@ static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, fram
         if (silk_view_init(&view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         silk_phong_default(&s->phong, &view);
         silk_hal_phong(&s->hal, &s->phong);
+        int clip = o->render.mode == SILK_MODE_CLIP;
         for (int mode = 0; mode < 2 && !rc; mode++) {
             silk_render_opts ro = o->render;
-            ro.mode = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+            ro.mode = clip ? SILK_MODE_CLIP : mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+            if (clip && mode) ro.clip_antialias = 0;   /* both kinds of stencil */
             silk_frame_stats fs;
             if (silk_render_bands(&s->arena, &s->mesh, &view, &s->hal, &ro, band, &sink, &fs, &err) != SILK_OK)
                 return cli_fail(CLI_EXIT_INPUT, "%s: %s", o->mesh_path, err.msg);
@@ -128,8 +130,9 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
         return cli_fail(CLI_EXIT_INPUT, "profile: %s: %s", csv_path, strerror(errno));
     if (r.csv) fprintf(r.csv, "area,item,bytes\n");
     printf("silk profile: %s on %s (measured in this process)\n", mesh, SILK_BOARD_NAME);
-    printf("frame %dx%d, bands of %d rows; %d frames rendered (flat and smooth from %d views)\n", o->width, o->height,
-           rows, 2 * SILK_BOARD_VIEWS, SILK_BOARD_VIEWS);
+    int clip = o->render.mode == SILK_MODE_CLIP;
+    printf("frame %dx%d, bands of %d rows; %d frames rendered (%s from %d views)\n", o->width, o->height, rows,
+           2 * SILK_BOARD_VIEWS, clip ? "clip, anti-aliased and not," : "flat and smooth", SILK_BOARD_VIEWS);
 
     heading("MESH (bytes; loaded into the arena: a host has no flash)");
     silk_mesh_bytes mb;
@@ -145,6 +148,10 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     row(&r, "model", "model visibility", vis, NULL);
     size_t model = mb.total + vis;
     row(&r, "model", "model total", model, NULL);
+    if (clip) {
+        heading("FLASH (bytes; read in place from the model file)");
+        row(&r, "flash", "silhouette map", silk_silmap_bytes(&s->silmap), "views, polytope, outlines");
+    }
 
     heading("RAM (bytes; arena high-water marks by purpose)");
     size_t load_only = 0;
@@ -164,6 +171,7 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     /* Loading scratch is released before the first frame. */
     size_t total = s->load_bytes + band_bytes + ff->frame_peak;
     if (load_only > band_bytes + ff->frame_peak) total = s->load_bytes + load_only;
+    if (clip) row(&r, "ram", "stencil", (size_t)rows * (((size_t)o->width + 7) / 8), "one band's bits, in the frame peak");
     row(&r, "ram", "stack", 0, "not measured on a host");
     row(&r, "ram", "ram total", total, "mesh + band buffers + frame peak");
     if (ff->fell) printf("\n  %ld frames fell back (the arena ran out)\n", ff->fell);
@@ -178,11 +186,12 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     return 0;
 }
 
-static int profile(const char *mesh, const char *csv_path, int check)
+static int profile(const char *mesh, const char *csv_path, int check, int clip)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);   /* the board's frame size and format */
     o.mesh_path = mesh;
+    if (clip) o.render.mode = SILK_MODE_CLIP;
     int rows = SILK_BOARD_BAND_ROWS < 1 || SILK_BOARD_BAND_ROWS > o.height ? o.height : SILK_BOARD_BAND_ROWS;
 
     cli_scene s;
@@ -221,7 +230,7 @@ static int profile(const char *mesh, const char *csv_path, int check)
 static void help(FILE *f)
 {
     fprintf(f,
-            "usage: silk profile MESH [--board " SILK_BOARD_NAME "] [--csv FILE] [--check]\n"
+            "usage: silk profile MESH [--board " SILK_BOARD_NAME "] [--csv FILE] [--check] [--mode clip]\n"
             "\n"
             "Where every byte of RAM goes when this board (" SILK_BOARD_NAME ", the board this silk was\n"
             "built for: %dx%d, bands of %d rows) renders MESH: the mesh in the arena by\n"
@@ -235,6 +244,8 @@ static void help(FILE *f)
             "  --board NAME         the board; only " SILK_BOARD_NAME " (the one built for)\n"
             "  --csv FILE           the table as CSV (area,item,bytes) too\n"
             "  --check              exit 1 when a frame fell back (the arena ran out)\n"
+            "  --mode clip          profile clip mode instead (a prepared model's hull and\n"
+            "                       map): the map's flash bytes, the stencil's RAM\n"
             "\n"
             "examples:\n"
             "  silk profile ../shared/meshes/bunny-500.obj\n"
@@ -245,7 +256,7 @@ static void help(FILE *f)
 int cmd_profile(int argc, char **argv)
 {
     const char *mesh = NULL, *csv = NULL;
-    int check = 0;
+    int check = 0, clip = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v;
         if (cli_help(a, help)) return 0;
@@ -258,10 +269,15 @@ int cmd_profile(int argc, char **argv)
             if (!(csv = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
         } else if (strcmp(a, "--check") == 0) {
             check = 1;
+        } else if (cli_is(a, "--mode")) {
+            if (!(v = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (strcmp(v, "clip") != 0)
+                return cli_fail(CLI_EXIT_USAGE, "profile: --mode takes clip (flat and smooth are profiled without it)");
+            clip = 1;
         } else if (cli_mesh_arg("profile", a, &mesh)) {
             return CLI_EXIT_USAGE;
         }
     }
     if (!mesh) return cli_fail(CLI_EXIT_USAGE, "profile: no mesh given (silk profile MESH)");
-    return profile(mesh, csv, check);
+    return profile(mesh, csv, check, clip);
 }

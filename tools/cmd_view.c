@@ -52,7 +52,22 @@ static int load_scene(viewer *v)
      * the scene gets a 1x1 target and no raster bytes to speak of. */
     o.width = o.height = 1;
     o.arena_doublings = v->doublings;
-    return cli_scene_load(&v->s, &o);
+    int rc = cli_scene_load(&v->s, &o);
+    /* clip mode draws the model's hull through its map (cli_scene_load) */
+    v->ro.silmap = o.render.mode == SILK_MODE_CLIP ? &v->s.silmap : NULL;
+    return rc;
+}
+
+/* Into clip mode or out of it: the scene's mesh is then the hull, or the
+ * coarse mesh.  A model without a hull and map says so and stays. */
+static int switch_scene(viewer *v)
+{
+    silk_mode was = v->o.render.mode;
+    if ((v->ro.mode == SILK_MODE_CLIP) == (was == SILK_MODE_CLIP)) return 0;
+    v->o.render.mode = v->ro.mode;
+    if (load_scene(v) == 0) return 0;
+    v->ro.mode = v->o.render.mode = was;
+    return load_scene(v);
 }
 
 /* The camera of the orbit state, for a w x h frame. */
@@ -214,17 +229,18 @@ void viewer_zoom(viewer *v, double notches)
 
 int viewer_key(viewer *v, int key)
 {
-    static const silk_mode cycle[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN };
+    static const silk_mode cycle[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN,
+                                       SILK_MODE_CLIP };
     int was_dirty = v->dirty;
     v->dirty = 1;
     switch (key) {
-    case '1': case '2': case '3': case '4':
+    case '1': case '2': case '3': case '4': case '5':
         v->ro.mode = cycle[key - '1'];
         break;
     case 'm':
-        for (int i = 0; i < 4; i++)
+        for (int i = 0; i < 5; i++)
             if (cycle[i] == v->ro.mode) {
-                v->ro.mode = cycle[(i + 1) % 4];
+                v->ro.mode = cycle[(i + 1) % 5];
                 break;
             }
         break;
@@ -266,7 +282,7 @@ int viewer_key(viewer *v, int key)
 static void mode_text(const silk_render_opts *ro, char *buf, size_t n)
 {
     if (ro->mode == SILK_MODE_PN) snprintf(buf, n, "pn level %u", (unsigned)ro->level);
-    else if (ro->mode == SILK_MODE_FLAT) snprintf(buf, n, "flat");
+    else if (ro->mode == SILK_MODE_FLAT || ro->mode == SILK_MODE_CLIP) snprintf(buf, n, "%s", silk_mode_name(ro->mode));
     else snprintf(buf, n, "%s tol %g", silk_mode_name(ro->mode), cli_fx_to_double(ro->tolerance_px));
 }
 
@@ -329,12 +345,15 @@ int viewer_frame(viewer *v)
         clamp_orbit(v);
     }
     for (;;) {
-        int rc = update_camera(v);
+        int rc = switch_scene(v);
+        if (!rc) rc = update_camera(v);
         if (rc) return rc;
         silk_error err;
         double t0 = now_ms();
         if (silk_render(&v->s.arena, &v->s.mesh, &v->view, &v->hal, &v->ro, &v->t, &v->stats, &err) != SILK_OK)
             return cli_fail(CLI_EXIT_INPUT, "%s: %s", v->o.mesh_path, err.msg);
+        /* the next frame's search for the eye starts where this one's ended */
+        v->ro.silmap_hint = v->stats.clip_tri;
         double t1 = now_ms();
         /* As `silk render` does: a frame that ran out of scratch gets a
          * larger arena (unless --arena fixed it) and is drawn again. */
@@ -423,7 +442,7 @@ static int run_benchmark(viewer *v, long n)
 }
 
 /* --events: words separated by blanks, applied in order:
- *   a key as itself (1 w l + - [ ] o s h r m), "space", "left" "right" "up"
+ *   a key as itself (1..5 w l + - [ ] o s h r m), "space", "left" "right" "up"
  *   "down", "drag:DX,DY" (orbit), "pan:DX,DY", "wheel:N", "size:WxH",
  *   "shot:PATH" (a screenshot to PATH). */
 static int run_events(viewer *v, const char *script)
@@ -448,7 +467,7 @@ static int run_events(viewer *v, const char *script)
         char extra;
         for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
             if (strcmp(word, named[i].name) == 0) key = named[i].key;
-        if (key < 0 && len == 1 && strchr("1234mwlchor+-=[]sq", word[0])) key = word[0];
+        if (key < 0 && len == 1 && strchr("12345mwlchor+-=[]sq", word[0])) key = word[0];
         if (key >= 0) rc = viewer_key(v, key);
         else if (sscanf(word, "drag:%lf,%lf%c", &a, &b, &extra) == 2) viewer_orbit(v, a, b);
         else if (sscanf(word, "pan:%lf,%lf%c", &a, &b, &extra) == 2) viewer_pan(v, a, b);
@@ -484,7 +503,7 @@ static void help(FILE *f)
             "  right or middle drag pan\n"
             "  wheel                zoom\n"
             "keys:\n"
-            "  1 2 3 4              mode: flat, smooth, blend, pn     m  next mode\n"
+            "  1 2 3 4 5            mode: flat, smooth, blend, pn, clip  m  next mode\n"
             "  w                    wireframe; triangles added by re-meshing in red\n"
             "  l                    lines: silhouette (blue) and feature curves (green) over\n"
             "                       the surface, then alone, then off\n"

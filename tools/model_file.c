@@ -1,6 +1,7 @@
 /*
  * model_file.c - laying out and writing a prepared model (model_file.h).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,6 +30,14 @@ int model_add(model_out *m, uint32_t type, uint32_t flags, const void *data, siz
 int model_add_mesh(model_out *m, uint32_t nverts, const silk_vec3 *pos, uint32_t nnormals, const silk_vec3 *normal,
                    uint32_t ntris, const uint32_t *tri, const uint32_t *tri_normal)
 {
+    return model_add_mesh_as(m, SILK_SECTION_MESH, SILK_SECTION_REQUIRED, nverts, pos, nnormals, normal, ntris, tri,
+                             tri_normal);
+}
+
+int model_add_mesh_as(model_out *m, uint32_t type, uint32_t flags, uint32_t nverts, const silk_vec3 *pos,
+                      uint32_t nnormals, const silk_vec3 *normal, uint32_t ntris, const uint32_t *tri,
+                      const uint32_t *tri_normal)
+{
     size_t size = 16 + 12 * (size_t)nverts + 12 * (size_t)nnormals + 24 * (size_t)ntris;
     uint8_t *b = malloc(size), *p = b;
     if (!b) return -1;
@@ -40,7 +49,56 @@ int model_add_mesh(model_out *m, uint32_t nverts, const silk_vec3 *pos, uint32_t
         wr32(p, (uint32_t)normal[i].x), wr32(p + 4, (uint32_t)normal[i].y), wr32(p + 8, (uint32_t)normal[i].z);
     for (size_t i = 0; i < 3 * (size_t)ntris; i++, p += 4) wr32(p, tri[i]);
     for (size_t i = 0; i < 3 * (size_t)ntris; i++, p += 4) wr32(p, tri_normal[i]);
-    int rc = model_add(m, SILK_SECTION_MESH, SILK_SECTION_REQUIRED, b, size);
+    int rc = model_add(m, type, flags, b, size);
+    free(b);
+    return rc;
+}
+
+static silk_fx to_fx(double x) { return (silk_fx)llround(x * 65536.0); }
+
+int model_add_mesh_doubles(model_out *m, uint32_t type, uint32_t flags, uint32_t nverts, const double *pos,
+                           uint32_t nnormals, const double *normal, uint32_t ntris, const uint32_t *tri,
+                           const uint32_t *tri_normal)
+{
+    silk_vec3 *p = malloc((nverts ? nverts : 1) * sizeof *p);
+    silk_vec3 *n = malloc((nnormals ? nnormals : 1) * sizeof *n);
+    int rc = -1;
+    if (p && n) {
+        /* Input vertices and hull vertices lie on the Q16.16 grid: exact. */
+        for (uint32_t i = 0; i < nverts; i++) p[i] = silk_v3(to_fx(pos[3 * i]), to_fx(pos[3 * i + 1]), to_fx(pos[3 * i + 2]));
+        for (uint32_t i = 0; i < nnormals; i++)
+            n[i] = silk_v3(to_fx(normal[3 * i]), to_fx(normal[3 * i + 1]), to_fx(normal[3 * i + 2]));
+        rc = model_add_mesh_as(m, type, flags, nverts, p, nnormals, n, ntris, tri, tri_normal ? tri_normal : tri);
+    }
+    free(p);
+    free(n);
+    return rc;
+}
+
+int model_add_silmap(model_out *m, const silk_silmap *map)
+{
+    const uint32_t nv = map->nviews, nt = map->ntris, nl = map->nloops, np = map->npts;
+    size_t size = 36 + 72 * (size_t)nv + 24 * (size_t)nt + 4 * ((size_t)nl + 1) + 8 * (size_t)np;
+    uint8_t *b = malloc(size), *p = b;
+    if (!b) return -1;
+    wr32(p, SILK_SMAP_VERSION), wr32(p + 4, nv), wr32(p + 8, nt), wr32(p + 12, nl), wr32(p + 16, np);
+    wr32(p + 20, (uint32_t)map->centre.x), wr32(p + 24, (uint32_t)map->centre.y), wr32(p + 28, (uint32_t)map->centre.z);
+    wr32(p + 32, 0);
+    p += 36;
+    for (uint32_t i = 0; i < nv; i++) {
+        const silk_silmap_view *v = &map->views[i];
+        const silk_vec3 *vec[4] = { &v->cam.eye, &v->cam.right, &v->cam.up, &v->cam.fwd };
+        for (int k = 0; k < 4; k++, p += 12)
+            wr32(p, (uint32_t)vec[k]->x), wr32(p + 4, (uint32_t)vec[k]->y), wr32(p + 8, (uint32_t)vec[k]->z);
+        wr32(p, (uint32_t)v->cam.focal), wr32(p + 4, (uint32_t)v->cam.cx), wr32(p + 8, (uint32_t)v->cam.cy);
+        wr32(p + 12, (uint32_t)v->cam.ortho), wr32(p + 16, v->first_loop), wr32(p + 20, v->nloops);
+        p += 24;
+    }
+    for (size_t i = 0; i < 3 * (size_t)nt; i++, p += 4) wr32(p, map->tri[i]);
+    for (size_t i = 0; i < 3 * (size_t)nt; i++, p += 4) wr32(p, map->adj[i]);
+    for (size_t i = 0; i <= nl; i++, p += 4) wr32(p, map->loop_start[i]);
+    for (size_t i = 0; i < np; i++, p += 8) wr32(p, (uint32_t)map->pts[i].x), wr32(p + 4, (uint32_t)map->pts[i].y);
+    int rc = model_add(m, SILK_SECTION_SMAP, 0, b, size);
     free(b);
     return rc;
 }

@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "silk/silk.h"
+#include "../src/silmap_interp.h"
 
 typedef struct model_out {
     uint32_t n;
@@ -24,6 +25,21 @@ int model_add(model_out *m, uint32_t type, uint32_t flags, const void *data, siz
  * normal of each corner.  0 or -1. */
 int model_add_mesh(model_out *m, uint32_t nverts, const silk_vec3 *pos, uint32_t nnormals, const silk_vec3 *normal,
                    uint32_t ntris, const uint32_t *tri, const uint32_t *tri_normal);
+
+/* The same layout as another section type (HULL). */
+int model_add_mesh_as(model_out *m, uint32_t type, uint32_t flags, uint32_t nverts, const silk_vec3 *pos,
+                      uint32_t nnormals, const silk_vec3 *normal, uint32_t ntris, const uint32_t *tri,
+                      const uint32_t *tri_normal);
+
+/* The same from doubles (rounded to Q16.16); tri_normal NULL: one normal
+ * per vertex. */
+int model_add_mesh_doubles(model_out *m, uint32_t type, uint32_t flags, uint32_t nverts, const double *pos,
+                           uint32_t nnormals, const double *normal, uint32_t ntris, const uint32_t *tri,
+                           const uint32_t *tri_normal);
+
+/* An SMAP section: the silhouette map in the layout silk_model_silmap
+ * reads.  0 or -1. */
+int model_add_silmap(model_out *m, const silk_silmap *map);
 
 /* The whole file in one malloc'd buffer; NULL when out of memory. */
 uint8_t *model_bytes(const model_out *m, size_t *len);

@@ -30,7 +30,7 @@ BOARD_ARENA_BYTES := 10112
 
 BOARD_CROSS := arm-none-eabi-
 BOARD_ARCH  := -mcpu=cortex-m0 -mthumb
-BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES
+BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES -DSILK_NO_CLIP_MODE
 # The tick counter: TIMER0 of the nRF51 at 16 MHz.  -icount shift=0: one
 # instruction is 1 ns of virtual time, so a tick is 62.5 instructions.
 BOARD_TIMER := platform/mps2/timer_nrf51.c

@@ -30,8 +30,9 @@ BOARD_CROSS := arm-none-eabi-
 BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # The firmware draws flat and smooth only; the reference methods (PN,
 # blend) stay in the host library, where they are measured against, and so
-# do the pen-and-ink lines and --wire.
-BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES
+# do the pen-and-ink lines and --wire, and clip mode (11 KiB of code; its
+# per-frame outline does not fit the board's RAM yet).
+BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE
 # Mesh indices in 16 bits: the packed model's index arrays and the frame's
 # plan records take half the bytes (`silk pack` refuses a model with more
 # than 65 534 vertices, normals, triangles or edges for it).  The host build

@@ -111,11 +111,19 @@ typedef enum silk_orient_mode {
     SILK_ORIENT_KEEP          /* the file's corner order, as it is */
 } silk_orient_mode;
 
+/* Which mesh of a prepared model to load (docs/formats.md): what flat,
+ * smooth, pn and blend draw, or the outer hull clip mode draws. */
+typedef enum silk_model_part {
+    SILK_PART_COARSE = 0,     /* the MESH section, or the hull when the model has none */
+    SILK_PART_HULL            /* the HULL section */
+} silk_model_part;
+
 typedef struct silk_load_opts {
     silk_decimal scale;       /* coordinates are multiplied by this before rounding; {1,0} = none */
     silk_fx crease_deg;       /* dihedral angle (degrees) above which an edge is a feature */
     silk_normals_source normals;
     silk_orient_mode orient;
+    silk_model_part part;     /* which mesh of a prepared model (silk/model.h) */
 } silk_load_opts;
 
 /* Documented default crease angle; see docs/formats.md for how it was chosen. */

@@ -31,6 +31,13 @@
 /* The coarse mesh for flat, smooth, pn and blend: vertices on the detailed
  * surface, the detailed surface's normals at them. */
 #define SILK_SECTION_MESH SILK_SECTION_TYPE('M', 'E', 'S', 'H')
+/* The outer hull for clip mode (the MESH layout): a coarse mesh that holds
+ * the detailed one, with the detailed surface's normal at each vertex's
+ * closest point there. */
+#define SILK_SECTION_HULL SILK_SECTION_TYPE('H', 'U', 'L', 'L')
+/* The silhouette map of the detailed model that goes with the hull. */
+#define SILK_SECTION_SMAP SILK_SECTION_TYPE('S', 'M', 'A', 'P')
+#define SILK_SMAP_VERSION 1        /* a reader refuses another map layout */
 
 #define SILK_SECTION_REQUIRED 1u   /* flags bit 0: a reader that does not know the type must refuse the file */
 
@@ -61,9 +68,20 @@ int silk_model_find(const silk_model *m, uint32_t type, silk_model_section *out)
 /* The model's MESH section as a silk_mesh, like silk_load_obj: positions
  * and triangles in the arena, the file's normals used unless opts->normals
  * is SILK_NORMALS_COMPUTE.  opts->scale must be 1 (the model was scaled
- * when it was prepared). */
+ * when it was prepared).  opts->part picks the representation: the coarse
+ * mesh (MESH, or HULL when the file has no MESH) or the hull (HULL). */
 silk_status silk_load_model(const void *data, size_t len, const char *name, const silk_load_opts *opts,
                             silk_arena *a, silk_mesh *out, silk_error *err);
+
+/* The model's silhouette map (docs/formats.md "SMAP") as a silk_silmap
+ * (src/silmap_interp.h) whose arrays point into the caller's bytes, so a
+ * model in flash keeps its map there.  Every count, index and number the
+ * interpolation relies on is checked.  The bytes must be 4-byte aligned
+ * (the arrays are read in place) and the host little-endian.  SILK_OK,
+ * or SILK_ERR_PARSE with the reason (also when there is no map). */
+struct silk_silmap;
+silk_status silk_model_silmap(const void *data, size_t len, const char *name, struct silk_silmap *out,
+                              silk_error *err);
 
 /* CRC-32 (IEEE 802.3, as zlib and PNG): crc of the bytes, continuing from
  * crc (0 to start). */

@@ -37,6 +37,8 @@ typedef struct silk_target {
     int depth_equal;         /* 0: draw where nearer than the depth buffer; 1: where as near, for the
                                 shading pass after a depth-only pass (silk_render), so that each
                                 pixel is shaded once */
+    const uint8_t *mask;     /* optional stencil over the band (clip mode): rows of (width + 7) / 8 bytes,
+                                bit x & 7 of byte x >> 3; triangles draw only where the bit is set */
 } silk_target;
 
 /* Output of the vertex stage. */

@@ -34,7 +34,8 @@ typedef enum silk_mode {
     SILK_MODE_FLAT = 0,      /* the coarse mesh as it is, Phong shaded */
     SILK_MODE_SMOOTH = 1,    /* silhouette smoothing (paper section III) */
     SILK_MODE_PN = 2,        /* PN triangles (Vlachos et al. 2001), uniformly tessellated */
-    SILK_MODE_BLEND = 3      /* silhouetteness blending (Dyken & Reimers), docs/methods.md */
+    SILK_MODE_BLEND = 3,     /* silhouetteness blending (Dyken & Reimers), docs/methods.md */
+    SILK_MODE_CLIP = 4       /* the outer hull clipped to the detailed model's silhouette (docs/clipping.md) */
 } silk_mode;
 
 /* The normal patch of PN mode: Vlachos' quadratic one, or the corner
@@ -106,10 +107,16 @@ typedef struct silk_render_opts {
     uint32_t line_rgb;       /* silhouette lines */
     uint32_t line_feature_rgb; /* feature lines */
     silk_stage_clock *clock; /* per-stage timing, or NULL (above) */
+    /* CLIP: the model's silhouette map (silk_model_silmap), the polytope
+     * triangle to start looking for the eye from (the last frame's
+     * silk_frame_stats.clip_tri), and whether the outline is anti-aliased */
+    const struct silk_silmap *silmap;
+    uint32_t silmap_hint;
+    int clip_antialias;
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);
-/* "flat", "smooth", "pn", "blend"; "?" for anything else. */
+/* "flat", "smooth", "pn", "blend", "clip"; "?" for anything else. */
 const char *silk_mode_name(silk_mode mode);
 /* The inverse (src/mode.c): a name silk_mode_name returns, or "pnL" for PN
  * triangles at level L (1..SILK_PN_MAX_LEVEL, no leading zero).  Sets *mode
@@ -121,6 +128,9 @@ typedef struct silk_frame_stats {
     uint32_t silhouette_tris, bridges, samples, tris_drawn, moved_vertices;
     size_t frame_bytes;      /* per-frame arena bytes at the frame's peak */
     int fell_back;           /* 1 if the arena ran out and part of the frame was drawn unsmoothed */
+    uint32_t clip_tri;       /* CLIP: the polytope triangle the eye was found in */
+    uint32_t clip_points;    /* CLIP: vertices of the interpolated outline polygon */
+    uint32_t clip_spans;     /* CLIP: runs of stencil pixels over the frame's rows */
 } silk_frame_stats;
 
 silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
