@@ -37,6 +37,8 @@ typedef struct silk_target {
     int depth_equal;         /* 0: draw where nearer than the depth buffer; 1: where as near, for the
                                 shading pass after a depth-only pass (silk_render), so that each
                                 pixel is shaded once */
+    int cull_back;           /* 1: skip triangles seen from behind (clockwise on the screen after
+                                snapping), set by silk_render where they cannot show */
 } silk_target;
 
 /* Output of the vertex stage. */
