@@ -317,6 +317,14 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     return SILK_OK;
 }
 
+/* Whether point p lies in front of the near plane as the rasterizer clips:
+ * z >= -w (raster.c), strictly. */
+static int before_near(const silk_view *v, silk_vec3 p)
+{
+    silk_vec4 c = silk_view_clip(v, p);
+    return c.w > 0 && (int64_t)c.z + c.w > 0;
+}
+
 /* Whether the frame's back faces cannot show, so the rasterizer may skip
  * them.  A closed surface wound outward (silk_mesh.closed_outward) seen
  * from outside hides its back faces behind its front faces: along any ray
@@ -324,7 +332,9 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
  * and is the nearest.  The rasterizer's snapped triangles still form a
  * closed surface in screen x, y and depth, so this holds pixel for pixel.
  * The eye is outside when the whole mesh lies in front of the near plane
- * (then also no triangle is cut open by it); the default vertex stage's
+ * (then also no triangle is cut open by it): its bounding box when that
+ * does, else every vertex (a camera fitted to the bounding sphere may cut
+ * the box's corners); the default vertex stage's
  * view tells where the mesh goes (a stage of the caller's own may move or
  * mirror it).  FLAT only: SMOOTH re-meshes and moves vertices near the
  * silhouette, and PN and BLEND bulge. */
@@ -333,12 +343,13 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
     const silk_view *v = silk_hal_vertex_view(h);
     if (!m->closed_outward || !v || o->mode != SILK_MODE_FLAT) return 0;
     (void)f;
-    for (int i = 0; i < 8; i++) {
-        silk_vec3 p = silk_v3(i & 1 ? m->bbox_max.x : m->bbox_min.x, i & 2 ? m->bbox_max.y : m->bbox_min.y,
-                              i & 4 ? m->bbox_max.z : m->bbox_min.z);
-        silk_vec4 c = silk_view_clip(v, p);
-        if (c.w <= 0 || (int64_t)c.z + c.w <= 0) return 0;   /* near plane: z >= -w (raster.c) */
-    }
+    int corners_before = 1;   /* the bounding box's: then every vertex is */
+    for (int i = 0; corners_before && i < 8; i++)
+        corners_before = before_near(v, silk_v3(i & 1 ? m->bbox_max.x : m->bbox_min.x,
+                                                i & 2 ? m->bbox_max.y : m->bbox_min.y,
+                                                i & 4 ? m->bbox_max.z : m->bbox_min.z));
+    for (uint32_t i = 0; !corners_before && i < m->nverts; i++)
+        if (!before_near(v, m->pos[i])) return 0;
     return 1;
 }
 
