@@ -77,6 +77,7 @@ typedef struct frame {
     uint32_t *vc_tag;
     uint32_t vc_mask;
     int cull;                 /* back faces cannot show (back_faces_hidden) */
+    int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -184,7 +185,9 @@ static void share_part(frame *f, uint32_t t)
     g->nvrec = g->ntri = g->ncurve = 0;
     if (f->smooth) silk_remesh_emit_tri(&f->sil, g, t);
     else silk_frame_flat_emit_tri(g, t);
+    f->plain = g->ntri == 1;
     for (uint32_t i = 0; i < g->nvrec; i++) {
+        f->plain &= g->vrec[i].kind == SILK_VREC_CORNER;
         if (f->vc && g->vrec[i].kind == SILK_VREC_CORNER) corner_cached(f, &g->vrec[i], &f->cache[i]);
         else f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
     }
@@ -336,13 +339,14 @@ static int before_near(const silk_view *v, silk_vec3 p)
  * does, else every vertex (a camera fitted to the bounding sphere may cut
  * the box's corners); the default vertex stage's
  * view tells where the mesh goes (a stage of the caller's own may move or
- * mirror it).  FLAT only: SMOOTH re-meshes and moves vertices near the
- * silhouette, and PN and BLEND bulge. */
+ * mirror it).  FLAT, and in SMOOTH frames drawn share by share only the
+ * input triangles drawn as they are (frame_draw): SMOOTH re-meshes and
+ * moves vertices near the silhouette, where the outline is made of both
+ * sides, so those triangles are all drawn; PN and BLEND bulge. */
 static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
 {
     const silk_view *v = silk_hal_vertex_view(h);
-    if (!m->closed_outward || !v || o->mode != SILK_MODE_FLAT) return 0;
-    (void)f;
+    if (!m->closed_outward || !v || (o->mode != SILK_MODE_FLAT && f->part != share_part)) return 0;
     int corners_before = 1;   /* the bounding box's: then every vertex is */
     for (int i = 0; corners_before && i < 8; i++)
         corners_before = before_near(v, silk_v3(i & 1 ? m->bbox_max.x : m->bbox_min.x,
@@ -392,10 +396,10 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
-            t->cull_back = pass <= 0 && f->cull;   /* --wire draws every edge */
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
             if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
             f->part(f, k);
+            t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
             draw_tris(f, o, t, pass);
         }
     t->depth_equal = t->cull_back = 0;
