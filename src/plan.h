@@ -39,7 +39,8 @@
 enum {
     SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
-    SILK_TS_FRONT = 8       /* front-facing (computed only for triangles with a feature side) */
+    SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
+    SILK_TS_CONCAVE = 16    /* its silhouette segment is concave (III-E; set by silk_remesh_plan) */
 };
 
 /* A silhouette point (eqs. 6-7): one normal pair on one edge. */
@@ -92,7 +93,8 @@ typedef struct silk_sil_frame {
     silk_vis_method vis;
 
     uint8_t *visible;        /* nnormals */
-    uint8_t *tri_state;      /* ntris, SILK_TS_*; read only after silhouette.c */
+    uint8_t *tri_state;      /* ntris, SILK_TS_*; read only after silhouette.c (and remesh.c's
+                                plan, which adds SILK_TS_CONCAVE) */
     uint32_t *edge_slot;     /* nedges: index into edges[], or SILK_SIL_NONE */
     uint32_t nsil;
 
