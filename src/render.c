@@ -198,13 +198,14 @@ static void share_part(frame *f, uint32_t t)
  * normal of the mesh when there is room, else fewer (more misses, the same
  * bits), none below 64.  It is not part of the frame's need
  * (silk_frame_stats.frame_bytes): a frame without it is drawn the same. */
+#define VCACHE_MAX 4096
 static void vertex_cache(frame *f, silk_arena *a)
 {
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
     const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, room = silk_arena_free_bytes(a) / 2;
     uint32_t n = 64;
-    while (n < m->nnormals && n < (UINT32_MAX >> 1) && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
+    while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
     f->vc = silk_arena_array_top(a, n, sizeof *f->vc, SILK_MEM_FRAME);
     f->vc_tag = silk_arena_array_top(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
@@ -328,6 +329,28 @@ static int before_near(const silk_view *v, silk_vec3 p)
     return c.w > 0 && (int64_t)c.z + c.w > 0;
 }
 
+/* Whether the sphere about the bounding box's centre through the farthest
+ * vertex lies in front of the near plane (eye depth znear, in perspective
+ * and orthographic alike), by a margin far above the rounding of
+ * silk_view_clip: then every vertex does, at a fraction of the cost of
+ * transforming each. */
+static int sphere_before_near(const silk_mesh *m, const silk_view *v)
+{
+    int64_t c[3] = { ((int64_t)m->bbox_min.x + m->bbox_max.x) / 2, ((int64_t)m->bbox_min.y + m->bbox_max.y) / 2,
+                     ((int64_t)m->bbox_min.z + m->bbox_max.z) / 2 };
+    uint64_t r2 = 0;   /* coordinates below 2^26: each square below 2^54 */
+    for (uint32_t i = 0; i < m->nverts; i++) {
+        int64_t dx = m->pos[i].x - c[0], dy = m->pos[i].y - c[1], dz = m->pos[i].z - c[2];
+        uint64_t d2 = (uint64_t)(dx * dx) + (uint64_t)(dy * dy) + (uint64_t)(dz * dz);
+        if (d2 > r2) r2 = d2;
+    }
+    int64_t r = (int64_t)silk_isqrt64(r2) + 1;
+    const silk_vec3 *e = &v->cam.eye, *fw = &v->forward;
+    int64_t depth = ((c[0] - e->x) * fw->x + (c[1] - e->y) * fw->y + (c[2] - e->z) * fw->z) >> 16;
+    int64_t margin = (r >> 10) + (int64_t)(silk_abs64(depth) >> 10) + (v->cam.znear >> 10) + 256;
+    return depth - r - margin > v->cam.znear;
+}
+
 /* Whether the frame's back faces cannot show, so the rasterizer may skip
  * them.  A closed surface wound outward (silk_mesh.closed_outward) seen
  * from outside hides its back faces behind its front faces: along any ray
@@ -335,9 +358,10 @@ static int before_near(const silk_view *v, silk_vec3 p)
  * and is the nearest.  The rasterizer's snapped triangles still form a
  * closed surface in screen x, y and depth, so this holds pixel for pixel.
  * The eye is outside when the whole mesh lies in front of the near plane
- * (then also no triangle is cut open by it): its bounding box when that
- * does, else every vertex (a camera fitted to the bounding sphere may cut
- * the box's corners); the default vertex stage's
+ * (then also no triangle is cut open by it): its bounding box or the
+ * sphere about the box's centre through the farthest vertex when that does
+ * (a camera fitted to the bounding sphere may cut the box's corners), else
+ * every vertex as the vertex stage projects it; the default vertex stage's
  * view tells where the mesh goes (a stage of the caller's own may move or
  * mirror it).  FLAT, and in SMOOTH frames drawn share by share only the
  * input triangles drawn as they are (frame_draw): SMOOTH re-meshes and
@@ -352,7 +376,8 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
         corners_before = before_near(v, silk_v3(i & 1 ? m->bbox_max.x : m->bbox_min.x,
                                                 i & 2 ? m->bbox_max.y : m->bbox_min.y,
                                                 i & 4 ? m->bbox_max.z : m->bbox_min.z));
-    for (uint32_t i = 0; !corners_before && i < m->nverts; i++)
+    if (corners_before || sphere_before_near(m, v)) return 1;
+    for (uint32_t i = 0; i < m->nverts; i++)
         if (!before_near(v, m->pos[i])) return 0;
     return 1;
 }
