@@ -40,7 +40,8 @@ enum {
     SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
     SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
-    SILK_TS_CONCAVE = 16    /* its silhouette segment is concave (III-E; set by silk_remesh_plan) */
+    SILK_TS_CONCAVE = 16,   /* its silhouette segment is concave (III-E; set by silk_remesh_plan) */
+    SILK_TS_WHOLE = 32      /* silk_sil_tri_ok, tested once per frame */
 };
 
 /* A silhouette point (eqs. 6-7): one normal pair on one edge. */
