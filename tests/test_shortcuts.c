@@ -125,22 +125,31 @@ TEST(shortcuts_draw_the_plain_pixels)
     free(plain);
 }
 
+/* A shared mesh in the arena over arena_buf and a perspective view of it
+ * from dir at dist times its size; 0 (the test skipped or failed) when not. */
+static int mesh_and_view(silk_arena *a, const char *name, const double dir[3], double dist, silk_mesh *m,
+                         silk_view *v)
+{
+    silk_arena_init(a, arena_buf, ARENA_BYTES);
+    if (!tm_load_shared(a, name, m)) {
+        CHECK(check_cur_skipped);
+        return 0;
+    }
+    CHECK(tf_view_around_size(m, dir, dist, 0, W, H, v));
+    return 1;
+}
+
 /* FLAT on a closed mesh seen from outside writes fewer fragments (the back
  * faces drawn before the front faces that hide them are skipped), with the
  * same picture. */
 TEST(back_faces_are_skipped)
 {
     silk_arena a;
-    silk_arena_init(&a, arena_buf, ARENA_BYTES);
     silk_mesh m;
-    if (!tm_load_shared(&a, "sphere-200.obj", &m)) {
-        CHECK(check_cur_skipped);
-        return;
-    }
-    CHECK(m.closed_outward == 1);
     silk_view v;
     const double dir[3] = { 1, 0.5, 0.7 };
-    CHECK(tf_view_around_size(&m, dir, 3, 0, W, H, &v));
+    if (!mesh_and_view(&a, "sphere-200.obj", dir, 3, &m, &v)) return;
+    CHECK(m.closed_outward == 1);
     uint8_t *fast = malloc((size_t)W * H * 3), *plain = malloc((size_t)W * H * 3);
     long wf = 0, wp = 0;
     CHECK(draw(&a, &m, &v, SILK_MODE_FLAT, 0, H, fast, &wf));
@@ -156,15 +165,10 @@ TEST(back_faces_are_skipped)
 TEST(cache_sized_by_the_arena)
 {
     silk_arena big;
-    silk_arena_init(&big, arena_buf, ARENA_BYTES);
     silk_mesh m;
-    if (!tm_load_shared(&big, "bunny-500.obj", &m)) {
-        CHECK(check_cur_skipped);
-        return;
-    }
     silk_view v;
     const double dir[3] = { -0.6, 0.3, 1 };
-    CHECK(tf_view_around_size(&m, dir, 2.5, 0, W, H, &v));
+    if (!mesh_and_view(&big, "bunny-500.obj", dir, 2.5, &m, &v)) return;
     uint8_t *ref = malloc((size_t)W * H * 3), *img = malloc((size_t)W * H * 3);
     CHECK(draw(&big, &m, &v, SILK_MODE_FLAT, 1, H, ref, NULL));
     static const size_t rooms[] = { 0, 2048, 8192, 40000, 1u << 20 };
