@@ -43,6 +43,16 @@ typedef struct silk_frame_geom {
  * vertex falls in exactly as the rasterizer will. */
 int64_t silk_raster_row(const silk_vec4 *c, int height);
 
+/* phong.c: whether h's vertex stage is the default one, which reads a
+ * record only through silk_vrec_eval: then two CORNER records of the same
+ * vertex, normal and uv give the same bits, and the renderer may evaluate
+ * them once (render.c's vertex cache).  A stage of the caller's own may
+ * read anything in the record, so it is never assumed to. */
+int silk_hal_vertex_by_attrs(const silk_hal *h);
+/* phong.c: the view the default vertex stage projects with, or NULL (a
+ * stage of the caller's own, or none). */
+const silk_view *silk_hal_vertex_view(const silk_hal *h);
+
 /* The coarse mesh as it is: one CORNER record per triangle corner. */
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err);
 /* Room in g (from the top of the arena) for the shares of ntris input

@@ -20,6 +20,10 @@
  *      r any fixed point) is positive.  An open component has no inside: it
  *      keeps the orientation most of its triangles have in the file.
  *
+ * When every component is closed and so turned outward, the mesh says so
+ * (silk_mesh.closed_outward): seen from outside, a closed surface hides its
+ * own back faces, and the renderer skips them.
+ *
  * A flipped triangle (a, b, c) becomes (a, c, b), with its uv and file
  * normal corners and its triangle->edge links permuted the same way, so the
  * result is what loading the correctly wound file gives.
@@ -120,6 +124,7 @@ silk_status silk_orient(const silk_mesh_input *in, const char *name, silk_arena 
     memset(state, 0, nt);
 
     uint32_t qn = 0;
+    int all_outward = nt > 0;   /* every component closed and now turned outward */
     for (uint32_t seed = 0; seed < nt; seed++) {
         if (state[seed] & VISITED) continue;
         uint32_t start = qn;
@@ -146,6 +151,7 @@ silk_status silk_orient(const silk_mesh_input *in, const char *name, silk_arena 
         if (!consistent) {
             for (uint32_t h = start; h < qn; h++) state[queue[h]] = VISITED;
             m->nnonorientable_tris += n;
+            all_outward = 0;
             continue;
         }
         for (uint32_t h = start; h < qn; h++) flips += (state[queue[h]] & FLIP) != 0;
@@ -167,6 +173,7 @@ silk_status silk_orient(const silk_mesh_input *in, const char *name, silk_arena 
         }
         /* Inside out, or (open, or of no volume) mostly wound the other way. */
         int invert = sign < 0 || (sign == 0 && 2 * (uint64_t)flips > n);
+        if (sign == 0) all_outward = 0;
         for (uint32_t h = start; h < qn; h++) {
             uint32_t t = queue[h];
             if (((state[t] & FLIP) != 0) != invert) {
@@ -175,5 +182,6 @@ silk_status silk_orient(const silk_mesh_input *in, const char *name, silk_arena 
             }
         }
     }
+    m->closed_outward = (uint8_t)all_outward;
     return SILK_OK;
 }

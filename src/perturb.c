@@ -150,9 +150,9 @@ void silk_perturb(silk_sil_frame *f)
         uint32_t i = 0;
         for (uint32_t t = 0; t < f->m->ntris && i < ns; t++) {
             if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
-            silk_sil_seg tmp;
-            const silk_sil_seg *s = silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
             i++;
+            silk_sil_seg tmp;   /* rebuilt only where the plan found it concave */
+            const silk_sil_seg *s = (f->tri_state[t] & SILK_TS_CONCAVE) && silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
             if (!s || !s->concave) continue;
             visit_near(f, t, s, pass * ns + i, pass);
         }

@@ -10,7 +10,7 @@
  * lighting is done in world space, so nothing needs the inverse view matrix.
  */
 #include <string.h>
-#include "silk/hal.h"
+#include "frame.h"
 
 enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_COUNT = 6 };
 
@@ -154,6 +154,16 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
     return channel(m, m->color.x, silk_fx_mul(m->specular, m->specular_color.x), dr, sr) << 16 |
            channel(m, m->color.y, silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |
            channel(m, m->color.z, silk_fx_mul(m->specular, m->specular_color.z), db, sb);
+}
+
+int silk_hal_vertex_by_attrs(const silk_hal *h)
+{
+    return h->vertex == phong_vertex;
+}
+
+const silk_view *silk_hal_vertex_view(const silk_hal *h)
+{
+    return h->vertex == phong_vertex && h->uniforms ? ((const silk_phong *)h->uniforms)->view : NULL;
 }
 
 void silk_hal_phong(silk_hal *h, const silk_phong *p)

@@ -39,6 +39,7 @@
 /* tri_state bits */
 enum {
     SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
+    SILK_TS_BROKEN = 3,     /* the LONE field's spare value without SIL: silk_sil_tri_ok failed */
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
     SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
     SILK_TS_CONCAVE = 16,   /* its silhouette segment is concave (III-E; set by remesh.c) */

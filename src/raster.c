@@ -402,7 +402,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
 {
     tri_setup s;
     s.area = (p1->x - p0->x) * (p2->y - p0->y) - (p2->x - p0->x) * (p1->y - p0->y);
-    if (s.area == 0) return;
+    if (s.area == 0 || (t->cull_back && s.area > 0)) return;   /* y down: counter-clockwise is negative */
     s.v[0] = p0;
     s.v[1] = s.area > 0 ? p1 : p2;
     s.v[2] = s.area > 0 ? p2 : p1;

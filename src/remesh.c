@@ -238,7 +238,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         if (tc.curves > f->max_curves) f->max_curves = tc.curves;
         if (s) {
             f->seg_samples += s->n - 1;
-            if (s->concave) f->tri_state[t] |= SILK_TS_CONCAVE;   /* perturb.c sizes its slots by them */
+            if (s->concave) f->tri_state[t] |= SILK_TS_CONCAVE;   /* perturb.c sizes its slots by them and rebuilds only these */
         }
     }
     return SILK_OK;
@@ -468,14 +468,15 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         emit_silhouette(f, g, t, &seg);     /* Fig. 11 */
         return;
     }
-    uint32_t nchained = 0, corners[3];
+    uint32_t nchained = 0;
     for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
-    uint32_t *cyc = nchained ? f->poly : corners;
-    uint32_t len = walk_boundary(f, g, t, cyc);
-    if (nchained == 0) {
-        put_tri(g, cyc[0], cyc[1], cyc[2], 0);      /* as it is */
+    if (nchained == 0) {                            /* as it is: what walk_boundary gives, directly */
+        uint32_t c0 = put_corner(f, g, 3 * t), c1 = put_corner(f, g, 3 * t + 1);
+        put_tri(g, c0, c1, put_corner(f, g, 3 * t + 2), 0);
         return;
     }
+    uint32_t *cyc = f->poly;
+    uint32_t len = walk_boundary(f, g, t, cyc);
     /* Fig. 12a: from the opposite vertex over the only side with points */
     if (nchained == 1) {
         fan(g, cyc[0], cyc + 1, len - 1);

@@ -100,6 +100,14 @@ typedef struct frame {
     silk_sil_frame sil;       /* SMOOTH: the plan */
     uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
     silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
+    /* The vertex cache of a frame drawn share by share (vertex_cache),
+     * or NULL: slot s holds the vertex stage's output for the corner
+     * whose normal, vertex and uv are vc_tag[3s .. 3s+2]. */
+    silk_vertex_out *vc;
+    uint32_t *vc_tag;
+    uint32_t vc_mask;
+    int cull;                 /* back faces cannot show (back_faces_hidden) */
+    int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -182,6 +190,31 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
     return SILK_OK;
 }
 
+/* The vertex stage for CORNER record r, through the vertex cache: the
+ * default stage's output is a function of the corner's normal, vertex and
+ * uv (silk_hal_vertex_by_attrs), so the corners of the six or so triangles
+ * around a vertex are evaluated once, not once each.  The cache is
+ * direct-mapped on the normal index: neighbouring triangles come close
+ * together in a mesh, and a miss only costs the evaluation. */
+static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
+{
+    const silk_mesh *m = f->geom.mesh;
+    uint32_t a = r->a;
+    if (a / 3 < m->ntris && m->tri_normal[a] < m->nnormals) {
+        uint32_t n = m->tri_normal[a], v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
+        uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
+        if (tag[0] != n || tag[1] != v || tag[2] != uv) {
+            f->hal->vertex(f->hal, &f->geom, r, &f->vc[s]);
+            tag[0] = n;
+            tag[1] = v;
+            tag[2] = uv;
+        }
+        *out = f->vc[s];
+        return;
+    }
+    f->hal->vertex(f->hal, &f->geom, r, out);
+}
+
 /* Input triangle t's share into g, through the vertex stage into cache. */
 static void share_part(frame *f, uint32_t t)
 {
@@ -192,20 +225,48 @@ static void share_part(frame *f, uint32_t t)
     else silk_frame_flat_emit_tri(g, t);
     silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
     t0 = silk_stage_start(f->clock);
-    for (uint32_t i = 0; i < g->nvrec; i++) f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
+    f->plain = g->ntri == 1;
+    for (uint32_t i = 0; i < g->nvrec; i++) {
+        f->plain &= g->vrec[i].kind == SILK_VREC_CORNER;
+        if (f->vc && g->vrec[i].kind == SILK_VREC_CORNER) corner_cached(f, &g->vrec[i], &f->cache[i]);
+        else f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
+    }
     silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
+}
+
+/* The vertex cache (corner_cached), from at most half of the arena left
+ * once the frame has what it needs: a power of two slots, enough for every
+ * normal of the mesh when there is room, else fewer (more misses, the same
+ * bits), none below 64.  It is not part of the frame's need
+ * (silk_frame_stats.frame_bytes): a frame without it is drawn the same. */
+#define VCACHE_MAX 4096
+static void vertex_cache(frame *f, silk_arena *a)
+{
+    const silk_mesh *m = f->geom.mesh;
+    if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
+    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, room = silk_arena_free_bytes(a) / 2;
+    uint32_t n = 64;
+    while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
+    if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
+    f->vc = silk_arena_array_top(a, n, sizeof *f->vc, SILK_MEM_FRAME);
+    f->vc_tag = silk_arena_array_top(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
+    if (!f->vc || !f->vc_tag) {
+        f->vc = NULL;
+        return;
+    }
+    memset(f->vc_tag, 0xFF, 3 * (size_t)n * sizeof *f->vc_tag);   /* empty: no normal index is UINT32_MAX */
+    f->vc_mask = n - 1;
 }
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
  * lowest row; one row more on each side covers the rasterizer's rounding to
  * subpixels.  A record behind the eye plane (w <= 0) may reach anywhere.
- * Without room for the rows every band rebuilds every triangle: slower,
- * the same pixels. */
-static void share_rows(frame *f, silk_arena *a, int height)
+ * f->rows is 2 per input triangle, or NULL: without room for the rows every
+ * band rebuilds every triangle: slower, the same pixels. */
+static void share_rows(frame *f, int height)
 {
     uint32_t n = f->geom.mesh->ntris;
-    f->rows = silk_arena_array_top(a, 2 * (size_t)n, sizeof *f->rows, SILK_MEM_FRAME);
     for (uint32_t t = 0; f->rows && t < n; t++) {
         share_part(f, t);
         int64_t lo = height, hi = -1;
@@ -338,6 +399,67 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
 }
 #endif
 
+/* Whether point p lies in front of the near plane as the rasterizer clips:
+ * z >= -w (raster.c), strictly. */
+static int before_near(const silk_view *v, silk_vec3 p)
+{
+    silk_vec4 c = silk_view_clip(v, p);
+    return c.w > 0 && (int64_t)c.z + c.w > 0;
+}
+
+/* Whether the sphere about the bounding box's centre through the farthest
+ * vertex lies in front of the near plane (eye depth znear, in perspective
+ * and orthographic alike), by a margin far above the rounding of
+ * silk_view_clip: then every vertex does, at a fraction of the cost of
+ * transforming each. */
+static int sphere_before_near(const silk_mesh *m, const silk_view *v)
+{
+    int64_t c[3] = { ((int64_t)m->bbox_min.x + m->bbox_max.x) / 2, ((int64_t)m->bbox_min.y + m->bbox_max.y) / 2,
+                     ((int64_t)m->bbox_min.z + m->bbox_max.z) / 2 };
+    uint64_t r2 = 0;   /* coordinates below 2^26: each square below 2^54 */
+    for (uint32_t i = 0; i < m->nverts; i++) {
+        int64_t dx = m->pos[i].x - c[0], dy = m->pos[i].y - c[1], dz = m->pos[i].z - c[2];
+        uint64_t d2 = (uint64_t)(dx * dx) + (uint64_t)(dy * dy) + (uint64_t)(dz * dz);
+        if (d2 > r2) r2 = d2;
+    }
+    int64_t r = (int64_t)silk_isqrt64(r2) + 1;
+    const silk_vec3 *e = &v->cam.eye, *fw = &v->forward;
+    int64_t depth = ((c[0] - e->x) * fw->x + (c[1] - e->y) * fw->y + (c[2] - e->z) * fw->z) >> 16;
+    int64_t margin = (r >> 10) + (int64_t)(silk_abs64(depth) >> 10) + (v->cam.znear >> 10) + 256;
+    return depth - r - margin > v->cam.znear;
+}
+
+/* Whether the frame's back faces cannot show, so the rasterizer may skip
+ * them.  A closed surface wound outward (silk_mesh.closed_outward) seen
+ * from outside hides its back faces behind its front faces: along any ray
+ * from the eye the first crossing enters the solid, through a front face,
+ * and is the nearest.  The rasterizer's snapped triangles still form a
+ * closed surface in screen x, y and depth, so this holds pixel for pixel.
+ * The eye is outside when the whole mesh lies in front of the near plane
+ * (then also no triangle is cut open by it): its bounding box or the
+ * sphere about the box's centre through the farthest vertex when that does
+ * (a camera fitted to the bounding sphere may cut the box's corners), else
+ * every vertex as the vertex stage projects it; the default vertex stage's
+ * view tells where the mesh goes (a stage of the caller's own may move or
+ * mirror it).  FLAT, and in SMOOTH frames drawn share by share only the
+ * input triangles drawn as they are (frame_draw): SMOOTH re-meshes and
+ * moves vertices near the silhouette, where the outline is made of both
+ * sides, so those triangles are all drawn; PN and BLEND bulge. */
+static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
+{
+    const silk_view *v = silk_hal_vertex_view(h);
+    if (!m->closed_outward || !v || (o->mode != SILK_MODE_FLAT && f->part != share_part)) return 0;
+    int corners_before = 1;   /* the bounding box's: then every vertex is */
+    for (int i = 0; corners_before && i < 8; i++)
+        corners_before = before_near(v, silk_v3(i & 1 ? m->bbox_max.x : m->bbox_min.x,
+                                                i & 2 ? m->bbox_max.y : m->bbox_min.y,
+                                                i & 4 ? m->bbox_max.z : m->bbox_min.z));
+    if (corners_before || sphere_before_near(m, v)) return 1;
+    for (uint32_t i = 0; i < m->nverts; i++)
+        if (!before_near(v, m->pos[i])) return 0;
+    return 1;
+}
+
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
 static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass)
@@ -390,11 +512,12 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
             if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
             f->part(f, k);
+            t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
             t0 = silk_stage_start(f->clock);
             draw_tris(f, o, t, pass);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
-    t->depth_equal = 0;
+    t->depth_equal = t->cull_back = 0;
 #ifndef SILK_NO_CLIP_MODE
     if (f->clip) {
         t->mask = NULL;
@@ -444,9 +567,13 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     a->top_peak = a->top;
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
-    if (st == SILK_OK) frame_draw(&f, o, t);
-    if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
-    stats->frame_bytes = a->top_peak - mark.top;
+    stats->frame_bytes = a->top_peak - mark.top;   /* the vertex cache not counted (vertex_cache) */
+    if (st == SILK_OK) {
+        f.cull = back_faces_hidden(&f, m, h, o);
+        vertex_cache(&f, a);
+        frame_draw(&f, o, t);
+        if (f.clip) stats->clip_spans = f.clip->spans;
+    }
     silk_arena_top_release(a, &mark);
     return st;
 }
@@ -467,7 +594,14 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, band->rows, stats, err);
     const int rows = band->rows;
-    if (st == SILK_OK && f.nparts > 1 && rows < band->height) share_rows(&f, a, band->height);
+    if (st == SILK_OK && f.nparts > 1 && rows < band->height)
+        f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
+    stats->frame_bytes = a->top_peak - mark.top;   /* the vertex cache not counted (vertex_cache) */
+    if (st == SILK_OK) {
+        f.cull = back_faces_hidden(&f, m, h, o);
+        vertex_cache(&f, a);
+        share_rows(&f, band->height);
+    }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
@@ -478,7 +612,6 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
-    stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;
 }

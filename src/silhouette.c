@@ -201,13 +201,13 @@ static silk_status find_triangles(silk_sil_frame *f)
     f->nsil = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = 0;
-        f->tri_state[t] = 0;
+        f->tri_state[t] = SILK_TS_BROKEN;   /* tested once here, read by lay_out_edges */
         if (!silk_sil_tri_ok(m, t)) continue;
         const silk_index *tn = &m->tri_normal[3 * t];
         uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
         if (v0 != v1 || v1 != v2) {
             uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
-            st = (uint8_t)(SILK_TS_SIL | lone);
+            st |= (uint8_t)(SILK_TS_SIL | lone);
             f->nsil++;
             mark_edge(f, silk_mesh_tri_edge(m, t, lone), &nwork);
             mark_edge(f, silk_mesh_tri_edge(m, t, (lone + 2) % 3), &nwork);
@@ -271,8 +271,8 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     /* Count the sides (every triangle side on a carrying edge) and the
      * silhouette sides of each edge, then lay them out edge by edge. */
     for (uint32_t t = 0; t < m->ntris; t++) {
-        if (!silk_sil_tri_ok(m, t)) continue;
         uint8_t st = f->tri_state[t];
+        if ((st & (SILK_TS_SIL | SILK_TS_LONE)) == SILK_TS_BROKEN) continue;
         for (uint32_t k = 0; k < 3; k++) {
             uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
             if (w == SILK_SIL_NONE) continue;

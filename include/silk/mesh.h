@@ -103,6 +103,10 @@ typedef struct silk_mesh {
 
     silk_vec3 bbox_min, bbox_max;
     silk_normals_source normals_used;   /* COMPUTE or FILE: what the loader did (0, AUTO, when no loader set it) */
+    /* 1: every part of the mesh is closed and wound outward (orient.c at
+     * load), so from outside it its back faces cannot show and the
+     * renderer may skip them; 0: not known (any mesh may say 0). */
+    uint8_t closed_outward;
 } silk_mesh;
 
 

@@ -39,6 +39,8 @@ typedef struct silk_target {
                                 pixel is shaded once */
     const uint8_t *mask;     /* optional stencil over the band (clip mode): rows of (width + 7) / 8 bytes,
                                 bit x & 7 of byte x >> 3; triangles draw only where the bit is set */
+    int cull_back;           /* 1: skip triangles seen from behind (clockwise on the screen after
+                                snapping), set by silk_render where they cannot show */
 } silk_target;
 
 /* Output of the vertex stage. */

@@ -1,0 +1,228 @@
+/*
+ * test_shortcuts.c - the renderer's shortcuts draw the pixels of the plain
+ * path, byte for byte (but where a mesh passes through itself).
+ *
+ * With the default vertex stage silk_render evaluates each corner's vertex
+ * once per frame instead of once per triangle (the vertex cache), and on a
+ * closed, outward-wound mesh seen from outside it skips the triangles seen
+ * from behind in FLAT mode (render.c, back_faces_hidden).  A vertex stage of
+ * the caller's own takes neither shortcut, so the same default stage behind
+ * a wrapper draws the reference.  Shared meshes from views all round, near
+ * and far, perspective and orthographic, FLAT and SMOOTH, whole frames and
+ * bands; the arena left for the cache from nothing to plenty; and
+ * silk_mesh.closed_outward for closed, open, inside-out and kept meshes.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "support/scene.h"
+#include "support/testframe.h"
+#include "support/testmesh.h"
+#include "silk/silk.h"
+
+#define W 160
+#define H 120
+#define ARENA_BYTES (64u << 20)
+
+static uint8_t *arena_buf;
+
+static void (*default_vertex)(const silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
+
+/* The default stage, but not known to be: no shortcut applies. */
+static void wrapped_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out)
+{
+    default_vertex(h, g, r, out);
+}
+
+/* One frame into rgb (W x H x 3) in bands of `rows`, with the default
+ * stages or (plain) the wrapped ones; fragment writes summed into *writes
+ * when not NULL (whole frames only). */
+static int draw(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_mode mode, int plain, int rows,
+                uint8_t *rgb, long *writes)
+{
+    silk_phong ph;
+    silk_hal hal;
+    silk_phong_default(&ph, v);
+    silk_hal_phong(&hal, &ph);
+    default_vertex = hal.vertex;
+    if (plain) hal.vertex = wrapped_vertex;
+    silk_render_opts o;
+    silk_render_opts_default(&o);
+    o.mode = mode;
+    silk_frame_stats st;
+    silk_error err;
+    silk_status s;
+    if (writes) {
+        uint32_t *depth = malloc((size_t)W * H * sizeof *depth);
+        uint16_t *w = calloc((size_t)W * H, sizeof *w);
+        silk_target t;
+        silk_target_init(&t, W, H, 0, H, SILK_PIX_RGB888, rgb, depth);
+        t.writes = w;
+        s = silk_render(a, m, v, &hal, &o, &t, &st, &err);
+        *writes = 0;
+        for (long i = 0; i < (long)W * H; i++) *writes += w[i];
+        free(depth);
+        free(w);
+    } else {
+        tf_collect c = { .frame = rgb };
+        s = tf_render_bands(a, m, v, &hal, &o, SILK_PIX_RGB888, rows, &c, &st, &err);
+    }
+    if (s != SILK_OK) fprintf(stderr, "render: %s\n", err.msg);
+    return s == SILK_OK && !st.fell_back;
+}
+
+static long differ(const uint8_t *a, const uint8_t *b)
+{
+    long n = 0;
+    for (long i = 0; i < (long)W * H; i++) n += memcmp(a + 3 * i, b + 3 * i, 3) != 0;
+    return n;
+}
+
+TEST(shortcuts_draw_the_plain_pixels)
+{
+    /* cow-500 passes through itself at the legs (edges of some triangles
+     * pierce others): there a back face can be the nearest surface, and
+     * skipping it shows the front face behind it, a few pixels a frame. */
+    static const struct { const char *name; long may_differ; } meshes[] = {
+        { "bunny-500.obj", 0 }, { "sphere-200.obj", 0 }, { "knot-480.obj", 0 }, { "torus-576.obj", 0 },
+        { "fandisk-128.obj", 0 }, { "cow-500.obj", 16 } };
+    static const double dirs[][3] = { { 1, 0.4, 0.8 }, { -1, -0.3, 0.2 }, { 0.1, 1, 0.2 }, { 0.3, -1, -0.5 },
+                                      { -0.4, 0.2, -1 } };
+    static const double dists[] = { 3, 1.6, 0.7 };   /* the last puts the near plane into the mesh */
+    uint8_t *fast = malloc((size_t)W * H * 3), *plain = malloc((size_t)W * H * 3);
+    long cases = 0, bad = 0;
+    for (size_t i = 0; i < sizeof meshes / sizeof *meshes; i++) {
+        silk_arena a;
+        silk_arena_init(&a, arena_buf, ARENA_BYTES);
+        silk_mesh m;
+        if (!tm_load_shared(&a, meshes[i].name, &m)) {
+            CHECK(check_cur_skipped);
+            break;
+        }
+        for (size_t d = 0; d < sizeof dirs / sizeof *dirs; d++)
+            for (size_t k = 0; k < sizeof dists / sizeof *dists; k++)
+                for (int ortho = 0; ortho < 2; ortho++) {
+                    silk_view v;
+                    CHECK(tf_view_around_size(&m, dirs[d], dists[k], ortho, W, H, &v));
+                    for (int mode = 0; mode < 2; mode++) {
+                        int rows = (d + k) % 2 ? 16 : H;
+                        silk_mode md = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+                        CHECK(draw(&a, &m, &v, md, 0, rows, fast, NULL));
+                        CHECK(draw(&a, &m, &v, md, 1, rows, plain, NULL));
+                        long n = differ(fast, plain);
+                        cases++;
+                        bad += n != 0;
+                        CHECKF(n <= meshes[i].may_differ, "%s dir %zu dist %g %s %s: %ld pixels differ",
+                               meshes[i].name, d, dists[k],
+                               ortho ? "ortho" : "persp", silk_mode_name(md), n);
+                    }
+                }
+    }
+    printf("  %ld frames, %ld differ\n", cases, bad);
+    free(fast);
+    free(plain);
+}
+
+/* A shared mesh in the arena over arena_buf and a perspective view of it
+ * from dir at dist times its size; 0 (the test skipped or failed) when not. */
+static int mesh_and_view(silk_arena *a, const char *name, const double dir[3], double dist, silk_mesh *m,
+                         silk_view *v)
+{
+    silk_arena_init(a, arena_buf, ARENA_BYTES);
+    if (!tm_load_shared(a, name, m)) {
+        CHECK(check_cur_skipped);
+        return 0;
+    }
+    CHECK(tf_view_around_size(m, dir, dist, 0, W, H, v));
+    return 1;
+}
+
+/* FLAT on a closed mesh seen from outside writes fewer fragments (the back
+ * faces drawn before the front faces that hide them are skipped), with the
+ * same picture. */
+TEST(back_faces_are_skipped)
+{
+    silk_arena a;
+    silk_mesh m;
+    silk_view v;
+    const double dir[3] = { 1, 0.5, 0.7 };
+    if (!mesh_and_view(&a, "sphere-200.obj", dir, 3, &m, &v)) return;
+    CHECK(m.closed_outward == 1);
+    uint8_t *fast = malloc((size_t)W * H * 3), *plain = malloc((size_t)W * H * 3);
+    long wf = 0, wp = 0;
+    CHECK(draw(&a, &m, &v, SILK_MODE_FLAT, 0, H, fast, &wf));
+    CHECK(draw(&a, &m, &v, SILK_MODE_FLAT, 1, H, plain, &wp));
+    CHECK(differ(fast, plain) == 0);
+    CHECKF(wf > 0 && wf < wp, "%ld fragment writes with the shortcut, %ld without", wf, wp);
+    free(fast);
+    free(plain);
+}
+
+/* The cache takes half of what the arena has left, down to none: the
+ * pictures stay the same. */
+TEST(cache_sized_by_the_arena)
+{
+    silk_arena big;
+    silk_mesh m;
+    silk_view v;
+    const double dir[3] = { -0.6, 0.3, 1 };
+    if (!mesh_and_view(&big, "bunny-500.obj", dir, 2.5, &m, &v)) return;
+    uint8_t *ref = malloc((size_t)W * H * 3), *img = malloc((size_t)W * H * 3);
+    CHECK(draw(&big, &m, &v, SILK_MODE_FLAT, 1, H, ref, NULL));
+    static const size_t rooms[] = { 0, 2048, 8192, 40000, 1u << 20 };
+    size_t frame = 4096;   /* FLAT share by share: three records and their outputs, rounded up */
+    long writes;
+    for (size_t i = 0; i < sizeof rooms / sizeof *rooms; i++) {
+        silk_arena small;
+        size_t bytes = frame + rooms[i];
+        uint8_t *mem = malloc(bytes);
+        silk_arena_init(&small, mem, bytes);
+        CHECKF(draw(&small, &m, &v, SILK_MODE_FLAT, 0, H, img, &writes), "%zu bytes", bytes);
+        CHECKF(differ(ref, img) == 0, "with %zu bytes: %ld pixels differ", bytes, differ(ref, img));
+        free(mem);
+    }
+    free(ref);
+    free(img);
+}
+
+static int closed_outward(const ts_mesh *tm, silk_orient_mode orient)
+{
+    tm_fixture f;
+    tm_fixture_init(&f, 4u << 20);
+    f.opts.orient = orient;
+    int r = -1;
+    if (tm_fixture_input(&f, tm->v, tm->nv, tm->f, tm->nf) && tm_fixture_build(&f) == SILK_OK)
+        r = f.m.closed_outward;
+    tm_fixture_free(&f);
+    return r;
+}
+
+TEST(closed_outward_flag)
+{
+    ts_mesh s = { 0 };
+    ts_sphere(&s, 12, 8, 1, 0, 0, 0);
+    CHECK(closed_outward(&s, SILK_ORIENT_FIX) == 1);
+    CHECK(closed_outward(&s, SILK_ORIENT_KEEP) == 0);        /* winding not checked: not known */
+    for (uint32_t t = 0; t < s.nf; t++) {                     /* inside out: turned round at load */
+        uint32_t c = s.f[3 * t + 1];
+        s.f[3 * t + 1] = s.f[3 * t + 2];
+        s.f[3 * t + 2] = c;
+    }
+    CHECK(closed_outward(&s, SILK_ORIENT_FIX) == 1);
+    s.nf--;                                                   /* a hole: open */
+    CHECK(closed_outward(&s, SILK_ORIENT_FIX) == 0);
+    ts_mesh_free(&s);
+}
+
+int main(void)
+{
+    arena_buf = malloc(ARENA_BYTES);
+    RUN(closed_outward_flag);
+    RUN(shortcuts_draw_the_plain_pixels);
+    RUN(back_faces_are_skipped);
+    RUN(cache_sized_by_the_arena);
+    free(arena_buf);
+    return check_done();
+}
