@@ -55,6 +55,7 @@ void silk_render_opts_default(silk_render_opts *o)
     o->silmap_hint = 0;
     o->clip_antialias = 1;
     o->clock = NULL;
+    o->vertex_cache_bytes = SIZE_MAX;
 }
 
 const char *silk_stage_name(silk_stage s)
@@ -240,11 +241,12 @@ static void share_part(frame *f, uint32_t t)
  * bits), none below 64.  It is not part of the frame's need
  * (silk_frame_stats.frame_bytes): a frame without it is drawn the same. */
 #define VCACHE_MAX 4096
-static void vertex_cache(frame *f, silk_arena *a)
+static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 {
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, room = silk_arena_free_bytes(a) / 2;
+    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
+                 room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
     uint32_t n = 64;
     while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
@@ -570,7 +572,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     stats->frame_bytes = a->top_peak - mark.top;   /* the vertex cache not counted (vertex_cache) */
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
-        vertex_cache(&f, a);
+        vertex_cache(&f, a, o);
         frame_draw(&f, o, t);
         if (f.clip) stats->clip_spans = f.clip->spans;
     }
@@ -599,7 +601,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     stats->frame_bytes = a->top_peak - mark.top;   /* the vertex cache not counted (vertex_cache) */
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
-        vertex_cache(&f, a);
+        vertex_cache(&f, a, o);
         share_rows(&f, band->height);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {

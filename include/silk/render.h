@@ -17,6 +17,7 @@
 #ifndef SILK_RENDER_H
 #define SILK_RENDER_H
 
+#include <stddef.h>
 #include "fixed.h"
 #include "arena.h"
 #include "error.h"
@@ -107,6 +108,13 @@ typedef struct silk_render_opts {
     uint32_t line_rgb;       /* silhouette lines */
     uint32_t line_feature_rgb; /* feature lines */
     silk_stage_clock *clock; /* per-stage timing, or NULL (above) */
+    /* The most bytes of the arena the vertex cache may take (src/render.c:
+     * with the default vertex stage, each mesh vertex is evaluated once per
+     * frame instead of once per triangle corner).  It takes at most half of
+     * what the frame leaves and at least 64 slots of 72 bytes, else nothing;
+     * the pixels are the same either way.  Default SIZE_MAX; a device whose
+     * RAM budget is tight sets what it can spare, 0 for none. */
+    size_t vertex_cache_bytes;
     /* CLIP: the model's silhouette map (silk_model_silmap), the polytope
      * triangle to start looking for the eye from (the last frame's
      * silk_frame_stats.clip_tri), and whether the outline is anti-aliased */

@@ -57,6 +57,12 @@
 #ifndef FW_BAND_ROWS
 #define FW_BAND_ROWS 8
 #endif
+/* The vertex cache may take this much of the arena (silk_render_opts):
+ * none by default, so the RAM a frame needs is what `make profile` reports
+ * and the budget is the board's; a board with RAM to spare sets it. */
+#ifndef FW_VERTEX_CACHE_BYTES
+#define FW_VERTEX_CACHE_BYTES 0
+#endif
 #ifndef FW_ARENA_BYTES
 #define FW_ARENA_BYTES 49152
 #endif
@@ -313,6 +319,7 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
     silk_render_opts ro;
     silk_render_opts_default(&ro);
     ro.mode = mode;
+    ro.vertex_cache_bytes = FW_VERTEX_CACHE_BYTES;
     const char *mname = mode == SILK_MODE_FLAT ? "flat" : "smooth";
     silk_frame_stats st;
     if (pass->stages) return time_stages(a, m, &view, &hal, &ro, band, pass, frame, k);
