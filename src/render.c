@@ -24,6 +24,7 @@
 #include "smooth.h"
 #include "remesh.h"
 #include "lines.h"
+#include "aa.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -41,6 +42,7 @@ void silk_render_opts_default(silk_render_opts *o)
     o->lines_polygonal = 0;
     o->line_rgb = 0x000000;
     o->line_feature_rgb = 0x000000;
+    o->aa = 1;
 }
 
 const char *silk_mode_name(silk_mode mode)
@@ -318,6 +320,32 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     }
 }
 
+/* Anti-aliased outlines (aa.c) over band t, just drawn: the frames drawn
+ * share by share (FLAT and SMOOTH without lines).  The shares that can
+ * hold an outline are rebuilt once more; a band that is not the whole
+ * frame first draws the rows next to it, which its edge pixels blend with. */
+static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t)
+{
+    silk_aa aa;
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    if (!o->aa || f->part != share_part || !t->depth ||
+        !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
+        silk_aa_alpha(t);
+        silk_arena_top_release(a, &mark);
+        return;
+    }
+    for (int i = 0; i < 2; i++)
+        if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
+    for (uint32_t k = 0; k < f->nparts; k++) {
+        if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
+        if (!silk_aa_candidate(f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
+        f->part(f, k);
+        silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
+    }
+    silk_aa_finish(&aa);
+    silk_arena_top_release(a, &mark);
+}
+
 /* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its
  * subpixel products are sized for it, docs/overflow.md); say so instead of
  * returning a blank image. */
@@ -343,7 +371,10 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     a->top_peak = a->top;
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
-    if (st == SILK_OK) frame_draw(&f, o, t);
+    if (st == SILK_OK) {
+        frame_draw(&f, o, t);
+        frame_aa(&f, a, v, o, t);
+    }
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
     return st;
@@ -370,6 +401,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
         frame_draw(&f, o, band);
+        frame_aa(&f, a, v, o, band);
         if (sink->band(sink->user, band))
             st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }

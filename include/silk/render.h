@@ -75,6 +75,7 @@ typedef struct silk_render_opts {
     int lines_polygonal;     /* the coarse mesh's polygonal outline even in SMOOTH mode */
     uint32_t line_rgb;       /* silhouette lines */
     uint32_t line_feature_rgb; /* feature lines */
+    int aa;                  /* anti-aliased outlines (default 1; FLAT and SMOOTH frames without lines) */
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);
