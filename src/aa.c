@@ -75,9 +75,10 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     aa->npt = max_recs;
     aa->pt = silk_arena_array_top(a, max_recs, sizeof *aa->pt, SILK_MEM_FRAME);
     /* An outline crosses a band about once per row or column it spans:
-     * room for four times the band's width and height, within half of
-     * what is left (the rest is dropped and counted). */
-    uint64_t want = 4 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
+     * room for three times the band's width and height (a knot at 640x480
+     * needs 2.4 times), within half of what is left (the rest is dropped
+     * and counted). */
+    uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
     return aa->pt && aa->px;
