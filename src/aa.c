@@ -97,13 +97,13 @@ static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)
 }
 
 /* Crossed pixel (x, y), its inside towards (sx, sy), covered cov / FRAC by
- * the surface; de: the side's depth there, tol: how far the surface may
- * stand from it. */
-static void crossing(silk_aa *aa, int x, int y, int sx, int sy, int64_t cov, int64_t de, int64_t tol)
+ * the surface; here: whether the rasterizer drew the surface there (the
+ * drawn side passes the pixel's centre); de: the side's depth there, tol:
+ * how far the surface may stand from it. */
+static void crossing(silk_aa *aa, int x, int y, int sx, int sy, int64_t cov, int here, int64_t de, int64_t tol)
 {
     const silk_target *t = aa->t;
     if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
-    int here = 2 * cov >= FRAC;              /* the rasterizer put the surface here */
     uint32_t ci, co, di, dout;
     if (!fetch(aa, here ? x : x + sx, here ? y : y + sy, &ci, &di) ||
         !fetch(aa, here ? x - sx : x, here ? y - sy : y, &co, &dout))
@@ -128,9 +128,11 @@ static void crossing(silk_aa *aa, int x, int y, int sx, int sy, int64_t cov, int
     p->argb = ((sum + 127) / 255) << 24 | rgb;
 }
 
-/* Walk side p-q, whose inside is the side of it q lies on; slope: the
- * depth the side's triangle rises per pixel (its tolerance). */
-static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t slope)
+/* Walk side p-q, whose inside is the side of it `in` lies on; tol: how
+ * far from the side's depth its surface may be seen (tolerance()); mid,
+ * when not NULL, the curve's point halfway between p and q in parameter:
+ * the coverage is then the curve's, a parabola through p, mid and q. */
+static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, const silk_aa_pt *mid, int64_t tol)
 {
     int64_t cross = (q.x - p.x) * (in->y - p.y) - (q.y - p.y) * (in->x - p.x);
     if (!cross) return;
@@ -157,15 +159,32 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
     }
     if (lo < ulo) lo = ulo;
     if (hi > uhi) hi = uhi;
-    int64_t du = u1 - u0;
+    int64_t du = u1 - u0, sag = 0;
+    const int64_t k = FRAC / SILK_RASTER_SUB;
+    /* The curve bulges from the chord by sag (1/FRAC pixels) at mid; the
+     * parabola 4 sag l (1 - l), l from 0 at p to 1 at q, follows it to
+     * second order.  Only for sides shorter than 4096 pixels (the products
+     * stay in 64 bits) and a bulge within 2 pixels (the sampling tolerance
+     * keeps it within one). */
+    if (mid && mid->ok && du < ((int64_t)1 << 16)) {
+        int64_t um = steep ? mid->y : mid->x, vm = steep ? mid->x : mid->y;
+        if (um > u0 && um < u1) {
+            sag = vm * k - (v0 * k + floor_div((um - u0) * (v1 - v0) * k, du));
+            if (absl(sag) > 2 * FRAC) sag = 0;
+        }
+    }
     for (int64_t c = lo; c < hi; c++) {
         int64_t U = c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2;
-        int64_t ve = v0 * FRAC / SILK_RASTER_SUB + floor_div((U - u0) * (v1 - v0) * (FRAC / SILK_RASTER_SUB), du);
+        int64_t chord = v0 * k + floor_div((U - u0) * (v1 - v0) * k, du);
+        int64_t ve = chord + (sag ? floor_div(4 * sag * (U - u0) * (u1 - U), du * du) : 0);
         int64_t r = floor_div(ve, FRAC), f = ve - r * FRAC;
         int64_t cov = dir > 0 ? FRAC - f : f;
+        /* what the rasterizer drew: the chord's side of the pixel's centre */
+        int64_t centre = r * FRAC + FRAC / 2;
+        int here = dir > 0 ? centre > chord : centre < chord;
         int64_t de = d0 + (d1 - d0) * (U - u0) / du;
-        if (steep) crossing(aa, (int)r, (int)c, dir, 0, cov, de, slope);
-        else crossing(aa, (int)c, (int)r, 0, dir, cov, de, slope);
+        if (steep) crossing(aa, (int)r, (int)c, dir, 0, cov, here, de, tol);
+        else crossing(aa, (int)c, (int)r, 0, dir, cov, here, de, tol);
     }
 }
 
@@ -184,10 +203,10 @@ static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa
     return g > ((int64_t)1 << 40) ? ((int64_t)1 << 40) : 2 * g + base;
 }
 
-static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k)
+static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k, const silk_aa_pt *mid)
 {
     const silk_aa_pt *a = &p[k], *b = &p[(k + 1) % 3], *c = &p[(k + 2) % 3];
-    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c));
+    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, mid, tolerance(a, b, c));
 }
 
 /* FLAT's rule for side k of input triangle t. */
@@ -210,6 +229,50 @@ int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_fra
     return 0;
 }
 
+/* The point of r's curve at parameter t, on screen. */
+static silk_aa_pt curve_point(const silk_aa *aa, const silk_hal *h, const silk_geom *geom, const silk_vrec *r, silk_fx t)
+{
+    silk_vrec rm = { SILK_VREC_CURVE, r->a, 0, t };
+    silk_vertex_out o;
+    h->vertex(h, geom, &rm, &o);
+    return point(aa->t, &o);
+}
+
+/* The silhouette segment halfway between records ra and rb (on screen pa,
+ * pb) into *mid, or NULL when the side is not a piece of one curve.  Two
+ * samples of one curve: its point at the mean parameter.  A sample and an
+ * end of the segment (A or B of remesh.c, which lies on a triangle side,
+ * a record of another curve): the curve's point halfway towards the
+ * parameter (0 or 1) whose point is that end. */
+static const silk_aa_pt *curve_mid(const silk_aa *aa, const silk_hal *h, const silk_geom *geom, const silk_vrec *ra,
+                                   const silk_vrec *rb, const silk_aa_pt *pa, const silk_aa_pt *pb, silk_aa_pt *mid)
+{
+    if (ra->kind != SILK_VREC_CURVE || rb->kind != SILK_VREC_CURVE) return NULL;
+    if (ra->a == rb->a) {
+        *mid = curve_point(aa, h, geom, ra, ra->t + (rb->t - ra->t) / 2);
+        return mid;
+    }
+    /* which record is the sample and which end of its curve the other is */
+    const silk_vrec *r[2] = { ra, rb };
+    const silk_aa_pt *other[2] = { pb, pa };
+    int64_t best = 4;   /* subpixels: the other record must be that end, up to rounding */
+    silk_fx tm = 0;
+    const silk_vrec *on = NULL;
+    for (int i = 0; i < 2; i++)
+        for (int end = 0; end < 2; end++) {
+            silk_aa_pt e = curve_point(aa, h, geom, r[i], end ? SILK_FX_ONE : 0);
+            int64_t d = absl(e.x - other[i]->x) + absl(e.y - other[i]->y);
+            if (e.ok && d < best) {
+                best = d;
+                on = r[i];
+                tm = end ? r[i]->t + (SILK_FX_ONE - r[i]->t) / 2 : r[i]->t / 2;
+            }
+        }
+    if (!on) return NULL;
+    *mid = curve_point(aa, h, geom, on, tm);
+    return mid;
+}
+
 static int64_t area2(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c)
 {
     return (b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x);
@@ -220,8 +283,8 @@ static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
     return a->clip.x == b->clip.x && a->clip.y == b->clip.y && a->clip.z == b->clip.z && a->clip.w == b->clip.w;
 }
 
-void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
-                   const silk_vertex_out *out, uint32_t t)
+void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_hal *h, const silk_geom *geom,
+                   const silk_frame_geom *g, const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
     for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
@@ -232,7 +295,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         silk_aa_pt p[3] = { aa->pt[tri[0]], aa->pt[tri[1]], aa->pt[tri[2]] };
         int front = silk_sil_tri_front(m, v, t);
         for (int k = 0; k < 3; k++)
-            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k);
+            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k, NULL);
         return;
     }
     /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
@@ -252,7 +315,9 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                     fold = j != i && area2(&q0, &q1, &q2) < 0;
                 }
             }
-            if (fold) tri_side(aa, p, k);
+            if (!fold) continue;
+            silk_aa_pt mid;
+            tri_side(aa, p, k, curve_mid(aa, h, geom, &g->vrec[ti[k]], &g->vrec[ti[(k + 1) % 3]], &p[k], &p[(k + 1) % 3], &mid));
         }
     }
 }
