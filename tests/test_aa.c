@@ -200,6 +200,7 @@ TEST(alpha_is_coverage)
                     for (int aa = 0; aa < 2; aa++) {
                         CHECK(draw_alpha(&f, &v, mode, aa, 0, alpha));
                         compare(cov, alpha, &an[smooth][aa]);
+                        compare(drawn, alpha, &dr[smooth][aa]);
                     }
                 }
             }
