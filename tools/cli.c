@@ -231,7 +231,15 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
         if (len == 0 || len >= sizeof m->name) goto bad;
         memcpy(m->name, p, len);
         m->name[len] = 0;
-        if (silk_mode_parse(m->name, &m->mode, &m->level) != 0) goto bad;
+        /* "MODE-noaa": the mode without anti-aliased outlines */
+        static const char noaa[] = "-noaa";
+        size_t base = len;
+        m->aa_off = len > strlen(noaa) && strcmp(m->name + len - strlen(noaa), noaa) == 0;
+        if (m->aa_off) base -= strlen(noaa);
+        char mode_name[sizeof m->name];
+        memcpy(mode_name, m->name, base);
+        mode_name[base] = 0;
+        if (silk_mode_parse(mode_name, &m->mode, &m->level) != 0) goto bad;
         for (int k = 0; k < *n; k++)
             if (strcmp(out[k].name, m->name) == 0) return cli_fail(-1, "%s: %s is listed twice", opt, m->name);
         ++*n;
@@ -240,7 +248,7 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
         continue;
     bad:
         return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn or pnL (L 1..%u) separated "
-                        "by commas", opt, (int)len, p, SILK_PN_MAX_LEVEL);
+                        "by commas (MODE-noaa: without anti-aliasing)", opt, (int)len, p, SILK_PN_MAX_LEVEL);
     }
 }
 

@@ -296,6 +296,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
             silk_render_opts ro = o->render;
             if (se->nmodes) {
                 ro.mode = se->mode[m].mode;
+                if (se->mode[m].aa_off) ro.aa = 0;
                 if (se->mode[m].level) ro.level = se->mode[m].level;
             }
             silk_error err;
