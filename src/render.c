@@ -321,7 +321,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 }
 
 /* Anti-aliased outlines (aa.c) over band t, just drawn: the frames drawn
- * share by share (FLAT and SMOOTH without lines).  The shares that can
+ * share by share (FLAT and SMOOTH without lines), not under --wire's edges.  The shares that can
  * hold an outline are rebuilt once more; a band that is not the whole
  * frame first draws the rows next to it, which its edge pixels blend with. */
 static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
@@ -329,7 +329,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 {
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    if (!o->aa || f->part != share_part || !t->depth ||
+    if (!o->aa || o->wire || f->part != share_part || !t->depth ||
         !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         silk_aa_alpha(t);
         silk_arena_top_release(a, &mark);
