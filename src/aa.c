@@ -43,7 +43,7 @@
 #include <string.h>
 #include "aa.h"
 
-#define LIMIT ((int64_t)1 << 26)   /* subpixel coordinates walked (64 times SILK_MAX_DIM, past the guard band) */
+#define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (8 times SILK_MAX_DIM, past the guard band) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
@@ -53,10 +53,21 @@ static int64_t absl(int64_t v) { return v < 0 ? -v : v; }
 static silk_aa_pt point(const silk_target *t, const silk_vertex_out *o)
 {
     silk_aa_pt p = { 0, 0, 0, 0 };
+    int64_t x, y;
     if (o->clip.w <= 0) return p;
-    silk_raster_point(t, o, &p.x, &p.y, &p.d);
-    p.ok = absl(p.x) < LIMIT && absl(p.y) < LIMIT;
+    silk_raster_point(t, o, &x, &y, &p.d);
+    p.ok = absl(x) < LIMIT && absl(y) < LIMIT;
+    if (p.ok) {
+        p.x = (int32_t)x;
+        p.y = (int32_t)y;
+    }
     return p;
+}
+
+/* (b - a) x (c - a) on screen */
+static int64_t area2(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c)
+{
+    return (int64_t)(b->x - a->x) * (c->y - a->y) - (int64_t)(b->y - a->y) * (c->x - a->x);
 }
 
 int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
@@ -97,19 +108,18 @@ static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)
 }
 
 /* Crossed pixel (x, y), its inside towards (sx, sy), covered cov / FRAC by
- * the surface; here: whether the rasterizer drew the surface there (the
- * drawn side passes the pixel's centre); de: the side's depth there, tol:
- * how far the surface may stand from it. */
-static void crossing(silk_aa *aa, int x, int y, int sx, int sy, int64_t cov, int here, int64_t de, int64_t tol)
+ * the surface; a pixel on either side nearer than lim hides the side there. */
+static void crossing(silk_aa *aa, int x, int y, int sx, int sy, uint32_t cov, uint32_t lim)
 {
     const silk_target *t = aa->t;
     if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
+    int here = 2 * cov > FRAC;   /* the rasterizer drew the surface here */
     uint32_t ci, co, di, dout;
     if (!fetch(aa, here ? x : x + sx, here ? y : y + sy, &ci, &di) ||
         !fetch(aa, here ? x - sx : x, here ? y - sy : y, &co, &dout))
         return;
-    if ((int64_t)di > de + tol || (int64_t)dout > de + tol) return;   /* hidden here */
-    uint32_t c8 = (uint32_t)((cov * 255 + FRAC / 2) / FRAC);
+    if (di > lim || dout > lim) return;   /* hidden here */
+    uint32_t c8 = (cov * 255 + FRAC / 2) / FRAC;
     /* weights: the coverage, and whether a pixel holds anything (alpha plane only) */
     uint32_t ai = !t->alpha || di ? 255 : 0, ao = !t->alpha || dout ? 255 : 0;
     uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = here ? ci : co;
@@ -129,84 +139,63 @@ static void crossing(silk_aa *aa, int x, int y, int sx, int sy, int64_t cov, int
 }
 
 /* Walk side p-q, whose inside is the side of it `in` lies on; tol: how
- * far from the side's depth its surface may be seen (tolerance()); mid,
- * when not NULL, the curve's point halfway between p and q in parameter:
- * the coverage is then the curve's, a parabola through p, mid and q. */
-static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, const silk_aa_pt *mid, int64_t tol)
+ * far from the side's depth its surface may be seen (tolerance()). */
+static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol)
 {
-    int64_t cross = (q.x - p.x) * (in->y - p.y) - (q.y - p.y) * (in->x - p.x);
+    int64_t cross = area2(&p, &q, in);
     if (!cross) return;
+    /* u along the walk (x, or y when steep), v across; then p before q */
     int steep = absl(q.y - p.y) > absl(q.x - p.x);
-    /* u along the walk (x, or y when steep), v across */
-    int64_t u0 = steep ? p.y : p.x, v0 = steep ? p.x : p.y, u1 = steep ? q.y : q.x, v1 = steep ? q.x : q.y;
-    int64_t d0 = p.d, d1 = q.d;
-    if (u1 == u0) return;
-    /* the inside is towards +v when (cross > 0) == (u1 > u0) walking x, the opposite walking y */
-    int dir = ((cross > 0) == (u1 > u0)) != steep ? 1 : -1;
-    if (u1 < u0) {
-        int64_t s;
-        s = u0, u0 = u1, u1 = s;
-        s = v0, v0 = v1, v1 = s;
-        s = d0, d0 = d1, d1 = s;
+    if (steep) {
+        int32_t s = p.x;
+        p.x = p.y, p.y = s;
+        s = q.x, q.x = q.y, q.y = s;
+    }
+    /* the inside is towards +v when (cross > 0) == (u grows from p to q), the opposite walking y */
+    int dir = ((cross > 0) == (q.x > p.x)) != steep ? 1 : -1;
+    if (q.x < p.x) {
+        silk_aa_pt s = p;
+        p = q, q = s;
     }
     const silk_target *t = aa->t;
-    int64_t lo = floor_div(u0 - SILK_RASTER_SUB / 2 + SILK_RASTER_SUB - 1, SILK_RASTER_SUB);
-    int64_t hi = floor_div(u1 - SILK_RASTER_SUB / 2 + SILK_RASTER_SUB - 1, SILK_RASTER_SUB);  /* exclusive */
-    int64_t ulo = 0, uhi = steep ? t->height : t->width;
-    if (steep) {   /* only the band's rows matter */
-        ulo = t->y0;
-        uhi = t->y0 + t->rows;
-    }
+    int32_t du = q.x - p.x, dv = q.y - p.y, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
+    if (!du) return;
+    int64_t lo = floor_div(p.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);   /* centres in [p.x, q.x) */
+    int64_t hi = floor_div(q.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
+    int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
     if (lo < ulo) lo = ulo;
     if (hi > uhi) hi = uhi;
-    int64_t du = u1 - u0, sag = 0;
-    const int64_t k = FRAC / SILK_RASTER_SUB;
-    /* The curve bulges from the chord by sag (1/FRAC pixels) at mid; the
-     * parabola 4 sag l (1 - l), l from 0 at p to 1 at q, follows it to
-     * second order.  Only for sides shorter than 4096 pixels (the products
-     * stay in 64 bits) and a bulge within 2 pixels (the sampling tolerance
-     * keeps it within one). */
-    if (mid && mid->ok && du < ((int64_t)1 << 16)) {
-        int64_t um = steep ? mid->y : mid->x, vm = steep ? mid->x : mid->y;
-        if (um > u0 && um < u1) {
-            sag = vm * k - (v0 * k + floor_div((um - u0) * (v1 - v0) * k, du));
-            if (absl(sag) > 2 * FRAC) sag = 0;
-        }
-    }
     for (int64_t c = lo; c < hi; c++) {
-        int64_t U = c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2;
-        int64_t chord = v0 * k + floor_div((U - u0) * (v1 - v0) * k, du);
-        int64_t ve = chord + (sag ? floor_div(4 * sag * (U - u0) * (u1 - U), du * du) : 0);
+        int32_t U = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2 - p.x;
+        int64_t ve = (int64_t)p.y * (FRAC / SILK_RASTER_SUB) + floor_div((int64_t)U * dv * (FRAC / SILK_RASTER_SUB), du);
         int64_t r = floor_div(ve, FRAC), f = ve - r * FRAC;
-        int64_t cov = dir > 0 ? FRAC - f : f;
-        /* what the rasterizer drew: the chord's side of the pixel's centre */
-        int64_t centre = r * FRAC + FRAC / 2;
-        int here = dir > 0 ? centre > chord : centre < chord;
-        int64_t de = d0 + (d1 - d0) * (U - u0) / du;
-        if (steep) crossing(aa, (int)r, (int)c, dir, 0, cov, here, de, tol);
-        else crossing(aa, (int)c, (int)r, 0, dir, cov, here, de, tol);
+        /* covered: the part of the pixel on the inside */
+        uint32_t cov = (uint32_t)(dir > 0 ? FRAC - f : f);
+        int64_t lim = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du) + tol;
+        uint32_t l32 = lim > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)lim;
+        if (steep) crossing(aa, (int)r, (int)c, dir, 0, cov, l32);
+        else crossing(aa, (int)c, (int)r, 0, dir, cov, l32);
     }
 }
 
-/* Twice what triangle a b c's depth changes over one pixel, plus 1/64 of
- * its depth: how far from a side's depth its surface may be seen. */
+/* How far from a side's depth the surface of its triangle a b c may be
+ * seen: the triangle's depth range (near a silhouette the surface is seen
+ * edge-on and rises steeply from the side) and 1/64 of the depth. */
 static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c)
 {
-    int64_t area = (b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x);
-    int64_t dd1 = (int64_t)b->d - a->d, dd2 = (int64_t)c->d - a->d;
-    int64_t base = (int64_t)(a->d > b->d ? a->d : b->d) / 64;
-    if (!area) return INT64_MAX / 4;
-    /* gradient times SILK_RASTER_SUB (one pixel), each term below 2^32 * 2^27 */
-    int64_t gx = absl(dd1 * (c->y - a->y) - dd2 * (b->y - a->y)) / absl(area);
-    int64_t gy = absl(dd2 * (b->x - a->x) - dd1 * (c->x - a->x)) / absl(area);
-    int64_t g = (gx + gy) * SILK_RASTER_SUB;
-    return g > ((int64_t)1 << 40) ? ((int64_t)1 << 40) : 2 * g + base;
+    uint32_t lo = a->d, hi = a->d;
+    const silk_aa_pt *p[2] = { b, c };
+    for (int i = 0; i < 2; i++) {
+        if (p[i]->d < lo) lo = p[i]->d;
+        if (p[i]->d > hi) hi = p[i]->d;
+    }
+    return (int64_t)(hi - lo) + hi / 64;
 }
 
-static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k, const silk_aa_pt *mid)
+static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k)
 {
     const silk_aa_pt *a = &p[k], *b = &p[(k + 1) % 3], *c = &p[(k + 2) % 3];
-    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, mid, tolerance(a, b, c));
+    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c));
 }
 
 /* FLAT's rule for side k of input triangle t. */
@@ -229,73 +218,24 @@ int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_fra
     return 0;
 }
 
-/* The point of r's curve at parameter t, on screen. */
-static silk_aa_pt curve_point(const silk_aa *aa, const silk_hal *h, const silk_geom *geom, const silk_vrec *r, silk_fx t)
-{
-    silk_vrec rm = { SILK_VREC_CURVE, r->a, 0, t };
-    silk_vertex_out o;
-    h->vertex(h, geom, &rm, &o);
-    return point(aa->t, &o);
-}
-
-/* The silhouette segment halfway between records ra and rb (on screen pa,
- * pb) into *mid, or NULL when the side is not a piece of one curve.  Two
- * samples of one curve: its point at the mean parameter.  A sample and an
- * end of the segment (A or B of remesh.c, which lies on a triangle side,
- * a record of another curve): the curve's point halfway towards the
- * parameter (0 or 1) whose point is that end. */
-static const silk_aa_pt *curve_mid(const silk_aa *aa, const silk_hal *h, const silk_geom *geom, const silk_vrec *ra,
-                                   const silk_vrec *rb, const silk_aa_pt *pa, const silk_aa_pt *pb, silk_aa_pt *mid)
-{
-    if (ra->kind != SILK_VREC_CURVE || rb->kind != SILK_VREC_CURVE) return NULL;
-    if (ra->a == rb->a) {
-        *mid = curve_point(aa, h, geom, ra, ra->t + (rb->t - ra->t) / 2);
-        return mid;
-    }
-    /* which record is the sample and which end of its curve the other is */
-    const silk_vrec *r[2] = { ra, rb };
-    const silk_aa_pt *other[2] = { pb, pa };
-    int64_t best = 4;   /* subpixels: the other record must be that end, up to rounding */
-    silk_fx tm = 0;
-    const silk_vrec *on = NULL;
-    for (int i = 0; i < 2; i++)
-        for (int end = 0; end < 2; end++) {
-            silk_aa_pt e = curve_point(aa, h, geom, r[i], end ? SILK_FX_ONE : 0);
-            int64_t d = absl(e.x - other[i]->x) + absl(e.y - other[i]->y);
-            if (e.ok && d < best) {
-                best = d;
-                on = r[i];
-                tm = end ? r[i]->t + (SILK_FX_ONE - r[i]->t) / 2 : r[i]->t / 2;
-            }
-        }
-    if (!on) return NULL;
-    *mid = curve_point(aa, h, geom, on, tm);
-    return mid;
-}
-
-static int64_t area2(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c)
-{
-    return (b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x);
-}
 
 static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
 {
-    return a->clip.x == b->clip.x && a->clip.y == b->clip.y && a->clip.z == b->clip.z && a->clip.w == b->clip.w;
+    return memcmp(&a->clip, &b->clip, sizeof a->clip) == 0;
 }
 
-void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_hal *h, const silk_geom *geom,
-                   const silk_frame_geom *g, const silk_vertex_out *out, uint32_t t)
+void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
+                   const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
     for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
     const uint32_t *tri = g->tri;
-    if (g->ntri == 1 && g->nvrec == 3 && g->vrec[0].kind == SILK_VREC_CORNER && g->vrec[1].kind == SILK_VREC_CORNER &&
-        g->vrec[2].kind == SILK_VREC_CORNER) {
-        /* t as it is: its records are its corners 0, 1, 2 */
+    if (g->ntri == 1) {
+        /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
         silk_aa_pt p[3] = { aa->pt[tri[0]], aa->pt[tri[1]], aa->pt[tri[2]] };
         int front = silk_sil_tri_front(m, v, t);
         for (int k = 0; k < 3; k++)
-            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k, NULL);
+            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k);
         return;
     }
     /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
@@ -316,8 +256,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                 }
             }
             if (!fold) continue;
-            silk_aa_pt mid;
-            tri_side(aa, p, k, curve_mid(aa, h, geom, &g->vrec[ti[k]], &g->vrec[ti[(k + 1) % 3]], &p[k], &p[(k + 1) % 3], &mid));
+            tri_side(aa, p, k);
         }
     }
 }

@@ -21,7 +21,7 @@ typedef struct silk_aa_px {
 
 /* A record on screen as the rasterizer places it. */
 typedef struct silk_aa_pt {
-    int64_t x, y;           /* 1/SILK_RASTER_SUB pixels */
+    int32_t x, y;           /* 1/SILK_RASTER_SUB pixels (32 bits: the products are single multiplies) */
     uint32_t d;             /* depth, larger is nearer */
     int ok;                 /* w > 0 and within the guard band */
 } silk_aa_pt;
@@ -50,10 +50,9 @@ int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_fra
  * output per record), walked over the band: a share that is t as it is
  * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate; a
  * re-meshed share along every side its triangles share facing opposite
- * ways on screen, following the curve between its samples (the HAL's
- * vertex stage h, over geom, places the points halfway). */
-void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_hal *h, const silk_geom *geom,
-                   const silk_frame_geom *g, const silk_vertex_out *out, uint32_t t);
+ * ways on screen. */
+void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
+                   const silk_vertex_out *out, uint32_t t);
 
 /* Write the pending pixels (and t->alpha, when the target has one). */
 void silk_aa_finish(silk_aa *aa);

@@ -341,7 +341,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
         if (!silk_aa_candidate(f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
         f->part(f, k);
-        silk_aa_share(&aa, f->geom.mesh, v, f->hal, &f->geom, &f->g, f->cache, k);
+        silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }
     silk_aa_finish(&aa);
     if (aa.dropped) silk_frame_fell_short(stats);   /* those pixels are left aliased */

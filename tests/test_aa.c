@@ -25,8 +25,10 @@
  * the same samples and without anti-aliasing, covered sub-pixels
  * counted): mean error <= MEAN_BOUND over all views, no pixel off by more
  * than MAX_DRAWN.  Against the analytic surface, anti-aliasing must bring
- * the mean error well below what it is without and leave no pixel off by
- * more than MAX_ANALYTIC; the target MEAN_BOUND / MAX_BOUND there is
+ * the mean error well below what it is without, leave no edge pixel off
+ * by more than it is without (where the drawn outline is a pixel off the
+ * true one, no coverage from it can be right) and no whole pixel off by
+ * more than MAX_BOUND; the MEAN_BOUND / MAX_BOUND of edge pixels there is
  * printed, not checked.
  */
 #include <math.h>
@@ -48,7 +50,6 @@
 #define MEAN_BOUND 0.08
 #define MAX_BOUND 0.5           /* printed against the analytic surface */
 #define MAX_DRAWN 0.6
-#define MAX_ANALYTIC 0.9
 #define SS 8                     /* silk's own supersampled reference: SS x SS per pixel */
 
 typedef struct aa_stats {
@@ -223,8 +224,8 @@ TEST(alpha_is_coverage)
         const aa_stats *on = &an[1][1], *off = &an[1][0];
         CHECKF(on->sum / on->edge < 0.6 * off->sum / off->edge, "%s smooth: mean error %.4f with aa, %.4f without",
                name, on->sum / on->edge, off->sum / off->edge);
-        CHECKF(on->max <= MAX_ANALYTIC && on->whole_max <= MAX_ANALYTIC, "%s smooth: a pixel is off by %.3f / %.3f",
-               name, on->max, on->whole_max);
+        CHECKF(on->max <= off->max + 0.01 && on->whole_max <= MAX_BOUND, "%s smooth: a pixel is off by %.3f / %.3f "
+               "(%.3f without anti-aliasing)", name, on->max, on->whole_max, off->max);
         tm_fixture_free(&f);
     }
 }
