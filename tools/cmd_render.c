@@ -44,6 +44,9 @@ static void help(FILE *f)
             "                       - writes it to standard output\n"
             "  --image-format png|ppm  the format for -o - (default png)\n"
             "  --compare            flat and smooth side by side (an image twice as wide)\n"
+            "  --ssaa N             reference picture: draw N x N times larger (2..8) without\n"
+            "                       anti-aliasing and average each N x N block (alpha: the\n"
+            "                       share of the block the object covers)\n"
             "Series (docs/viewer.md):\n"
             "  --turntable N        N views around the model (1..%d), turning about the up\n"
             "                       axis from the first view; OUT holds the frame number,\n"
@@ -79,7 +82,43 @@ static void blit(const silk_target *src, uint8_t *dst, size_t dst_stride, int x0
                (size_t)src->width * bpp);
 }
 
-static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt, int compare)
+/* --ssaa: the n x n blocks of big (the scene drawn n times larger) averaged
+ * into small; with alpha (--bg none) each block's colour is the mean of
+ * its covered samples and its alpha their share. */
+static int ssaa_reduce(const silk_target *big, int n, silk_target *small, uint8_t **alpha, int with_alpha)
+{
+    size_t bpp = silk_pixfmt_bytes(big->fmt), w = (size_t)(big->width / n), h = (size_t)(big->height / n);
+    uint8_t *px = malloc(w * h * bpp);
+    *alpha = with_alpha ? malloc(w * h) : NULL;
+    if (!px || (with_alpha && !*alpha)) {
+        free(px);
+        free(*alpha);
+        return cli_fail(CLI_EXIT_INPUT, "out of memory for the --ssaa image");
+    }
+    silk_target_init(small, (int)w, (int)h, 0, (int)h, big->fmt, px, NULL);
+    for (size_t y = 0; y < h; y++)
+        for (size_t x = 0; x < w; x++) {
+            uint32_t sum[3] = { 0, 0, 0 }, k = 0, covered = 0;
+            for (int j = 0; j < n; j++)
+                for (int i = 0; i < n; i++) {
+                    size_t bx = x * (size_t)n + (size_t)i, by = y * (size_t)n + (size_t)j;
+                    int in = big->depth[by * (size_t)big->width + bx] != 0;
+                    covered += in;
+                    if (with_alpha && !in) continue;
+                    uint32_t rgb = silk_target_get(big, (int)bx, (int)by);
+                    for (int c = 0; c < 3; c++) sum[c] += (rgb >> (16 - 8 * c)) & 255;
+                    k++;
+                }
+            uint32_t rgb = 0;
+            for (int c = 0; k && c < 3; c++) rgb |= (sum[c] + k / 2) / k << (16 - 8 * c);
+            silk_target_put(small, (int)x, (int)y, rgb);
+            if (with_alpha) (*alpha)[y * w + x] = (uint8_t)((covered * 255 + (uint32_t)(n * n) / 2) / (uint32_t)(n * n));
+        }
+    small->alpha = *alpha;
+    return 0;
+}
+
+static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt, int compare, int ssaa)
 {
     /* Without --arena: when the frame ran out of scratch and fell back to
      * unsmoothed triangles, double the arena and render again. */
@@ -127,7 +166,17 @@ static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt,
             image.depth = NULL;
             image.writes = NULL;
         }
+        uint8_t *alpha = NULL;
+        if (ssaa > 1) {
+            int xrc = ssaa_reduce(&s.target, ssaa, &image, &alpha, o->bg_none);
+            if (xrc) {
+                cli_scene_free(&s);
+                return xrc;
+            }
+        }
         int wrc = cli_write_image(&image, out, out_fmt, cli_alpha_for(o), o->render.bg_rgb);
+        if (ssaa > 1) free(image.color);
+        free(alpha);
         free(wide);
         cli_scene_free(&s);
         if (wrc) return wrc;
@@ -362,6 +411,7 @@ int cmd_render(int argc, char **argv)
     cli_scene_opts_default(&o);
     const char *out = NULL;
     int compare = 0, rc = 0, use_series = 0;
+    long ssaa = 1;
     silk_image_format out_fmt = SILK_IMAGE_NONE;
     series se;
     memset(&se, 0, sizeof se);
@@ -391,6 +441,9 @@ int cmd_render(int argc, char **argv)
             use_series = 1;
         } else if (strcmp(a, "--sheet") == 0) {
             se.sheet = use_series = 1;
+        } else if (cli_is(a, "--ssaa")) {
+            const char *v = cli_value(argc, argv, &i);
+            if (!v || cli_parse_long("--ssaa", v, 2, 8, &ssaa)) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--zoom")) {
             const char *v = cli_value(argc, argv, &i);
             if (!v || cli_parse_double("--zoom", v, 1, 64, &se.zoom)) rc = CLI_EXIT_USAGE;
@@ -420,6 +473,17 @@ int cmd_render(int argc, char **argv)
     }
     /* A failed run leaves OUT as it was: images are written atomically, and
      * an earlier run's image stays. */
-    if (!rc) rc = use_series ? render_series(&o, out, out_fmt, &se) : render(&o, out, out_fmt, compare);
+    if (!rc && ssaa > 1 && (compare || use_series))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --ssaa is for single frames (not --compare or a series)");
+    if (!rc && ssaa > 1 && ((long)o.width * ssaa > SILK_MAX_DIM || (long)o.height * ssaa > SILK_MAX_DIM))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --ssaa %ld draws %ldx%ld, more than %dx%d", ssaa, o.width * ssaa,
+                      o.height * ssaa, SILK_MAX_DIM, SILK_MAX_DIM);
+    if (!rc && ssaa > 1) {
+        /* the scene n times larger, aliased; reduced after the frame */
+        o.width *= (int)ssaa;
+        o.height *= (int)ssaa;
+        o.render.aa = 0;
+    }
+    if (!rc) rc = use_series ? render_series(&o, out, out_fmt, &se) : render(&o, out, out_fmt, compare, (int)ssaa);
     return rc;
 }
