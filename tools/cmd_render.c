@@ -30,6 +30,7 @@ typedef struct series {
     cli_mode mode[SERIES_MAX_MODES];
     int sheet;
     double zoom;                     /* --zoom Z; 0 without */
+    int pixels;                      /* --pixels N: cells drawn N times smaller, magnified N times; 1 without */
 } series;
 
 static void help(FILE *f)
@@ -57,7 +58,9 @@ static void help(FILE *f)
             "  --sheet              one contact sheet at OUT: the modes side by side, the\n"
             "                       views in rows, each labelled with mode and triangles drawn\n"
             "  --zoom Z             close-up, Z times (1..64) magnified around a point of\n"
-            "                       the silhouette (the rightmost silhouette triangle)\n",
+            "                       the silhouette (the rightmost silhouette triangle)\n"
+            "  --pixels N           with --sheet: draw each cell N times smaller (2..16) and\n"
+            "                       magnify it N times, pixel by pixel, to show its pixels\n",
             SERIES_MAX_VIEWS);
     cli_print_scene_help(f, CLI_OPT_ALL);
     fprintf(f,
@@ -285,7 +288,7 @@ static void cell_label(const series *se, const silk_render_opts *ro, const silk_
 {
     char mode[16], more[64];
     if (ro->mode == SILK_MODE_PN) snprintf(mode, sizeof mode, "pn%u", (unsigned)ro->level);
-    else snprintf(mode, sizeof mode, "%s", silk_mode_name(ro->mode));
+    else snprintf(mode, sizeof mode, "%s%s", silk_mode_name(ro->mode), ro->aa ? "" : "-noaa");
     if (se->views > 1)
         snprintf(more, sizeof more, "view %d/%d +%g deg", k + 1, se->views, 360.0 * k / se->views);
     else if (ro->mode == SILK_MODE_SMOOTH)
@@ -306,6 +309,15 @@ static void sheet_title(const cli_scene_opts *o, const series *se, char *buf, si
     snprintf(buf, n, "%s  %dx%d %s, tol %g px%s", base, o->width, o->height, o->ortho ? "ortho" : "perspective",
              cli_fx_to_double(o->render.tolerance_px), o->render.wire ? ", wireframe" : "");
     if (se->zoom > 1) snprintf(buf + strlen(buf), n - strlen(buf), ", close-up x%g", se->zoom);
+    if (se->pixels > 1) snprintf(buf + strlen(buf), n - strlen(buf), ", pixels x%d", se->pixels);
+}
+
+/* frame magnified n times, pixel by pixel, into big (its buffer malloc'd
+ * once by the caller: n * n times frame's). */
+static void magnify(const silk_target *frame, int n, silk_target *big)
+{
+    for (int y = 0; y < big->height; y++)
+        for (int x = 0; x < big->width; x++) silk_target_put(big, x, y, silk_target_get(frame, x / n, y / n));
 }
 
 /* Render every view and mode of the series from the loaded scene s: into
@@ -326,10 +338,21 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
     if (se->sheet) {
         char title[200];
         sheet_title(o, se, title, sizeof title);
-        if (sheet_init(&sh, cols, rows, o->width, o->height, title)) {
+        if (sheet_init(&sh, cols, rows, o->width * se->pixels, o->height * se->pixels, title)) {
             sheet_free(&sh);
             return CLI_EXIT_INPUT;
         }
+    }
+    silk_target big;
+    uint8_t *big_px = NULL;
+    if (se->pixels > 1) {
+        size_t bytes = (size_t)o->width * o->height * se->pixels * se->pixels * silk_pixfmt_bytes(o->fmt);
+        if (!(big_px = malloc(bytes))) {
+            sheet_free(&sh);
+            return cli_fail(CLI_EXIT_INPUT, "out of memory for the --pixels cells");
+        }
+        silk_target_init(&big, o->width * se->pixels, o->height * se->pixels, 0, o->height * se->pixels, o->fmt, big_px,
+                         NULL);
     }
     progress pr;
     progress_start(&pr, o->quiet, "render");
@@ -359,7 +382,8 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
                 char label[160];
                 cell_label(se, &ro, &st, k, label, sizeof label);
                 int c = nmodes > 1 ? m : k % cols, r = nmodes > 1 ? k : k / cols;
-                sheet_put(&sh, c, r, &s->target, label);
+                if (big_px) magnify(&s->target, se->pixels, &big);
+                sheet_put(&sh, c, r, big_px ? &big : &s->target, label);
                 continue;
             }
             /* One view: OUT as given, even with a '%' in it. */
@@ -378,6 +402,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
     if (se->sheet && !rc) {
         rc = cli_write_image(&sh.img, out, out_fmt, CLI_ALPHA_NONE, 0);
     }
+    free(big_px);
     sheet_free(&sh);
     return rc;
 }
@@ -416,6 +441,7 @@ int cmd_render(int argc, char **argv)
     series se;
     memset(&se, 0, sizeof se);
     se.views = 1;
+    se.pixels = 1;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
         if (cli_help(a, help)) return 0;
@@ -441,6 +467,12 @@ int cmd_render(int argc, char **argv)
             use_series = 1;
         } else if (strcmp(a, "--sheet") == 0) {
             se.sheet = use_series = 1;
+        } else if (cli_is(a, "--pixels")) {
+            const char *v = cli_value(argc, argv, &i);
+            long n;
+            if (!v || cli_parse_long("--pixels", v, 2, 16, &n)) rc = CLI_EXIT_USAGE;
+            else se.pixels = (int)n;
+            use_series = 1;
         } else if (cli_is(a, "--ssaa")) {
             const char *v = cli_value(argc, argv, &i);
             if (!v || cli_parse_long("--ssaa", v, 2, 8, &ssaa)) rc = CLI_EXIT_USAGE;
@@ -473,6 +505,15 @@ int cmd_render(int argc, char **argv)
     }
     /* A failed run leaves OUT as it was: images are written atomically, and
      * an earlier run's image stays. */
+    if (!rc && se.pixels > 1 && !se.sheet) rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels magnifies the cells of a --sheet");
+    if (!rc && se.pixels > 1 && (o.width < se.pixels || o.height < se.pixels))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels %d: the cells of %dx%d would be smaller than a pixel", se.pixels,
+                      o.width, o.height);
+    if (!rc && se.pixels > 1) {
+        /* the cells drawn that much smaller; the sheet keeps --size */
+        o.width /= se.pixels;
+        o.height /= se.pixels;
+    }
     if (!rc && ssaa > 1 && (compare || use_series))
         rc = cli_fail(CLI_EXIT_USAGE, "render: --ssaa is for single frames (not --compare or a series)");
     if (!rc && ssaa > 1 && ((long)o.width * ssaa > SILK_MAX_DIM || (long)o.height * ssaa > SILK_MAX_DIM))
