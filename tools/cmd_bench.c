@@ -264,14 +264,10 @@ static int measure(ctx *x, loaded *l, const silk_view *v, const silk_render_opts
     silk_arena *ar = &l->arena;
     ar->peak = ar->bottom + ar->top;
     memset(&st, 0, sizeof st);
-    /* the silhouette is measured by pixel centres: on the frame without anti-aliasing */
-    silk_render_opts aliased = *ro;
-    aliased.aa = 0;
-    if (silk_render(ar, &l->mesh, v, &x->hal, &aliased, &x->fb.target, &st, &err) != SILK_OK) {
+    if (silk_render(ar, &l->mesh, v, &x->hal, ro, &x->fb.target, &st, &err) != SILK_OK) {
         a->failed = 1;
         return cli_fail(CLI_EXIT_INPUT, "bench: %s: %s", l->path, err.msg);
     }
-    mask_from_rgb(x->fb.color, x->fb.target.stride, x->cfg->width, x->cfg->height, x->cfg->bg, x->fb.mask);
     a->drawn += st.tris_drawn;
     a->fell_back |= st.fell_back;
     double best = INFINITY;
@@ -285,6 +281,7 @@ static int measure(ctx *x, loaded *l, const silk_view *v, const silk_render_opts
     a->ms[k] = best;
     if (ar->peak > a->peak) a->peak = ar->peak;
     a->views++;
+    mask_from_rgb(x->fb.color, x->fb.target.stride, x->cfg->width, x->cfg->height, x->cfg->bg, x->fb.mask);
     return 0;
 }
 
