@@ -5,12 +5,13 @@
  *
  * The outline is geometry silk already has, not something found in the
  * image: in SMOOTH mode the silhouette segment of every silhouette
- * triangle (the Hermite curve of eq. 5 through its samples of eq. 8) is a
- * side that two of the re-meshed triangles share while facing opposite
- * ways on screen (remesh.c builds both parts, folded along it); in FLAT
- * mode it is every mesh edge between a front- and a back-facing triangle
- * (the face-based silhouette), and every edge against nothing.  Interior
- * pixels are never visited: the cost is a walk along the outline.
+ * triangle (the Hermite curve of eq. 5, drawn as chords between its
+ * samples of eq. 8) is made of sides that two of the re-meshed triangles
+ * share while facing opposite ways on screen (remesh.c builds both parts,
+ * folded along it); in FLAT mode it is every mesh edge between a front-
+ * and a back-facing triangle (the face-based silhouette), and every edge
+ * against nothing.  Interior pixels are never visited: the cost is a walk
+ * along the outline.
  *
  * Coverage.  Along a side whose x extent is the larger, each pixel column
  * whose centre the side spans is crossed at height y_e; the pixel the
@@ -19,9 +20,9 @@
  * cut by the straight side, exact unless the side crosses a pixel corner
  * within the column, where it is off by at most 1/8).  Sides steeper than
  * 45 degrees walk rows the same way.  This is the pixel's area coverage by
- * a half-plane, as in Gupta-Sproull or Wu lines; the curve's samples are
- * within the smoothing tolerance of the curve, so the coverage is that of
- * the drawn surface.
+ * a half-plane, from the rasterizer's own subpixel positions of the
+ * records, so it is the coverage of the surface as drawn (whose chords lie
+ * within the sampling tolerance of the curve).
  *
  * Blending.  The rasterizer decided the crossed pixel by its centre, so it
  * holds either the surface (coverage >= 1/2) or what is behind; the pixel
@@ -30,9 +31,9 @@
  * becomes coverage x inside + (1 - coverage) x outside.  With an alpha
  * plane (a PNG with --bg none) an empty pixel has alpha 0 and weighs
  * nothing in the colour, so alpha is the coverage and the colour the
- * surface's.  A side whose inside pixel is nearer than the side, or whose
- * outside pixel is (something in front of the outline), by more than the
- * side's triangle rises over two pixels, is hidden there and left alone.
+ * surface's.  Where the inside or the outside pixel is nearer than the
+ * side (something in front of the outline) by more than its triangle's
+ * depth range and 1/64, the side is hidden there and the pixel left alone.
  *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
@@ -43,7 +44,7 @@
 #include <string.h>
 #include "aa.h"
 
-#define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (8 times SILK_MAX_DIM, past the guard band) */
+#define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
