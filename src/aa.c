@@ -88,8 +88,8 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     aa->pt = silk_arena_array_top(a, max_recs, sizeof *aa->pt, SILK_MEM_FRAME);
     /* An outline crosses a band about once per row or column it spans:
      * room for three times the band's width and height (a knot at 640x480
-     * needs 2.4 times), within half of what is left (the rest is dropped
-     * and counted). */
+     * needs 2.4 times), within half of what is left (the rest is left
+     * aliased, and counted). */
     uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);

@@ -324,8 +324,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
  * share by share (FLAT and SMOOTH without lines), not under --wire's edges.  The shares that can
  * hold an outline are rebuilt once more; a band that is not the whole
  * frame first draws the rows next to it, which its edge pixels blend with. */
-static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
-                     silk_frame_stats *stats)
+static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t)
 {
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
@@ -343,8 +342,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }
-    silk_aa_finish(&aa);
-    if (aa.dropped) silk_frame_fell_short(stats);   /* those pixels are left aliased */
+    silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
     silk_arena_top_release(a, &mark);
 }
 
@@ -375,7 +373,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     silk_status st = frame_prepare(&f, a, m, v, h, o, stats, err);
     if (st == SILK_OK) {
         frame_draw(&f, o, t);
-        frame_aa(&f, a, v, o, t, stats);
+        frame_aa(&f, a, v, o, t);
     }
     stats->frame_bytes = a->top_peak - mark.top;
     silk_arena_top_release(a, &mark);
@@ -403,7 +401,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
         frame_draw(&f, o, band);
-        frame_aa(&f, a, v, o, band, stats);
+        frame_aa(&f, a, v, o, band);
         if (sink->band(sink->user, band))
             st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }

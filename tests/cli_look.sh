@@ -60,11 +60,14 @@ want='--shininess' expect_usage "--shininess 0" render "$tmp/sphere.obj" -o "$tm
 want='--ambient' expect_usage "--ambient 2" render "$tmp/sphere.obj" -o "$tmp/x.png" --ambient 2
 
 # ---- --bg none ----------------------------------------------------------------------------
-"$SILK" render "$tmp/cone.obj" -o "$tmp/alpha.png" $size --bg none
-"$SILK" render "$tmp/cone.obj" -o "$tmp/opaque.ppm" $size
+"$SILK" render "$tmp/cone.obj" -o "$tmp/alpha.png" $size --bg none --aa off
+"$SILK" render "$tmp/cone.obj" -o "$tmp/opaque.ppm" $size --aa off
 check "--bg none: an RGBA PNG" test "$(od -An -tu1 -j25 -N1 "$tmp/alpha.png" | tr -d ' ')" = 6
-check "--bg none: alpha 255 on the object, 0 elsewhere" \
+check "--bg none --aa off: alpha 255 on the object, 0 elsewhere" \
     test "$(python3 "$stat_py" --alpha-matches "$tmp/alpha.png" "$tmp/opaque.ppm" ffffff)" = match
+"$SILK" render "$tmp/cone.obj" -o "$tmp/aa.png" $size --bg none
+check "--bg none: anti-aliased outline pixels have alpha between" \
+    test "$(python3 "$stat_py" --alpha-matches "$tmp/aa.png" "$tmp/opaque.ppm" ffffff)" != match
 "$SILK" render "$tmp/cone.obj" -o "$tmp/lines.png" $size --bg none --lines only --mode flat
 "$SILK" render "$tmp/cone.obj" -o "$tmp/lines.ppm" $size --lines only --mode flat
 check "--bg none --lines only: alpha on the lines" \
