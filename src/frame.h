@@ -42,6 +42,11 @@ typedef struct silk_frame_geom {
  * maps clip point c to (w > 0), so that a renderer can tell which band a
  * vertex falls in exactly as the rasterizer will. */
 int64_t silk_raster_row(const silk_vec4 *c, int height);
+/* raster.c: where the rasterizer puts v (w > 0): x, y in 1/SILK_RASTER_SUB
+ * pixels (pixel (0,0) covers [0, SILK_RASTER_SUB)^2), depth d as in the
+ * depth buffer. */
+#define SILK_RASTER_SUB 16
+void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *x, int64_t *y, uint32_t *d);
 
 /* phong.c: whether h's vertex stage is the default one, which reads a
  * record only through silk_vrec_eval: then two CORNER records of the same

@@ -19,9 +19,11 @@
 #include <string.h>
 #include "silk/raster.h"
 #include "silk/hal.h"
+#include "frame.h"
 
 #define SUB_BITS 4                  /* subpixel grid: 1/16 pixel */
 #define SUB      (1 << SUB_BITS)
+_Static_assert(SUB == SILK_RASTER_SUB, "frame.h names the subpixel grid");
 #define GUARD    2                  /* clip to |x|, |y| <= GUARD * w */
 #define QN_BITS  24                 /* precision of the per-triangle 1/w weights */
 #define W_MIN    16                 /* w below 2^-12 counts as behind the eye */
@@ -261,6 +263,17 @@ static int64_t screen_y(const silk_vec4 *c, int height)
 }
 
 int64_t silk_raster_row(const silk_vec4 *c, int height) { return floor_div(screen_y(c, height), SUB); }
+
+static void project(const silk_target *t, const silk_vertex_out *v, svert *s);
+
+void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *x, int64_t *y, uint32_t *d)
+{
+    svert s;
+    project(t, v, &s);
+    *x = s.x;
+    *y = s.y;
+    *d = (uint32_t)s.d;
+}
 
 static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
 {

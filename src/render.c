@@ -34,6 +34,7 @@
 #define STREAMED_ONLY 1       /* every frame this build can draw is drawn share by share */
 #endif
 #include "clip.h"
+#include "aa.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -53,7 +54,7 @@ void silk_render_opts_default(silk_render_opts *o)
     o->line_feature_rgb = 0x000000;
     o->silmap = NULL;
     o->silmap_hint = 0;
-    o->clip_antialias = 1;
+    o->aa = 1;
     o->clock = NULL;
     o->vertex_cache_bytes = SIZE_MAX;
 }
@@ -107,6 +108,7 @@ typedef struct frame {
     silk_vertex_out *vc;
     uint32_t *vc_tag;
     uint32_t vc_mask;
+    size_t vc_bytes;          /* the arena it takes */
     int cull;                 /* back faces cannot show (back_faces_hidden) */
     int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
 } frame;
@@ -246,7 +248,7 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
     const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
-                 room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
+                 room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes, free0 = silk_arena_free_bytes(a);
     uint32_t n = 64;
     while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
@@ -257,6 +259,7 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
         return;
     }
     memset(f->vc_tag, 0xFF, 3 * (size_t)n * sizeof *f->vc_tag);   /* empty: no normal index is UINT32_MAX */
+    f->vc_bytes = free0 - silk_arena_free_bytes(a);
     f->vc_mask = n - 1;
 }
 
@@ -331,7 +334,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
             return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: no lines in clip mode (the outline is the map's)");
         f->clip = silk_arena_alloc_top(a, sizeof *f->clip, SILK_MEM_FRAME);
         if (!f->clip) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "silk_render: the arena is full");
-        silk_status st = silk_clip_prepare(f->clip, a, o->silmap, v, o->silmap_hint, band_rows, o->clip_antialias, err);
+        silk_status st = silk_clip_prepare(f->clip, a, o->silmap, v, o->silmap_hint, band_rows, o->aa, err);
         if (st != SILK_OK) return st;
         stats->clip_tri = f->clip->info.tri;
         stats->clip_points = f->clip->npts;
@@ -544,6 +547,33 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #endif
 }
 
+/* Anti-aliased outlines (aa.c) over band t, just drawn: the frames drawn
+ * share by share (FLAT and SMOOTH without lines; CLIP's outline is the
+ * map's, anti-aliased by clip.c), not under --wire's edges.  The shares that can
+ * hold an outline are rebuilt once more; a band that is not the whole
+ * frame first draws the rows next to it, which its edge pixels blend with. */
+static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t)
+{
+    silk_aa aa;
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    if (!o->aa || o->wire || f->part != share_part || !t->depth || f->clip ||   /* clip.c does its own */
+        !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
+        silk_aa_alpha(t);
+        silk_arena_top_release(a, &mark);
+        return;
+    }
+    for (int i = 0; i < 2; i++)
+        if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
+    for (uint32_t k = 0; k < f->nparts; k++) {
+        if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
+        if (!silk_aa_candidate(f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
+        f->part(f, k);
+        silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
+    }
+    silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
+    silk_arena_top_release(a, &mark);
+}
+
 /* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its
  * subpixel products are sized for it, docs/overflow.md); say so instead of
  * returning a blank image. */
@@ -569,13 +599,14 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     a->top_peak = a->top;
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
-    stats->frame_bytes = a->top_peak - mark.top;   /* the vertex cache not counted (vertex_cache) */
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
         frame_draw(&f, o, t);
+        frame_aa(&f, a, v, o, t);
         if (f.clip) stats->clip_spans = f.clip->spans;
     }
+    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes;   /* the vertex cache not counted (vertex_cache) */
     silk_arena_top_release(a, &mark);
     return st;
 }
@@ -598,7 +629,6 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     const int rows = band->rows;
     if (st == SILK_OK && f.nparts > 1 && rows < band->height)
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
-    stats->frame_bytes = a->top_peak - mark.top;   /* the vertex cache not counted (vertex_cache) */
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
@@ -608,12 +638,14 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
         frame_draw(&f, o, band);
+        frame_aa(&f, a, v, o, band);
         if (sink->band(sink->user, band))
             st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
+    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes;   /* the vertex cache not counted (vertex_cache) */
     silk_arena_top_release(a, &mark);
     return st;
 }

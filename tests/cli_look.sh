@@ -60,15 +60,30 @@ want='--shininess' expect_usage "--shininess 0" render "$tmp/sphere.obj" -o "$tm
 want='--ambient' expect_usage "--ambient 2" render "$tmp/sphere.obj" -o "$tmp/x.png" --ambient 2
 
 # ---- --bg none ----------------------------------------------------------------------------
-"$SILK" render "$tmp/cone.obj" -o "$tmp/alpha.png" $size --bg none
-"$SILK" render "$tmp/cone.obj" -o "$tmp/opaque.ppm" $size
+"$SILK" render "$tmp/cone.obj" -o "$tmp/alpha.png" $size --bg none --aa off
+"$SILK" render "$tmp/cone.obj" -o "$tmp/opaque.ppm" $size --aa off
 check "--bg none: an RGBA PNG" test "$(od -An -tu1 -j25 -N1 "$tmp/alpha.png" | tr -d ' ')" = 6
-check "--bg none: alpha 255 on the object, 0 elsewhere" \
+check "--bg none --aa off: alpha 255 on the object, 0 elsewhere" \
     test "$(python3 "$stat_py" --alpha-matches "$tmp/alpha.png" "$tmp/opaque.ppm" ffffff)" = match
+"$SILK" render "$tmp/cone.obj" -o "$tmp/aa.png" $size --bg none
+check "--bg none: anti-aliased outline pixels have alpha between" \
+    test "$(python3 "$stat_py" --alpha-matches "$tmp/aa.png" "$tmp/opaque.ppm" ffffff)" != match
 "$SILK" render "$tmp/cone.obj" -o "$tmp/lines.png" $size --bg none --lines only --mode flat
 "$SILK" render "$tmp/cone.obj" -o "$tmp/lines.ppm" $size --lines only --mode flat
 check "--bg none --lines only: alpha on the lines" \
     test "$(python3 "$stat_py" --alpha-matches "$tmp/lines.png" "$tmp/lines.ppm" ffffff)" = match
+# ---- anti-aliasing: --aa, --ssaa, --pixels ----------------------------------------------------
+"$SILK" render "$tmp/cone.obj" -o "$tmp/ss.png" $size --ssaa 4 --bg none
+check "--ssaa 4: the image has --size" test "$(png_size "$tmp/ss.png")" = "160x120"
+check "--ssaa 4 --bg none: alpha between on the outline" \
+    test "$(python3 "$stat_py" --alpha-matches "$tmp/ss.png" "$tmp/opaque.ppm" ffffff)" != match
+"$SILK" render "$tmp/cone.obj" -o "$tmp/px.png" --size 120x60 --modes flat-noaa,smooth --sheet --pixels 4
+check "--pixels 4: a sheet of 120x60 cells" is_png "$tmp/px.png"
+want='--aa' expect_usage "--aa maybe" render "$tmp/cone.obj" -o "$tmp/x.png" --aa maybe
+want='--ssaa' expect_usage "--ssaa 9" render "$tmp/cone.obj" -o "$tmp/x.png" --ssaa 9
+want='--ssaa' expect_usage "--ssaa with --compare" render "$tmp/cone.obj" -o "$tmp/x.png" --ssaa 2 --compare
+want='--pixels' expect_usage "--pixels without --sheet" render "$tmp/cone.obj" -o "$tmp/x.png" --pixels 4
+want='not a mode' expect_usage "--modes smooth-aa" render "$tmp/cone.obj" -o "$tmp/x.png" --modes smooth-aa --sheet
 want='PNG' expect_usage "--bg none to a PPM" render "$tmp/cone.obj" -o "$tmp/x.ppm" --bg none
 want='--bg none' expect_usage "view --bg none" view "$tmp/cone.obj" --bg none --benchmark 1
 

@@ -198,7 +198,7 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
     ro.wire = mc->wire;
     ro.bg_rgb = BG;
     ro.silmap = map;
-    ro.clip_antialias = antialias;
+    ro.aa = antialias;
 
     silk_arena_mark mk = silk_arena_top_mark(&f->a);
     size_t bpp = silk_pixfmt_bytes(fmt), bytes = (size_t)W * H * bpp;

@@ -139,6 +139,7 @@ static silk_render_opts opts(silk_mode mode, silk_lines lines, int polygonal)
     o.lines_polygonal = polygonal;
     o.line_rgb = SIL_RGB;
     o.line_feature_rgb = FEAT_RGB;
+    o.aa = 0;   /* outlines by pixel centres, the same with lines or without */
     return o;
 }
 

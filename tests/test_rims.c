@@ -288,6 +288,7 @@ static int render_mask(const scene *s, const silk_camera *cam, silk_mode mode, u
     silk_target_init(&t, W, H, 0, H, SILK_PIX_RGB888, color, depth);
     silk_render_opts o;
     silk_render_opts_default(&o);
+    o.aa = 0;   /* the outline by pixel centres (test_aa measures anti-aliasing) */
     o.mode = mode;
     o.bg_rgb = BG;
     silk_frame_stats fs;

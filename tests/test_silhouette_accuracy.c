@@ -511,6 +511,7 @@ static int render_mask(const scene *sc, const silk_camera *cam, silk_mode mode, 
     silk_target_init(&t, W, H, 0, H, SILK_PIX_RGB888, color, depth);
     silk_render_opts o;
     silk_render_opts_default(&o);
+    o.aa = 0;   /* the outline by pixel centres (test_aa measures anti-aliasing) */
     o.mode = mode;
     o.bg_rgb = BG;
     silk_status st = silk_render(&arena, &sc->mesh, &view, &hal, &o, &t, fs, &err);

@@ -231,7 +231,15 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
         if (len == 0 || len >= sizeof m->name) goto bad;
         memcpy(m->name, p, len);
         m->name[len] = 0;
-        if (silk_mode_parse(m->name, &m->mode, &m->level) != 0) goto bad;
+        /* "MODE-noaa": the mode without anti-aliased outlines */
+        static const char noaa[] = "-noaa";
+        size_t base = len;
+        m->aa_off = len > strlen(noaa) && strcmp(m->name + len - strlen(noaa), noaa) == 0;
+        if (m->aa_off) base -= strlen(noaa);
+        char mode_name[sizeof m->name];
+        memcpy(mode_name, m->name, base);
+        mode_name[base] = 0;
+        if (silk_mode_parse(mode_name, &m->mode, &m->level) != 0) goto bad;
         for (int k = 0; k < *n; k++)
             if (strcmp(out[k].name, m->name) == 0) return cli_fail(-1, "%s: %s is listed twice", opt, m->name);
         ++*n;
@@ -240,7 +248,7 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
         continue;
     bad:
         return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn, pnL (L 1..%u) or clip separated "
-                        "by commas", opt, (int)len, p, SILK_PN_MAX_LEVEL);
+                        "by commas (MODE-noaa: without anti-aliasing)", opt, (int)len, p, SILK_PN_MAX_LEVEL);
     }
 }
 
@@ -284,6 +292,7 @@ static const struct {
     { "--bg", CLI_OPT_LOOK },             { "--wire", CLI_OPT_LOOK },         { "--lines", CLI_OPT_LOOK },
     { "--lines-polygonal", CLI_OPT_LOOK }, { "--color", CLI_OPT_LOOK },       { "--ambient", CLI_OPT_LOOK },
     { "--specular", CLI_OPT_LOOK },       { "--shininess", CLI_OPT_LOOK },    { "--light", CLI_OPT_LOOK },
+    { "--aa", CLI_OPT_LOOK },
 };
 
 static unsigned group_of(const char *arg)
@@ -368,7 +377,9 @@ void cli_print_scene_help(FILE *f, unsigned groups)
         fprintf(f,
             "Look (docs/viewer.md, \"Material and light\"):\n"
             "  --bg RRGGBB|none     background colour in hex (default %06x); none: a PNG\n"
-            "                       with alpha, 255 on the object and 0 elsewhere\n"
+            "                       with alpha: the object's coverage of each pixel\n"
+            "  --aa on|off          anti-aliased outlines, flat and smooth without lines\n"
+            "                       (default on)\n"
             "  --wire               draw the edges; triangles added by smoothing in red\n"
             "  --lines over|only    pen-and-ink outlines over the shading or alone: the\n"
             "                       smoothed silhouette and visible feature curves (smooth),\n"
@@ -517,6 +528,9 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         VALUE();
         o->bg_none = strcmp(v, "none") == 0;
         if (!o->bg_none) r = cli_parse_rgb(opt, v, &o->render.bg_rgb);
+    } else if (cli_is(arg, "--aa")) {
+        VALUE();
+        if (!(r = cli_parse_choice(opt, v, "on", "off", &c))) o->render.aa = !c;
     } else if (strcmp(arg, "--wire") == 0) {
         o->render.wire = 1;
     } else if (cli_is(arg, "--lines")) {
@@ -753,7 +767,7 @@ static size_t auto_arena_bytes(size_t file_len, size_t raster)
 static size_t raster_bytes(const cli_scene_opts *o)
 {
     size_t px = (size_t)o->width * (size_t)o->height;
-    return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + 64;
+    return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + (o->bg_none ? px : 0) + 64;
 }
 
 /* One load of m's file into an arena of size bytes; nothing printed. */
@@ -899,6 +913,11 @@ int cli_scene_load(cli_scene *s, cli_scene_opts *o)
         return cli_fail(CLI_EXIT_INPUT, "the arena (%zu bytes) has no room for a %dx%d frame (%zu bytes); raise --arena",
                         s->arena.size, o->width, o->height, raster_bytes(o));
     silk_target_init(&s->target, o->width, o->height, 0, o->height, o->fmt, color, depth);
+    /* --bg none with anti-aliased outlines: the renderer writes the coverage */
+    if (o->bg_none && o->render.aa && o->render.lines == SILK_LINES_NONE &&
+        !(s->target.alpha = silk_arena_array(&s->arena, px, 1, SILK_MEM_RASTER)))
+        return cli_fail(CLI_EXIT_INPUT, "the arena (%zu bytes) has no room for the alpha channel; raise --arena",
+                        s->arena.size);
     cli_phong(o, &s->view, &s->phong);
     silk_hal_phong(&s->hal, &s->phong);
     return 0;
@@ -965,7 +984,8 @@ int cli_write_image(const silk_target *t, const char *path, silk_image_format fm
         for (int x = 0; x < t->width; x++) {
             size_t i = (size_t)y * (size_t)t->width + (size_t)x;
             int depth = alpha == CLI_ALPHA_COVERAGE && t->depth && t->depth[i] != 0;   /* cleared to 0, the farthest */
-            a[i] = depth || memcmp(row + 3 * x, bg, 3) != 0 ? 255 : 0;
+            if (alpha == CLI_ALPHA_COVERAGE && t->alpha) a[i] = t->alpha[i];
+            else a[i] = depth || memcmp(row + 3 * x, bg, 3) != 0 ? 255 : 0;
         }
     }
     silk_status st = silk_png_write_alpha(t, a, path, &err);

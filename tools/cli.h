@@ -74,6 +74,7 @@ typedef struct cli_mode {
     char name[16];
     silk_mode mode;
     uint32_t level;
+    int aa_off;                /* the name ends in "-noaa": anti-aliasing off */
 } cli_mode;
 int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, int *n);
 

@@ -109,7 +109,7 @@ static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, fram
         for (int mode = 0; mode < 2 && !rc; mode++) {
             silk_render_opts ro = o->render;
             ro.mode = clip ? SILK_MODE_CLIP : mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
-            if (clip && mode) ro.clip_antialias = 0;   /* both kinds of stencil */
+            if (clip && mode) ro.aa = 0;   /* both kinds of stencil */
             silk_frame_stats fs;
             if (silk_render_bands(&s->arena, &s->mesh, &view, &s->hal, &ro, band, &sink, &fs, &err) != SILK_OK)
                 return cli_fail(CLI_EXIT_INPUT, "%s: %s", o->mesh_path, err.msg);

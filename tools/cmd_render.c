@@ -30,6 +30,7 @@ typedef struct series {
     cli_mode mode[SERIES_MAX_MODES];
     int sheet;
     double zoom;                     /* --zoom Z; 0 without */
+    int pixels;                      /* --pixels N: cells drawn N times smaller, magnified N times; 1 without */
 } series;
 
 static void help(FILE *f)
@@ -44,6 +45,9 @@ static void help(FILE *f)
             "                       - writes it to standard output\n"
             "  --image-format png|ppm  the format for -o - (default png)\n"
             "  --compare            flat and smooth side by side (an image twice as wide)\n"
+            "  --ssaa N             reference picture: draw N x N times larger (2..8) without\n"
+            "                       anti-aliasing and average each N x N block (alpha: the\n"
+            "                       share of the block the object covers)\n"
             "Series (docs/viewer.md):\n"
             "  --turntable N        N views around the model (1..%d), turning about the up\n"
             "                       axis from the first view; OUT holds the frame number,\n"
@@ -54,7 +58,9 @@ static void help(FILE *f)
             "  --sheet              one contact sheet at OUT: the modes side by side, the\n"
             "                       views in rows, each labelled with mode and triangles drawn\n"
             "  --zoom Z             close-up, Z times (1..64) magnified around a point of\n"
-            "                       the silhouette (the rightmost silhouette triangle)\n",
+            "                       the silhouette (the rightmost silhouette triangle)\n"
+            "  --pixels N           with --sheet: draw each cell N times smaller (2..16) and\n"
+            "                       magnify it N times, pixel by pixel, to show its pixels\n",
             SERIES_MAX_VIEWS);
     cli_print_scene_help(f, CLI_OPT_ALL);
     fprintf(f,
@@ -79,7 +85,43 @@ static void blit(const silk_target *src, uint8_t *dst, size_t dst_stride, int x0
                (size_t)src->width * bpp);
 }
 
-static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt, int compare)
+/* --ssaa: the n x n blocks of big (the scene drawn n times larger) averaged
+ * into small; with alpha (--bg none) each block's colour is the mean of
+ * its covered samples and its alpha their share. */
+static int ssaa_reduce(const silk_target *big, int n, silk_target *small, uint8_t **alpha, int with_alpha)
+{
+    size_t bpp = silk_pixfmt_bytes(big->fmt), w = (size_t)(big->width / n), h = (size_t)(big->height / n);
+    uint8_t *px = malloc(w * h * bpp);
+    *alpha = with_alpha ? malloc(w * h) : NULL;
+    if (!px || (with_alpha && !*alpha)) {
+        free(px);
+        free(*alpha);
+        return cli_fail(CLI_EXIT_INPUT, "out of memory for the --ssaa image");
+    }
+    silk_target_init(small, (int)w, (int)h, 0, (int)h, big->fmt, px, NULL);
+    for (size_t y = 0; y < h; y++)
+        for (size_t x = 0; x < w; x++) {
+            uint32_t sum[3] = { 0, 0, 0 }, k = 0, covered = 0;
+            for (int j = 0; j < n; j++)
+                for (int i = 0; i < n; i++) {
+                    size_t bx = x * (size_t)n + (size_t)i, by = y * (size_t)n + (size_t)j;
+                    int in = big->depth[by * (size_t)big->width + bx] != 0;
+                    covered += in;
+                    if (with_alpha && !in) continue;
+                    uint32_t rgb = silk_target_get(big, (int)bx, (int)by);
+                    for (int c = 0; c < 3; c++) sum[c] += (rgb >> (16 - 8 * c)) & 255;
+                    k++;
+                }
+            uint32_t rgb = 0;
+            for (int c = 0; k && c < 3; c++) rgb |= (sum[c] + k / 2) / k << (16 - 8 * c);
+            silk_target_put(small, (int)x, (int)y, rgb);
+            if (with_alpha) (*alpha)[y * w + x] = (uint8_t)((covered * 255 + (uint32_t)(n * n) / 2) / (uint32_t)(n * n));
+        }
+    small->alpha = *alpha;
+    return 0;
+}
+
+static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt, int compare, int ssaa)
 {
     /* Without --arena: when the frame ran out of scratch and fell back to
      * unsmoothed triangles, double the arena and render again. */
@@ -127,7 +169,17 @@ static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt,
             image.depth = NULL;
             image.writes = NULL;
         }
+        uint8_t *alpha = NULL;
+        if (ssaa > 1) {
+            int xrc = ssaa_reduce(&s.target, ssaa, &image, &alpha, o->bg_none);
+            if (xrc) {
+                cli_scene_free(&s);
+                return xrc;
+            }
+        }
         int wrc = cli_write_image(&image, out, out_fmt, cli_alpha_for(o), o->render.bg_rgb);
+        if (ssaa > 1) free(image.color);
+        free(alpha);
         free(wide);
         cli_scene_free(&s);
         if (wrc) return wrc;
@@ -236,7 +288,7 @@ static void cell_label(const series *se, const silk_render_opts *ro, const silk_
 {
     char mode[16], more[64];
     if (ro->mode == SILK_MODE_PN) snprintf(mode, sizeof mode, "pn%u", (unsigned)ro->level);
-    else snprintf(mode, sizeof mode, "%s", silk_mode_name(ro->mode));
+    else snprintf(mode, sizeof mode, "%s%s", silk_mode_name(ro->mode), ro->aa ? "" : "-noaa");
     if (se->views > 1)
         snprintf(more, sizeof more, "view %d/%d +%g deg", k + 1, se->views, 360.0 * k / se->views);
     else if (ro->mode == SILK_MODE_SMOOTH)
@@ -257,6 +309,15 @@ static void sheet_title(const cli_scene_opts *o, const series *se, char *buf, si
     snprintf(buf, n, "%s  %dx%d %s, tol %g px%s", base, o->width, o->height, o->ortho ? "ortho" : "perspective",
              cli_fx_to_double(o->render.tolerance_px), o->render.wire ? ", wireframe" : "");
     if (se->zoom > 1) snprintf(buf + strlen(buf), n - strlen(buf), ", close-up x%g", se->zoom);
+    if (se->pixels > 1) snprintf(buf + strlen(buf), n - strlen(buf), ", pixels x%d", se->pixels);
+}
+
+/* frame magnified n times, pixel by pixel, into big (its buffer malloc'd
+ * once by the caller: n * n times frame's). */
+static void magnify(const silk_target *frame, int n, silk_target *big)
+{
+    for (int y = 0; y < big->height; y++)
+        for (int x = 0; x < big->width; x++) silk_target_put(big, x, y, silk_target_get(frame, x / n, y / n));
 }
 
 /* Render every view and mode of the series from the loaded scene s: into
@@ -277,10 +338,21 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
     if (se->sheet) {
         char title[200];
         sheet_title(o, se, title, sizeof title);
-        if (sheet_init(&sh, cols, rows, o->width, o->height, title)) {
+        if (sheet_init(&sh, cols, rows, o->width * se->pixels, o->height * se->pixels, title)) {
             sheet_free(&sh);
             return CLI_EXIT_INPUT;
         }
+    }
+    silk_target big;
+    uint8_t *big_px = NULL;
+    if (se->pixels > 1) {
+        size_t bytes = (size_t)o->width * o->height * se->pixels * se->pixels * silk_pixfmt_bytes(o->fmt);
+        if (!(big_px = malloc(bytes))) {
+            sheet_free(&sh);
+            return cli_fail(CLI_EXIT_INPUT, "out of memory for the --pixels cells");
+        }
+        silk_target_init(&big, o->width * se->pixels, o->height * se->pixels, 0, o->height * se->pixels, o->fmt, big_px,
+                         NULL);
     }
     progress pr;
     progress_start(&pr, o->quiet, "render");
@@ -296,6 +368,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
             silk_render_opts ro = o->render;
             if (se->nmodes) {
                 ro.mode = se->mode[m].mode;
+                if (se->mode[m].aa_off) ro.aa = 0;
                 if (se->mode[m].level) ro.level = se->mode[m].level;
             }
             silk_error err;
@@ -309,7 +382,8 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
                 char label[160];
                 cell_label(se, &ro, &st, k, label, sizeof label);
                 int c = nmodes > 1 ? m : k % cols, r = nmodes > 1 ? k : k / cols;
-                sheet_put(&sh, c, r, &s->target, label);
+                if (big_px) magnify(&s->target, se->pixels, &big);
+                sheet_put(&sh, c, r, big_px ? &big : &s->target, label);
                 continue;
             }
             /* One view: OUT as given, even with a '%' in it. */
@@ -328,6 +402,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
     if (se->sheet && !rc) {
         rc = cli_write_image(&sh.img, out, out_fmt, CLI_ALPHA_NONE, 0);
     }
+    free(big_px);
     sheet_free(&sh);
     return rc;
 }
@@ -361,10 +436,12 @@ int cmd_render(int argc, char **argv)
     cli_scene_opts_default(&o);
     const char *out = NULL;
     int compare = 0, rc = 0, use_series = 0;
+    long ssaa = 1;
     silk_image_format out_fmt = SILK_IMAGE_NONE;
     series se;
     memset(&se, 0, sizeof se);
     se.views = 1;
+    se.pixels = 1;
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
         if (cli_help(a, help)) return 0;
@@ -390,6 +467,15 @@ int cmd_render(int argc, char **argv)
             use_series = 1;
         } else if (strcmp(a, "--sheet") == 0) {
             se.sheet = use_series = 1;
+        } else if (cli_is(a, "--pixels")) {
+            const char *v = cli_value(argc, argv, &i);
+            long n;
+            if (!v || cli_parse_long("--pixels", v, 2, 16, &n)) rc = CLI_EXIT_USAGE;
+            else se.pixels = (int)n;
+            use_series = 1;
+        } else if (cli_is(a, "--ssaa")) {
+            const char *v = cli_value(argc, argv, &i);
+            if (!v || cli_parse_long("--ssaa", v, 2, 8, &ssaa)) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--zoom")) {
             const char *v = cli_value(argc, argv, &i);
             if (!v || cli_parse_double("--zoom", v, 1, 64, &se.zoom)) rc = CLI_EXIT_USAGE;
@@ -419,6 +505,26 @@ int cmd_render(int argc, char **argv)
     }
     /* A failed run leaves OUT as it was: images are written atomically, and
      * an earlier run's image stays. */
-    if (!rc) rc = use_series ? render_series(&o, out, out_fmt, &se) : render(&o, out, out_fmt, compare);
+    if (!rc && se.pixels > 1 && !se.sheet) rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels magnifies the cells of a --sheet");
+    if (!rc && se.pixels > 1 && (o.width < se.pixels || o.height < se.pixels))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels %d: the cells of %dx%d would be smaller than a pixel", se.pixels,
+                      o.width, o.height);
+    if (!rc && se.pixels > 1) {
+        /* the cells drawn that much smaller; the sheet keeps --size */
+        o.width /= se.pixels;
+        o.height /= se.pixels;
+    }
+    if (!rc && ssaa > 1 && (compare || use_series))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --ssaa is for single frames (not --compare or a series)");
+    if (!rc && ssaa > 1 && ((long)o.width * ssaa > SILK_MAX_DIM || (long)o.height * ssaa > SILK_MAX_DIM))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --ssaa %ld draws %ldx%ld, more than %dx%d", ssaa, o.width * ssaa,
+                      o.height * ssaa, SILK_MAX_DIM, SILK_MAX_DIM);
+    if (!rc && ssaa > 1) {
+        /* the scene n times larger, aliased; reduced after the frame */
+        o.width *= (int)ssaa;
+        o.height *= (int)ssaa;
+        o.render.aa = 0;
+    }
+    if (!rc) rc = use_series ? render_series(&o, out, out_fmt, &se) : render(&o, out, out_fmt, compare, (int)ssaa);
     return rc;
 }

@@ -11,6 +11,8 @@
 #                     triangles re-meshing added in red
 #   NAME-closeup.png  the same, zoomed 6x onto a point of the silhouette
 #   NAME-compare.png  flat | smooth at full size (silk render --compare)
+#   NAME-aa.png       flat | smooth | smooth with anti-aliased outlines, each
+#                     drawn 4 times smaller and magnified 4x pixel by pixel
 # and turntable.png, the bunny (or the knot) from 8 sides in smooth mode.
 # Ends by listing what it wrote.  DEMO_SIZE sets the cell size (320x240).
 set -eu
@@ -38,6 +40,8 @@ show() {
     "$silk" render "$mesh" -o "$outdir/$name-modes.png" --size "$size" --modes $modes --sheet "$@"
     "$silk" render "$mesh" -o "$outdir/$name-wire.png" --size "$size" --modes $modes --sheet --wire "$@"
     "$silk" render "$mesh" -o "$outdir/$name-closeup.png" --size "$size" --modes $modes --sheet --zoom 6 "$@"
+    "$silk" render "$mesh" -o "$outdir/$name-aa.png" --size "$size" --modes flat-noaa,smooth-noaa,smooth --sheet \
+        --pixels 4 "$@"
     "$silk" render "$mesh" -o "$outdir/$name-compare.png" --size 480x360 --compare "$@"
 }
 
@@ -66,5 +70,5 @@ echo "demo.sh: turntable"
 "$silk" render "$turntable" -o "$outdir/turntable.png" --size 240x180 --turntable 8 --sheet --mode smooth
 
 echo "demo.sh: wrote $(ls "$outdir"/*-modes.png "$outdir"/*-wire.png "$outdir"/*-closeup.png \
-    "$outdir"/*-compare.png "$outdir"/turntable.png | wc -l) images to $outdir/:"
-ls "$outdir"/*-modes.png "$outdir"/*-closeup.png "$outdir"/turntable.png | sed 's/^/  /'
+    "$outdir"/*-compare.png "$outdir"/*-aa.png "$outdir"/turntable.png | wc -l) images to $outdir/:"
+ls "$outdir"/*-modes.png "$outdir"/*-closeup.png "$outdir"/*-aa.png "$outdir"/turntable.png | sed 's/^/  /'

@@ -33,6 +33,8 @@ typedef struct silk_target {
     size_t stride;           /* bytes per row */
     uint32_t *depth;         /* rows * width; larger is nearer: (w - z) / w in Q1.31, which is
                                 2 znear / w in perspective (docs/raster.md); NULL: no depth test */
+    uint8_t *alpha;          /* optional: rows * width coverage bytes, 0 (nothing) .. 255 (covered),
+                                filled by silk_render; anti-aliased outlines make the in-betweens */
     uint16_t *writes;        /* optional (tests): rows * width counters of fragment writes */
     int depth_equal;         /* 0: draw where nearer than the depth buffer; 1: where as near, for the
                                 shading pass after a depth-only pass (silk_render), so that each

@@ -117,10 +117,10 @@ typedef struct silk_render_opts {
     size_t vertex_cache_bytes;
     /* CLIP: the model's silhouette map (silk_model_silmap), the polytope
      * triangle to start looking for the eye from (the last frame's
-     * silk_frame_stats.clip_tri), and whether the outline is anti-aliased */
+     * silk_frame_stats.clip_tri); aa below anti-aliases its outline too */
     const struct silk_silmap *silmap;
     uint32_t silmap_hint;
-    int clip_antialias;
+    int aa;                  /* anti-aliased outlines (default 1; FLAT, SMOOTH and CLIP frames without lines) */
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);

@@ -1,0 +1,281 @@
+/*
+ * aa.c - anti-aliased outlines: each pixel an outline of the drawn surface
+ * crosses gets the surface's coverage of it, computed from the outline
+ * itself, and is blended with what lies behind.
+ *
+ * The outline is geometry silk already has, not something found in the
+ * image: in SMOOTH mode the silhouette segment of every silhouette
+ * triangle (the Hermite curve of eq. 5, drawn as chords between its
+ * samples of eq. 8) is made of sides that two of the re-meshed triangles
+ * share while facing opposite ways on screen (remesh.c builds both parts,
+ * folded along it); in FLAT mode it is every mesh edge between a front-
+ * and a back-facing triangle (the face-based silhouette), and every edge
+ * against nothing.  Interior pixels are never visited: the cost is a walk
+ * along the outline.
+ *
+ * Coverage.  Along a side whose x extent is the larger, each pixel column
+ * whose centre the side spans is crossed at height y_e; the pixel the
+ * crossing falls in is covered by the side's inside over the part of it
+ * on that side, 1 - frac(y_e) or frac(y_e) (the area of the pixel column
+ * cut by the straight side, exact unless the side crosses a pixel corner
+ * within the column, where it is off by at most 1/8).  Sides steeper than
+ * 45 degrees walk rows the same way.  This is the pixel's area coverage by
+ * a half-plane, from the rasterizer's own subpixel positions of the
+ * records, so it is the coverage of the surface as drawn (whose chords lie
+ * within the sampling tolerance of the curve).
+ *
+ * Blending.  The rasterizer decided the crossed pixel by its centre, so it
+ * holds either the surface (coverage >= 1/2) or what is behind; the pixel
+ * next to it across the side holds the other (a post-process blend as in
+ * geometric post-process anti-aliasing, Persson 2011).  The crossed pixel
+ * becomes coverage x inside + (1 - coverage) x outside.  With an alpha
+ * plane (a PNG with --bg none) an empty pixel has alpha 0 and weighs
+ * nothing in the colour, so alpha is the coverage and the colour the
+ * surface's.  Where the inside or the outside pixel is nearer than the
+ * side (something in front of the outline) by more than its triangle's
+ * depth range and 1/64, the side is hidden there and the pixel left alone.
+ *
+ * Every new value is computed from the band as drawn and written only when
+ * all outlines are walked, so no pixel reads another's blended value; the
+ * rows just above and below a band are drawn into an apron for the pixels
+ * next to a band edge.  So a pixel's value depends on the frame alone and
+ * bands give the frame's bytes, in RGB565 as in RGB888.  All integer.
+ */
+#include <string.h>
+#include "aa.h"
+
+#define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
+#define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
+
+static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
+
+static int64_t absl(int64_t v) { return v < 0 ? -v : v; }
+
+static silk_aa_pt point(const silk_target *t, const silk_vertex_out *o)
+{
+    silk_aa_pt p = { 0, 0, 0, 0 };
+    int64_t x, y;
+    if (o->clip.w <= 0) return p;
+    silk_raster_point(t, o, &x, &y, &p.d);
+    p.ok = absl(x) < LIMIT && absl(y) < LIMIT;
+    if (p.ok) {
+        p.x = (int32_t)x;
+        p.y = (int32_t)y;
+    }
+    return p;
+}
+
+/* (b - a) x (c - a) on screen */
+static int64_t area2(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c)
+{
+    return (int64_t)(b->x - a->x) * (c->y - a->y) - (int64_t)(b->y - a->y) * (c->x - a->x);
+}
+
+int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
+{
+    memset(aa, 0, sizeof *aa);
+    aa->t = t;
+    size_t bpp = silk_pixfmt_bytes(t->fmt), w = (size_t)t->width;
+    for (int i = 0; i < 2; i++) {
+        int y = i ? t->y0 + t->rows : t->y0 - 1;
+        if (y < 0 || y >= t->height) continue;   /* no apron outside the frame */
+        uint8_t *c = silk_arena_array_top(a, w, bpp, SILK_MEM_FRAME);
+        uint32_t *d = silk_arena_array_top(a, w, sizeof *d, SILK_MEM_FRAME);
+        if (!c || !d) return 0;
+        silk_target_init(&aa->apron[i], t->width, t->height, y, 1, t->fmt, c, d);
+    }
+    aa->npt = max_recs;
+    aa->pt = silk_arena_array_top(a, max_recs, sizeof *aa->pt, SILK_MEM_FRAME);
+    /* An outline crosses a band about once per row or column it spans:
+     * room for three times the band's width and height (a knot at 640x480
+     * needs 2.4 times), within half of what is left (the rest is left
+     * aliased, and counted). */
+    uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
+    aa->cap = (uint32_t)(want < room ? want : room);
+    aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
+    return aa->pt && aa->px;
+}
+
+/* Pixel (x, y) of the band or its aprons: colour and depth; 0 if neither has it. */
+static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)
+{
+    const silk_target *s = aa->t;
+    if (y < s->y0 || y >= s->y0 + s->rows) s = &aa->apron[y < s->y0 ? 0 : 1];
+    if (!s->rows || y < s->y0 || y >= s->y0 + s->rows || x < 0 || x >= s->width)
+        return 0;
+    *rgb = silk_target_get(s, x, y);
+    *d = s->depth[(size_t)(y - s->y0) * (size_t)s->width + (size_t)x];
+    return 1;
+}
+
+/* Crossed pixel (x, y), its inside towards (sx, sy), covered cov / FRAC by
+ * the surface; a pixel on either side nearer than lim hides the side there. */
+static void crossing(silk_aa *aa, int x, int y, int sx, int sy, uint32_t cov, uint32_t lim)
+{
+    const silk_target *t = aa->t;
+    if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
+    int here = 2 * cov > FRAC;   /* the rasterizer drew the surface here */
+    uint32_t ci, co, di, dout;
+    if (!fetch(aa, here ? x : x + sx, here ? y : y + sy, &ci, &di) ||
+        !fetch(aa, here ? x - sx : x, here ? y - sy : y, &co, &dout))
+        return;
+    if (di > lim || dout > lim) return;   /* hidden here */
+    uint32_t c8 = (cov * 255 + FRAC / 2) / FRAC;
+    /* weights: the coverage, and whether a pixel holds anything (alpha plane only) */
+    uint32_t ai = !t->alpha || di ? 255 : 0, ao = !t->alpha || dout ? 255 : 0;
+    uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = here ? ci : co;
+    if (sum) {
+        rgb = 0;
+        for (int s = 16; s >= 0; s -= 8)
+            rgb |= ((wi * ((ci >> s) & 255) + wo * ((co >> s) & 255) + sum / 2) / sum) << s;
+    }
+    if (aa->npx == aa->cap) {
+        aa->dropped++;
+        return;
+    }
+    silk_aa_px *p = &aa->px[aa->npx++];
+    p->x = (uint16_t)x;
+    p->y = (uint16_t)y;
+    p->argb = ((sum + 127) / 255) << 24 | rgb;
+}
+
+/* Walk side p-q, whose inside is the side of it `in` lies on; tol: how
+ * far from the side's depth its surface may be seen (tolerance()). */
+static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol)
+{
+    int64_t cross = area2(&p, &q, in);
+    if (!cross) return;
+    /* u along the walk (x, or y when steep), v across; then p before q */
+    int steep = absl(q.y - p.y) > absl(q.x - p.x);
+    if (steep) {
+        int32_t s = p.x;
+        p.x = p.y, p.y = s;
+        s = q.x, q.x = q.y, q.y = s;
+    }
+    /* the inside is towards +v when (cross > 0) == (u grows from p to q), the opposite walking y */
+    int dir = ((cross > 0) == (q.x > p.x)) != steep ? 1 : -1;
+    if (q.x < p.x) {
+        silk_aa_pt s = p;
+        p = q, q = s;
+    }
+    const silk_target *t = aa->t;
+    int32_t du = q.x - p.x, dv = q.y - p.y, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
+    if (!du) return;
+    int64_t lo = floor_div(p.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);   /* centres in [p.x, q.x) */
+    int64_t hi = floor_div(q.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
+    int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
+    if (lo < ulo) lo = ulo;
+    if (hi > uhi) hi = uhi;
+    for (int64_t c = lo; c < hi; c++) {
+        int32_t U = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2 - p.x;
+        int64_t ve = (int64_t)p.y * (FRAC / SILK_RASTER_SUB) + floor_div((int64_t)U * dv * (FRAC / SILK_RASTER_SUB), du);
+        int64_t r = floor_div(ve, FRAC), f = ve - r * FRAC;
+        /* covered: the part of the pixel on the inside */
+        uint32_t cov = (uint32_t)(dir > 0 ? FRAC - f : f);
+        int64_t lim = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du) + tol;
+        uint32_t l32 = lim > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)lim;
+        if (steep) crossing(aa, (int)r, (int)c, dir, 0, cov, l32);
+        else crossing(aa, (int)c, (int)r, 0, dir, cov, l32);
+    }
+}
+
+/* How far from a side's depth the surface of its triangle a b c may be
+ * seen: the triangle's depth range (near a silhouette the surface is seen
+ * edge-on and rises steeply from the side) and 1/64 of the depth. */
+static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c)
+{
+    uint32_t lo = a->d, hi = a->d;
+    const silk_aa_pt *p[2] = { b, c };
+    for (int i = 0; i < 2; i++) {
+        if (p[i]->d < lo) lo = p[i]->d;
+        if (p[i]->d > hi) hi = p[i]->d;
+    }
+    return (int64_t)(hi - lo) + hi / 64;
+}
+
+static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k)
+{
+    const silk_aa_pt *a = &p[k], *b = &p[(k + 1) % 3], *c = &p[(k + 2) % 3];
+    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c));
+}
+
+/* FLAT's rule for side k of input triangle t. */
+static int coarse_outline(const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
+{
+    silk_index e = m->tri_edge[3 * t + k];
+    if (e >= m->nedges) return 0;
+    const silk_edge *ed = &m->edge[e];
+    uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
+    if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
+    return front && !silk_sil_tri_front(m, v, nb);
+}
+
+int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t)
+{
+    if (f && f->tri_state && (f->tri_state[t] & SILK_TS_SIL)) return 1;
+    int front = silk_sil_tri_front(m, v, t);
+    for (int k = 0; k < 3; k++)
+        if (coarse_outline(m, v, t, k, front)) return 1;
+    return 0;
+}
+
+
+static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
+{
+    return memcmp(&a->clip, &b->clip, sizeof a->clip) == 0;
+}
+
+void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
+                   const silk_vertex_out *out, uint32_t t)
+{
+    if (g->nvrec > aa->npt) return;
+    for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
+    const uint32_t *tri = g->tri;
+    if (g->ntri == 1) {
+        /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
+        silk_aa_pt p[3] = { aa->pt[tri[0]], aa->pt[tri[1]], aa->pt[tri[2]] };
+        int front = silk_sil_tri_front(m, v, t);
+        for (int k = 0; k < 3; k++)
+            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k);
+        return;
+    }
+    /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
+    for (uint32_t i = 0; i < g->ntri; i++) {
+        const uint32_t *ti = &tri[3 * i];
+        silk_aa_pt p[3] = { aa->pt[ti[0]], aa->pt[ti[1]], aa->pt[ti[2]] };
+        if (!p[0].ok || !p[1].ok || !p[2].ok || area2(&p[0], &p[1], &p[2]) <= 0) continue;
+        for (int k = 0; k < 3; k++) {
+            const silk_vertex_out *a = &out[ti[k]], *b = &out[ti[(k + 1) % 3]];
+            int fold = 0;
+            for (uint32_t j = 0; j < g->ntri && !fold; j++) {
+                const uint32_t *tj = &tri[3 * j];
+                for (int l = 0; l < 3 && !fold; l++) {
+                    const silk_vertex_out *c = &out[tj[l]], *d = &out[tj[(l + 1) % 3]];
+                    if (!((same_clip(a, d) && same_clip(b, c)) || (same_clip(a, c) && same_clip(b, d)))) continue;
+                    silk_aa_pt q0 = aa->pt[tj[0]], q1 = aa->pt[tj[1]], q2 = aa->pt[tj[2]];
+                    fold = j != i && area2(&q0, &q1, &q2) < 0;
+                }
+            }
+            if (!fold) continue;
+            tri_side(aa, p, k);
+        }
+    }
+}
+
+void silk_aa_alpha(silk_target *t)
+{
+    if (!t->alpha) return;
+    size_t n = (size_t)t->rows * (size_t)t->width;
+    for (size_t i = 0; i < n; i++) t->alpha[i] = t->depth && t->depth[i] ? 255 : 0;
+}
+
+void silk_aa_finish(silk_aa *aa)
+{
+    silk_target *t = aa->t;
+    silk_aa_alpha(t);
+    for (uint32_t i = 0; i < aa->npx; i++) {
+        const silk_aa_px *p = &aa->px[i];
+        silk_target_put(t, p->x, p->y, p->argb & 0xFFFFFF);
+        if (t->alpha) t->alpha[(size_t)(p->y - t->y0) * (size_t)t->width + p->x] = (uint8_t)(p->argb >> 24);
+    }
+}

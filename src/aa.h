@@ -1,0 +1,64 @@
+/*
+ * aa.h - internal: anti-aliased outlines (aa.c).  Not installed.
+ *
+ * After a band is drawn, each outline side of the frame's triangles (where
+ * the drawn surface ends on screen) re-weights the pixels it crosses by the
+ * surface's coverage of them.  render.c drives it: silk_aa_begin for the
+ * band, silk_aa_share for every input triangle's share that can hold an
+ * outline (silk_aa_candidate), silk_aa_finish to write the pixels.
+ */
+#ifndef SILK_AA_H
+#define SILK_AA_H
+
+#include "plan.h"
+
+/* One outline pixel's new value, computed from the band as drawn and
+ * written only when every outline has been walked. */
+typedef struct silk_aa_px {
+    uint16_t x, y;
+    uint32_t argb;          /* coverage << 24 | 0xRRGGBB */
+} silk_aa_px;
+
+/* A record on screen as the rasterizer places it. */
+typedef struct silk_aa_pt {
+    int32_t x, y;           /* 1/SILK_RASTER_SUB pixels (32 bits: the products are single multiplies) */
+    uint32_t d;             /* depth, larger is nearer */
+    int ok;                 /* w > 0 and within the guard band */
+} silk_aa_pt;
+
+typedef struct silk_aa {
+    silk_target *t;               /* the band */
+    silk_target apron[2];         /* the rows just above and below it, as drawn (rows 0: none) */
+    silk_aa_pt *pt;   uint32_t npt;   /* per record of one share */
+    silk_aa_px *px;   uint32_t npx, cap;
+    uint32_t dropped;             /* outline pixels left aliased: no room in px */
+} silk_aa;
+
+/* Room from the top of the arena for band t: the pending pixels, max_recs
+ * projected records, and (when t is not the whole frame) the two apron rows,
+ * which the caller then draws (aa->apron[i], rows 1).  0 when it does not
+ * fit (the band is then left aliased). */
+int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs);
+
+/* Whether input triangle t's share can hold an outline side: a side of t
+ * against nothing or between a front- and a back-facing triangle, or (with
+ * a SMOOTH plan f) a silhouette triangle, whose share folds along its
+ * silhouette segment. */
+int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t);
+
+/* The outline sides of input triangle t's share g (out: its vertex-stage
+ * output per record), walked over the band: a share that is t as it is
+ * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate; a
+ * re-meshed share along every side its triangles share facing opposite
+ * ways on screen. */
+void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
+                   const silk_vertex_out *out, uint32_t t);
+
+/* Write the pending pixels (and t->alpha, when the target has one). */
+void silk_aa_finish(silk_aa *aa);
+
+/* t->alpha, when there is one, from the depth buffer alone: 255 where the
+ * surface was drawn, else 0 (frames without anti-aliasing). */
+void silk_aa_alpha(silk_target *t);
+
+#endif

@@ -1,0 +1,239 @@
+/*
+ * test_aa.c - anti-aliased outlines (src/aa.c): the alpha channel of a
+ * frame drawn with an alpha plane (a PNG with --bg none) against the exact
+ * coverage of the analytic surface the coarse mesh samples.
+ *
+ * The sphere (radius 1, 200 triangles) and the torus (R = 1, r = 0.4, 576
+ * triangles) of `silk gen`'s defaults are drawn at 256x256 from 8 views
+ * (4 directions, perspective and orthographic; 2 under SILK_SAN=1), in SMOOTH mode (and FLAT, reported).
+ * The exact coverage of each pixel is the fraction of 16 x 16 sub-sample
+ * rays (tests/support/exact_silhouette.c, double precision) that meet the
+ * analytic surface.  Reported over the pixels whose exact coverage is
+ * strictly between 0 and 1 (edge pixels): mean and largest |alpha / 255 -
+ * coverage|, their signed mean (the outline's bias), and how many other
+ * pixels are not 0 or 255 as the exact coverage says; for smooth and flat,
+ * anti-aliasing on and off, and smooth at a finer sampling tolerance.
+ *
+ * The coarse mesh's outline is not the analytic one.  Smooth mode draws
+ * the silhouette segments as chords between their samples, within the
+ * sampling tolerance (eq. 8, 0.5 px by default) of the curve, which runs
+ * within a fraction of a pixel of the true sphere; the chords lie inside,
+ * so the drawn outline is biased inwards by about a tenth of a pixel, and
+ * a pixel's coverage is off by as much as its outline is.  So what is
+ * checked is what anti-aliasing itself owes, against the exact coverage of
+ * the surface silk draws (the same frame drawn SS x SS times larger with
+ * the same samples and without anti-aliasing, covered sub-pixels
+ * counted): mean error <= MEAN_BOUND over all views, no pixel off by more
+ * than MAX_DRAWN.  Against the analytic surface, anti-aliasing must bring
+ * the mean error well below what it is without, leave no edge pixel off
+ * by more than it is without (where the drawn outline is a pixel off the
+ * true one, no coverage from it can be right) and no whole pixel off by
+ * more than MAX_BOUND; the MEAN_BOUND / MAX_BOUND of edge pixels there is
+ * printed, not checked.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "silk/silk.h"
+#include "../tools/gen.h"
+#include "support/exact_silhouette.h"
+#include "support/testmesh.h"
+#include "support/testframe.h"
+
+#define W 256
+#define H 256
+#define SUBS 16
+#define MEAN_BOUND 0.08
+#define MAX_BOUND 0.5           /* printed against the analytic surface */
+#define MAX_DRAWN 0.6
+#define SS 8                     /* silk's own supersampled reference: SS x SS per pixel */
+
+typedef struct aa_stats {
+    long edge, whole, whole_wrong;   /* pixels: exact coverage in (0, 1); 0 or 1; those not 0/255 as it says */
+    double sum, bias, max, whole_max; /* |alpha - coverage| (and signed) over edge pixels; over the wrong whole ones */
+} aa_stats;
+
+static int gen_mesh_fixture(tm_fixture *f, gen_shape s)
+{
+    gen_params p;
+    gen_mesh gm;
+    gen_defaults(s, &p);
+    if (gen_build(&p, &gm) != 0) return 0;
+    int ok = tm_fixture_input(f, gm.pos, gm.nverts, gm.tri, gm.ntris) && tm_fixture_build(f) == SILK_OK;
+    gen_free(&gm);
+    return ok;
+}
+
+/* Exact coverage of every pixel, 0 .. SUBS * SUBS (that is, 0 .. 256). */
+static void exact_coverage(const silk_view *v, const es_shape *s, uint16_t *cov)
+{
+    es_camera c;
+    es_camera_from_silk(&c, &v->cam);
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            int n = 0;
+            for (int j = 0; j < SUBS; j++)
+                for (int i = 0; i < SUBS; i++) n += es_hit(&c, s, x + (i + 0.5) / SUBS, y + (j + 0.5) / SUBS);
+            cov[y * W + x] = (uint16_t)n;
+        }
+}
+
+static int draw_alpha(tm_fixture *f, const silk_view *v, silk_mode mode, int aa, silk_fx tol, uint8_t *alpha)
+{
+    static uint8_t rgb[W * H * 3];
+    static uint32_t depth[W * H];
+    silk_phong ph;
+    silk_hal hal;
+    silk_phong_default(&ph, v);
+    silk_hal_phong(&hal, &ph);
+    silk_render_opts o;
+    silk_render_opts_default(&o);
+    o.mode = mode;
+    o.aa = aa;
+    if (tol) o.tolerance_px = tol;
+    silk_target t;
+    silk_target_init(&t, W, H, 0, H, SILK_PIX_RGB888, rgb, depth);
+    t.alpha = alpha;
+    silk_frame_stats st;
+    silk_error err;
+    return silk_render(&f->a, &f->m, v, &hal, &o, &t, &st, &err) == SILK_OK && !st.fell_back;
+}
+
+/* The coverage of the surface silk draws, 0 .. 256: the frame SS times
+ * larger without anti-aliasing, covered sub-pixels counted. */
+static int drawn_coverage(tm_fixture *f, const silk_view *v, silk_mode mode, uint16_t *cov)
+{
+    static uint8_t rgb[W * SS * H * SS * 3];
+    static uint32_t depth[W * SS * H * SS];
+    silk_camera cam = v->cam;
+    cam.width = W * SS;
+    cam.height = H * SS;
+    silk_view big;
+    silk_error err;
+    if (silk_view_init(&big, &cam, &err) != SILK_OK) return 0;
+    silk_phong ph;
+    silk_hal hal;
+    silk_phong_default(&ph, &big);
+    silk_hal_phong(&hal, &ph);
+    silk_render_opts o;
+    silk_render_opts_default(&o);
+    o.mode = mode;
+    o.aa = 0;
+    o.tolerance_px *= SS;   /* the same samples as at W x H (eq. 8 scales with the tolerance) */
+    silk_target t;
+    silk_target_init(&t, W * SS, H * SS, 0, H * SS, SILK_PIX_RGB888, rgb, depth);
+    silk_frame_stats st;
+    if (silk_render(&f->a, &f->m, &big, &hal, &o, &t, &st, &err) != SILK_OK || st.fell_back) return 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            int n = 0;
+            for (int j = 0; j < SS; j++)
+                for (int i = 0; i < SS; i++) n += depth[(size_t)(y * SS + j) * W * SS + (size_t)(x * SS + i)] != 0;
+            cov[y * W + x] = (uint16_t)(n * (SUBS * SUBS) / (SS * SS));
+        }
+    return 1;
+}
+
+static void compare(const uint16_t *cov, const uint8_t *alpha, aa_stats *s)
+{
+    for (int i = 0; i < W * H; i++) {
+        double c = cov[i] / (double)(SUBS * SUBS), e = fabs(alpha[i] / 255.0 - c);
+        if (cov[i] > 0 && cov[i] < SUBS * SUBS) {
+            s->edge++;
+            s->sum += e;
+            s->bias += alpha[i] / 255.0 - c;
+            if (e > s->max) s->max = e;
+        } else {
+            s->whole++;
+            if (alpha[i] != (cov[i] ? 255 : 0)) {
+                s->whole_wrong++;
+                if (e > s->whole_max) s->whole_max = e;
+            }
+        }
+    }
+}
+
+static void report(const char *what, const aa_stats *s)
+{
+    printf("  %-26s edge pixels %5ld: mean error %.4f (signed %+.4f), max %.3f; whole pixels: %ld not 0/255 as "
+           "exact (max error %.3f)\n",
+           what, s->edge, s->edge ? s->sum / s->edge : 0, s->edge ? s->bias / s->edge : 0, s->max, s->whole_wrong,
+           s->whole_max);
+}
+
+TEST(alpha_is_coverage)
+{
+    static uint16_t cov[W * H], drawn[W * H];
+    static uint8_t alpha[W * H];
+    const double dirs[][3] = { { 0.3, 0.4, 1 }, { 1, 0.1, 0.2 }, { -0.5, 1, 0.6 }, { 0.1, -0.3, -1 } };
+    const gen_shape shapes[] = { GEN_SPHERE, GEN_TORUS };
+    /* under sanitizers (SILK_SAN=1) one direction, two views */
+    size_t ndirs = getenv("SILK_SAN") ? 1 : sizeof dirs / sizeof dirs[0];
+    for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++) {
+        tm_fixture f;
+        tm_fixture_init(&f, 16u << 20);
+        if (!gen_mesh_fixture(&f, shapes[k])) {
+            CHECK(0);
+            tm_fixture_free(&f);
+            continue;
+        }
+        const char *name = gen_shape_name(shapes[k]);
+        es_shape exact = shapes[k] == GEN_SPHERE ? es_sphere(0, 0, 0, 1) : es_torus(0, 0, 0, 0, 1, 0, 1.0, 0.4);
+        /* [mode][aa]: against the analytic surface; against the drawn one */
+        aa_stats an[2][2], dr[2][2], fine = { 0 };
+        memset(an, 0, sizeof an);
+        memset(dr, 0, sizeof dr);
+        for (size_t d = 0; d < ndirs; d++)
+            for (int ortho = 0; ortho < 2; ortho++) {
+                silk_view v;
+                if (!tf_view_around_size(&f.m, dirs[d], 3, ortho, W, H, &v)) {
+                    CHECK(0);
+                    continue;
+                }
+                exact_coverage(&v, &exact, cov);
+                CHECK(draw_alpha(&f, &v, SILK_MODE_SMOOTH, 1, SILK_FX_ONE / 4, alpha));
+                compare(cov, alpha, &fine);
+                for (int smooth = 0; smooth < 2; smooth++) {
+                    silk_mode mode = smooth ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+                    CHECK(drawn_coverage(&f, &v, mode, drawn));
+                    for (int aa = 0; aa < 2; aa++) {
+                        CHECK(draw_alpha(&f, &v, mode, aa, 0, alpha));
+                        compare(cov, alpha, &an[smooth][aa]);
+                        compare(drawn, alpha, &dr[smooth][aa]);
+                    }
+                }
+            }
+        printf("%s, %zu views at %dx%d, alpha against the analytic surface (%dx%d rays per pixel):\n", name,
+               2 * ndirs, W, H, SUBS, SUBS);
+        const char *what[2][2] = { { "flat, aa off", "flat, aa on" }, { "smooth, aa off", "smooth, aa on" } };
+        for (int m = 1; m >= 0; m--)
+            for (int aa = 1; aa >= 0; aa--) report(what[m][aa], &an[m][aa]);
+        report("smooth, aa on, tol 0.25 px", &fine);
+        printf("%s, alpha against the drawn surface (the frame drawn %dx%d larger):\n", name, SS, SS);
+        for (int m = 1; m >= 0; m--)
+            for (int aa = 1; aa >= 0; aa--) report(what[m][aa], &dr[m][aa]);
+        for (int m = 0; m < 2; m++) {
+            const aa_stats *s = &dr[m][1];
+            CHECKF(s->sum / s->edge <= MEAN_BOUND, "%s %s: mean error %.4f against the drawn surface", name,
+                   what[m][1], s->sum / s->edge);
+            CHECKF(s->max <= MAX_DRAWN && s->whole_max <= MAX_DRAWN, "%s %s: a pixel is off by %.3f / %.3f from "
+                   "the drawn surface", name, what[m][1], s->max, s->whole_max);
+        }
+        const aa_stats *on = &an[1][1], *off = &an[1][0];
+        CHECKF(on->sum / on->edge < 0.6 * off->sum / off->edge, "%s smooth: mean error %.4f with aa, %.4f without",
+               name, on->sum / on->edge, off->sum / off->edge);
+        CHECKF(on->max <= off->max + 0.01 && on->whole_max <= MAX_BOUND, "%s smooth: a pixel is off by %.3f / %.3f "
+               "(%.3f without anti-aliasing)", name, on->max, on->whole_max, off->max);
+        tm_fixture_free(&f);
+    }
+}
+
+int main(void)
+{
+    RUN(alpha_is_coverage);
+    return check_done();
+}
