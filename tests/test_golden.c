@@ -198,7 +198,7 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
     ro.wire = mc->wire;
     ro.bg_rgb = BG;
     ro.silmap = map;
-    ro.aa = antialias;
+    if (map) ro.aa = antialias;   /* clip frames: with and without; the others as by default */
 
     silk_arena_mark mk = silk_arena_top_mark(&f->a);
     size_t bpp = silk_pixfmt_bytes(fmt), bytes = (size_t)W * H * bpp;

@@ -51,6 +51,7 @@ static int draw(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_mode
     silk_render_opts o;
     silk_render_opts_default(&o);
     o.mode = mode;
+    o.aa = 0;   /* the outline pass takes arena too, and with too little leaves pixels aliased */
     silk_frame_stats st;
     silk_error err;
     silk_status s;
