@@ -284,6 +284,7 @@ static const struct {
     { "--bg", CLI_OPT_LOOK },             { "--wire", CLI_OPT_LOOK },         { "--lines", CLI_OPT_LOOK },
     { "--lines-polygonal", CLI_OPT_LOOK }, { "--color", CLI_OPT_LOOK },       { "--ambient", CLI_OPT_LOOK },
     { "--specular", CLI_OPT_LOOK },       { "--shininess", CLI_OPT_LOOK },    { "--light", CLI_OPT_LOOK },
+    { "--texture", CLI_OPT_LOOK },
 };
 
 static unsigned group_of(const char *arg)
@@ -382,7 +383,9 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "  --light [point:]x,y,z[:RRGGBB]  a white (or RRGGBB) light instead of the\n"
             "                       default two: directional from direction x,y,z (model\n"
             "                       axes, towards the light), or with point: at position\n"
-            "                       x,y,z; repeat for up to %d lights\n",
+            "                       x,y,z; repeat for up to %d lights\n"
+            "  --texture FILE.png   map the image over the mesh's texture coordinates (an\n"
+            "                       OBJ's material texture, map_Kd, is used without it)\n",
             (unsigned)ro.bg_rgb, (unsigned)v3_to_rgb(ph.mat.color), cli_fx_to_double(ph.mat.ambient),
             cli_fx_to_double(ph.mat.specular), ph.mat.shininess, SILK_MAX_LIGHTS);
 }
@@ -551,6 +554,9 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         long n;
         r = cli_parse_long(opt, v, 1, 256, &n);
         o->look.shininess = (int)n;
+    } else if (cli_is(arg, "--texture")) {
+        VALUE();
+        o->look.texture_path = v;
     } else if (cli_is(arg, "--light")) {
         VALUE();
         if (o->look.nlights == SILK_MAX_LIGHTS) return cli_fail(-1, "--light: at most %d lights", SILK_MAX_LIGHTS);
@@ -884,7 +890,10 @@ int cli_scene_load(cli_scene *s, const cli_scene_opts *o)
         return cli_fail(CLI_EXIT_INPUT, "the arena (%zu bytes) has no room for a %dx%d frame (%zu bytes); raise --arena",
                         s->arena.size, o->width, o->height, raster_bytes(o));
     silk_target_init(&s->target, o->width, o->height, 0, o->height, o->fmt, color, depth);
-    cli_phong(o, &s->view, &s->phong);
+    rc = cli_material_load(&s->material, o->mesh_path, s->file, s->file_len, &s->mesh, o->look.texture_path,
+                           o->quiet);
+    if (rc) return rc;
+    cli_scene_phong(s, o, &s->view, &s->phong);
     silk_hal_phong(&s->hal, &s->phong);
     return 0;
 }
@@ -916,6 +925,12 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
             p->lights[i].color = rgb_to_v3(li->rgb);
         }
     }
+}
+
+void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_view *view, silk_phong *p)
+{
+    cli_phong(o, view, p);
+    cli_material_apply(&s->material, &s->mesh, o->look.have_color, o->look.have_specular, o->look.shininess != 0, p);
 }
 
 cli_alpha cli_alpha_for(const cli_scene_opts *o)
@@ -960,6 +975,7 @@ int cli_write_image(const silk_target *t, const char *path, silk_image_format fm
 
 void cli_scene_free(cli_scene *s)
 {
+    cli_material_free(&s->material);
     free(s->arena_buf);
     free(s->file);
     memset(s, 0, sizeof *s);

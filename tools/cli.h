@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "silk/silk.h"
+#include "material.h"
 #include "../platform/platform.h"
 
 #define CLI_EXIT_INPUT 1      /* a file, a mesh or a render failed */
@@ -106,6 +107,7 @@ typedef struct cli_look {
     int shininess;             /* 0: the default */
     int nlights;               /* 0: the default two lights */
     cli_light light[SILK_MAX_LIGHTS];
+    const char *texture_path;  /* --texture: NULL for the OBJ material's map_Kd, if any */
 } cli_look;
 
 /* Everything `silk render` and `silk info` read from the command line
@@ -199,6 +201,7 @@ typedef struct cli_scene {
     silk_phong phong;
     silk_hal hal;
     size_t load_bytes;         /* arena bottom after loading the mesh */
+    cli_material material;     /* the OBJ material, the texture */
 } cli_scene;
 
 /* One line on stderr when loading turned triangles round, or found a
@@ -211,6 +214,8 @@ void cli_orient_note(const char *path, const silk_mesh *m);
  * Returns 0, or an exit code after printing the error; cli_scene_free
  * releases everything either way. */
 int cli_scene_load(cli_scene *s, const cli_scene_opts *o);
+/* cli_phong, then the scene's material, texture and vertex colours. */
+void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_view *view, silk_phong *p);
 void cli_scene_free(cli_scene *s);
 
 /* The camera for o and the loaded mesh: the options where given, the default
