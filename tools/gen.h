@@ -32,6 +32,7 @@ typedef struct gen_params {
     double R, r;       /* torus: major and minor radius; knot: the torus it winds on */
     double tube;       /* knot: radius of the tube around the curve */
     int p, q;          /* knot: p turns around the y axis, q turns through the hole */
+    int uv;            /* sphere, torus: write texture coordinates (vt) too */
 } gen_params;
 
 typedef struct gen_mesh {

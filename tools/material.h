@@ -19,6 +19,12 @@ typedef struct cli_material {
     uint8_t *pixels;           /* malloc'd */
 } cli_material;
 
+/* --texture checker: a built-in CLI_CHECKER_SIZE square image of 8 x 8
+ * squares that cli_checker draws (rgb: size * size * 3 bytes). */
+#define CLI_CHECKER "checker"
+#define CLI_CHECKER_SIZE 256
+void cli_checker(uint8_t *rgb, int size, int squares);
+
 /* The texture of an image file: RGB888, every mipmap level, bilinear and
  * repeating.  Returns 0, or -1 after filling msg. */
 int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, silk_texture *t, uint8_t **pixels, char *msg,
