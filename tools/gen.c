@@ -702,3 +702,15 @@ int gen_write_obj(const gen_mesh *m, const gen_params *p, FILE *f)
     }
     return ferror(f) ? -1 : 0;
 }
+
+void gen_checker(uint8_t *rgb, int size, int squares)
+{
+    static const uint8_t col[2][3] = { { 232, 196, 120 }, { 70, 110, 170 } };
+    int cell = size / squares > 0 ? size / squares : 1;
+    for (int y = 0; y < size; y++)
+        for (int x = 0; x < size; x++) {
+            int c = (x / cell + y / cell) & 1, line = x % cell == 0 || y % cell == 0;
+            uint8_t *p = rgb + 3 * ((size_t)y * (size_t)size + (size_t)x);
+            for (int k = 0; k < 3; k++) p[k] = (uint8_t)(line ? col[c][k] * 3 / 4 : col[c][k]);
+        }
+}

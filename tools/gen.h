@@ -66,6 +66,12 @@ void gen_free(gen_mesh *m);
  * lines (%.9g) and f lines (1-based).  Returns 0, or -1 on a write error. */
 int gen_write_obj(const gen_mesh *m, const gen_params *p, FILE *f);
 
+/* A texture to go with --uv: size x size RGB888 pixels (rgb holds size *
+ * size * 3 bytes) of squares x squares warm and cool squares, each with a
+ * darker line along its top and left sides, so that orientation and any
+ * seam show. */
+void gen_checker(uint8_t *rgb, int size, int squares);
+
 /* Point of the knot's centre curve at parameter t in [0, 2 pi). */
 void gen_knot_curve(const gen_params *p, double t, double out[3]);
 

@@ -14,6 +14,7 @@
 #include <string.h>
 #include "material.h"
 #include "cli.h"
+#include "gen.h"
 #include "silk/platform.h"
 
 int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, silk_texture *t, uint8_t **pixels, char *msg,
@@ -46,19 +47,6 @@ int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, silk_texture
     return 0;
 }
 
-void cli_checker(uint8_t *rgb, int size, int squares)
-{
-    /* warm and cool squares, each with a thin darker line along its top and
-     * left sides, so that orientation and seams show */
-    static const uint8_t col[2][3] = { { 232, 196, 120 }, { 70, 110, 170 } };
-    int cell = size / squares;
-    for (int y = 0; y < size; y++)
-        for (int x = 0; x < size; x++) {
-            int c = (x / cell + y / cell) & 1, line = x % cell == 0 || y % cell == 0;
-            for (int k = 0; k < 3; k++) rgb[3 * ((size_t)y * size + x) + k] = (uint8_t)(line ? col[c][k] * 3 / 4 : col[c][k]);
-        }
-}
-
 /* Read an image (or draw the built-in checker) into mt's texture; 0, or -1
  * with msg filled. */
 static int read_texture(cli_material *mt, const char *path, char *msg, size_t msglen)
@@ -73,7 +61,7 @@ static int read_texture(cli_material *mt, const char *path, char *msg, size_t ms
             snprintf(msg, msglen, "out of memory for the checker texture");
             return -1;
         }
-        cli_checker(rgb, w, 8);
+        gen_checker(rgb, w, 8);
     } else if (silk_image_read(path, 0, &rgb, &w, &h, &err) != SILK_OK) {
         snprintf(msg, msglen, "%s", err.msg);
         return -1;

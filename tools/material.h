@@ -20,10 +20,9 @@ typedef struct cli_material {
 } cli_material;
 
 /* --texture checker: a built-in CLI_CHECKER_SIZE square image of 8 x 8
- * squares that cli_checker draws (rgb: size * size * 3 bytes). */
+ * squares (gen_checker). */
 #define CLI_CHECKER "checker"
 #define CLI_CHECKER_SIZE 256
-void cli_checker(uint8_t *rgb, int size, int squares);
 
 /* The texture of an image file: RGB888, every mipmap level, bilinear and
  * repeating.  Returns 0, or -1 after filling msg. */
