@@ -8,8 +8,10 @@
  * Not a paper equation: the paper only carries uvs through the re-meshing
  * (section V); how a texel is read is the usual GPU way, in integers.
  * Texel centres sit at half-integer texel coordinates: x = u W - 1/2.
- * Bilinear and level weights use 8 and 4 fractional bits, enough for 8-bit
- * channels; everything is an integer function of its inputs, so a device
+ * Bilinear weights keep 16 fractional bits (within one level of an 8-bit
+ * channel of the exact blend, tests/test_texture.c), the level 4 (lambda
+ * from the exponent of rho and four bits of log2 of its mantissa by
+ * repeated squaring); everything is an integer function of its inputs, so a device
  * samples the same bits as the host.
  */
 #include "silk/texture.h"
@@ -147,12 +149,22 @@ static uint32_t sample_level(const silk_texture *t, int k, silk_fx u, silk_fx v)
     x -= SILK_FX_HALF;
     y -= SILK_FX_HALF;
     int64_t xi = x >> 16, yi = y >> 16;
-    int32_t fx = (int32_t)((x >> 8) & 0xff), fy = (int32_t)((y >> 8) & 0xff);
+    int32_t fx = (int32_t)(x & 0xffff), fy = (int32_t)(y & 0xffff);
     int x0 = wrap(xi, w, t->wrap), x1 = wrap(xi + 1, w, t->wrap);
     int y0 = wrap(yi, h, t->wrap), y1 = wrap(yi + 1, h, t->wrap);
-    uint32_t top = mix(fetch(t, lv, w, x0, y0), fetch(t, lv, w, x1, y0), fx, 8);
-    uint32_t bot = mix(fetch(t, lv, w, x0, y1), fetch(t, lv, w, x1, y1), fx, 8);
-    return mix(top, bot, fy, 8);
+    /* the rows blended with 8 extra bits kept, then the columns */
+    int64_t c[3];
+    uint32_t t00 = fetch(t, lv, w, x0, y0), t10 = fetch(t, lv, w, x1, y0);
+    uint32_t t01 = fetch(t, lv, w, x0, y1), t11 = fetch(t, lv, w, x1, y1);
+    uint32_t out = 0;
+    for (int k = 0; k < 3; k++) {
+        int s = 16 - 8 * k;
+        int64_t top = ((int64_t)(t00 >> s & 0xff) << 16) + ((int64_t)(t10 >> s & 0xff) - (t00 >> s & 0xff)) * fx;
+        int64_t bot = ((int64_t)(t01 >> s & 0xff) << 16) + ((int64_t)(t11 >> s & 0xff) - (t01 >> s & 0xff)) * fx;
+        c[k] = ((top << 16) + (bot - top) * fy + ((int64_t)1 << 31)) >> 32;
+        out |= (uint32_t)c[k] << s;
+    }
+    return out;
 }
 
 uint32_t silk_texture_sample(const silk_texture *t, silk_fx u, silk_fx v, silk_fx du, silk_fx dv)
@@ -164,11 +176,18 @@ uint32_t silk_texture_sample(const silk_texture *t, silk_fx u, silk_fx v, silk_f
     int64_t rho = ru > rv ? ru : rv;
     int levels = t->levels < 1 ? 1 : t->levels;
     if (levels == 1 || rho <= SILK_FX_ONE) return sample_level(t, 0, u, v);
-    /* lambda = log2 rho in Q4: the exponent, then the next four mantissa
-     * bits as a linear approximation of the fraction */
+    /* lambda = log2 rho in Q4: the exponent, then four bits of the
+     * fraction by squaring the mantissa m in [1, 2): each squaring that
+     * reaches 2 is a 1 bit (then halve) */
     int b = 0;
     while ((rho >> (b + 1)) != 0) b++;
-    int lod = (b - 16) * 16 + (int)((rho >> (b - 4)) & 15);
+    int64_t m = rho >> (b - 16);   /* Q16 in [1, 2) */
+    int lod = b - 16;
+    for (int i = 0; i < 4; i++) {
+        m = (m * m) >> 16;
+        lod = 2 * lod + (m >= 2 * SILK_FX_ONE);
+        if (m >= 2 * SILK_FX_ONE) m >>= 1;
+    }
     int k = lod >> 4, f = lod & 15;
     if (k >= levels - 1) return sample_level(t, levels - 1, u, v);
     if (t->filter == SILK_TEX_NEAREST) return sample_level(t, f >= 8 ? k + 1 : k, u, v);
