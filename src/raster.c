@@ -338,7 +338,8 @@ static void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b
  * neighbour, the larger of the two for each, into var[nvar] and
  * var[nvar + 1].  Finite differences of the same perspective-correct
  * interpolation, per pixel.  A neighbour past the triangle's horizon
- * (T <= 0) counts as no movement; the weight steps are clamped to 2^29 so
+ * (T <= 0) or with a weight outside [-1, 1] (a triangle under a pixel
+ * wide) counts as no movement; the weight steps are clamped to 2^29 so
  * every product stays far inside 64 bits. */
 static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T, int64_t b1, int64_t b2,
                       silk_fx *var)
@@ -347,9 +348,10 @@ static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T
     int64_t db[2][2] = { { 0, 0 }, { 0, 0 } };
     const int64_t step[2][3] = { { s->du, s->dv, s->dt }, { s->duy, s->dvy, s->dty } };
     for (int i = 0; i < 2; i++) {
-        int64_t c1, c2;
-        if (T + step[i][2] <= 0) continue;
-        bary(s, U + step[i][0], V + step[i][1], T + step[i][2], &c1, &c2);
+        int64_t c1, c2, u = U + step[i][0], v = V + step[i][1], t = T + step[i][2];
+        /* weights in [-1, 1] only: bary's products are bounded for those */
+        if (t <= 0 || u > t || -u > t || v > t || -v > t) continue;
+        bary(s, u, v, t, &c1, &c2);
         c1 -= b1;
         c2 -= b2;
         db[i][0] = c1 < -lim ? -lim : (c1 > lim ? lim : c1);

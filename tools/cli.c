@@ -386,7 +386,8 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "                       x,y,z; repeat for up to %d lights\n"
             "  --texture FILE.png   map the image over the mesh's texture coordinates (an\n"
             "                       OBJ's material texture, map_Kd, is used without it);\n"
-            "                       --texture checker: a built-in checker of 8 x 8 squares\n",
+            "                       --texture checker[:N]: a built-in N x N (256) image of\n"
+            "                       8 x 8 squares\n",
             (unsigned)ro.bg_rgb, (unsigned)v3_to_rgb(ph.mat.color), cli_fx_to_double(ph.mat.ambient),
             cli_fx_to_double(ph.mat.specular), ph.mat.shininess, SILK_MAX_LIGHTS);
 }

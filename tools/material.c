@@ -54,8 +54,14 @@ static int read_texture(cli_material *mt, const char *path, char *msg, size_t ms
     uint8_t *rgb = NULL;
     int w = 0, h = 0;
     silk_error err;
-    if (strcmp(path, CLI_CHECKER) == 0) {
-        w = h = CLI_CHECKER_SIZE;
+    size_t ck = strlen(CLI_CHECKER);
+    if (strncmp(path, CLI_CHECKER, ck) == 0 && (path[ck] == '\0' || path[ck] == ':')) {
+        long n = CLI_CHECKER_SIZE;
+        if (path[ck] == ':' && cli_parse_long("--texture checker:N", path + ck + 1, 8, SILK_TEX_MAX_DIM, &n) != 0) {
+            snprintf(msg, msglen, "--texture %s: the checker's size must be 8 to %d", path, SILK_TEX_MAX_DIM);
+            return -1;
+        }
+        w = h = (int)n;
         rgb = malloc((size_t)w * (size_t)h * 3);
         if (!rgb) {
             snprintf(msg, msglen, "out of memory for the checker texture");

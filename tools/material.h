@@ -19,8 +19,8 @@ typedef struct cli_material {
     uint8_t *pixels;           /* malloc'd */
 } cli_material;
 
-/* --texture checker: a built-in CLI_CHECKER_SIZE square image of 8 x 8
- * squares (gen_checker). */
+/* --texture checker[:N]: a built-in N x N (default CLI_CHECKER_SIZE) image
+ * of 8 x 8 squares (gen_checker). */
 #define CLI_CHECKER "checker"
 #define CLI_CHECKER_SIZE 256
 
