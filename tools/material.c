@@ -57,7 +57,9 @@ static int read_texture(cli_material *mt, const char *path, char *msg, size_t ms
     size_t ck = strlen(CLI_CHECKER);
     if (strncmp(path, CLI_CHECKER, ck) == 0 && (path[ck] == '\0' || path[ck] == ':')) {
         long n = CLI_CHECKER_SIZE;
-        if (path[ck] == ':' && cli_parse_long("--texture checker:N", path + ck + 1, 8, SILK_TEX_MAX_DIM, &n) != 0) {
+        char *end = NULL;
+        if (path[ck] == ':') n = strtol(path + ck + 1, &end, 10);
+        if (path[ck] == ':' && (end == path + ck + 1 || *end || n < 8 || n > SILK_TEX_MAX_DIM)) {
             snprintf(msg, msglen, "--texture %s: the checker's size must be 8 to %d", path, SILK_TEX_MAX_DIM);
             return -1;
         }
