@@ -64,7 +64,7 @@ typedef struct ply_reader {
     uint32_t nelem, nprop;
     int vertex, face;         /* element numbers, -1 when absent */
     int has_normals, has_uv, has_color;
-    int color_max;            /* 1 for float colour channels, 255 for integer ones */
+    int color_max;            /* 1 for colour channels stored as binary32/64, 255 for integer ones */
     uint64_t tris;
     /* where we are in the body, for messages */
     const ply_elem *cur;

@@ -338,9 +338,8 @@ static void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b
  * neighbour, the larger of the two for each, into var[nvar] and
  * var[nvar + 1].  Finite differences of the same perspective-correct
  * interpolation, per pixel.  A neighbour past the triangle's horizon
- * (T <= 0) or with a weight outside [-1, 1] (a triangle under a pixel
- * wide) counts as no movement; the weight steps are clamped to 2^29 so
- * every product stays far inside 64 bits. */
+ * (T <= 0) counts as no movement; the weight steps are clamped to 2^29
+ * (one half) so every product stays far inside 64 bits. */
 static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T, int64_t b1, int64_t b2,
                       silk_fx *var)
 {
@@ -349,9 +348,14 @@ static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T
     const int64_t step[2][3] = { { s->du, s->dv, s->dt }, { s->duy, s->dvy, s->dty } };
     for (int i = 0; i < 2; i++) {
         int64_t c1, c2, u = U + step[i][0], v = V + step[i][1], t = T + step[i][2];
-        /* weights in [-1, 1] only: bary's products are bounded for those */
-        if (t <= 0 || u > t || -u > t || v > t || -v > t) continue;
-        bary(s, u, v, t, &c1, &c2);
+        if (t <= 0) continue;
+        /* bary's products are bounded for weights in [-1, 1]; a weight
+         * beyond (a triangle under a pixel wide) moves by more than the
+         * clamp below anyway, so +-2 stands for it */
+        int64_t uc = u > t ? t : (u < -t ? -t : u), vc = v > t ? t : (v < -t ? -t : v);
+        bary(s, uc, vc, t, &c1, &c2);
+        if (uc != u) c1 = u > 0 ? 4 * lim : -4 * lim;
+        if (vc != v) c2 = v > 0 ? 4 * lim : -4 * lim;
         c1 -= b1;
         c2 -= b2;
         db[i][0] = c1 < -lim ? -lim : (c1 > lim ? lim : c1);
