@@ -10,7 +10,9 @@
  * (a, b, c, d) = ((j,k), (j+1,k), (j+1,k+1), (j,k+1)) then gives the
  * triangles (a,b,c) and (a,c,d), counter-clockwise seen from outside.
  */
+#define _POSIX_C_SOURCE 200809L   /* open_memstream */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -701,6 +703,24 @@ int gen_write_obj(const gen_mesh *m, const gen_params *p, FILE *f)
         fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
     }
     return ferror(f) ? -1 : 0;
+}
+
+char *gen_obj_text(const gen_params *p, size_t *len)
+{
+    char why[160];
+    gen_mesh m;
+    if (gen_check(p, why, sizeof why) || gen_build(p, &m) != 0) return NULL;
+    char *text = NULL;
+    *len = 0;
+    FILE *f = open_memstream(&text, len);
+    int ok = f && gen_write_obj(&m, p, f) == 0;
+    if (f && fclose(f) != 0) ok = 0;
+    gen_free(&m);
+    if (!ok) {
+        free(text);
+        return NULL;
+    }
+    return text;
 }
 
 void gen_checker(uint8_t *rgb, int size, int squares)

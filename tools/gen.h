@@ -65,6 +65,9 @@ void gen_free(gen_mesh *m);
 /* Wavefront OBJ: a comment with the command that reproduces it, then v
  * lines (%.9g) and f lines (1-based).  Returns 0, or -1 on a write error. */
 int gen_write_obj(const gen_mesh *m, const gen_params *p, FILE *f);
+/* gen_build and gen_write_obj into memory: the OBJ text (malloc'd, *len
+ * bytes), or NULL when p fails gen_check or memory runs out. */
+char *gen_obj_text(const gen_params *p, size_t *len);
 
 /* A texture to go with --uv: size x size RGB888 pixels (rgb holds size *
  * size * 3 bytes) of squares x squares warm and cool squares, each with a
