@@ -96,6 +96,13 @@ static void store(const silk_texture *t, uint8_t *lv, size_t i, uint32_t rgb)
     }
 }
 
+void silk_texture_encode(const silk_texture *t, uint8_t *pixels, const uint8_t *rgb)
+{
+    size_t n = (size_t)t->width * (size_t)t->height;
+    for (size_t i = 0; i < n; i++)
+        store(t, pixels, i, (uint32_t)rgb[3 * i] << 16 | (uint32_t)rgb[3 * i + 1] << 8 | rgb[3 * i + 2]);
+}
+
 void silk_texture_build_mipmaps(silk_texture *t, uint8_t *pixels)
 {
     for (int k = 1; k < t->levels; k++) {

@@ -29,6 +29,18 @@ want='has no texture coordinates' expect_usage "--texture on a mesh without uvs"
 want='checker.s size must be 8 to' expect_input "a checker too small" render "$tmp/globe.obj" --texture checker:3 \
     -o "$tmp/x.png"
 
+# how the texels are stored and sampled
+for opt in "--texture-format rgb565" "--texture-format pal8" "--texture-filter nearest" "--texture-wrap clamp"; do
+    # shellcheck disable=SC2086
+    run_silk render "$tmp/globe.obj" --size 64x48 --texture checker $opt -o "$tmp/opt.png"
+    check "$opt renders" [ "$rc" -eq 0 ] && [ -s "$tmp/opt.png" ]
+    check "$opt changes the picture" sh -c "! cmp -s '$tmp/checker.png' '$tmp/opt.png'"
+done
+want='must be rgb888, rgb565 or pal8' expect_usage "a bad --texture-format" render "$tmp/globe.obj" \
+    --texture checker --texture-format rgb999 -o "$tmp/x.png"
+want='must be repeat or clamp' expect_usage "a bad --texture-wrap" render "$tmp/globe.obj" --texture checker \
+    --texture-wrap mirror -o "$tmp/x.png"
+
 # a material: Kd and map_Kd (the checker written as an image first)
 "$SILK" render "$tmp/globe.obj" --size 64x64 --texture checker -o "$tmp/any.png" 2>/dev/null
 { echo "mtllib globe.mtl"; echo "usemtl painted"; cat "$tmp/globe.obj"; } >"$tmp/mat.obj"
@@ -67,6 +79,9 @@ check "vertex colours change the picture" sh -c "! cmp -s '$tmp/plain.png' '$tmp
 run_silk pack "$tmp/globe.obj" --texture checker:16 -o "$tmp/globe.h"
 check "pack --texture" [ "$rc" -eq 0 ] && grep -q 'globe_texels\[' "$tmp/globe.h" && grep -q 'p->texture = &globe_texture;' "$tmp/globe.h"
 check "pack reports the texture bytes" grep -q 'texture [0-9]' "$out"
+run_silk pack "$tmp/globe.obj" --texture checker:16 --texture-format pal8 -o "$tmp/pal.h"
+check "pack --texture-format pal8: the palette and the options" grep -q 'pal_palette\[256\]' "$tmp/pal.h" &&
+    grep -q 'texture: `--texture checker:16 --texture-format pal8`' "$tmp/pal.h"
 run_silk pack "$tmp/red.obj" -o "$tmp/red.h"
 check "pack: vertex colours" grep -q 'm->color = (uint32_t \*)red_color;' "$tmp/red.h"
 done_testing

@@ -102,6 +102,16 @@ TEST(formats_rgb565_and_paletted)
     uint8_t idx[1] = { 3 };
     silk_texture q = { idx, pal, 1, 1, SILK_TEX_PAL8, 1, SILK_TEX_BILINEAR, SILK_TEX_CLAMP };
     CHECK(silk_texture_sample(&q, SILK_FX_HALF, SILK_FX_HALF, 0, 0) == 0x123456);
+    /* encoding: 565 rounds each channel (7/255 of green to 2/63), a palette
+     * takes the nearest entry */
+    const uint8_t rgb[6] = { 0xff, 0x07, 0xff, 0x10, 0x30, 0x50 };
+    uint8_t two[4];
+    silk_texture e = { two, NULL, 2, 1, SILK_TEX_RGB565, 1, SILK_TEX_NEAREST, SILK_TEX_CLAMP };
+    silk_texture_encode(&e, two, rgb);
+    CHECK(silk_texture_sample(&e, dfx(0.25), 0, 0, 0) == 0xff08ff);
+    pal[9] = 0x103252;
+    silk_texture_encode(&q, idx, rgb + 3);
+    CHECK(idx[0] == 9);
 }
 
 TEST(mipmaps_average_and_levels_follow_the_footprint)

@@ -108,6 +108,7 @@ typedef struct cli_look {
     int nlights;               /* 0: the default two lights */
     cli_light light[SILK_MAX_LIGHTS];
     const char *texture_path;  /* --texture: NULL for the OBJ material's map_Kd, if any */
+    cli_texture_opts texture;  /* --texture-format, --texture-filter, --texture-wrap */
 } cli_look;
 
 /* Everything `silk render` and `silk info` read from the command line
@@ -247,6 +248,12 @@ double cli_mesh_radius(const silk_mesh *m, double c[3]);
  * usage error for an option no one took. */
 int cli_help(const char *arg, void (*help)(FILE *));
 int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
+/* --texture FILE, --texture-format, --texture-filter, --texture-wrap into
+ * o->look (for commands without the look options): 1 when argv[*i] was one
+ * of them (*rc set to CLI_EXIT_USAGE when its value was bad), else 0. */
+int cli_texture_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
+/* Those options as a command line gives them, for a header to record. */
+void cli_texture_args_text(const cli_scene_opts *o, char *buf, size_t n);
 int cli_unknown_option(const char *cmd, const char *arg);
 
 /* An argument of `silk CMD` that no option took: the one mesh (*mesh_path),

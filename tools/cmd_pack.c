@@ -57,7 +57,8 @@ static void help(FILE *f)
             "                       turned by k*360/N degrees about the vertical through the\n"
             "                       target, odd k mirrored to look from below\n"
             "  --texture FILE.png   the texture, as `silk render --texture` takes it, packed\n"
-            "                       with its mipmaps; NAME_look(&phong) sets it, the OBJ\n"
+            "                       with its mipmaps (also --texture-format, --texture-filter,\n"
+            "                       --texture-wrap); NAME_look(&phong) sets it, the OBJ\n"
             "                       material and the vertex colours as `silk render` does\n",
             PACK_MAX_EYES, PACK_MAX_EYES);
     cli_print_scene_help(f, PACK_OPTIONS);
@@ -223,12 +224,13 @@ static void put_texture(writer *w, const silk_texture *t)
     array_open(w, "uint8_t", "texels", n, K_TEXTURE, 1);
     for (size_t i = 0; i < n; i++) item(w, "%u", (unsigned)t->pixels[i]);
     array_close(w, n);
+    if (t->palette) put_u32_array(w, "palette", t->palette, 256, K_TEXTURE);
     w->bytes[K_TEXTURE] += sizeof(silk_texture);
     fprintf(w->fp,
             "static const silk_texture %s_texture = {\n"
-            "    %s_texels, NULL, %u, %u, %u, %u, %u, %u\n"
+            "    %s_texels, %s%s, %u, %u, %u, %u, %u, %u\n"
             "};\n\n",
-            w->name, w->name, (unsigned)t->width, (unsigned)t->height, (unsigned)t->format, (unsigned)t->levels,
+            w->name, w->name, t->palette ? w->name : "NULL", t->palette ? "_palette" : "", (unsigned)t->width, (unsigned)t->height, (unsigned)t->format, (unsigned)t->levels,
             (unsigned)t->filter, (unsigned)t->wrap);
 }
 
@@ -323,7 +325,7 @@ static int write_header(writer *w, const char *mesh_path, const char *texture, c
             " * the packed views, %s_look(&phong) the material.  Coordinates are Q16.16.\n"
             "%s%s%s"
             " */\n",
-            w->name, mesh_path, SILK_VERSION, w->name, w->name, w->name, texture ? " * texture: `--texture " : "",
+            w->name, mesh_path, SILK_VERSION, w->name, w->name, w->name, texture ? " * texture: `" : "",
             texture ? texture : "", texture ? "`\n" : "");
     fprintf(f, "#ifndef SILK_PACK_%s_H\n#define SILK_PACK_%s_H\n\n#include <string.h>\n#include \"silk/silk.h\"\n\n",
             w->name, w->name);
@@ -423,9 +425,8 @@ int cmd_pack(int argc, char **argv)
             continue;
         }
         if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
-        if (cli_is(a, "--texture")) {
-            if (!(o.look.texture_path = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
+        if (cli_texture_arg(&o, argc, argv, &i, &rc)) continue;
+        if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--views")) {
             const char *v = cli_value(argc, argv, &i);
@@ -480,7 +481,9 @@ int cmd_pack(int argc, char **argv)
     silk_status st = silk_outfile_open(&of, out, &err);
     if (st == SILK_OK) {
         w.fp = of.fp;
-        if (write_header(&w, cli_input_name(o.mesh_path), o.look.texture_path, &s, cams, ncams) != 0) {
+        char texture[600];
+        cli_texture_args_text(&o, texture, sizeof texture);
+        if (write_header(&w, cli_input_name(o.mesh_path), o.look.texture_path ? texture : NULL, &s, cams, ncams) != 0) {
             silk_outfile_abort(&of);
             st = silk_fail(&err, SILK_ERR_IO, of.path, 0, "write failed");
         } else {

@@ -17,8 +17,8 @@
 #include "gen.h"
 #include "silk/platform.h"
 
-int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, silk_texture *t, uint8_t **pixels, char *msg,
-                         size_t msglen)
+int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, const cli_texture_opts *to,
+                         const uint32_t *palette, silk_texture *t, uint8_t **pixels, char *msg, size_t msglen)
 {
     memset(t, 0, sizeof *t);
     *pixels = NULL;
@@ -28,28 +28,53 @@ int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, silk_texture
         return -1;
     }
     int levels = silk_texture_max_levels(width, height);
-    size_t bytes = silk_texture_bytes(SILK_TEX_RGB888, width, height, levels);
+    size_t bytes = silk_texture_bytes(to->format, width, height, levels);
     uint8_t *p = malloc(bytes);
     if (!p) {
         snprintf(msg, msglen, "out of memory for a %dx%d texture", width, height);
         return -1;
     }
-    memcpy(p, rgb, (size_t)width * (size_t)height * 3);
     t->pixels = p;
+    t->palette = to->format == SILK_TEX_PAL8 ? palette : NULL;
     t->width = (uint16_t)width;
     t->height = (uint16_t)height;
-    t->format = SILK_TEX_RGB888;
+    t->format = (uint8_t)to->format;
     t->levels = (uint8_t)levels;
-    t->filter = SILK_TEX_BILINEAR;
-    t->wrap = SILK_TEX_REPEAT;
+    t->filter = (uint8_t)to->filter;
+    t->wrap = (uint8_t)to->wrap;
+    silk_texture_encode(t, p, rgb);
     silk_texture_build_mipmaps(t, p);
     *pixels = p;
     return 0;
 }
 
+/* The image's own colours when it has at most 256, else a fixed palette:
+ * 6 levels of red and blue, 7 of green (the eye tells green apart best). */
+static void make_palette(const uint8_t *rgb, size_t n, uint32_t pal[256])
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n && k <= 256; i++) {
+        uint32_t c = (uint32_t)rgb[3 * i] << 16 | (uint32_t)rgb[3 * i + 1] << 8 | rgb[3 * i + 2];
+        size_t j = 0;
+        while (j < k && j < 256 && pal[j] != c) j++;
+        if (j == k) {
+            if (k < 256) pal[k] = c;
+            k++;
+        }
+    }
+    if (k <= 256) {
+        for (size_t j = k; j < 256; j++) pal[j] = pal[0];
+        return;
+    }
+    for (int i = 0; i < 256; i++) {
+        int r = i / 42 % 6, g = i / 6 % 7, b = i % 6;
+        pal[i] = (uint32_t)(r * 51) << 16 | (uint32_t)(g * 255 / 6) << 8 | (uint32_t)(b * 51);
+    }
+}
+
 /* Read an image (or draw the built-in checker) into mt's texture; 0, or -1
  * with msg filled. */
-static int read_texture(cli_material *mt, const char *path, char *msg, size_t msglen)
+static int read_texture(cli_material *mt, const char *path, const cli_texture_opts *to, char *msg, size_t msglen)
 {
     uint8_t *rgb = NULL;
     int w = 0, h = 0;
@@ -74,7 +99,8 @@ static int read_texture(cli_material *mt, const char *path, char *msg, size_t ms
         snprintf(msg, msglen, "%s", err.msg);
         return -1;
     }
-    int rc = cli_texture_from_rgb(rgb, w, h, &mt->texture, &mt->pixels, msg, msglen);
+    if (to->format == SILK_TEX_PAL8) make_palette(rgb, (size_t)w * (size_t)h, mt->palette);
+    int rc = cli_texture_from_rgb(rgb, w, h, to, mt->palette, &mt->texture, &mt->pixels, msg, msglen);
     free(rgb);
     if (rc == 0) mt->have_texture = 1;
     return rc;
@@ -180,7 +206,7 @@ static void parse_mtl(cli_material *mt, const char *mtl_path, const char *data, 
 }
 
 int cli_material_load(cli_material *mt, const char *path, const uint8_t *file, size_t len, const silk_mesh *m,
-                      const char *texture_path, int quiet)
+                      const char *texture_path, const cli_texture_opts *to, int quiet)
 {
     memset(mt, 0, sizeof *mt);
     char msg[600];
@@ -189,7 +215,7 @@ int cli_material_load(cli_material *mt, const char *path, const uint8_t *file, s
         if (!m->uv)
             return cli_fail(CLI_EXIT_USAGE, "--texture: %s has no texture coordinates",
                             mesh_name ? mesh_name : SILK_STDIN_NAME);
-        if (read_texture(mt, texture_path, msg, sizeof msg) != 0) return cli_fail(CLI_EXIT_INPUT, "%s", msg);
+        if (read_texture(mt, texture_path, to, msg, sizeof msg) != 0) return cli_fail(CLI_EXIT_INPUT, "%s", msg);
     }
     /* an OBJ file's material: mtllib and the first usemtl */
     char lib[1024] = "", use[1024] = "", rest[1024];
@@ -215,7 +241,7 @@ int cli_material_load(cli_material *mt, const char *path, const uint8_t *file, s
         char tex_path[2100];
         beside(mtl_path, map, tex_path, sizeof tex_path);
         if (!m->uv) warn(quiet, "%s: the mesh has no texture coordinates for %s", mesh_name ? mesh_name : SILK_STDIN_NAME, map);
-        else if (read_texture(mt, tex_path, msg, sizeof msg) != 0) warn(quiet, "%s%s", msg, "");
+        else if (read_texture(mt, tex_path, to, msg, sizeof msg) != 0) warn(quiet, "%s%s", msg, "");
     }
     return 0;
 }

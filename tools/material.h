@@ -15,8 +15,9 @@ typedef struct cli_material {
     int have_kd, have_ks, have_ns;
     double kd[3], ks[3], ns;
     int have_texture;
-    silk_texture texture;      /* RGB888 with every mipmap level */
+    silk_texture texture;      /* with every mipmap level */
     uint8_t *pixels;           /* malloc'd */
+    uint32_t palette[256];     /* SILK_TEX_PAL8: 6 x 7 x 6 levels of red, green, blue */
 } cli_material;
 
 /* --texture checker[:N]: a built-in N x N (default CLI_CHECKER_SIZE) image
@@ -24,10 +25,19 @@ typedef struct cli_material {
 #define CLI_CHECKER "checker"
 #define CLI_CHECKER_SIZE 256
 
-/* The texture of an image file: RGB888, every mipmap level, bilinear and
- * repeating.  Returns 0, or -1 after filling msg. */
-int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, silk_texture *t, uint8_t **pixels, char *msg,
-                         size_t msglen);
+/* How a texture is stored and sampled (--texture-format, --texture-filter,
+ * --texture-wrap); zeros are RGB888, bilinear, repeating. */
+typedef struct cli_texture_opts {
+    silk_texfmt format;
+    silk_texfilter filter;
+    silk_texwrap wrap;
+} cli_texture_opts;
+
+/* The texture of an image (rgb: width * height R, G, B bytes) with every
+ * mipmap level; palette: 256 colours for SILK_TEX_PAL8.  Returns 0, or -1
+ * after filling msg. */
+int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, const cli_texture_opts *to,
+                         const uint32_t *palette, silk_texture *t, uint8_t **pixels, char *msg, size_t msglen);
 
 /* Read the material of the mesh file (file, len: its bytes; path: where it
  * is, for the .mtl next to it) and the texture (texture_path, or map_Kd
@@ -36,7 +46,7 @@ int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, silk_texture
  * texture_path, or one given for a mesh without texture coordinates, is an
  * error.  Returns 0 or an exit code after printing the error. */
 int cli_material_load(cli_material *mt, const char *path, const uint8_t *file, size_t len, const silk_mesh *m,
-                      const char *texture_path, int quiet);
+                      const char *texture_path, const cli_texture_opts *to, int quiet);
 /* Material values the user did not set on the command line (have_color,
  * have_specular, have_shininess say which they did), the texture, and the
  * vertex colours of m. */

@@ -56,6 +56,9 @@ size_t silk_texture_texel_bytes(silk_texfmt f);
 int silk_texture_max_levels(int width, int height);
 /* Bytes of pixels for `levels` levels (0 on a bad size or format). */
 size_t silk_texture_bytes(silk_texfmt f, int width, int height, int levels);
+/* Level 0 of pixels from rgb (width * height R, G, B bytes, rows top to
+ * bottom) in t's format; a PAL8 texel takes the nearest palette entry. */
+void silk_texture_encode(const silk_texture *t, uint8_t *pixels, const uint8_t *rgb);
 /* Fill levels 1 .. levels-1 of pixels (level 0 already written) by 2x2
  * box filtering of the level above, in integers; a PAL8 level takes the
  * palette entry nearest to each average. */

@@ -65,7 +65,7 @@ $(FW_OUT)/%/pack.args: FORCE
 $(BUILD)/models/globe.obj: $(BUILD)/silk
 	@mkdir -p $(dir $@)
 	$(BUILD)/silk gen sphere --uv --segments 16 --bands 12 -o $@
-FW_PACK_EXTRA_globe := --texture checker:64
+FW_PACK_EXTRA_globe := --texture checker:64 --texture-format rgb565
 
 # The sizes are compiled and linked in: remembered like the pack options.
 FW_SIZES := $(BOARD_FLASH_BYTES) $(BOARD_RAM_BYTES) $(BOARD_STACK_BYTES) $(BOARD_ARENA_BYTES) \
