@@ -57,9 +57,12 @@ static void help(FILE *f)
             "                       turned by k*360/N degrees about the vertical through the\n"
             "                       target, odd k mirrored to look from below\n"
             "  --texture FILE.png   the texture, as `silk render --texture` takes it, packed\n"
-            "                       with its mipmaps (also --texture-format, --texture-filter,\n"
-            "                       --texture-wrap); NAME_look(&phong) sets it, the OBJ\n"
-            "                       material and the vertex colours as `silk render` does\n",
+            "                       with its mipmaps; NAME_look(&phong) sets it, the OBJ\n"
+            "                       material and the vertex colours as `silk render` does\n"
+            "  --texture-format rgb888|rgb565|pal8\n"
+            "  --texture-filter bilinear|nearest\n"
+            "  --texture-wrap repeat|clamp   how the texture is stored and sampled, as for\n"
+            "                       `silk render`\n",
             PACK_MAX_EYES, PACK_MAX_EYES);
     cli_print_scene_help(f, PACK_OPTIONS);
     fprintf(f,
