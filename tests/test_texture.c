@@ -273,6 +273,8 @@ TEST(no_uv_seam_where_remeshed_triangles_meet)
                 if (a->v != b->v || (du != 0 && du != SILK_FX_ONE && du != -SILK_FX_ONE)) bad++;
             }
         }
+        printf("mode %d: %ld points shared by two triangles (%ld of them new), %ld with different uvs\n",
+               (int)modes[im], shared, curve_shared, bad);
         CHECKF(curve_shared > 100, "mode %d: only %ld shared new points", (int)modes[im], curve_shared);
         CHECKF(bad == 0, "mode %d: %ld of %ld shared points have different uvs", (int)modes[im], bad, shared);
     }
