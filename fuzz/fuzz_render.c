@@ -23,6 +23,8 @@
  *    28    band rows: 1 + b % 16; pen-and-ink lines: (b >> 4) % 3 (none,
  *          over, only), polygonal: bit 6
  *    29    crease angle: b % 181 degrees
+ * A mesh with texture coordinates is drawn with a small mipmapped texture
+ * (5 x 3, repeating), one with vertex colours with them.
  * Checks besides "no crash": a failure is one clean line; the frame's
  * scratch is all released; with bands, the band-by-band pixels equal the
  * whole frame's (silk/render.h promises identical bytes), from the same
@@ -146,6 +148,12 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     silk_phong phong;
     silk_hal hal;
     silk_phong_default(&phong, &view);
+    static uint8_t texels[3 * (15 + 2 + 1)];
+    for (size_t i = 0; i < 45; i++) texels[i] = (uint8_t)(i * 37);
+    silk_texture tex = { texels, NULL, 5, 3, SILK_TEX_RGB888, 3, SILK_TEX_BILINEAR, SILK_TEX_REPEAT };
+    silk_texture_build_mipmaps(&tex, texels);
+    phong.texture = m.uv ? &tex : NULL;
+    phong.vertex_colors = m.color != NULL;
     silk_hal_phong(&hal, &phong);
     silk_target t;
     silk_target_init(&t, width, height, 0, height, fmt, color, depth);

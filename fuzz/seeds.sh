@@ -38,6 +38,10 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.2\nv 2 0 0\nf 1 2 3\nf 2 4 3\nf 2 5 4
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n' >"$out/shapes/fin.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\nvn 1 1 1\ns 1\nf 1/1/1 3/3/1 2/2/1\ns 2\nf 1/1/2 2/2/2 4/3/2\ns off\nf 1//1 4//1 3//1\nf -3/-1/-1 -2/-2/-2 -1/-3/-1\n' >"$out/shapes/groups.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\nf 1 2 4\nf 1 1 4\n' >"$out/shapes/degenerate.obj"
+# surface colour: a textured globe (vt), vertex colours, a material line
+"$silk" gen sphere --uv --segments 6 --bands 5 -o "$out/shapes/globe.obj" >/dev/null
+printf 'mtllib a.mtl\nusemtl m\nv 0 0 0 1 0 0.5\nv 1 0 0 0 1 0\nv 0 1 0 0.2 0.4 0.6 1\nv 0 0 1\nf 1 2 3\nf 1 3 4\n' >"$out/shapes/colours.obj"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float texture_u\nproperty float texture_v\nproperty uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 0 0 255 0 128 255\n1 0 0 1 0 0 255 0 9\n0 1 0 0 1 1 2 3 0\n3 0 1 2\n' >"$out/fuzz_ply/colours-uv.ply"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\nf 1 2 3 4\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n' >"$out/shapes/pyramid.obj"
 
 cp tests/bad/*.obj "$out/fuzz_obj/"

@@ -388,6 +388,15 @@ silk_status silk_ld_coords_finish(const silk_ld_coords *c, const char *name, sil
                      "scale it up with --scale %s", vbuf, sbuf);
 }
 
+int silk_ld_color_channel(silk_decimal d, int max, uint32_t *out)
+{
+    silk_fx v;
+    if (silk_decimal_to_fx(d, &v) != 0 || v < 0 || v > silk_fx_from_int(max)) return -1;
+    int64_t c = max == 1 ? ((int64_t)v * 255 + SILK_FX_HALF) >> 16 : ((int64_t)v + SILK_FX_HALF) >> 16;
+    *out = (uint32_t)c;
+    return 0;
+}
+
 int silk_ld_direction(const silk_decimal d[3], silk_vec3 *out)
 {
     int64_t top = INT64_MIN;

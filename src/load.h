@@ -50,6 +50,10 @@ silk_status silk_ld_coords_finish(const silk_ld_coords *c, const char *name, sil
  * Returns 0, or -1 for the zero vector (which the caller may accept). */
 int silk_ld_direction(const silk_decimal d[3], silk_vec3 *out);
 
+/* A vertex colour channel as 0..255: a value in [0, 1] (max 1) or an
+ * integer in [0, 255] (max 255), rounded.  Returns -1 outside the range. */
+int silk_ld_color_channel(silk_decimal d, int max, uint32_t *out);
+
 /* An IEEE-754 binary32 / binary64 bit pattern as a decimal (at most 18
  * digits), and, when it fits, correctly rounded to Q16.16 (*fits = 0 when
  * |v| >= 32768).  Integer arithmetic only.  Returns -1 for NaN or infinity. */

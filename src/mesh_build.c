@@ -276,6 +276,7 @@ silk_status silk_mesh_build(const silk_mesh_input *in, const char *name, const s
         m->uv = in->uv;
         m->tri_uv = in->tri_uv;
     }
+    m->color = in->color;
     bounding_box(m);
 
     silk_arena_mark mark = silk_arena_top_mark(a);
@@ -330,5 +331,6 @@ void silk_mesh_bytes_used(const silk_mesh *m, silk_mesh_bytes *b)
                                          : 0;
     b->features = (m->edge_feature ? arena_bytes(m->nedges, sizeof(silk_index)) : 0) +
                   arena_bytes(m->nfeature_edges, sizeof(silk_feature_seg));
-    b->total = b->positions + b->normals + b->uvs + b->triangles + b->edges + b->vertex_edges + b->features;
+    b->colors = m->color ? arena_bytes(m->nverts, sizeof(uint32_t)) : 0;
+    b->total = b->positions + b->normals + b->uvs + b->colors + b->triangles + b->edges + b->vertex_edges + b->features;
 }

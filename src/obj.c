@@ -1,9 +1,12 @@
 /*
  * obj.c - Wavefront OBJ from a memory buffer into a silk_mesh.
  *
- * Reads what a coarse mesh M (paper section III) needs: `v`, `vt`, `vn`,
+ * Reads what a coarse mesh M (paper section III) needs: `v` (with an
+ * optional vertex colour `r g b` in [0, 1] after x y z), `vt`, `vn`,
  * `f` (v, v/t, v//n, v/t/n, negative indices; polygons fanned into
- * triangles) and `s` smoothing groups; everything else is skipped.  Two
+ * triangles) and `s` smoothing groups; everything else is skipped
+ * (materials, `mtllib`/`usemtl`, are read by the host tool, which does the
+ * file I/O).  Two
  * passes: the first counts and checks the structure of each line, the second
  * parses numbers into arrays of exactly the counted size, then
  * silk_mesh_build() derives the rest.
@@ -13,6 +16,7 @@
 
 typedef struct obj_counts {
     uint64_t v, vt, vn, tris;
+    uint64_t vcolor;             /* `v` lines with a colour */
     int all_uv, all_n;           /* every face corner has a t / n index */
     int any_s;                   /* there is an `s` statement */
 } obj_counts;
@@ -38,7 +42,7 @@ static int next_line(obj_reader *r, const char **b, const char **e)
 
 /* The numbers of a `v`/`vt`/`vn` line: at least `need`, at most `most`. */
 static silk_status parse_numbers(obj_reader *r, const char *p, const char *e, int need, int most,
-                                 const char *what, silk_decimal *out)
+                                 const char *what, silk_decimal *out, int *found)
 {
     const char *t;
     size_t n;
@@ -48,10 +52,11 @@ static silk_status parse_numbers(obj_reader *r, const char *p, const char *e, in
         if (k == most) return FAIL(r, SILK_ERR_PARSE, "too many values for %s", what);
         silk_status s = silk_ld_parse_decimal(t, n, &d, r->name, r->line, r->err);
         if (s) return s;
-        if (k < 3) out[k] = d;
+        if (k < 6) out[k] = d;
         k++;
     }
     if (k < need) return FAIL(r, SILK_ERR_PARSE, "%s needs %d numbers, found %d", what, need, k);
+    if (found) *found = k;
     return SILK_OK;
 }
 
@@ -94,7 +99,12 @@ static silk_status count_pass(obj_reader *r, obj_counts *c)
         const char *p = b, *t;
         size_t n;
         if (!silk_ld_token(&p, e, &t, &n)) continue;
-        if (silk_ld_token_is(t, n, "v")) c->v++;
+        if (silk_ld_token_is(t, n, "v")) {
+            c->v++;
+            int k = 0;
+            while (silk_ld_token(&p, e, &t, &n)) k++;
+            if (k >= 6) c->vcolor++;
+        }
         else if (silk_ld_token_is(t, n, "vt")) c->vt++;
         else if (silk_ld_token_is(t, n, "vn")) c->vn++;
         else if (silk_ld_token_is(t, n, "s")) c->any_s = 1;
@@ -114,7 +124,7 @@ typedef struct obj_fill {
     uint32_t nv, nvt, nvn;       /* seen so far, for negative indices */
     uint32_t ntri;
     uint32_t group;
-    int want_uv, want_n;
+    int want_uv, want_n, want_color;
 } obj_fill;
 
 /* One index field of a face corner.  kind names it in messages. */
@@ -212,20 +222,38 @@ static silk_status fill_line(obj_reader *r, const char *p, const char *e, obj_fi
 {
     const char *t;
     size_t n;
-    silk_decimal d[3];
+    silk_decimal d[6];
     silk_status st;
     char q[48];
     if (!silk_ld_token(&p, e, &t, &n)) return SILK_OK;
     if (silk_ld_token_is(t, n, "v")) {
-        /* x y z, then w or r g b [a], which silk does not use */
-        if ((st = parse_numbers(r, p, e, 3, 7, "vertex", d))) return st;
+        /* x y z, then w (not used) or a colour r g b [a] (alpha not used) */
+        int found = 0;
+        if ((st = parse_numbers(r, p, e, 3, 7, "vertex", d, &found))) return st;
+        if (found == 5) return FAIL(r, SILK_ERR_PARSE, "vertex colour needs 3 numbers (r g b), found 2");
         silk_fx *pos = &f->in.pos[f->nv].x;
         for (int k = 0; k < 3; k++)
             silk_ld_coord(&f->coords, d[k], NULL, k, r->line, f->nv, &pos[k]);
+        if (f->want_color) {
+            uint32_t rgb = 0xffffff;   /* a vertex without a colour: white, no change */
+            if (found >= 6) {
+                rgb = 0;
+                for (int k = 0; k < 3; k++) {
+                    uint32_t ch;
+                    if (silk_ld_color_channel(d[3 + k], 1, &ch) != 0) {
+                        char b[40];
+                        return FAIL(r, SILK_ERR_RANGE, "vertex colour %s is outside [0, 1]",
+                                    silk_ld_dec_format(d[3 + k], 6, b, sizeof b));
+                    }
+                    rgb = rgb << 8 | ch;
+                }
+            }
+            f->in.color[f->nv] = rgb;
+        }
         f->nv++;
     } else if (silk_ld_token_is(t, n, "vt")) {
         d[1].mant = 0; d[1].exp10 = 0;
-        if ((st = parse_numbers(r, p, e, 1, 3, "texture coordinate", d))) return st;
+        if ((st = parse_numbers(r, p, e, 1, 3, "texture coordinate", d, NULL))) return st;
         if (f->want_uv) {
             silk_fx uv[2];
             for (int k = 0; k < 2; k++)
@@ -239,7 +267,7 @@ static silk_status fill_line(obj_reader *r, const char *p, const char *e, obj_fi
         }
         f->nvt++;
     } else if (silk_ld_token_is(t, n, "vn")) {
-        if ((st = parse_numbers(r, p, e, 3, 3, "normal", d))) return st;
+        if ((st = parse_numbers(r, p, e, 3, 3, "normal", d, NULL))) return st;
         /* A zero normal stays zero: silk_mesh_build falls back to the face's. */
         if (f->want_n) silk_ld_direction(d, &f->in.file_normal[f->nvn]);
         f->nvn++;
@@ -286,12 +314,14 @@ silk_status silk_load_obj(const void *data, size_t len, const char *name,
     memset(&f, 0, sizeof f);
     f.want_uv = c.all_uv && c.vt > 0;
     f.want_n = c.all_n && c.vn > 0 && opts->normals != SILK_NORMALS_COMPUTE;
+    f.want_color = c.vcolor > 0;
 
     size_t need = 0;
     int ok = silk_ld_need(&need, c.v, sizeof(silk_vec3)) && silk_ld_need(&need, c.tris * 3, sizeof(silk_index));
     if (f.want_uv) ok = ok && silk_ld_need(&need, c.vt, sizeof(silk_vec2)) && silk_ld_need(&need, c.tris * 3, sizeof(silk_index));
     if (f.want_n) ok = ok && silk_ld_need(&need, c.vn, sizeof(silk_vec3)) && silk_ld_need(&need, c.tris * 3, sizeof(silk_index));
     if (c.any_s) ok = ok && silk_ld_need(&need, c.tris, sizeof(uint32_t));
+    if (f.want_color) ok = ok && silk_ld_need(&need, c.v, sizeof(uint32_t));
     if (!ok || need > silk_arena_free_bytes(a)) return silk_ld_nomem(err, name, ok ? need : SIZE_MAX, a);
 
     silk_arena saved = *a;
@@ -304,6 +334,7 @@ silk_status silk_load_obj(const void *data, size_t len, const char *name,
         f.in.uv = silk_arena_array(a, c.vt, sizeof(silk_vec2), SILK_MEM_MESH);
         f.in.tri_uv = silk_arena_array(a, c.tris * 3, sizeof(silk_index), SILK_MEM_MESH);
     }
+    if (f.want_color) f.in.color = silk_arena_array(a, c.v, sizeof(uint32_t), SILK_MEM_MESH);
     if (f.want_n) {
         f.in.file_normal = silk_arena_array_top(a, c.vn, sizeof(silk_vec3), SILK_MEM_LOAD);
         f.in.tri_file_normal = silk_arena_array_top(a, c.tris * 3, sizeof(silk_index), SILK_MEM_LOAD);

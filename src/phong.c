@@ -5,14 +5,27 @@
  * interpolated normal renormalised at every pixel.
  *
  * Not a paper equation: the paper renders with standard OpenGL lighting.
- * The varyings are world position (3) and normal (3), the only ones the
- * fragment stage reads (the rasterizer interpolates h->nvaryings of them);
- * lighting is done in world space, so nothing needs the inverse view matrix.
+ * The varyings are world position (3) and normal (3), then, only when a
+ * texture or vertex colours are in use, uv (2) and colour (3): the
+ * rasterizer interpolates h->nvaryings of them, so an untextured frame pays
+ * nothing for them.  Lighting is done in world space, so nothing needs the
+ * inverse view matrix.  A texel (texture.c) and the vertex colour multiply
+ * the material colour, i.e. the ambient and diffuse terms.
  */
 #include <string.h>
 #include "frame.h"
+#include "silk/hal.h"
+#include "silk/texture.h"
 
-enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_COUNT = 6 };
+enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_COUNT = 6, VAR_UV = 6, VAR_RGB = 8, VAR_UV_COUNT = 8, VAR_RGB_COUNT = 11 };
+
+/* Channel c (the low 8 bits) to Q16.16 in [0, 1]: c * 65536 / 255 rounded
+ * is c * 257 + (c + 127) / 255, exact at 0 and 255. */
+static silk_fx byte_to_fx(uint32_t c)
+{
+    c &= 0xff;
+    return (silk_fx)(c * 257 + (c + 127) / 255);
+}
 
 static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r,
                          silk_vertex_out *out)
@@ -35,7 +48,10 @@ static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec 
     out->var[VAR_NORMAL + 0] = a.normal.x;
     out->var[VAR_NORMAL + 1] = a.normal.y;
     out->var[VAR_NORMAL + 2] = a.normal.z;
-    for (int k = VAR_COUNT; k < SILK_MAX_VARYINGS; k++) out->var[k] = 0;   /* not interpolated */
+    out->var[VAR_UV] = a.uv.x;
+    out->var[VAR_UV + 1] = a.uv.y;
+    for (int k = 0; k < 3; k++) out->var[VAR_RGB + k] = byte_to_fx(a.rgb >> (16 - 8 * k));
+    for (int k = VAR_RGB_COUNT; k < SILK_MAX_VARYINGS; k++) out->var[k] = 0;   /* not interpolated */
 }
 
 /* x^n for x in [0, 1] (Q16.16) by repeated squaring: at most 2 log2(n)
@@ -81,6 +97,18 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
     const silk_phong *p = (const silk_phong *)h->uniforms;
     const silk_material *m = &p->mat;
     int64_t v[3], n[3];
+    /* the material colour times the texel and the vertex colour */
+    int64_t base[3] = { m->color.x, m->color.y, m->color.z };
+    if (p->texture) {
+        uint32_t tex = silk_texture_sample(p->texture, var[VAR_UV], var[VAR_UV + 1], var[h->nvaryings],
+                                           var[h->nvaryings + 1]);
+        for (int k = 0; k < 3; k++) base[k] = (base[k] * byte_to_fx(tex >> (16 - 8 * k))) >> 16;
+    }
+    if (p->vertex_colors && h->nvaryings >= VAR_RGB_COUNT)
+        for (int k = 0; k < 3; k++) {
+            int64_t c = var[VAR_RGB + k];
+            base[k] = (base[k] * (c < 0 ? 0 : (c > SILK_FX_ONE ? SILK_FX_ONE : c))) >> 16;
+        }
 
     if (p->view && !p->view->cam.ortho) {
         silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
@@ -137,23 +165,23 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
     /* Usual case, one test: every light sum and material term in [0, 16):
      * then no product nears 2^63 and no sum can leave the range, and only
      * the final clamp to 1 remains. */
-    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | m->color.x |
-                              m->color.y | m->color.z | m->specular_color.x | m->specular_color.y |
+    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | base[0] |
+                              base[1] | base[2] | m->specular_color.x | m->specular_color.y |
                               m->specular_color.z);
     if (all < ((uint64_t)1 << 20)) {
         int64_t amb = m->ambient, dif = m->diffuse;
-        int64_t cr = ((m->color.x * (amb + ((dif * dr) >> 16))) >> 16) + ((((spec * m->specular_color.x) >> 16) * sr) >> 16);
-        int64_t cg = ((m->color.y * (amb + ((dif * dg) >> 16))) >> 16) + ((((spec * m->specular_color.y) >> 16) * sg) >> 16);
-        int64_t cb = ((m->color.z * (amb + ((dif * db) >> 16))) >> 16) + ((((spec * m->specular_color.z) >> 16) * sb) >> 16);
+        int64_t cr = ((base[0] * (amb + ((dif * dr) >> 16))) >> 16) + ((((spec * m->specular_color.x) >> 16) * sr) >> 16);
+        int64_t cg = ((base[1] * (amb + ((dif * dg) >> 16))) >> 16) + ((((spec * m->specular_color.y) >> 16) * sg) >> 16);
+        int64_t cb = ((base[2] * (amb + ((dif * db) >> 16))) >> 16) + ((((spec * m->specular_color.z) >> 16) * sb) >> 16);
         cr = cr < SILK_FX_ONE ? cr : SILK_FX_ONE;
         cg = cg < SILK_FX_ONE ? cg : SILK_FX_ONE;
         cb = cb < SILK_FX_ONE ? cb : SILK_FX_ONE;
         return (uint32_t)((cr * 255 + SILK_FX_HALF) >> 16) << 16 | (uint32_t)((cg * 255 + SILK_FX_HALF) >> 16) << 8 |
                (uint32_t)((cb * 255 + SILK_FX_HALF) >> 16);
     }
-    return channel(m, m->color.x, silk_fx_mul(m->specular, m->specular_color.x), dr, sr) << 16 |
-           channel(m, m->color.y, silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |
-           channel(m, m->color.z, silk_fx_mul(m->specular, m->specular_color.z), db, sb);
+    return channel(m, (silk_fx)base[0], silk_fx_mul(m->specular, m->specular_color.x), dr, sr) << 16 |
+           channel(m, (silk_fx)base[1], silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |
+           channel(m, (silk_fx)base[2], silk_fx_mul(m->specular, m->specular_color.z), db, sb);
 }
 
 int silk_hal_vertex_by_attrs(const silk_hal *h)
@@ -170,8 +198,9 @@ void silk_hal_phong(silk_hal *h, const silk_phong *p)
 {
     h->vertex = phong_vertex;
     h->fragment = phong_fragment;
-    h->nvaryings = VAR_COUNT;
+    h->nvaryings = p->vertex_colors ? VAR_RGB_COUNT : (p->texture ? VAR_UV_COUNT : VAR_COUNT);
     h->uniforms = p;
+    h->footprint_var = p->texture ? VAR_UV + 1 : 0;
 }
 
 /* Unit direction a*right + b*up + c*back in camera terms (back = towards

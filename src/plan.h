@@ -149,7 +149,9 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
-                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv);
+                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb);
+/* Vertex colour at parameter u along mesh edge e (white without colours). */
+uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u);
 
 /* Whether triangle t faces the eye, by its face normal (what decides which
  * feature edges are sampled, and the coarse outline of lines.c); a

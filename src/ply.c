@@ -3,7 +3,8 @@
  * from a memory buffer into a silk_mesh.
  *
  * Reads the coarse mesh M of paper section III: element `vertex` (x y z,
- * optional nx ny nz and u v / s t / texture_u texture_v, any scalar type)
+ * optional nx ny nz, u v / s t / texture_u texture_v and red green blue
+ * (uchar 0..255 or float 0..1; alpha is skipped), any scalar type)
  * and element `face` (list `vertex_indices` or `vertex_index`, any integer
  * types; polygons fanned into triangles).  Other elements and properties,
  * lists included, are skipped.  Binary floats are decoded from their bits
@@ -23,7 +24,7 @@ enum ply_type { PT_NONE, PT_I8, PT_U8, PT_I16, PT_U16, PT_I32, PT_U32, PT_F32, P
 static const uint8_t type_size[] = { 0, 1, 1, 2, 2, 4, 4, 4, 8 };
 
 /* What silk does with a property. */
-enum ply_role { R_NONE, R_X, R_Y, R_Z, R_NX, R_NY, R_NZ, R_U, R_V, R_INDICES, R_COUNT };
+enum ply_role { R_NONE, R_X, R_Y, R_Z, R_NX, R_NY, R_NZ, R_U, R_V, R_RED, R_GREEN, R_BLUE, R_INDICES, R_COUNT };
 
 typedef struct ply_prop {
     uint8_t type;             /* scalar type, or the item type of a list */
@@ -48,7 +49,7 @@ typedef struct ply_fill {
     silk_mesh_input in;
     silk_ld_coords coords;
     uint32_t ntri;
-    int want_n, want_uv;
+    int want_n, want_uv, want_color;
 } ply_fill;
 
 typedef struct ply_reader {
@@ -62,7 +63,8 @@ typedef struct ply_reader {
     ply_prop *prop;
     uint32_t nelem, nprop;
     int vertex, face;         /* element numbers, -1 when absent */
-    int has_normals, has_uv;
+    int has_normals, has_uv, has_color;
+    int color_max;            /* 1 for colour channels stored as binary32/64, 255 for integer ones */
     uint64_t tris;
     /* where we are in the body, for messages */
     const ply_elem *cur;
@@ -122,6 +124,8 @@ static int role_of(const ply_elem *el, const char *t, size_t n)
         { "x", R_X }, { "y", R_Y }, { "z", R_Z }, { "nx", R_NX }, { "ny", R_NY }, { "nz", R_NZ },
         { "u", R_U }, { "v", R_V }, { "s", R_U }, { "t", R_V },
         { "texture_u", R_U }, { "texture_v", R_V }, { "texture_s", R_U }, { "texture_t", R_V },
+        { "red", R_RED }, { "green", R_GREEN }, { "blue", R_BLUE },
+        { "diffuse_red", R_RED }, { "diffuse_green", R_GREEN }, { "diffuse_blue", R_BLUE },
     };
     if (el->kind == K_VERTEX) {
         for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
@@ -280,6 +284,12 @@ static silk_status parse_header(ply_reader *r)
             return silk_fail(r->err, SILK_ERR_PARSE, r->name, ve->line, "element 'vertex' has no property '%s'", axis[k]);
     r->has_normals = has[R_NX] && has[R_NY] && has[R_NZ];
     r->has_uv = has[R_U] && has[R_V];
+    r->has_color = has[R_RED] && has[R_GREEN] && has[R_BLUE];
+    r->color_max = 255;
+    for (uint32_t i = 0; i < ve->nprops; i++) {
+        const ply_prop *pr = &r->prop[ve->first + i];
+        if (pr->role >= R_RED && pr->role <= R_BLUE && is_float_type(pr->type)) r->color_max = 1;
+    }
     int indices = 0;
     for (uint32_t i = 0; i < fe->nprops; i++) indices |= r->prop[fe->first + i].role == R_INDICES;
     if (!indices)
@@ -479,6 +489,19 @@ static silk_status store_vertex(ply_reader *r, ply_fill *f, uint32_t v, const si
         f->in.uv[v].x = uv[0];
         f->in.uv[v].y = uv[1];
     }
+    if (f->want_color) {
+        uint32_t rgb = 0;
+        for (int k = 0; k < 3; k++) {
+            uint32_t ch;
+            if (silk_ld_color_channel(d[R_RED + k], r->color_max, &ch) != 0) {
+                char b[40];
+                return FAIL(r, SILK_ERR_RANGE, "%svertex colour %s is outside [0, %d]", where(r, w, sizeof w),
+                            silk_ld_dec_format(d[R_RED + k], 6, b, sizeof b), r->color_max);
+            }
+            rgb = rgb << 8 | ch;
+        }
+        f->in.color[v] = rgb;
+    }
     return SILK_OK;
 }
 
@@ -627,9 +650,11 @@ silk_status silk_load_ply(const void *data, size_t len, const char *name,
     uint64_t nv = r.elem[r.vertex].count;
     f.want_n = r.has_normals && opts->normals != SILK_NORMALS_COMPUTE;
     f.want_uv = r.has_uv;
+    f.want_color = r.has_color;
     size_t need = 0;
     int ok = silk_ld_need(&need, nv, sizeof(silk_vec3)) && silk_ld_need(&need, r.tris * 3, sizeof(silk_index));
     if (f.want_uv) ok = ok && silk_ld_need(&need, nv, sizeof(silk_vec2));
+    if (f.want_color) ok = ok && silk_ld_need(&need, nv, sizeof(uint32_t));
     if (f.want_n) ok = ok && silk_ld_need(&need, nv, sizeof(silk_vec3));
     if (!ok || need > silk_arena_free_bytes(a)) {
         /* The header tables are scratch too: the report counts them, and
@@ -648,6 +673,7 @@ silk_status silk_load_ply(const void *data, size_t len, const char *name,
         f.in.tri_uv = f.in.tri;
         f.in.nuvs = (uint32_t)nv;
     }
+    if (f.want_color) f.in.color = silk_arena_array(a, nv, sizeof(uint32_t), SILK_MEM_MESH);
     if (f.want_n) {
         f.in.file_normal = silk_arena_array_top(a, nv, sizeof(silk_vec3), SILK_MEM_LOAD);
         f.in.tri_file_normal = f.in.tri;

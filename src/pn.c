@@ -155,6 +155,7 @@ void silk_patch_build(const silk_mesh *m, uint32_t t, const silk_fx *alpha, silk
         } else {
             p->uv[k].x = p->uv[k].y = 0;
         }
+        p->rgb[k] = m->color ? m->color[v[k]] : 0xffffff;
     }
     int64_t side_sum[3] = { 0, 0, 0 };
     for (int k = 0; k < 3; k++) {
@@ -219,6 +220,10 @@ void silk_patch_eval(const silk_patch *p, uint32_t point, silk_vertex_attr *out)
         silk_v3_normalize(p->n[SILK_N200 + c], &out->normal);
     out->uv.x = silk_fx_sat(div_round(i * p->uv[0].x + j * p->uv[1].x + k * p->uv[2].x, n));
     out->uv.y = silk_fx_sat(div_round(i * p->uv[0].y + j * p->uv[1].y + k * p->uv[2].y, n));
+    out->rgb = 0;
+    for (int sh = 0; sh <= 16; sh += 8)
+        out->rgb |= (uint32_t)div_round(i * (int64_t)(p->rgb[0] >> sh & 0xff) + j * (int64_t)(p->rgb[1] >> sh & 0xff) +
+                                        k * (int64_t)(p->rgb[2] >> sh & 0xff), n) << sh;
 }
 
 silk_status silk_patch_check_mesh(const silk_mesh *m, const char *who, silk_error *err)

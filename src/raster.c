@@ -320,6 +320,7 @@ typedef struct tri_setup {
     int64_t gxq, gxr, gyq, gyr;   /* depth plane per subpixel: quotient and remainder */
     rstep dstep;                  /* depth per pixel in x */
     int64_t du, dv, dt;           /* U, V, T per pixel in x */
+    int64_t duy, dvy, dty;        /* and in y, for the texture footprint */
     int nvar;
     /* var_k = a0_k + (a1_k - a0_k) b1 + (a2_k - a0_k) b2 is a0 b0 + a1 b1 + a2 b2
      * exactly (b0 = 1 - b1 - b2 is never negative inside the triangle), with
@@ -343,6 +344,56 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
     d->r = rem - f * s->area;
 }
 
+/* Perspective-correct weights at the pixel whose planes are U, V, T. */
+static void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
+{
+    if (s->affine) {
+        *b1 = ((U >> s->aff_shift) * s->aff_inv) >> 31;
+        *b2 = ((V >> s->aff_shift) * s->aff_inv) >> 31;
+    } else {
+        weights(U, V, T, b1, b2);
+    }
+}
+
+/* The texture footprint (silk_hal.footprint_var): how far varyings k and
+ * k+1 move from this pixel (weights b1, b2) to its right and its lower
+ * neighbour, the larger of the two for each, into var[nvar] and
+ * var[nvar + 1].  Finite differences of the same perspective-correct
+ * interpolation, per pixel.  A neighbour past the triangle's horizon
+ * (T <= 0) counts as no movement; the weight steps are clamped to 2^29
+ * (one half) so every product stays far inside 64 bits. */
+static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T, int64_t b1, int64_t b2,
+                      silk_fx *var)
+{
+    const int64_t lim = (int64_t)1 << 29;
+    int64_t db[2][2] = { { 0, 0 }, { 0, 0 } };
+    const int64_t step[2][3] = { { s->du, s->dv, s->dt }, { s->duy, s->dvy, s->dty } };
+    for (int i = 0; i < 2; i++) {
+        int64_t c1, c2, u = U + step[i][0], v = V + step[i][1], t = T + step[i][2];
+        if (t <= 0) continue;
+        /* bary's products are bounded for weights in [-1, 1]; a weight
+         * beyond (a triangle under a pixel wide) moves by more than the
+         * clamp below anyway, so +-2 stands for it */
+        int64_t uc = u > t ? t : (u < -t ? -t : u), vc = v > t ? t : (v < -t ? -t : v);
+        bary(s, uc, vc, t, &c1, &c2);
+        if (uc != u) c1 = u > 0 ? 4 * lim : -4 * lim;
+        if (vc != v) c2 = v > 0 ? 4 * lim : -4 * lim;
+        c1 -= b1;
+        c2 -= b2;
+        db[i][0] = c1 < -lim ? -lim : (c1 > lim ? lim : c1);
+        db[i][1] = c2 < -lim ? -lim : (c2 > lim ? lim : c2);
+    }
+    for (int j = 0; j < 2; j++) {
+        int64_t m = 0;
+        for (int i = 0; i < 2; i++) {
+            int64_t d = (s->vd1[k + j] * db[i][0] + s->vd2[k + j] * db[i][1]) >> 30;
+            d = d < 0 ? -d : d;
+            if (d > m) m = d;
+        }
+        var[s->nvar + j] = m > SILK_FX_MAX ? SILK_FX_MAX : (silk_fx)m;
+    }
+}
+
 static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr)
 {
     int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
@@ -361,7 +412,8 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     size_t bpp = silk_pixfmt_bytes(t->fmt);
     uint8_t *crow = t->color ? t->color + r * t->stride : NULL;
     const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
-    silk_fx var[SILK_MAX_VARYINGS];
+    silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
+    int fp = h && h->footprint_var > 0 && h->footprint_var < s->nvar ? h->footprint_var - 1 : -1;
 
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
@@ -374,18 +426,14 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
             if (wrow) wrow[x]++;
             if (h && h->fragment) {
                 int64_t b1, b2;
-                if (s->affine) {
-                    b1 = ((U >> s->aff_shift) * s->aff_inv) >> 31;
-                    b2 = ((V >> s->aff_shift) * s->aff_inv) >> 31;
-                } else {
-                    weights(U, V, T, &b1, &b2);
-                }
+                bary(s, U, V, T, &b1, &b2);
                 int k = 0;
                 for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
                     var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
                     var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
                 }
                 if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+                if (fp >= 0) footprint(s, fp, U, V, T, b1, b2, var);
                 uint32_t rgb = h->fragment(h, var);
                 if (crow) store(t, crow + (size_t)x * bpp, rgb);
             }
@@ -451,6 +499,9 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     s.du = s.qn[1] * s.ea[1] * SUB;
     s.dv = s.qn[2] * s.ea[2] * SUB;
     s.dt = (s.qn[0] * s.ea[0] + s.qn[1] * s.ea[1] + s.qn[2] * s.ea[2]) * SUB;
+    s.duy = s.qn[1] * s.eb[1] * SUB;
+    s.dvy = s.qn[2] * s.eb[2] * SUB;
+    s.dty = (s.qn[0] * s.eb[0] + s.qn[1] * s.eb[1] + s.qn[2] * s.eb[2]) * SUB;
     s.affine = s.qn[0] == s.qn[1] && s.qn[1] == s.qn[2];
     s.aff_inv = 0;
     s.aff_shift = 0;

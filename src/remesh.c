@@ -184,8 +184,8 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     memset(s, 0, sizeof *s);
     s->tri = t;
     silk_vec3 A, B, nA, nB;
-    silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0);
-    silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1);
+    silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0, &s->c.rgb0);
+    silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1, &s->c.rgb1);
     silk_bridge(A, nA, B, nB, &s->c);
     s->c.p0 = A;
     s->c.p1 = B;
@@ -307,6 +307,8 @@ static void side_curve(const silk_sil_frame *f, const silk_sil_edge *e, const si
         c->uv0 = m->uv[s->uv0];
         c->uv1 = m->uv[s->uv1];
     }
+    c->rgb0 = m->color ? m->color[m->edge[e->edge].v[0]] : 0xffffff;
+    c->rgb1 = m->color ? m->color[m->edge[e->edge].v[1]] : 0xffffff;
 }
 
 /* Append side k of t (its chain, in the triangle's direction) to out:
@@ -375,19 +377,20 @@ static silk_vec3 mean_normal(silk_vec3 a, silk_vec3 b)
 /* A new vertex t along the straight line p0 -> p1 (a Hermite curve with
  * both tangents equal to the chord is exactly linear), normal and uv
  * interpolated linearly: the centres of Fig. 12b. */
-static uint32_t put_centre(silk_frame_geom *g, silk_vec3 p0, silk_vec3 n0, silk_vec2 uv0,
-                           silk_vec3 p1, silk_vec3 n1, silk_vec2 uv1, silk_fx t)
+static uint32_t put_centre(silk_frame_geom *g, silk_vec3 p0, silk_vec3 n0, silk_vec2 uv0, uint32_t rgb0,
+                           silk_vec3 p1, silk_vec3 n1, silk_vec2 uv1, uint32_t rgb1, silk_fx t)
 {
     silk_curve *c = &g->curve[g->ncurve];
-    c->p0 = p0; c->n0 = n0; c->uv0 = uv0;
-    c->p1 = p1; c->n1 = n1; c->uv1 = uv1;
+    c->p0 = p0; c->n0 = n0; c->uv0 = uv0; c->rgb0 = rgb0;
+    c->p1 = p1; c->n1 = n1; c->uv1 = uv1; c->rgb1 = rgb1;
     c->t0 = c->t1 = silk_v3_sub(p1, p0);
     return put_curve_rec(g, g->ncurve++, t);
 }
 
-static void corner_attrs(const silk_mesh *m, uint32_t c, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv)
+static void corner_attrs(const silk_mesh *m, uint32_t c, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
     *p = m->pos[m->tri[c]];
+    *rgb = m->color ? m->color[m->tri[c]] : 0xffffff;
     *n = m->normal[m->tri_normal[c]];
     uv->x = uv->y = 0;
     if (m->tri_uv && m->uv && m->tri_uv[c] < m->nuvs) *uv = m->uv[m->tri_uv[c]];
@@ -423,9 +426,10 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
     for (uint32_t j = l.iB; j < l.len; j++) list[n++] = cyc[j];
     silk_vec3 pl, nl, pab = mid3(s->c.p0, s->c.p1), nab = mean_normal(s->c.n0, s->c.n1);
     silk_vec2 uvl, uvab = mid2(s->c.uv0, s->c.uv1);
+    uint32_t rgbl, rgbab = silk_rgb_lerp(s->c.rgb0, s->c.rgb1, SILK_FX_HALF);
     if (l.centre1) {
-        corner_attrs(m, 3 * t + lone, &pl, &nl, &uvl);
-        fan_closed(g, put_centre(g, pl, nl, uvl, pab, nab, uvab, T_TWO_THIRDS), list, n);
+        corner_attrs(m, 3 * t + lone, &pl, &nl, &uvl, &rgbl);
+        fan_closed(g, put_centre(g, pl, nl, uvl, rgbl, pab, nab, uvab, rgbab, T_TWO_THIRDS), list, n);
     } else {
         fan(g, cyc[0], list, n);
     }
@@ -437,10 +441,11 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
         for (uint32_t i = s->n - 1; i > 0; i--) list[n++] = SAMPLE(i);
         silk_vec3 p1, n1, p2, n2;
         silk_vec2 uv1, uv2;
-        corner_attrs(m, 3 * t + (lone + 1) % 3, &p1, &n1, &uv1);
-        corner_attrs(m, 3 * t + (lone + 2) % 3, &p2, &n2, &uv2);
-        fan_closed(g, put_centre(g, pab, nab, uvab, mid3(p1, p2), mean_normal(n1, n2), mid2(uv1, uv2),
-                                 SILK_FX_HALF), list, n);
+        uint32_t rgb1, rgb2;
+        corner_attrs(m, 3 * t + (lone + 1) % 3, &p1, &n1, &uv1, &rgb1);
+        corner_attrs(m, 3 * t + (lone + 2) % 3, &p2, &n2, &uv2, &rgb2);
+        fan_closed(g, put_centre(g, pab, nab, uvab, rgbab, mid3(p1, p2), mean_normal(n1, n2), mid2(uv1, uv2),
+                                 silk_rgb_lerp(rgb1, rgb2, SILK_FX_HALF), SILK_FX_HALF), list, n);
     } else {
         /* samples 0..split to B1, split..n to B2, the split sample to the base */
         uint32_t ks = s->split;
@@ -487,9 +492,11 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
      * corners' average */
     silk_vec3 p[3], n[3];
     silk_vec2 uv[3];
-    for (uint32_t k = 0; k < 3; k++) corner_attrs(f->m, 3 * t + k, &p[k], &n[k], &uv[k]);
-    fan_closed(g, put_centre(g, p[0], n[0], uv[0], mid3(p[1], p[2]), mean_normal(n[1], n[2]),
-                             mid2(uv[1], uv[2]), T_TWO_THIRDS), cyc, len);
+    uint32_t rgb[3];
+    for (uint32_t k = 0; k < 3; k++) corner_attrs(f->m, 3 * t + k, &p[k], &n[k], &uv[k], &rgb[k]);
+    fan_closed(g, put_centre(g, p[0], n[0], uv[0], rgb[0], mid3(p[1], p[2]), mean_normal(n[1], n[2]),
+                             mid2(uv[1], uv[2]), silk_rgb_lerp(rgb[1], rgb[2], SILK_FX_HALF), T_TWO_THIRDS),
+               cyc, len);
 }
 
 int silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g)

@@ -72,7 +72,7 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 }
 
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
-                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv)
+                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
     const silk_mesh *m = f->m;
     silk_curve c;
@@ -88,6 +88,13 @@ void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
     } else {
         uv->x = uv->y = 0;
     }
+    *rgb = silk_sil_edge_rgb(m, &m->edge[e->edge], u);
+}
+
+uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u)
+{
+    if (!m->color) return 0xffffff;
+    return silk_rgb_lerp(m->color[e->v[0]], m->color[e->v[1]], u);
 }
 
 /* ---- per-edge geometry ------------------------------------------------------- */

@@ -1,6 +1,6 @@
 /*
  * vertex.c - vertex records (paper Fig. 16) evaluated into position, normal
- * and texture coordinate: mesh corners, points on Hermite curves (eq. 5,
+ * texture coordinate and vertex colour: mesh corners, points on Hermite curves (eq. 5,
  * with the normal interpolated linearly along the curve as in eq. 6 and then
  * normalised), and perturbed vertices.
  *
@@ -64,13 +64,27 @@ static silk_fx lerp1(silk_fx a, silk_fx b, silk_fx t)
     return silk_fx_sat(a + silk_shr_round64(((int64_t)b - a) * t, 16));
 }
 
+uint32_t silk_rgb_lerp(uint32_t a, uint32_t b, silk_fx t)
+{
+    t = silk_fx_clamp(t, 0, SILK_FX_ONE);
+    uint32_t out = 0;
+    for (int sh = 0; sh <= 16; sh += 8) {
+        int64_t ca = (a >> sh) & 0xff, cb = (b >> sh) & 0xff;
+        out |= (uint32_t)(ca + silk_shr_round64((cb - ca) * t, 16)) << sh;
+    }
+    return out;
+}
+
 /* Corner a (= triangle * 3 + k) of the mesh; out of range gives zeros, so a
  * bad record draws a degenerate triangle instead of reading wild memory. */
 static void corner(const silk_mesh *m, uint32_t a, silk_vertex_attr *out)
 {
     if (!m || a / 3 >= m->ntris) return;
     silk_index v = m->tri[a];
-    if (v < m->nverts) out->pos = m->pos[v];
+    if (v < m->nverts) {
+        out->pos = m->pos[v];
+        if (m->color) out->rgb = m->color[v];
+    }
     if (m->tri_normal) {
         silk_index n = m->tri_normal[a];
         if (n < m->nnormals) out->normal = m->normal[n];
@@ -86,6 +100,7 @@ void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *ou
     out->pos = silk_v3(0, 0, 0);
     out->normal = silk_v3(0, 0, 0);
     out->uv.x = out->uv.y = 0;
+    out->rgb = 0xffffff;
     switch (r->kind) {
     case SILK_VREC_CORNER:
         corner(g->mesh, r->a, out);
@@ -99,6 +114,7 @@ void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *ou
         if (!blend_normal(c->n0, c->n1, t, &out->normal)) out->normal = c->n0;
         out->uv.x = lerp1(c->uv0.x, c->uv1.x, t);
         out->uv.y = lerp1(c->uv0.y, c->uv1.y, t);
+        out->rgb = silk_rgb_lerp(c->rgb0, c->rgb1, t);
         break;
     }
     case SILK_VREC_MOVED:

@@ -15,6 +15,11 @@
  * which loses nothing).  Any difference fails, naming the image and the
  * number of pixels that differ.
  *
+ * Two more meshes carry surface colour: "globe", a sphere with texture
+ * coordinates (gen --uv) under a mipmapped checker texture (gen_checker),
+ * and "painted", a sphere whose vertex colours follow the position; both in
+ * the surface modes from two views.
+ *
  *   test_golden            compare (make test)
  *   test_golden --update   rewrite the images that differ or are missing
  *                          and print "changed: NAME" / "new: NAME" for each
@@ -45,6 +50,7 @@
 
 static int update;
 static int n_changed, n_new, n_same;
+static const silk_texture *mesh_texture;   /* the texture of the mesh being drawn, or NULL */
 
 static const char *golden_dir(void)
 {
@@ -68,6 +74,39 @@ static int gen_fixture(tm_fixture *f, const gen_params *p)
     return ok;
 }
 
+/* The globe: gen's OBJ text (with vt lines) through silk_load_obj. */
+static int globe_fixture(tm_fixture *f)
+{
+    gen_params p;
+    gen_defaults(GEN_SPHERE, &p);
+    p.radius = 1; p.segments = 12; p.bands = 9; p.uv = 1;
+    size_t len;
+    char *text = gen_obj_text(&p, &len);
+    int ok = text && silk_load_obj(text, len, "globe", &f->opts, &f->a, &f->m, &f->err) == SILK_OK && f->m.uv;
+    free(text);
+    return ok;
+}
+
+/* The painted sphere: colour channels from the position, 0 at -1, 255 at +1. */
+static int painted_fixture(tm_fixture *f)
+{
+    gen_params p;
+    gen_defaults(GEN_SPHERE, &p);
+    p.radius = 1; p.segments = 10; p.bands = 11;
+    gen_mesh gm;
+    if (gen_build(&p, &gm) != 0) return 0;
+    int ok = tm_fixture_input(f, gm.pos, gm.nverts, gm.tri, gm.ntris);
+    f->in.color = ok ? silk_arena_array(&f->a, gm.nverts, sizeof(uint32_t), SILK_MEM_MESH) : NULL;
+    for (uint32_t v = 0; f->in.color && v < gm.nverts; v++) {
+        uint32_t rgb = 0;
+        for (int k = 0; k < 3; k++) rgb = rgb << 8 | (uint32_t)((gm.pos[3 * v + k] + 1) * 127.5 + 0.5);
+        f->in.color[v] = rgb;
+    }
+    ok = f->in.color && tm_fixture_build(f) == SILK_OK && f->m.color;
+    gen_free(&gm);
+    return ok;
+}
+
 /* Returns 1 when the mesh is in f->m, 0 when it is skipped (bunny without
  * the shared meshes), -1 on failure. */
 static int make_mesh(const char *name, tm_fixture *f)
@@ -84,6 +123,8 @@ static int make_mesh(const char *name, tm_fixture *f)
         fclose(fp);
         return tm_fixture_read_obj(f, path) && tm_fixture_build(f) == SILK_OK ? 1 : -1;
     }
+    if (!strcmp(name, "globe")) return globe_fixture(f) ? 1 : -1;
+    if (!strcmp(name, "painted")) return painted_fixture(f) ? 1 : -1;
     if (!strcmp(name, "sphere")) {
         gen_defaults(GEN_SPHERE, &p);
         p.radius = 1; p.segments = 10; p.bands = 11;                  /* 200 triangles */
@@ -189,6 +230,9 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
     silk_phong ph;
     silk_hal hal;
     silk_phong_default(&ph, &v);
+    if (mesh_texture || f->m.color) ph.mat.color = silk_v3(SILK_FX_ONE, SILK_FX_ONE, SILK_FX_ONE);
+    ph.texture = mesh_texture;
+    ph.vertex_colors = f->m.color != NULL;
     silk_hal_phong(&hal, &ph);
     silk_render_opts ro;
     silk_render_opts_default(&ro);
@@ -315,6 +359,37 @@ static void golden_clip(void)
     free(file);
 }
 
+/* The surface modes from the front and grazing views, and smooth in RGB565. */
+static void golden_coloured(const char *mesh, const silk_texture *tex)
+{
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
+    mesh_texture = tex;
+    int got = make_mesh(mesh, &f);
+    CHECKF(got == 1, "%s: cannot make the mesh", mesh);
+    if (got == 1) {
+        for (size_t iv = 0; iv < sizeof views / sizeof views[0]; iv += 2)
+            for (size_t im = 0; im < 4; im++) golden_case(&f, mesh, &views[iv], &modes[im], SILK_PIX_RGB888, iv == 0, NULL, 0);
+        golden_case(&f, mesh, &views[0], &modes[1], SILK_PIX_RGB565, 0, NULL, 0);
+    }
+    mesh_texture = NULL;
+    tm_fixture_free(&f);
+}
+
+TEST(golden_globe)
+{
+    enum { SIZE = 128 };
+    static uint8_t px[SIZE * SIZE * 3 * 2];
+    silk_texture t = { px, NULL, SIZE, SIZE, SILK_TEX_RGB888, 0, SILK_TEX_BILINEAR, SILK_TEX_REPEAT };
+    t.levels = (uint8_t)silk_texture_max_levels(SIZE, SIZE);
+    CHECK(silk_texture_bytes(SILK_TEX_RGB888, SIZE, SIZE, t.levels) <= sizeof px);
+    gen_checker(px, SIZE, 8);
+    silk_texture_build_mipmaps(&t, px);
+    golden_coloured("globe", &t);
+}
+
+TEST(golden_painted) { golden_coloured("painted", NULL); }
+
 TEST(golden_sphere) { golden_mesh("sphere"); }
 TEST(golden_torus) { golden_mesh("torus"); }
 TEST(golden_cone) { golden_mesh("cone"); }
@@ -331,6 +406,8 @@ int main(int argc, char **argv)
     RUN(golden_knot);
     RUN(golden_knot_clip);
     RUN(golden_bunny);
+    RUN(golden_globe);
+    RUN(golden_painted);
     if (update)
         printf("golden: %d changed, %d new, %d unchanged in %s\n", n_changed, n_new, n_same, golden_dir());
     return check_done();

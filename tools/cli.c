@@ -293,6 +293,8 @@ static const struct {
     { "--lines-polygonal", CLI_OPT_LOOK }, { "--color", CLI_OPT_LOOK },       { "--ambient", CLI_OPT_LOOK },
     { "--specular", CLI_OPT_LOOK },       { "--shininess", CLI_OPT_LOOK },    { "--light", CLI_OPT_LOOK },
     { "--aa", CLI_OPT_LOOK },
+    { "--texture", CLI_OPT_LOOK },        { "--texture-format", CLI_OPT_LOOK }, { "--texture-filter", CLI_OPT_LOOK },
+    { "--texture-wrap", CLI_OPT_LOOK },
 };
 
 static unsigned group_of(const char *arg)
@@ -393,7 +395,18 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "  --light [point:]x,y,z[:RRGGBB]  a white (or RRGGBB) light instead of the\n"
             "                       default two: directional from direction x,y,z (model\n"
             "                       axes, towards the light), or with point: at position\n"
-            "                       x,y,z; repeat for up to %d lights\n",
+            "                       x,y,z; repeat for up to %d lights\n"
+            "  --texture FILE.png   map the image over the mesh's texture coordinates (an\n"
+            "                       OBJ's material texture, map_Kd, is used without it);\n"
+            "                       --texture checker[:N]: a built-in N x N (256) image of\n"
+            "                       8 x 8 squares\n"
+            "  --texture-format rgb888|rgb565|pal8   how the texels are stored (rgb888;\n"
+            "                       pal8: the image's colours if it has at most 256, else a\n"
+            "                       fixed palette of 252)\n"
+            "  --texture-filter bilinear|nearest  within a mipmap level and between\n"
+            "                       levels (bilinear), or the nearest texel of the nearest\n"
+            "                       level\n"
+            "  --texture-wrap repeat|clamp   beyond the texture's edges (repeat)\n",
             (unsigned)ro.bg_rgb, (unsigned)v3_to_rgb(ph.mat.color), cli_fx_to_double(ph.mat.ambient),
             cli_fx_to_double(ph.mat.specular), ph.mat.shininess, SILK_MAX_LIGHTS);
 }
@@ -429,6 +442,55 @@ static int parse_light(const char *s, cli_light *l)
     if (!l->point && l->v[0] == 0 && l->v[1] == 0 && l->v[2] == 0)
         return cli_fail(-1, "--light: a direction must not be 0,0,0 (got \"%s\")", s);
     return 0;
+}
+
+/* The texture options: 1 when arg is one (r: 0, -1 after a bad value's
+ * message, -2 without a value), else 0. */
+static int texture_option(cli_scene_opts *o, const char *arg, const char *opt, int argc, char **argv, int *i, int *r)
+{
+    static const char *const opts[] = { "--texture", "--texture-format", "--texture-filter", "--texture-wrap" };
+    int k = 0, c;
+    while (k < 4 && !cli_is(arg, opts[k])) k++;
+    if (k == 4) return 0;
+    const char *v = cli_value(argc, argv, i);
+    if (!v) {
+        *r = -2;
+        return 1;
+    }
+    cli_texture_opts *t = &o->look.texture;
+    *r = 0;
+    if (k == 0) {
+        o->look.texture_path = v;
+    } else if (k == 1) {
+        if (strcmp(v, "rgb888") == 0) t->format = SILK_TEX_RGB888;
+        else if (strcmp(v, "rgb565") == 0) t->format = SILK_TEX_RGB565;
+        else if (strcmp(v, "pal8") == 0) t->format = SILK_TEX_PAL8;
+        else *r = cli_fail(-1, "%s must be rgb888, rgb565 or pal8 (got \"%s\")", opt, v);
+    } else if (k == 2) {
+        if (!(*r = cli_parse_choice(opt, v, "bilinear", "nearest", &c))) t->filter = c ? SILK_TEX_NEAREST : SILK_TEX_BILINEAR;
+    } else if (!(*r = cli_parse_choice(opt, v, "repeat", "clamp", &c))) {
+        t->wrap = c ? SILK_TEX_CLAMP : SILK_TEX_REPEAT;
+    }
+    return 1;
+}
+
+int cli_texture_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc)
+{
+    char name[40];
+    int r = 0;
+    const char *arg = argv[*i];
+    if (!texture_option(o, arg, opt_name(arg, name, sizeof name), argc, argv, i, &r)) return 0;
+    if (r) *rc = CLI_EXIT_USAGE;
+    return 1;
+}
+
+void cli_texture_args_text(const cli_scene_opts *o, char *buf, size_t n)
+{
+    const cli_texture_opts *t = &o->look.texture;
+    static const char *const fmt[] = { "", " --texture-format rgb565", " --texture-format pal8" };
+    snprintf(buf, n, "--texture %s%s%s%s", o->look.texture_path ? o->look.texture_path : "",
+             (unsigned)t->format < 3 ? fmt[t->format] : "", t->filter == SILK_TEX_NEAREST ? " --texture-filter nearest" : "",
+             t->wrap == SILK_TEX_CLAMP ? " --texture-wrap clamp" : "");
 }
 
 int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
@@ -565,6 +627,8 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         long n;
         r = cli_parse_long(opt, v, 1, 256, &n);
         o->look.shininess = (int)n;
+    } else if (texture_option(o, arg, opt, argc, argv, i, &r)) {
+        if (r == -2) return -1;
     } else if (cli_is(arg, "--light")) {
         VALUE();
         if (o->look.nlights == SILK_MAX_LIGHTS) return cli_fail(-1, "--light: at most %d lights", SILK_MAX_LIGHTS);
@@ -918,7 +982,10 @@ int cli_scene_load(cli_scene *s, cli_scene_opts *o)
         !(s->target.alpha = silk_arena_array(&s->arena, px, 1, SILK_MEM_RASTER)))
         return cli_fail(CLI_EXIT_INPUT, "the arena (%zu bytes) has no room for the alpha channel; raise --arena",
                         s->arena.size);
-    cli_phong(o, &s->view, &s->phong);
+    rc = cli_material_load(&s->material, o->mesh_path, s->file, s->file_len, &s->mesh, o->look.texture_path,
+                           &o->look.texture, o->quiet);
+    if (rc) return rc;
+    cli_scene_phong(s, o, &s->view, &s->phong);
     silk_hal_phong(&s->hal, &s->phong);
     return 0;
 }
@@ -950,6 +1017,12 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
             p->lights[i].color = rgb_to_v3(li->rgb);
         }
     }
+}
+
+void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_view *view, silk_phong *p)
+{
+    cli_phong(o, view, p);
+    cli_material_apply(&s->material, &s->mesh, o->look.have_color, o->look.have_specular, o->look.shininess != 0, p);
 }
 
 cli_alpha cli_alpha_for(const cli_scene_opts *o)
@@ -995,6 +1068,7 @@ int cli_write_image(const silk_target *t, const char *path, silk_image_format fm
 
 void cli_scene_free(cli_scene *s)
 {
+    cli_material_free(&s->material);
     free(s->arena_buf);
     free(s->file);
     memset(s, 0, sizeof *s);

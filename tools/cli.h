@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include "silk/silk.h"
 #include "../src/silmap_interp.h"
+#include "material.h"
 #include "../platform/platform.h"
 
 #define CLI_EXIT_INPUT 1      /* a file, a mesh or a render failed */
@@ -108,6 +109,8 @@ typedef struct cli_look {
     int shininess;             /* 0: the default */
     int nlights;               /* 0: the default two lights */
     cli_light light[SILK_MAX_LIGHTS];
+    const char *texture_path;  /* --texture: NULL for the OBJ material's map_Kd, if any */
+    cli_texture_opts texture;  /* --texture-format, --texture-filter, --texture-wrap */
 } cli_look;
 
 /* Everything `silk render` and `silk info` read from the command line
@@ -202,6 +205,7 @@ typedef struct cli_scene {
     silk_hal hal;
     size_t load_bytes;         /* arena bottom after loading the mesh */
     silk_silmap silmap;        /* clip mode: the model's silhouette map, in file */
+    cli_material material;     /* the OBJ material, the texture */
 } cli_scene;
 
 /* One line on stderr when loading turned triangles round, or found a
@@ -220,6 +224,8 @@ int cli_scene_load(cli_scene *s, cli_scene_opts *o);
 /* The silhouette map of the prepared model in file (clip mode); 0 or an
  * exit code after a one-line error. */
 int cli_silmap(const uint8_t *file, size_t len, const char *name, silk_silmap *out);
+/* cli_phong, then the scene's material, texture and vertex colours. */
+void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_view *view, silk_phong *p);
 void cli_scene_free(cli_scene *s);
 
 /* The camera for o and the loaded mesh: the options where given, the default
@@ -251,6 +257,12 @@ double cli_mesh_radius(const silk_mesh *m, double c[3]);
  * usage error for an option no one took. */
 int cli_help(const char *arg, void (*help)(FILE *));
 int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
+/* --texture FILE, --texture-format, --texture-filter, --texture-wrap into
+ * o->look (for commands without the look options): 1 when argv[*i] was one
+ * of them (*rc set to CLI_EXIT_USAGE when its value was bad), else 0. */
+int cli_texture_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
+/* Those options as a command line gives them, for a header to record. */
+void cli_texture_args_text(const cli_scene_opts *o, char *buf, size_t n);
 int cli_unknown_option(const char *cmd, const char *arg);
 
 /* An argument of `silk CMD` that no option took: the one mesh (*mesh_path),

@@ -33,12 +33,15 @@ static void help(FILE *f)
             "            --p [2] --q [3] --R [1] --r [0.4] --tube [0.25]\n"
             "            --segments along the curve [64], --bands around the tube [8]  -> 1024\n"
             "\n"
+            "  --uv                  sphere, torus: texture coordinates too, u around the y\n"
+            "                        axis and v pole to pole (sphere) or around the tube\n"
             "  -o, --output OUT.obj  the file to write (written atomically); - for stdout\n"
             "\n"
             "examples:\n"
             "  silk gen sphere -o sphere.obj\n"
             "  silk gen torus --segments 48 --bands 24 -o torus.obj\n"
-            "  silk gen knot --p 3 --q 5 --tube 0.15 --segments 160 -o knot.obj\n");
+            "  silk gen knot --p 3 --q 5 --tube 0.15 --segments 160 -o knot.obj\n"
+            "  silk gen sphere --uv --segments 24 --bands 16 -o globe.obj\n");
 }
 
 /* Which parameters each shape takes: bit s for gen_shape s. */
@@ -116,6 +119,12 @@ static int gen(int argc, char **argv)
         }
         if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
+            continue;
+        }
+        if (cli_is(a, "--uv")) {
+            if (shape != GEN_SPHERE && shape != GEN_TORUS)
+                return cli_fail(CLI_EXIT_USAGE, "gen: --uv does not apply to a %s", gen_shape_name(shape));
+            p.uv = 1;
             continue;
         }
         const gen_option *g = NULL;

@@ -59,7 +59,14 @@ static void help(FILE *f)
             "                       MESH's with -o -, or \"model\" when both are -)\n"
             "  --views N            N cameras around the model (1..%d): the default view\n"
             "                       turned by k*360/N degrees about the vertical through the\n"
-            "                       target, odd k mirrored to look from below\n",
+            "                       target, odd k mirrored to look from below\n"
+            "  --texture FILE.png   the texture, as `silk render --texture` takes it, packed\n"
+            "                       with its mipmaps; NAME_look(&phong) sets it, the OBJ\n"
+            "                       material and the vertex colours as `silk render` does\n"
+            "  --texture-format rgb888|rgb565|pal8\n"
+            "  --texture-filter bilinear|nearest\n"
+            "  --texture-wrap repeat|clamp   how the texture is stored and sampled, as for\n"
+            "                       `silk render`\n",
             PACK_MAX_EYES, PACK_MAX_EYES);
     cli_print_scene_help(f, PACK_OPTIONS);
     fprintf(f,
@@ -68,7 +75,8 @@ static void help(FILE *f)
             "  silk pack bunny-500.obj -o bunny.h\n"
             "  silk pack bunny-500.obj -o bunny.h --size 320x240 --eye 0,0,3 --eye 3,1,0\n"
             "  silk pack knot-480.obj -o knot.h --size 320x240 --format rgb565 --views 3\n"
-            "  silk gen sphere -o - | silk pack - -o - --name sphere > sphere.h\n");
+            "  silk gen sphere -o - | silk pack - -o - --name sphere > sphere.h\n"
+            "  silk gen sphere --uv -o globe.obj && silk pack globe.obj --texture checker:64 -o globe.h\n");
 }
 
 /* ---- C text ------------------------------------------------------------------- */
@@ -80,9 +88,10 @@ typedef struct writer {
     size_t bytes[16];          /* data bytes per kind, for the summary */
 } writer;
 
-enum { K_POS, K_NORMAL, K_UV, K_TRI, K_EDGE, K_VERT_EDGE, K_FEATURE, K_VIS, K_COUNT };
-static const char *const kind_name[K_COUNT] = { "positions", "normals", "uvs", "triangles",
-                                                "edges",     "vertex edges", "features", "visibility" };
+enum { K_POS, K_NORMAL, K_UV, K_COLOR, K_TRI, K_EDGE, K_VERT_EDGE, K_FEATURE, K_VIS, K_TEXTURE, K_COUNT };
+static const char *const kind_name[K_COUNT] = { "positions", "normals",      "uvs",      "colours",
+                                                "triangles", "edges",        "vertex edges", "features",
+                                                "visibility", "texture" };
 
 /* Items are filled into lines of at most 100 characters. */
 #if defined(__GNUC__)
@@ -131,6 +140,13 @@ static void put_index_array(writer *w, const char *field, const silk_index *v, s
         index_text(b, sizeof b, v[i]);
         item(w, "%s", b);
     }
+    array_close(w, n);
+}
+
+static void put_u32_array(writer *w, const char *field, const uint32_t *v, size_t n, int kind)
+{
+    array_open(w, "uint32_t", field, n, kind, sizeof(uint32_t));
+    for (size_t i = 0; i < n; i++) item(w, "%lu", (unsigned long)v[i]);
     array_close(w, n);
 }
 
@@ -209,6 +225,46 @@ static void put_cameras(writer *w, const silk_camera *c, int n)
     fprintf(w->fp, "};\n\n");
 }
 
+static void put_texture(writer *w, const silk_texture *t)
+{
+    size_t n = silk_texture_bytes((silk_texfmt)t->format, t->width, t->height, t->levels);
+    array_open(w, "uint8_t", "texels", n, K_TEXTURE, 1);
+    for (size_t i = 0; i < n; i++) item(w, "%u", (unsigned)t->pixels[i]);
+    array_close(w, n);
+    if (t->palette) put_u32_array(w, "palette", t->palette, 256, K_TEXTURE);
+    w->bytes[K_TEXTURE] += sizeof(silk_texture);
+    fprintf(w->fp,
+            "static const silk_texture %s_texture = {\n"
+            "    %s_texels, %s%s, %u, %u, %u, %u, %u, %u\n"
+            "};\n\n",
+            w->name, w->name, t->palette ? w->name : "NULL", t->palette ? "_palette" : "", (unsigned)t->width, (unsigned)t->height, (unsigned)t->format, (unsigned)t->levels,
+            (unsigned)t->filter, (unsigned)t->wrap);
+}
+
+/* NAME_look: the material, texture and vertex colours `silk render` applies
+ * over silk_phong_default (cli_scene_phong), for the same pixels. */
+static void put_look(writer *w, const cli_scene *s)
+{
+    silk_phong p;
+    silk_phong_default(&p, NULL);
+    cli_material_apply(&s->material, &s->mesh, 0, 0, 0, &p);
+    const silk_material *m = &p.mat;
+    fprintf(w->fp,
+            "/* The look `silk render` gives the model over silk_phong_default: its material,\n"
+            " * texture and vertex colours.  Call it after silk_phong_default and before\n"
+            " * silk_hal_phong. */\n"
+            "static inline void %s_look(silk_phong *p)\n{\n"
+            "    p->mat.color = silk_v3(%ld, %ld, %ld);\n"
+            "    p->mat.specular = %ld;\n"
+            "    p->mat.specular_color = silk_v3(%ld, %ld, %ld);\n"
+            "    p->mat.shininess = %d;\n"
+            "    p->texture = %s%s%s;\n"
+            "    p->vertex_colors = %d;\n}\n\n",
+            w->name, (long)m->color.x, (long)m->color.y, (long)m->color.z, (long)m->specular,
+            (long)m->specular_color.x, (long)m->specular_color.y, (long)m->specular_color.z, m->shininess,
+            p.texture ? "&" : "NULL", p.texture ? w->name : "", p.texture ? "_texture" : "", p.vertex_colors);
+}
+
 /* The largest index value stored anywhere, for the SILK_INDEX_T check. */
 static unsigned long max_index(const silk_mesh *m)
 {
@@ -241,6 +297,7 @@ static void put_mesh_fn(writer *w, const silk_mesh *m)
     fprintf(f, "    m->normal = (silk_vec3 *)%s_normal;\n", n);
     fprintf(f, "    m->normal_vertex = (silk_index *)%s_normal_vertex;\n", n);
     if (m->uv) fprintf(f, "    m->uv = (silk_vec2 *)%s_uv;\n    m->tri_uv = (silk_index *)%s_tri_uv;\n", n, n);
+    if (m->color) fprintf(f, "    m->color = (uint32_t *)%s_color;\n", n);
     fprintf(f, "    m->tri = (silk_index *)%s_tri;\n", n);
     fprintf(f, "    m->tri_normal = (silk_index *)%s_tri_normal;\n", n);
     fprintf(f, "    m->tri_edge = NULL;   /* found from the vertex-edge lists (silk_mesh_tri_edge) */\n");
@@ -261,7 +318,8 @@ static void put_mesh_fn(writer *w, const silk_mesh *m)
             n, n, n, n);
 }
 
-static int write_header(writer *w, const char *mesh_path, const cli_scene *s, const silk_camera *cams, int ncams)
+static int write_header(writer *w, const char *mesh_path, const char *texture, const cli_scene *s,
+                        const silk_camera *cams, int ncams)
 {
     const silk_mesh *m = &s->mesh;
     FILE *f = w->fp;
@@ -272,9 +330,11 @@ static int write_header(writer *w, const char *mesh_path, const cli_scene *s, co
             " *\n"
             " * The mesh with everything silk computes at load time, as const arrays\n"
             " * for flash: %s_mesh(&m) makes a silk_mesh of them, %s_camera(k) gives\n"
-            " * the packed views.  Coordinates are Q16.16.\n"
+            " * the packed views, %s_look(&phong) the material.  Coordinates are Q16.16.\n"
+            "%s%s%s"
             " */\n",
-            w->name, mesh_path, SILK_VERSION, w->name, w->name);
+            w->name, mesh_path, SILK_VERSION, w->name, w->name, w->name, texture ? " * texture: `" : "",
+            texture ? texture : "", texture ? "`\n" : "");
     fprintf(f, "#ifndef SILK_PACK_%s_H\n#define SILK_PACK_%s_H\n\n#include <string.h>\n#include \"silk/silk.h\"\n\n",
             w->name, w->name);
     fprintf(f, "#define %s_NCAMERAS %d\n\n", w->name, ncams);
@@ -289,6 +349,8 @@ static int write_header(writer *w, const char *mesh_path, const cli_scene *s, co
         put_vec2_array(w, "uv", m->uv, m->nuvs, K_UV);
         put_index_array(w, "tri_uv", m->tri_uv, corners, K_UV);
     }
+    if (m->color) put_u32_array(w, "color", m->color, m->nverts, K_COLOR);
+    if (s->material.have_texture) put_texture(w, &s->material.texture);
     put_index_array(w, "tri", m->tri, corners, K_TRI);
     put_index_array(w, "tri_normal", m->tri_normal, corners, K_NORMAL);
     put_edges(w, m->edge, m->nedges);
@@ -298,6 +360,7 @@ static int write_header(writer *w, const char *mesh_path, const cli_scene *s, co
     if (m->vis) put_vis(w, m->vis);
     put_cameras(w, cams, ncams);
     put_mesh_fn(w, m);
+    put_look(w, s);
     fprintf(f, "#endif\n");
     return ferror(f) ? -1 : 0;
 }
@@ -368,6 +431,7 @@ int cmd_pack(int argc, char **argv)
             continue;
         }
         if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
+        if (cli_texture_arg(&o, argc, argv, &i, &rc)) continue;
         if (cli_is(a, "-o") || cli_is(a, "--output")) {
             if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
         } else if (cli_is(a, "--views")) {
@@ -423,7 +487,9 @@ int cmd_pack(int argc, char **argv)
     silk_status st = silk_outfile_open(&of, out, &err);
     if (st == SILK_OK) {
         w.fp = of.fp;
-        if (write_header(&w, cli_input_name(o.mesh_path), &s, cams, ncams) != 0) {
+        char texture[600];
+        cli_texture_args_text(&o, texture, sizeof texture);
+        if (write_header(&w, cli_input_name(o.mesh_path), o.look.texture_path ? texture : NULL, &s, cams, ncams) != 0) {
             silk_outfile_abort(&of);
             st = silk_fail(&err, SILK_ERR_IO, of.path, 0, "write failed");
         } else {

@@ -141,6 +141,7 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     row(&r, "model", "model positions", mb.positions, NULL);
     row(&r, "model", "model normals", mb.normals, NULL);
     if (mb.uvs) row(&r, "model", "model uvs", mb.uvs, NULL);
+    if (mb.colors) row(&r, "model", "model colours", mb.colors, NULL);
     row(&r, "model", "model triangles", mb.triangles, NULL);
     row(&r, "model", "model edges", mb.edges, NULL);
     row(&r, "model", "model vertex edges", mb.vertex_edges, NULL);

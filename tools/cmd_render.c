@@ -362,7 +362,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
         if ((rc = series_view(o, s, se, k, &view)) != 0) break;
         silk_phong phong;
         silk_hal hal;
-        cli_phong(o, &view, &phong);
+        cli_scene_phong(s, o, &view, &phong);
         silk_hal_phong(&hal, &phong);
         for (int m = 0; m < nmodes && !rc; m++) {
             silk_render_opts ro = o->render;

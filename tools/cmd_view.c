@@ -103,7 +103,7 @@ static int update_camera(viewer *v)
     if (rc) return rc;
     silk_error err;
     if (silk_view_init(&v->view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "view: %s", err.msg);
-    cli_phong(&v->o, &v->view, &v->phong);
+    cli_scene_phong(&v->s, &v->o, &v->view, &v->phong);
     silk_hal_phong(&v->hal, &v->phong);
     return 0;
 }

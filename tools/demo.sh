@@ -14,6 +14,9 @@
 #   NAME-aa.png       flat | smooth | smooth with anti-aliased outlines, each
 #                     drawn 4 times smaller and magnified 4x pixel by pixel
 # and turntable.png, the bunny (or the knot) from 8 sides in smooth mode.
+# The globe (a sphere with texture coordinates, `silk gen --uv`) wears
+# silk's own checker texture (--texture checker), the painted sphere vertex
+# colours.
 # Ends by listing what it wrote.  DEMO_SIZE sets the cell size (320x240).
 set -eu
 
@@ -32,6 +35,11 @@ mkdir -p "$outdir" "$meshdir"
 "$silk" gen cone -o "$meshdir/cone-70.obj"
 "$silk" gen cylinder --segments 16 -o "$meshdir/cylinder-64.obj"
 "$silk" gen knot -o "$meshdir/knot-1024.obj"
+"$silk" gen sphere --uv --segments 16 --bands 12 -o "$meshdir/globe-352.obj"
+"$silk" gen torus --uv -o "$meshdir/torus-uv-576.obj"
+# vertex colours from the position: x, y, z in [-1, 1] to red, green, blue
+awk '/^v /{ printf "v %s %s %s %.4f %.4f %.4f\n", $2, $3, $4, ($2 + 1) / 2, ($3 + 1) / 2, ($4 + 1) / 2; next } { print }' \
+    "$meshdir/sphere-200.obj" >"$meshdir/painted-200.obj"
 
 # show NAME MESH [options...]
 show() {
@@ -53,6 +61,9 @@ show cone "$meshdir/cone-70.obj"
 show cylinder "$meshdir/cylinder-64.obj"
 show knot "$meshdir/knot-1024.obj"
 show sphere-ortho "$meshdir/sphere-200.obj" --ortho auto
+show globe "$meshdir/globe-352.obj" --texture checker
+show torus-textured "$meshdir/torus-uv-576.obj" --texture checker
+show painted "$meshdir/painted-200.obj"
 
 turntable=$meshdir/knot-1024.obj
 if [ -d "$shared" ]; then

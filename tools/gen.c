@@ -10,7 +10,9 @@
  * (a, b, c, d) = ((j,k), (j+1,k), (j+1,k+1), (j,k+1)) then gives the
  * triangles (a,b,c) and (a,c,d), counter-clockwise seen from outside.
  */
+#define _POSIX_C_SOURCE 200809L   /* open_memstream */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -587,7 +589,103 @@ static void write_params(const gen_params *p, FILE *f)
         break;
     default: break;
     }
+    if (p->uv) fputs(" --uv", f);
     fputc('\n', f);
+}
+
+/* The surface parameters of vertex v in [0, 1): u = phi / 2 pi around the
+ * y axis (phi from +x towards +z, as put_circle goes), and v from the
+ * south pole up (sphere) or theta / 2 pi around the tube (torus). */
+static void vertex_uv(const gen_params *p, const double *x, double uv[2])
+{
+    double phi = atan2(x[2], x[0]);
+    uv[0] = phi < 0 ? phi / TAU + 1 : phi / TAU;
+    if (uv[0] >= 1) uv[0] = 0;
+    if (p->shape == GEN_SPHERE) {
+        double c = x[1] / p->radius;
+        uv[1] = 1 - acos(c > 1 ? 1 : (c < -1 ? -1 : c)) / PI;
+    } else {
+        double th = atan2(-x[1], sqrt(x[0] * x[0] + x[2] * x[2]) - p->R);
+        uv[1] = th < 0 ? th / TAU + 1 : th / TAU;
+        if (uv[1] >= 1) uv[1] = 0;
+    }
+}
+
+static int is_pole(const gen_params *p, const double *x)
+{
+    return p->shape == GEN_SPHERE && x[0] == 0 && x[2] == 0;
+}
+
+/* The uvs of triangle t's corners: a triangle across the seam u = 0 (or
+ * v = 0 on the torus) takes u + 1 at its corners near 0, so its uvs run on
+ * without a jump; a pole takes the mean u of the other two corners. */
+static void tri_uv(const gen_mesh *m, const gen_params *p, uint32_t t, double uv[3][2])
+{
+    const uint32_t *c = m->tri + 3 * (size_t)t;
+    for (int k = 0; k < 3; k++) vertex_uv(p, m->pos + 3 * (size_t)c[k], uv[k]);
+    for (int a = 0; a < 2; a++) {
+        if (a == 1 && p->shape != GEN_TORUS) break;
+        double lo = 2, hi = -1;
+        for (int k = 0; k < 3; k++) {
+            if (is_pole(p, m->pos + 3 * (size_t)c[k])) continue;
+            lo = fmin(lo, uv[k][a]);
+            hi = fmax(hi, uv[k][a]);
+        }
+        if (hi - lo > 0.5)
+            for (int k = 0; k < 3; k++)
+                if (uv[k][a] < 0.5) uv[k][a] += 1;
+    }
+    for (int k = 0; k < 3; k++)
+        if (is_pole(p, m->pos + 3 * (size_t)c[k])) uv[k][0] = (uv[(k + 1) % 3][0] + uv[(k + 2) % 3][0]) / 2;
+}
+
+static int cmp_uv(const void *a, const void *b)
+{
+    const double *x = a, *y = b;
+    return x[0] < y[0] ? -1 : x[0] > y[0] ? 1 : x[1] < y[1] ? -1 : x[1] > y[1];
+}
+
+/* 1-based index of uv in the sorted unique list u[0..n). */
+static unsigned long find_uv(double (*u)[2], size_t n, const double uv[2])
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (cmp_uv(u[mid], uv) < 0) lo = mid + 1;
+        else hi = mid;
+    }
+    return (unsigned long)lo + 1;
+}
+
+/* vt lines (rounded to 6 decimals, so that equal values print equal), then
+ * the faces as v/vt. */
+static int write_uv_faces(const gen_mesh *m, const gen_params *p, FILE *f)
+{
+    size_t n = 3 * (size_t)m->ntris;
+    double (*u)[2] = malloc(n * sizeof *u);
+    if (!u) return -1;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        double uv[3][2];
+        tri_uv(m, p, t, uv);
+        for (int k = 0; k < 3; k++)
+            for (int a = 0; a < 2; a++) u[3 * (size_t)t + k][a] = round(uv[k][a] * 1e6) / 1e6;
+    }
+    double (*s)[2] = malloc(n * sizeof *s);
+    if (!s) { free(u); return -1; }
+    memcpy(s, u, n * sizeof *u);
+    qsort(s, n, sizeof *s, cmp_uv);
+    size_t ns = 0;
+    for (size_t i = 0; i < n; i++)
+        if (ns == 0 || cmp_uv(s[ns - 1], s[i]) != 0) memcpy(s[ns++], s[i], sizeof s[i]);
+    for (size_t i = 0; i < ns; i++) fprintf(f, "vt %.6f %.6f\n", s[i][0], s[i][1]);
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        const uint32_t *c = m->tri + 3 * (size_t)t;
+        fprintf(f, "f %u/%lu %u/%lu %u/%lu\n", c[0] + 1, find_uv(s, ns, u[3 * (size_t)t]), c[1] + 1,
+                find_uv(s, ns, u[3 * (size_t)t + 1]), c[2] + 1, find_uv(s, ns, u[3 * (size_t)t + 2]));
+    }
+    free(s);
+    free(u);
+    return 0;
 }
 
 int gen_write_obj(const gen_mesh *m, const gen_params *p, FILE *f)
@@ -599,9 +697,40 @@ int gen_write_obj(const gen_mesh *m, const gen_params *p, FILE *f)
         const double *v = m->pos + 3 * (size_t)i;
         fprintf(f, "v %.9g %.9g %.9g\n", v[0], v[1], v[2]);
     }
+    if (p->uv) return write_uv_faces(m, p, f) != 0 || ferror(f) ? -1 : 0;
     for (uint32_t i = 0; i < m->ntris; i++) {
         const uint32_t *t = m->tri + 3 * (size_t)i;
         fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
     }
     return ferror(f) ? -1 : 0;
+}
+
+char *gen_obj_text(const gen_params *p, size_t *len)
+{
+    char why[160];
+    gen_mesh m;
+    if (gen_check(p, why, sizeof why) || gen_build(p, &m) != 0) return NULL;
+    char *text = NULL;
+    *len = 0;
+    FILE *f = open_memstream(&text, len);
+    int ok = f && gen_write_obj(&m, p, f) == 0;
+    if (f && fclose(f) != 0) ok = 0;
+    gen_free(&m);
+    if (!ok) {
+        free(text);
+        return NULL;
+    }
+    return text;
+}
+
+void gen_checker(uint8_t *rgb, int size, int squares)
+{
+    static const uint8_t col[2][3] = { { 232, 196, 120 }, { 70, 110, 170 } };
+    int cell = size / squares > 0 ? size / squares : 1;
+    for (int y = 0; y < size; y++)
+        for (int x = 0; x < size; x++) {
+            int c = (x / cell + y / cell) & 1, line = x % cell == 0 || y % cell == 0;
+            uint8_t *p = rgb + 3 * ((size_t)y * (size_t)size + (size_t)x);
+            for (int k = 0; k < 3; k++) p[k] = (uint8_t)(line ? col[c][k] * 3 / 4 : col[c][k]);
+        }
 }

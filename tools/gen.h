@@ -32,6 +32,7 @@ typedef struct gen_params {
     double R, r;       /* torus: major and minor radius; knot: the torus it winds on */
     double tube;       /* knot: radius of the tube around the curve */
     int p, q;          /* knot: p turns around the y axis, q turns through the hole */
+    int uv;            /* sphere, torus: write texture coordinates (vt) too */
 } gen_params;
 
 typedef struct gen_mesh {
@@ -64,6 +65,15 @@ void gen_free(gen_mesh *m);
 /* Wavefront OBJ: a comment with the command that reproduces it, then v
  * lines (%.9g) and f lines (1-based).  Returns 0, or -1 on a write error. */
 int gen_write_obj(const gen_mesh *m, const gen_params *p, FILE *f);
+/* gen_build and gen_write_obj into memory: the OBJ text (malloc'd, *len
+ * bytes), or NULL when p fails gen_check or memory runs out. */
+char *gen_obj_text(const gen_params *p, size_t *len);
+
+/* A texture to go with --uv: size x size RGB888 pixels (rgb holds size *
+ * size * 3 bytes) of squares x squares warm and cool squares, each with a
+ * darker line along its top and left sides, so that orientation and any
+ * seam show. */
+void gen_checker(uint8_t *rgb, int size, int squares);
 
 /* Point of the knot's centre curve at parameter t in [0, 2 pi). */
 void gen_knot_curve(const gen_params *p, double t, double out[3]);

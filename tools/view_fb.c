@@ -173,7 +173,7 @@ static int run_fb(cli_scene_opts *o, const view_opts *v)
             rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
             break;
         }
-        cli_phong(o, &view, &s.phong);
+        cli_scene_phong(&s, o, &view, &s.phong);
         silk_hal_phong(&s.hal, &s.phong);
         silk_frame_stats fs;
         if (silk_render_bands(&s.arena, &s.mesh, &view, &s.hal, &o->render, &band, &sink, &fs, &err) != SILK_OK)

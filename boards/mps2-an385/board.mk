@@ -49,8 +49,9 @@ BOARD_CLOCK_HZ := 72000000
 BOARD_CPI      := 1.25 1.5
 
 # What the firmware renders: each model packed into flash, from BOARD_VIEWS
-# cameras around it (`silk pack --views`), each in flat and smooth mode.
-BOARD_MESHES ?= $(MESHES_DIR)/bunny-500.obj $(MESHES_DIR)/knot-480.obj
+# cameras around it (`silk pack --views`), each in flat and smooth mode; the
+# globe is made by `silk gen` and textured (platform/mps2/firmware.mk).
+BOARD_MESHES ?= $(MESHES_DIR)/bunny-500.obj $(MESHES_DIR)/knot-480.obj $(BUILD)/models/globe.obj
 BOARD_VIEWS  := 3
 # No visibility hierarchy in flash (860 bytes for bunny-500): a few hundred
 # normals are tested one by one about as fast, with the same result.

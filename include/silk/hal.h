@@ -23,13 +23,14 @@
 extern "C" {
 #endif
 
-/* A cubic Hermite curve (paper eq. 5) with normals and texture coordinates
- * interpolated linearly along it (eq. 6). */
+/* A cubic Hermite curve (paper eq. 5) with normals, texture coordinates
+ * and vertex colours interpolated linearly along it (eq. 6). */
 typedef struct silk_curve {
     silk_vec3 p0, p1;        /* end points */
     silk_vec3 t0, t1;        /* end tangents */
     silk_vec3 n0, n1;        /* unit normals at the ends */
     silk_vec2 uv0, uv1;
+    uint32_t rgb0, rgb1;     /* vertex colours 0xRRGGBB at the ends (white without them) */
 } silk_curve;
 
 typedef enum silk_vrec_kind {
@@ -62,6 +63,7 @@ typedef struct silk_patch {
     silk_vec3 b[10];         /* control points, SILK_B300 .. SILK_B111 */
     silk_vec3 n[6];          /* normal coefficients, SILK_N200 .. SILK_N101 */
     silk_vec2 uv[3];         /* at the corners */
+    uint32_t rgb[3];         /* vertex colours at the corners */
 } silk_patch;
 
 /* The point of a patch with barycentric coordinates (i, j, n-i-j) / n, as
@@ -80,7 +82,13 @@ typedef struct silk_geom {
 typedef struct silk_vertex_attr {
     silk_vec3 pos, normal;
     silk_vec2 uv;
+    uint32_t rgb;            /* vertex colour 0xRRGGBB; 0xFFFFFF when the mesh has none */
 } silk_vertex_attr;
+
+/* (1-t) a + t b per 8-bit channel of two 0xRRGGBB colours, rounded; t in
+ * [0, 1].  A pure function of its arguments, so both triangles that share
+ * a point get the same colour there. */
+uint32_t silk_rgb_lerp(uint32_t a, uint32_t b, silk_fx t);
 
 /* Evaluate a record: Hermite position, linearly interpolated (then
  * normalised) normal and uv.  Stages call this; it is the only place that
@@ -100,6 +108,12 @@ typedef struct silk_hal {
     uint32_t (*fragment)(const struct silk_hal *h, const silk_fx *var);
     int nvaryings;
     const void *uniforms;
+    /* 0: off.  k > 0: varyings k-1 and k are texture coordinates (u, v);
+     * the rasterizer measures how far they move from a pixel to its right
+     * and lower neighbours and passes max |du| in var[nvaryings] and max |dv|
+     * in var[nvaryings + 1] (Q16.16 per pixel), for choosing a mipmap level
+     * (silk/texture.h); the fragment stage's array has room for both. */
+    int footprint_var;
 } silk_hal;
 
 /* ---- the default stages: Phong ---------------------------------------------- */
@@ -127,9 +141,16 @@ typedef struct silk_phong {
     int nlights;
     silk_material mat;
     int two_sided;           /* light back faces with the flipped normal */
+    /* Texture and vertex colours multiply the base colour (the ambient and
+     * diffuse terms, not the highlight).  texture: NULL for none, else
+     * sampled at the mesh's uvs; vertex_colors: use the mesh's colours. */
+    const struct silk_texture *texture;
+    int vertex_colors;
 } silk_phong;
 
-/* varyings: world position (3), normal (3) */
+/* varyings: world position (3), normal (3), then with a texture or vertex
+ * colours uv (2), then with vertex colours r, g, b (3, Q16.16 in [0, 1]).
+ * Call silk_hal_phong after setting texture and vertex_colors. */
 void silk_phong_default(silk_phong *p, const silk_view *view); /* a key light and a fill light */
 void silk_hal_phong(silk_hal *h, const silk_phong *p);
 

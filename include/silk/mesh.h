@@ -80,6 +80,7 @@ typedef struct silk_mesh {
     silk_vec3  *normal;       /* nnormals unit shading normals: one per smooth group of each vertex */
     silk_index *normal_vertex;/* nnormals: the vertex each normal belongs to */
     silk_vec2  *uv;           /* nuvs, or NULL */
+    uint32_t   *color;        /* nverts vertex colours 0xRRGGBB, or NULL */
 
     silk_index *tri;          /* 3*ntris vertex indices, counter-clockwise seen from outside */
     silk_index *tri_normal;   /* 3*ntris: index into normal[] for each corner */
@@ -161,6 +162,7 @@ typedef struct silk_mesh_input {
     silk_vec3 *pos;
     silk_index *tri;
     silk_vec2 *uv;            silk_index *tri_uv;          /* may be NULL */
+    uint32_t *color;          /* nverts vertex colours 0xRRGGBB, or NULL */
     silk_vec3 *file_normal;   silk_index *tri_file_normal; /* may be NULL */
     uint32_t *tri_group;      /* OBJ smoothing group per triangle (0 = off), or NULL */
 } silk_mesh_input;
@@ -199,7 +201,7 @@ silk_vec3 silk_mesh_face_normal(const silk_mesh *m, uint32_t t);
 
 /* Bytes of the arena each part of the mesh takes (for `silk info`). */
 typedef struct silk_mesh_bytes {
-    size_t positions, normals, uvs, triangles, edges, vertex_edges;
+    size_t positions, normals, uvs, colors, triangles, edges, vertex_edges;
     size_t features;          /* edge_feature[] and feature[] */
     size_t total;
 } silk_mesh_bytes;

@@ -18,7 +18,7 @@
 extern "C" {
 #endif
 
-#define SILK_MAX_VARYINGS 8
+#define SILK_MAX_VARYINGS 11
 
 typedef enum silk_pixfmt {
     SILK_PIX_RGB888 = 0,   /* 3 bytes per pixel: R, G, B */

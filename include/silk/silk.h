@@ -15,6 +15,7 @@
 #include "camera.h"
 #include "raster.h"
 #include "hal.h"
+#include "texture.h"
 #include "visibility.h"
 #include "render.h"
 

@@ -99,10 +99,18 @@ $(FW_DIR)/host-obj/%.o: %.c boards/$(BOARD)/board.mk
 $(FW_HOST_LIB): $(FW_HOST_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
-# The pack options are remembered, so that changing them repacks.
+# The pack options are remembered, so that changing them repacks; a model
+# may add its own (FW_PACK_EXTRA_NAME).
 $(FW_OUT)/%/pack.args: FORCE
 	@mkdir -p $(dir $@)
-	@echo '$(FW_PACK_ARGS)' | cmp -s - $@ || echo '$(FW_PACK_ARGS)' > $@
+	@echo '$(FW_PACK_ARGS) $(FW_PACK_EXTRA_$*)' | cmp -s - $@ || echo '$(FW_PACK_ARGS) $(FW_PACK_EXTRA_$*)' > $@
+
+# A generated model: a globe with texture coordinates (`silk gen --uv`),
+# packed with silk's own checker texture in flash.
+$(BUILD)/models/globe.obj: $(BUILD)/silk
+	@mkdir -p $(dir $@)
+	$(BUILD)/silk gen sphere --uv --segments 16 --bands 12 -o $@
+FW_PACK_EXTRA_globe := --texture checker:64 --texture-format rgb565
 
 # The sizes are compiled and linked in: remembered like the pack options.
 FW_SIZES := $(BOARD_FLASH_BYTES) $(BOARD_RAM_BYTES) $(BOARD_STACK_BYTES) $(BOARD_ARENA_BYTES) \
@@ -114,7 +122,7 @@ $(FW_OUT)/defs.args: FORCE
 # One firmware per model: $(1) the name, $(2) the mesh file.
 define fw_model
 $(FW_OUT)/$(1)/fwmodel.h: $(2) $(BUILD)/silk $(FW_OUT)/$(1)/pack.args
-	$(BUILD)/silk pack $(2) -o $$@ --name fwmodel $(FW_PACK_ARGS)
+	$(BUILD)/silk pack $(2) -o $$@ --name fwmodel $(FW_PACK_ARGS) $(FW_PACK_EXTRA_$(1))
 
 $(FW_OUT)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args
 	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) -c $$< -o $$@

@@ -315,6 +315,7 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
     silk_phong phong;
     silk_hal hal;
     silk_phong_default(&phong, &view);
+    fwmodel_look(&phong);
     silk_hal_phong(&hal, &phong);
     silk_render_opts ro;
     silk_render_opts_default(&ro);
