@@ -227,7 +227,7 @@ endif
 # `make clean` leaves the boards' build directories; this removes them.
 .PHONY: clean-boards
 clean-boards:
-	rm -rf build-mps2-an385 build-microbit build-linux-fb
+	rm -rf build-mps2-an385 build-mps2-an385-full build-microbit build-linux-fb
 
 # The ARM toolchain and QEMU for the firmware (Debian, Ubuntu).
 DEPS_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
@@ -256,7 +256,7 @@ profile:
 	BOARD='$(BOARD)' FW_DIR='$(FW_OUT)' BOARD_RUN='$(BOARD_RUN)' BOARD_CROSS='$(BOARD_CROSS)' \
 	  BOARD_FLASH_BYTES='$(BOARD_FLASH_BYTES)' BOARD_WIDTH='$(BOARD_WIDTH)' BOARD_HEIGHT='$(BOARD_HEIGHT)' \
 	  BOARD_BAND_ROWS='$(BOARD_BAND_ROWS)' BOARD_CLOCK_HZ='$(BOARD_CLOCK_HZ)' BOARD_CPI='$(BOARD_CPI)' \
-	  BOARD_INSTR_PER_TICK='$(BOARD_INSTR_PER_TICK)' \
+	  BOARD_INSTR_PER_TICK='$(BOARD_INSTR_PER_TICK)' BOARD_CODE_BYTES='$(BOARD_CODE_BYTES)' \
 	  PROFILE_CSV='$(PROFILE_CSV)' sh tools/profile_fw.sh '$(PROFILE_MESH)' $(PROFILE_ARGS)
 else
 profile: $(BUILD)/silk
@@ -276,6 +276,7 @@ tests: firmware-for-tests
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
 	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k; \
+	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host; \
 	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD) firmware for the tests (its models are shared meshes)"; fi
 	$(MAKE) BOARD=microbit BUILD=build-microbit SAN= CFLAGS= firmware firmware-host firmware-256k
 endif

@@ -202,7 +202,7 @@ static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k)
 /* FLAT's rule for side k of input triangle t. */
 static int coarse_outline(const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
 {
-    silk_index e = m->tri_edge[3 * t + k];
+    silk_index e = silk_mesh_tri_edge(m, t, k);   /* a packed mesh has no tri_edge */
     if (e >= m->nedges) return 0;
     const silk_edge *ed = &m->edge[e];
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];

@@ -99,11 +99,13 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
     int64_t v[3], n[3];
     /* the material colour times the texel and the vertex colour */
     int64_t base[3] = { m->color.x, m->color.y, m->color.z };
+#ifndef SILK_NO_TEXTURE   /* a build without textures draws textured models in their material colour */
     if (p->texture) {
         uint32_t tex = silk_texture_sample(p->texture, var[VAR_UV], var[VAR_UV + 1], var[h->nvaryings],
                                            var[h->nvaryings + 1]);
         for (int k = 0; k < 3; k++) base[k] = (base[k] * byte_to_fx(tex >> (16 - 8 * k))) >> 16;
     }
+#endif
     if (p->vertex_colors && h->nvaryings >= VAR_RGB_COUNT)
         for (int k = 0; k < 3; k++) {
             int64_t c = var[VAR_RGB + k];
@@ -200,7 +202,11 @@ void silk_hal_phong(silk_hal *h, const silk_phong *p)
     h->fragment = phong_fragment;
     h->nvaryings = p->vertex_colors ? VAR_RGB_COUNT : (p->texture ? VAR_UV_COUNT : VAR_COUNT);
     h->uniforms = p;
+#ifdef SILK_NO_TEXTURE
+    h->footprint_var = 0;
+#else
     h->footprint_var = p->texture ? VAR_UV + 1 : 0;
+#endif
 }
 
 /* Unit direction a*right + b*up + c*back in camera terms (back = towards

@@ -362,6 +362,7 @@ static void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b
  * interpolation, per pixel.  A neighbour past the triangle's horizon
  * (T <= 0) counts as no movement; the weight steps are clamped to 2^29
  * (one half) so every product stays far inside 64 bits. */
+#ifndef SILK_NO_TEXTURE
 static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T, int64_t b1, int64_t b2,
                       silk_fx *var)
 {
@@ -393,6 +394,7 @@ static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T
         var[s->nvar + j] = m > SILK_FX_MAX ? SILK_FX_MAX : (silk_fx)m;
     }
 }
+#endif
 
 static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr)
 {
@@ -413,7 +415,9 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     uint8_t *crow = t->color ? t->color + r * t->stride : NULL;
     const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
     silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
+#ifndef SILK_NO_TEXTURE
     int fp = h && h->footprint_var > 0 && h->footprint_var < s->nvar ? h->footprint_var - 1 : -1;
+#endif
 
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
@@ -433,7 +437,9 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
                     var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
                 }
                 if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+#ifndef SILK_NO_TEXTURE
                 if (fp >= 0) footprint(s, fp, U, V, T, b1, b2, var);
+#endif
                 uint32_t rgb = h->fragment(h, var);
                 if (crow) store(t, crow + (size_t)x * bpp, rgb);
             }

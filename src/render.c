@@ -22,7 +22,10 @@
  * pen-and-ink lines and --wire (lines.c and the rasterizer's lines, about
  * 7 KiB); with both flags every frame is drawn share by share, so the stored
  * frame's code goes too.  -DSILK_NO_CLIP_MODE likewise leaves out CLIP
- * (clip.c and the silhouette interpolation, about 11 KiB).
+ * (clip.c and the silhouette interpolation, about 11 KiB), -DSILK_NO_AA the
+ * anti-aliased outlines (frame_aa) and -DSILK_NO_TEXTURE texture sampling
+ * (phong.c, raster.c): a part with 32 KiB of RAM and 40 KiB for the core
+ * draws flat and smooth frames without them.
  */
 #include <string.h>
 #include "smooth.h"
@@ -547,13 +550,22 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #endif
 }
 
-/* Anti-aliased outlines (aa.c) over band t, just drawn: the frames drawn
+/* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
+ * leaves them out: about 2.4 KiB of Cortex-M3 code and a band's worth of
+ * scratch): the frames drawn
  * share by share (FLAT and SMOOTH without lines; CLIP's outline is the
  * map's, anti-aliased by clip.c), not under --wire's edges.  The shares that can
  * hold an outline are rebuilt once more; a band that is not the whole
  * frame first draws the rows next to it, which its edge pixels blend with. */
 static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t)
 {
+#ifdef SILK_NO_AA
+    (void)f;
+    (void)a;
+    (void)v;
+    (void)o;
+    silk_aa_alpha(t);
+#else
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
     if (!o->aa || o->wire || f->part != share_part || !t->depth || f->clip ||   /* clip.c does its own */
@@ -572,6 +584,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     }
     silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
     silk_arena_top_release(a, &mark);
+#endif
 }
 
 /* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its

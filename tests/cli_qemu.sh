@@ -1,11 +1,13 @@
 #!/bin/sh
 # cli_qemu.sh - the firmware boards under QEMU, byte for byte against the
-# host: the Cortex-M3 (boards/mps2-an385, 320x240) and the Cortex-M0 with
-# 16 KiB of RAM (boards/microbit, 160x128).
+# host: the Cortex-M3 with 32 KiB of RAM (boards/mps2-an385, 320x240), the
+# same with 64 KiB, anti-aliasing and textures (boards/mps2-an385-full) and
+# the Cortex-M0 with 16 KiB of RAM (boards/microbit, 160x128).
 #
-# `make test` builds, per model of each board (mps2-an385: bunny-500,
-# knot-480 and a globe from `silk gen --uv` with silk's checker texture;
-# microbit: bunny-500 and a torus made by `silk gen`; each packed
+# `make test` builds, per model of each board (mps2-an385: bunny-500 and
+# knot-480; mps2-an385-full: bunny-500 and a globe from `silk gen --uv` with
+# silk's checker texture; microbit: bunny-500 and a torus made by `silk
+# gen`; each packed
 # into flash by `silk pack --views 3`):
 #   fw/NAME/fw.elf          linked for the board's RAM budget
 #   fw/NAME/fw-host         the same scene and arena, compiled for the host
@@ -67,22 +69,24 @@ report_value() {
     grep -E "^fw $2( |=)" "$1" | head -n 1 | tr ' ' '\n' | sed -n "s/^$3=//p" | head -n 1
 }
 
-for board in mps2-an385 microbit; do
+for board in mps2-an385 mps2-an385-full microbit; do
     fwroot=${SILK_FW_DIR:-build-$board/fw}
+    variants="board ram256k"
     if [ -n "${SILK_FW_DIR:-}" ]; then
         [ "$board" = mps2-an385 ] || continue
-        want_models=3   # bunny-500, knot-480 and the textured globe
-    elif [ "$board" = mps2-an385 ]; then
+        want_models=2
+    elif [ "$board" = mps2-an385 ] || [ "$board" = mps2-an385-full ]; then
         if [ "$have_meshes" = 0 ]; then
             echo "skip: $board: $meshes is missing, and the firmware's models are shared meshes"
             continue
         fi
-        want_models=3   # bunny-500, knot-480 and the textured globe
+        want_models=2   # bunny-500 and knot-480; on the -full board bunny-500 and the textured globe
+        [ "$board" = mps2-an385-full ] && variants=board
     else
         want_models=$((1 + have_meshes))  # bunny-500 when the shared meshes are there, and a torus
     fi
     compared=0; smooth=0
-    for variant in board ram256k; do
+    for variant in $variants; do
         if [ "$variant" = board ]; then dir=$fwroot; else dir=$fwroot/ram256k; fi
         models=0
         for elf in "$dir"/*/fw.elf; do
@@ -106,6 +110,7 @@ for board in mps2-an385 microbit; do
             fi
             size=$(report_value "$report" board size)
             format=$(report_value "$report" board format)
+            aa=$(report_value "$report" board aa)
 
             # RAM: what the firmware measured against what it was linked for.
             total=$(report_value "$report" ram total)
@@ -162,8 +167,8 @@ for board in mps2-an385 microbit; do
                     fi
                     ref=$tmp/ref-$board-$name-c$k-$mode.ppm
                     # shellcheck disable=SC2086
-                    "$SILK" render "$mesh" $texture --size "$size" --format "$format" --eye "$eye" --mode "$mode" \
-                        -o "$ref" 2>"$err"
+                    "$SILK" render "$mesh" $texture --aa "${aa:-on}" --size "$size" --format "$format" --eye "$eye" \
+                        --mode "$mode" -o "$ref" 2>"$err"
                     if [ -s "$frame" ] && cmp -s "$frame" "$ref"; then
                         pass "$tag camera $k $mode: equals silk render byte for byte"
                         compared=$((compared + 1))

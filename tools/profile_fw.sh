@@ -64,7 +64,7 @@ lib_text=$("${BOARD_CROSS:-}size" -t "$FW_DIR/libsilk.a" 2>/dev/null | awk '/\(T
 awk -v board="$BOARD" -v mesh="$mesh" -v name="$name" -v dir="$dir" -v csv="$PROFILE_CSV" -v check="$check" \
     -v flash_budget="$BOARD_FLASH_BYTES" -v width="$BOARD_WIDTH" -v height="$BOARD_HEIGHT" \
     -v band_rows="$BOARD_BAND_ROWS" -v lib_text="${lib_text:-0}" -v runner="${BOARD_RUN%% *}" \
-    -v clock_hz="${BOARD_CLOCK_HZ:-0}" -v cpis="${BOARD_CPI:-}" -v ipt="${BOARD_INSTR_PER_TICK:-40}" '
+    -v clock_hz="${BOARD_CLOCK_HZ:-0}" -v cpis="${BOARD_CPI:-}" -v ipt="${BOARD_INSTR_PER_TICK:-40}" -v code_limit="${BOARD_CODE_BYTES:-40960}" '
 function hex(s,    i, n, c) {
     n = 0
     s = tolower(s)
@@ -201,7 +201,7 @@ END {
     code += fill + data_init
     print "  model (silk pack):"
     for (i = 1; i <= nkinds; i++) { model_total += model[kinds[i]]; if (model[kinds[i]]) row("flash", "model " kinds[i], model[kinds[i]], "") }
-    printf "  %-34s %9d  (limit 40 KiB = 40960: %s)\n", "core code (.text of libsilk)", core_text, core_text <= 40960 ? "ok" : "OVER"
+    printf "  %-34s %9d  (limit %d: %s)\n", "core code (.text of libsilk)", core_text, code_limit, core_text <= code_limit ? "ok" : "OVER"
     printf "  %-34s %9d\n", "core constants (.rodata)", core_ro
     if (lib_text) printf "  %-34s %9d  (every module, loaders too: `size` of fw/libsilk.a)\n", "core library .text", lib_text
     row("flash", "code total", code, "everything but the model")
@@ -265,7 +265,7 @@ END {
         printf "\ncsv: %s\n", csv
     }
     printf "footprint %s %s ram_total_bytes=%d code_bytes=%d model_bytes=%d\n", board, name, ram_total, code, model_total
-    if (check && (fell || ram_total > ram_budget || core_text > 40960)) {
+    if (check && (fell || ram_total > ram_budget || core_text > code_limit)) {
         printf "silk: profile: %s does not meet its budget (%d frames fell back)\n", board, fell >"/dev/stderr"
         exit 1
     }

@@ -3,9 +3,9 @@
 # `make BOARD=mps2-an385 run`).
 #
 # The AN385 itself has 8 MB of SSRAM; the firmware is linked for the budget
-# of a real small part instead, an STM32F103RE-class device (Cortex-M3,
-# 512 KiB flash, 64 KiB SRAM): the linker refuses a program that does not
-# fit (platform/mps2/mps2.ld).  No frame buffer: the frame is rendered in
+# of a real small part instead: a Cortex-M3 with 512 KiB of flash and
+# 32 KiB of SRAM (the LPC1768's main SRAM bank, say): the linker refuses a
+# program that does not fit (platform/mps2/mps2.ld).  No frame buffer: the frame is rendered in
 # bands of BOARD_BAND_ROWS rows and each band is streamed to the host through
 # ARM semihosting, as a display driver would send it over SPI.  The model is
 # compiled into flash by `silk pack` (docs/small-devices.md).
@@ -21,23 +21,31 @@ BOARD_SINK   := semihosting
 # buffers (RASTER) and the per-frame scratch (FRAME); the rest of .bss and
 # .data is a few hundred bytes of libc and startup state.
 BOARD_FLASH_BYTES := 524288
-BOARD_RAM_BYTES   := 65536
-BOARD_STACK_BYTES := 6144
-BOARD_ARENA_BYTES := 59136
+BOARD_RAM_BYTES   := 32768
+# The stack's painted high-water is about 5.1 KiB (`make profile`, its stage passes included).
+BOARD_STACK_BYTES := 5632
+BOARD_ARENA_BYTES := 26880
 
 # Toolchain and flags (`make deps` installs them on Debian/Ubuntu)
 BOARD_CROSS := arm-none-eabi-
 BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # The firmware draws flat and smooth only; the reference methods (PN,
 # blend) stay in the host library, where they are measured against, and so
-# do the pen-and-ink lines and --wire, and clip mode (11 KiB of code; its
-# per-frame outline does not fit the board's RAM yet).
-BOARD_OPT   := -Os -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE
+# do the pen-and-ink lines and --wire, clip mode (11 KiB of code; its
+# per-frame outline does not fit the board's RAM yet), anti-aliased
+# outlines (2.4 KiB of code and about 12 KiB of scratch a band) and
+# textures (3 KiB): boards/mps2-an385-full is the same part with 64 KiB of
+# RAM and those two.
+BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE -DSILK_NO_AA -DSILK_NO_TEXTURE
+BOARD_OPT   := -Os
+# The core's code budget (`make profile` checks it)
+BOARD_CODE_BYTES := 40960
 # Mesh indices in 16 bits: the packed model's index arrays and the frame's
 # plan records take half the bytes (`silk pack` refuses a model with more
 # than 65 534 vertices, normals, triangles or edges for it).  The host build
-# of the scene (fw-host) uses the same type, so its arena matches byte for byte.
-BOARD_CORE_DEFS := -DSILK_INDEX_T=uint16_t
+# of the scene (fw-host) uses the same type and features, so its arena and
+# pixels match byte for byte.
+BOARD_CORE_DEFS = -DSILK_INDEX_T=uint16_t $(BOARD_FEATURES)
 # -icount shift=0: virtual time advances exactly 1 ns per instruction, so
 # the firmware's timer (25 MHz, 40 ns a tick) counts instructions.
 BOARD_RUN   := qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none \
@@ -49,9 +57,8 @@ BOARD_CLOCK_HZ := 72000000
 BOARD_CPI      := 1.25 1.5
 
 # What the firmware renders: each model packed into flash, from BOARD_VIEWS
-# cameras around it (`silk pack --views`), each in flat and smooth mode; the
-# globe is made by `silk gen` and textured (platform/mps2/firmware.mk).
-BOARD_MESHES ?= $(MESHES_DIR)/bunny-500.obj $(MESHES_DIR)/knot-480.obj $(BUILD)/models/globe.obj
+# cameras around it (`silk pack --views`), each in flat and smooth mode.
+BOARD_MESHES ?= $(MESHES_DIR)/bunny-500.obj $(MESHES_DIR)/knot-480.obj
 BOARD_VIEWS  := 3
 # No visibility hierarchy in flash (860 bytes for bunny-500): a few hundred
 # normals are tested one by one about as fast, with the same result.

@@ -57,6 +57,12 @@
 #ifndef FW_BAND_ROWS
 #define FW_BAND_ROWS 8
 #endif
+/* Whether the core draws anti-aliased outlines (silk render's --aa) */
+#ifdef SILK_NO_AA
+#define FW_AA "off"
+#else
+#define FW_AA "on"
+#endif
 /* The vertex cache may take this much of the arena (silk_render_opts):
  * none by default, so the RAM a frame needs is what `make profile` reports
  * and the budget is the board's; a board with RAM to spare sets it. */
@@ -394,8 +400,8 @@ int fw_scene(void)
     fwmodel_mesh(&mesh);
     const silk_camera *c0 = fwmodel_camera(0);
     if (!model_ok(&mesh, c0)) return 1;
-    say("fw board=%s model=%s size=%dx%d format=%s band_rows=%d cameras=%d", FW_BOARD, FW_MODEL_NAME, c0->width,
-        c0->height, FW_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", FW_BAND_ROWS, fwmodel_NCAMERAS);
+    say("fw board=%s model=%s size=%dx%d format=%s band_rows=%d cameras=%d aa=%s", FW_BOARD, FW_MODEL_NAME, c0->width,
+        c0->height, FW_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888", FW_BAND_ROWS, fwmodel_NCAMERAS, FW_AA);
 
     /* The timer's rate, from a loop of a known number of instructions. */
     uint32_t spin = 1000000u, t0 = fw_ticks();

@@ -1,0 +1,18 @@
+# boards/mps2-an385-full/board.mk - the Cortex-M3 board of
+# boards/mps2-an385 as a part with 64 KiB of SRAM (an STM32F103RE-class
+# device: 512 KiB of flash, 64 KiB of SRAM), with anti-aliased outlines and
+# textures built in: the same QEMU machine and frame, in bands of 8 rows
+# (an anti-aliased band also draws the rows above and below it, which costs
+# half again in bands of 4).  Its
+# models are bunny-500 and a globe from `silk gen --uv` packed with silk's
+# own checker texture in RGB565 (platform/mps2/firmware.mk).
+include boards/mps2-an385/board.mk
+
+BOARD_BAND_ROWS   := 8
+BOARD_RAM_BYTES   := 65536
+BOARD_STACK_BYTES := 6144
+BOARD_ARENA_BYTES := 59136
+BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE
+BOARD_CODE_BYTES := 49152
+BUILD := build-mps2-an385-full
+BOARD_MESHES := $(MESHES_DIR)/bunny-500.obj $(BUILD)/models/globe.obj
