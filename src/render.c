@@ -557,19 +557,22 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
  * map's, anti-aliased by clip.c), not under --wire's edges.  The shares that can
  * hold an outline are rebuilt once more; a band that is not the whole
  * frame first draws the rows next to it, which its edge pixels blend with. */
-static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t)
+static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
+                     silk_frame_stats *stats)
 {
 #ifdef SILK_NO_AA
     (void)f;
     (void)a;
     (void)v;
     (void)o;
+    (void)stats;
     silk_aa_alpha(t);
 #else
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    if (!o->aa || o->wire || f->part != share_part || !t->depth || f->clip ||   /* clip.c does its own */
-        !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
+    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip;   /* clip.c does its own */
+    if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
+        if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);
         silk_arena_top_release(a, &mark);
         return;
@@ -583,6 +586,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }
     silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
+    stats->aa_aliased += aa.dropped;
     silk_arena_top_release(a, &mark);
 #endif
 }
@@ -616,7 +620,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
         frame_draw(&f, o, t);
-        frame_aa(&f, a, v, o, t);
+        frame_aa(&f, a, v, o, t, stats);
         if (f.clip) stats->clip_spans = f.clip->spans;
     }
     stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes;   /* the vertex cache not counted (vertex_cache) */
@@ -651,7 +655,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
         frame_draw(&f, o, band);
-        frame_aa(&f, a, v, o, band);
+        frame_aa(&f, a, v, o, band, stats);
         if (sink->band(sink->user, band))
             st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }

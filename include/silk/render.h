@@ -139,6 +139,9 @@ typedef struct silk_frame_stats {
     uint32_t clip_tri;       /* CLIP: the polytope triangle the eye was found in */
     uint32_t clip_points;    /* CLIP: vertices of the interpolated outline polygon */
     uint32_t clip_spans;     /* CLIP: runs of stencil pixels over the frame's rows */
+    uint32_t aa_aliased;     /* outline pixels left aliased: a band's pixel list (about 3 x (width + rows))
+                                was full, or the arena had no room for it (then at least 1).  Only when it
+                                is 0 for both are a banded frame and the whole frame the same bytes. */
 } silk_frame_stats;
 
 silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
