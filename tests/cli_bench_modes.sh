@@ -15,7 +15,7 @@ mkdir -p "$tmp/dump"
 run_silk bench --pair "$tmp/coarse.obj:$tmp/fine.obj" --views 2 --size 160x120 --modes flat,smooth,pn3 --reps 1 \
     --csv "$tmp/b.csv" --md "$tmp/b.md" --plot "$tmp/b.png" --dump "$tmp/dump"
 check "exit 0, stderr empty" test "$rc" -eq 0 -a ! -s "$err"
-line_re='^bench coarse (flat|smooth|pn3|fine) (ortho|perspective) triangles=[0-9]+ drawn=[0-9]+ ms=[0-9.]+ fps=[0-9.]+ error_mean_px=[0-9.]+ error_max_px=[0-9.]+ arena_bytes=[0-9]+$'
+line_re='^bench coarse (flat|smooth|pn3|fine) (ortho|perspective) triangles=[0-9]+ drawn=[0-9]+ ms=[0-9.]+ fps=[0-9.]+ error_mean_px=[0-9.]+ error_max_px=[0-9.]+ arena_bytes=[0-9]+ bytes=[0-9]+$'
 check "8 lines: 3 modes and the reference, 2 projections" [ "$(grep -cE "$line_re" "$out")" = 8 ]
 check "CSV columns" [ "$(head -n 1 "$tmp/b.csv" | cut -d, -f1-10)" = \
     "mesh,mode,level,projection,triangles_in,triangles_drawn,ms_per_frame,error_mean_px,error_max_px,arena_peak_bytes" ]
@@ -30,6 +30,20 @@ check "16 dumped views: 2 projections x 2 views x (3 modes + fine)" [ "$(ls "$tm
 fe=$(awk -F, '$2 == "flat" && $4 == "perspective" { print $8 }' "$tmp/b.csv")
 se=$(awk -F, '$2 == "smooth" && $4 == "perspective" { print $8 }' "$tmp/b.csv")
 check "sphere: smooth error $se < flat error $fe / 2" awk -v s="$se" -v f="$fe" 'BEGIN { exit !(s < f / 2) }'
+
+# Bytes: the coarse mesh's flash bytes grow with its triangles, and a pair
+# may name its own modes; --plot-bytes draws error against bytes.
+"$SILK" gen sphere --segments 32 --bands 16 -o "$tmp/coarse2.obj"
+run_silk bench --pair "$tmp/coarse.obj:$tmp/fine.obj" --pair "$tmp/coarse2.obj:$tmp/fine.obj=smooth" --views 1 \
+    --size 80x60 --modes flat,smooth --reps 1 --projection ortho --csv "$tmp/y.csv" --plot-bytes "$tmp/y.png"
+check "per-pair modes: coarse2 drawn smooth only" [ "$(grep -c '^bench coarse2 ' "$out")" = 2 ]
+check "per-pair modes: coarse drawn flat and smooth" [ "$(grep -c '^bench coarse ' "$out")" = 3 ]
+b1=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next } $1 == "coarse" && $2 == "smooth" { print $c["bytes"] }' "$tmp/y.csv")
+b2=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next } $1 == "coarse2" && $2 == "smooth" { print $c["bytes"] }' "$tmp/y.csv")
+check "bytes grow with the triangles: $b1 < $b2" [ "$b1" -gt 0 -a "$b1" -lt "$b2" ]
+check "bytes chart is a PNG" is_png "$tmp/y.png"
+want="not one of --modes" expect_usage "pair mode not in --modes" bench --pair "$tmp/coarse.obj:$tmp/fine.obj=pn3" --modes flat
+want="COARSE:FINE=MODES" expect_usage "pair with empty modes" bench --pair "$tmp/coarse.obj:$tmp/fine.obj="
 
 # One view: the bench's error is silk diff's on the same two images.
 rm -f "$tmp/dump"/*
@@ -46,7 +60,7 @@ check "view 0 is silk render's default camera" grep -q "differing=0 " "$out"
 
 # a mesh without a reference: no error columns
 run_silk bench "$tmp/coarse.obj" --views 1 --size 32x24 --modes flat --reps 1 --csv "$tmp/c.csv"
-check "no reference: no error" grep -qE '^bench coarse flat ortho triangles=200 drawn=200 ms=[0-9.]+ fps=[0-9.]+ arena_bytes=[0-9]+$' "$out"
+check "no reference: no error" grep -qE '^bench coarse flat ortho triangles=200 drawn=200 ms=[0-9.]+ fps=[0-9.]+ arena_bytes=[0-9]+ bytes=[0-9]+$' "$out"
 check "no reference: empty CSV cells" grep -q '^coarse,flat,,ortho,200,200\.0,[0-9.]*,,,' "$tmp/c.csv"
 
 # the visibility benchmark is still there

@@ -45,7 +45,7 @@ typedef struct bench_cfg {
     int nmodes;
     silk_fx tolerance;
     uint32_t bg;
-    const char *csv, *json, *md, *plot, *dump;
+    const char *csv, *json, *md, *plot, *plot_bytes, *dump;
     int quiet;
 } bench_cfg;
 
@@ -66,6 +66,7 @@ typedef struct row {
     double hausdorff_mean;     /* mean over the views of the Hausdorff distance */
     double outside, inside;    /* err_mean split: pixels only in the mode's / only in the reference's mask */
     size_t arena_peak;         /* arena high-water mark over the views */
+    size_t bytes;              /* the model's data a device keeps in flash (model_bytes) */
 } row;
 
 typedef struct row_list {
@@ -80,6 +81,7 @@ typedef struct loaded {
     silk_arena arena;
     silk_mesh mesh;
     uint8_t *file;             /* the hull of a prepared model: the file, which holds its map */
+    size_t file_len;
     silk_silmap silmap;
     struct loaded *hull;       /* clip mode's mesh and map, when a mode is clip */
 } loaded;
@@ -95,11 +97,12 @@ static void help(FILE *f)
             "milliseconds per frame, and - for a --pair - the silhouette error against\n"
             "the fine mesh drawn flat from the same camera (as silk diff measures it).\n"
             "One line per mesh, mode and projection:\n"
-            "  bench MESH MODE PROJ triangles=N drawn=N ms=X fps=X error_mean_px=X error_max_px=X arena_bytes=N\n"
+            "  bench MESH MODE PROJ triangles=N drawn=N ms=X fps=X error_mean_px=X error_max_px=X arena_bytes=N bytes=N\n"
             "docs/measurements.md defines the camera path and every number.\n"
             "\n"
             "options:\n"
-            "  --pair COARSE:FINE  a coarse mesh and its fine reference (repeatable)\n"
+            "  --pair COARSE:FINE  a coarse mesh and its fine reference (repeatable);\n"
+            "                      COARSE:FINE=MODES draws that pair in those of --modes only\n"
             "  --views N           views per projection along the camera path [12]\n"
             "  --size WxH          image size [640x480]\n"
             "  --modes LIST        comma-separated: flat, smooth, blend, clip, pnL (PN triangles\n"
@@ -114,6 +117,8 @@ static void help(FILE *f)
             "  --quiet             no progress line on a terminal\n"
             "  --md FILE           the table as Markdown, with smooth mode's goals checked\n"
             "  --plot FILE.png     bar chart of frame time and silhouette error per mode\n"
+            "  --plot-bytes FILE.png  silhouette error against the model's bytes in flash,\n"
+            "                      a line per mode through the pairs' coarse meshes\n"
             "  --dump DIR          every rendered view as DIR/MESH-PROJ-VIEW-MODE.png\n"
             "\n"
             "example:\n"
@@ -161,6 +166,27 @@ static int parse_modes(const char *list, bench_cfg *c)
     return 0;
 }
 
+/* A pair's own mode list (COARSE:FINE=MODES) as a mask over --modes: each
+ * must be one of them; without a list, all of them. */
+static int pair_mode_mask(const char *list, const bench_cfg *c, uint32_t *mask)
+{
+    *mask = 0;
+    if (!list) {
+        *mask = (1u << c->nmodes) - 1;
+        return 0;
+    }
+    cli_mode own[MAX_MODES];
+    int n;
+    if (cli_parse_modes("--pair", list, own, MAX_MODES, &n)) return CLI_EXIT_USAGE;
+    for (int k = 0; k < n; k++) {
+        int m = 0;
+        while (m < c->nmodes && strcmp(c->mode[m].name, own[k].name) != 0) m++;
+        if (m == c->nmodes) return cli_fail(CLI_EXIT_USAGE, "--pair: mode %s is not one of --modes", own[k].name);
+        *mask |= 1u << m;
+    }
+    return 0;
+}
+
 /* ---- meshes and cameras ------------------------------------------------------------ */
 
 static void mesh_name(const char *path, char *out, size_t n)
@@ -192,6 +218,7 @@ static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_
     l->mesh = lm.mesh;
     if (part == SILK_PART_HULL) {
         l->file = lm.file;
+        l->file_len = lm.file_len;
         if (!rc) rc = cli_silmap(lm.file, lm.file_len, lm.name, &l->silmap);
     } else {
         free(lm.file);
@@ -315,7 +342,31 @@ static void add_error(acc *a, const mask_stats *ms)
     if (ms->mean_px > a->err_worst_mean) a->err_worst_mean = ms->mean_px;
 }
 
-static int push_row(row_list *L, const loaded *l, const char *mode, uint32_t level, int proj, int has_error, acc *a)
+/* What a device keeps in flash to draw the model in a mode: the mesh the
+ * mode draws, its arrays as `silk pack` writes them (without tri_edge and
+ * edge_feature, which the renderer derives; indices as wide as this build's
+ * silk_index; the optional visibility hierarchy left out) and, for clip
+ * mode, the silhouette map's section of the prepared file.
+ * docs/measurements.md, "bytes". */
+static size_t model_bytes(const loaded *l, silk_mode mode)
+{
+    silk_mesh packed = l->mesh;
+    packed.tri_edge = NULL;
+    packed.edge_feature = NULL;
+    silk_mesh_bytes mb;
+    silk_mesh_bytes_used(&packed, &mb);
+    size_t n = mb.total;
+    silk_model m;
+    silk_model_section sec;
+    silk_error err;
+    if (mode == SILK_MODE_CLIP && l->file && silk_model_open(l->file, l->file_len, l->name, &m, &err) == SILK_OK &&
+        silk_model_find(&m, SILK_SECTION_SMAP, &sec))
+        n += sec.size;
+    return n;
+}
+
+static int push_row(row_list *L, const loaded *l, const char *mode, uint32_t level, int proj, int has_error, acc *a,
+                    size_t bytes)
 {
     if (L->n == L->cap) {
         int cap = L->cap ? 2 * L->cap : 32;
@@ -343,6 +394,7 @@ static int push_row(row_list *L, const loaded *l, const char *mode, uint32_t lev
     r->outside = has_error ? a->outside / n : NAN;
     r->inside = has_error ? a->inside / n : NAN;
     r->arena_peak = a->peak;
+    r->bytes = bytes;
     return 0;
 }
 
@@ -351,13 +403,13 @@ static void print_row(const row *r)
     printf("bench %s %s %s triangles=%u drawn=%.0f ms=%.3f fps=%.1f", r->mesh, r->mode, proj_name[r->proj],
            r->tris_in, r->drawn, r->ms, 1000 / r->ms);
     if (r->has_error) printf(" error_mean_px=%.3f error_max_px=%.3f", r->err_mean, r->err_max);
-    printf(" arena_bytes=%zu%s\n", r->arena_peak, r->fell_back ? " fell_back=1" : "");
+    printf(" arena_bytes=%zu bytes=%zu%s\n", r->arena_peak, r->bytes, r->fell_back ? " fell_back=1" : "");
     fflush(stdout);
 }
 
 /* All modes of one coarse mesh (and its fine reference, if any), one
  * projection: view by view, the fine mesh first, then every mode. */
-static int bench_proj(ctx *x, loaded *coarse, loaded *fine, int proj, acc *mode_acc, acc *fine_acc)
+static int bench_proj(ctx *x, loaded *coarse, loaded *fine, uint32_t modes, int proj, acc *mode_acc, acc *fine_acc)
 {
     const bench_cfg *c = x->cfg;
     int rc = 0;
@@ -385,7 +437,7 @@ static int bench_proj(ctx *x, loaded *coarse, loaded *fine, int proj, acc *mode_
         }
         for (int m = 0; m < c->nmodes; m++) {
             acc *a = &mode_acc[m];
-            if (a->failed) continue;
+            if (a->failed || !(modes >> m & 1)) continue;
             ro.mode = c->mode[m].mode;
             ro.aa = !c->mode[m].aa_off;
             if (c->mode[m].level) ro.level = c->mode[m].level;
@@ -410,7 +462,7 @@ static int bench_proj(ctx *x, loaded *coarse, loaded *fine, int proj, acc *mode_
     return rc;
 }
 
-static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, row_list *rows)
+static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, uint32_t modes, row_list *rows)
 {
     const bench_cfg *c = x->cfg;
     int rc = 0;
@@ -423,7 +475,7 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ro
             return rc;
         }
         int clip = 0;
-        for (int m = 0; m < c->nmodes; m++) clip |= c->mode[m].mode == SILK_MODE_CLIP;
+        for (int m = 0; m < c->nmodes; m++) clip |= (modes >> m & 1) && c->mode[m].mode == SILK_MODE_CLIP;
         if (clip && (!(coarse.hull = malloc(sizeof *coarse.hull)) ||
                      (rc = load_mesh(coarse.hull, coarse_path, 0, grow, SILK_PART_HULL)) != 0)) {
             if (!coarse.hull) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
@@ -449,20 +501,24 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ro
             if (!(c->proj_mask >> proj & 1)) continue;
             memset(mode_acc, 0, MAX_MODES * sizeof *mode_acc);
             memset(&fine_acc, 0, sizeof fine_acc);
-            int r = bench_proj(x, &coarse, fine_path ? &fine : NULL, proj, mode_acc, &fine_acc);
+            int r = bench_proj(x, &coarse, fine_path ? &fine : NULL, modes, proj, mode_acc, &fine_acc);
             if (r) rc = r;
             if (r && fine_acc.views < c->views && fine_path) break;   /* could not even draw the reference */
             for (int m = 0; m < c->nmodes; m++) {
-                if (mode_acc[m].failed || mode_acc[m].views < c->views) continue;
+                if (!(modes >> m & 1) || mode_acc[m].failed || mode_acc[m].views < c->views) continue;
                 fell_back |= mode_acc[m].fell_back;
-                if (push_row(rows, &coarse, c->mode[m].name, c->mode[m].level, proj, fine_path != NULL, &mode_acc[m]))
+                int clip = c->mode[m].mode == SILK_MODE_CLIP;
+                size_t bytes = model_bytes(clip ? coarse.hull : &coarse, c->mode[m].mode);
+                if (push_row(rows, &coarse, c->mode[m].name, c->mode[m].level, proj, fine_path != NULL, &mode_acc[m],
+                             bytes))
                     rc = CLI_EXIT_INPUT;
             }
             if (fine_path && fine_acc.views == c->views) {
                 /* the reference itself: error 0 by definition */
                 fine_acc.err_mean = fine_acc.err_max = fine_acc.err_worst_mean = fine_acc.hausdorff = 0;
                 fine_acc.outside = fine_acc.inside = 0;
-                if (push_row(rows, &fine, "fine", 0, proj, 1, &fine_acc)) rc = CLI_EXIT_INPUT;
+                if (push_row(rows, &fine, "fine", 0, proj, 1, &fine_acc, model_bytes(&fine, SILK_MODE_FLAT)))
+                    rc = CLI_EXIT_INPUT;
                 else snprintf(rows->r[rows->n - 1].mesh, sizeof rows->r[0].mesh, "%s", coarse.name);
             }
         }
@@ -504,7 +560,7 @@ static int write_csv(const char *path, const row_list *L, const bench_cfg *c)
     FILE *f = o.fp;
     fprintf(f, "mesh,mode,level,projection,triangles_in,triangles_drawn,ms_per_frame,error_mean_px,error_max_px,"
                "arena_peak_bytes,fps,views,width,height,error_worst_view_mean_px,hausdorff_mean_px,error_outside_px,"
-               "error_inside_px,fell_back\n");
+               "error_inside_px,fell_back,bytes\n");
     for (int i = 0; i < L->n; i++) {
         const row *r = &L->r[i];
         fprintf(f, "%s,%s,", r->mesh, r->mode);
@@ -521,7 +577,7 @@ static int write_csv(const char *path, const row_list *L, const bench_cfg *c)
         csv_num(f, r->hausdorff_mean, "%.4f");
         csv_num(f, r->outside, "%.4f");
         csv_num(f, r->inside, "%.4f");
-        fprintf(f, ",%d\n", r->fell_back);
+        fprintf(f, ",%d,%zu\n", r->fell_back, r->bytes);
     }
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
     return 0;
@@ -563,7 +619,7 @@ static int write_json(const char *path, const row_list *L, const bench_cfg *c)
         json_num(f, "hausdorff_mean_px", r->hausdorff_mean, "%.4f");
         json_num(f, "error_outside_px", r->outside, "%.4f");
         json_num(f, "error_inside_px", r->inside, "%.4f");
-        fprintf(f, ", \"fell_back\": %s}", r->fell_back ? "true" : "false");
+        fprintf(f, ", \"fell_back\": %s, \"bytes\": %zu}", r->fell_back ? "true" : "false", r->bytes);
     }
     fputs(L->n ? "\n]\n" : "]\n", f);
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
@@ -660,11 +716,13 @@ static int write_md(const char *path, const row_list *L, const bench_cfg *c)
             "max = the largest Hausdorff distance between the outlines in any view.\n"
             "Pairs are orthographic / perspective.  Arena = high-water mark of the mesh, its\n"
             "visibility hierarchy and the frame's scratch (the frame buffer is not in it).\n"
+            "Flash = the model's data a device keeps in flash for the mode: the mesh it draws\n"
+            "and, for clip mode, the silhouette map.\n"
             "Outside = the share of the differing pixels that the mode covers and the fine mesh\n"
             "does not (the rest is fine mesh the mode misses).\n"
             "Mode `fine` is the reference mesh itself, drawn flat.\n\n"
-            "| mesh | triangles | mode | drawn | ms | fps | error mean px | outside | error max px | arena KiB |\n"
-            "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n",
+            "| mesh | triangles | mode | drawn | ms | fps | error mean px | outside | error max px | arena KiB | flash KiB |\n"
+            "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
             c->width, c->height, c->views, c->reps);
     for (int i = 0; i < L->n; i++) {
         const row *r = &L->r[i];
@@ -690,7 +748,7 @@ static int write_md(const char *path, const row_list *L, const bench_cfg *c)
         } else {
             fprintf(f, " - | - | - |");
         }
-        fprintf(f, " %.0f |\n", peak / 1024.0);
+        fprintf(f, " %.0f | %.1f |\n", peak / 1024.0, r->bytes / 1024.0);
     }
     md_checks(f, L);
     if (silk_outfile_commit(&o, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
@@ -754,6 +812,50 @@ static int write_plot(const char *path, const row_list *L, const bench_cfg *c)
     return 0;
 }
 
+/* Error against bytes: a series per mode (and the fine meshes drawn flat),
+ * a point per coarse mesh, in the order of their bytes. */
+static int write_plot_bytes(const char *path, const row_list *L, const bench_cfg *c)
+{
+    int ns = c->nmodes + 1, cap = L->n ? L->n : 1;
+    plot_series series[MAX_MODES + 1];
+    double *x = malloc(sizeof(double) * (size_t)cap * ns), *y = malloc(sizeof(double) * (size_t)cap * ns);
+    const char **label = malloc(sizeof(char *) * (size_t)cap * ns);
+    if (!x || !y || !label) {
+        free(x), free(y), free(label);
+        return cli_fail(CLI_EXIT_INPUT, "out of memory");
+    }
+    for (int m = 0; m < ns; m++) {
+        const char *mode = m < c->nmodes ? c->mode[m].name : "fine";
+        double *sx = x + (size_t)m * cap, *sy = y + (size_t)m * cap;
+        const char **sl = label + (size_t)m * cap;
+        int n = 0;
+        for (int i = 0; i < L->n; i++) {
+            const row *r = &L->r[i], *first = find_row(L, r->mesh, mode, PROJ_ORTHO);
+            if (strcmp(r->mode, mode) != 0 || !r->has_error) continue;
+            if (!first) first = find_row(L, r->mesh, mode, PROJ_PERSP);
+            if (first != r) continue;          /* one point per mesh */
+            int k = n++;                       /* insertion by bytes */
+            for (; k > 0 && sx[k - 1] > (double)r->bytes; k--) sx[k] = sx[k - 1], sy[k] = sy[k - 1], sl[k] = sl[k - 1];
+            sx[k] = (double)r->bytes;
+            sy[k] = both(L, r->mesh, mode, get_err_mean);
+            sl[k] = m < c->nmodes ? r->mesh : NULL;
+        }
+        series[m] = (plot_series){ m < c->nmodes ? mode : "detailed mesh, flat",
+                                   m < c->nmodes ? mode_rgb(mode, m) : 0x202020u, n, sx, sy, sl };
+    }
+    char title[128], note[256];
+    snprintf(title, sizeof title, "silk bench: silhouette error against model bytes, %dx%d", c->width, c->height);
+    snprintf(note, sizeof note, "error: mean over %d views x %s; bytes: the mesh drawn and its silhouette data, "
+             "as a device keeps them in flash", c->views,
+             c->proj_mask == 3 ? "2 projections" : proj_name[c->proj_mask == 1 ? PROJ_ORTHO : PROJ_PERSP]);
+    plot_xy chart = { title, note, "model bytes in flash, KiB", "mean error, px", 1024, ns, series };
+    silk_error err;
+    silk_status st = plot_xy_write_png(&chart, path, &err);
+    free(x), free(y), free(label);
+    if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    return 0;
+}
+
 /* ---- the command ------------------------------------------------------------------------ */
 
 int cmd_bench(int argc, char **argv)
@@ -772,8 +874,10 @@ int cmd_bench(int argc, char **argv)
     parse_modes("flat,smooth,blend,pn2,pn3", &c);
     const char **coarse = calloc((size_t)argc, sizeof *coarse), **fine = calloc((size_t)argc, sizeof *fine);
     char **pair_buf = calloc((size_t)argc, sizeof *pair_buf);
+    const char **pair_modes = calloc((size_t)argc, sizeof *pair_modes);
+    uint32_t *mode_mask = calloc((size_t)argc, sizeof *mode_mask);
     int n = 0, rc = 0;
-    if (!coarse || !fine || !pair_buf) {
+    if (!coarse || !fine || !pair_buf || !pair_modes || !mode_mask) {
         rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
         goto done;
     }
@@ -787,19 +891,22 @@ int cmd_bench(int argc, char **argv)
             goto done;
         } else if (cli_is(a, "--pair")) {
             VALUE();
-            const char *colon = strrchr(v, ':');
-            if (!colon || colon == v || !colon[1]) {
-                rc = cli_fail(CLI_EXIT_USAGE, "--pair must be COARSE:FINE, two mesh files (got \"%s\")", v);
-                break;
-            }
             if (!(pair_buf[i] = malloc(strlen(v) + 1))) {
                 rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
                 break;
             }
             strcpy(pair_buf[i], v);
-            pair_buf[i][colon - v] = 0;
+            char *eq = strrchr(pair_buf[i], '=');   /* the pair's own modes */
+            if (eq) *eq = 0;
+            char *colon = strrchr(pair_buf[i], ':');
+            if (!colon || colon == pair_buf[i] || !colon[1] || (eq && !eq[1])) {
+                rc = cli_fail(CLI_EXIT_USAGE, "--pair must be COARSE:FINE or COARSE:FINE=MODES (got \"%s\")", v);
+                break;
+            }
+            *colon = 0;
             coarse[n] = pair_buf[i];
-            fine[n++] = pair_buf[i] + (colon - v) + 1;
+            pair_modes[n] = eq ? eq + 1 : NULL;
+            fine[n++] = colon + 1;
         } else if (cli_is(a, "--views")) {
             VALUE();
             if (cli_parse_long("--views", v, 1, MAX_VIEWS, &num)) rc = CLI_EXIT_USAGE;
@@ -844,6 +951,11 @@ int cmd_bench(int argc, char **argv)
             c.plot = v;
             if (silk_image_format_for_path(v) != SILK_IMAGE_PNG)
                 rc = cli_fail(CLI_EXIT_USAGE, "--plot: %s: the chart is a PNG (use .png)", v);
+        } else if (cli_is(a, "--plot-bytes")) {
+            VALUE();
+            c.plot_bytes = v;
+            if (silk_image_format_for_path(v) != SILK_IMAGE_PNG)
+                rc = cli_fail(CLI_EXIT_USAGE, "--plot-bytes: %s: the chart is a PNG (use .png)", v);
         } else if (cli_is(a, "--dump")) {
             VALUE();
             c.dump = v;
@@ -855,6 +967,7 @@ int cmd_bench(int argc, char **argv)
 #undef VALUE
     }
     if (!rc && n == 0) rc = cli_fail(CLI_EXIT_USAGE, "bench: no mesh given (silk bench MESH... or --pair COARSE:FINE)");
+    for (int i = 0; i < n && !rc; i++) rc = pair_mode_mask(pair_modes[i], &c, &mode_mask[i]);
     if (rc) goto done;
 
     ctx x;
@@ -871,13 +984,14 @@ int cmd_bench(int argc, char **argv)
     } else {
         silk_target_init(&x.fb.target, c.width, c.height, 0, c.height, SILK_PIX_RGB888, x.fb.color, x.fb.depth);
         for (int i = 0; i < n; i++) {
-            int r = bench_mesh(&x, coarse[i], fine[i], &rows);
+            int r = bench_mesh(&x, coarse[i], fine[i], mode_mask[i], &rows);
             if (r) rc = r;
         }
         if (c.csv && rows.n) rc |= write_csv(c.csv, &rows, &c);
         if (c.json) rc |= write_json(c.json, &rows, &c);
         if (c.md && rows.n) rc |= write_md(c.md, &rows, &c);
         if (c.plot && rows.n) rc |= write_plot(c.plot, &rows, &c);
+        if (c.plot_bytes && rows.n) rc |= write_plot_bytes(c.plot_bytes, &rows, &c);
         if (rc) rc = CLI_EXIT_INPUT;
     }
     free(rows.r);
@@ -885,6 +999,6 @@ int cmd_bench(int argc, char **argv)
 done:
     if (pair_buf)
         for (int i = 0; i < argc; i++) free(pair_buf[i]);
-    free(pair_buf), free(coarse), free(fine);
+    free(pair_buf), free(coarse), free(fine), free(pair_modes), free(mode_mask);
     return rc;
 }

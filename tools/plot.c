@@ -2,7 +2,9 @@
  * plot.c - grouped bar charts drawn pixel by pixel into a silk_target and
  * written with the PNG sink: a title, a legend, then panels stacked top to
  * bottom, each with a y axis from 0 to a round number, grid lines, a bar per
- * group and series, and the value over every bar.
+ * group and series, and the value over every bar.  And x-y charts: points
+ * joined by lines over a logarithmic x axis, for a quantity that spans
+ * decades (bytes).
  */
 #include <math.h>
 #include <stdio.h>
@@ -157,11 +159,141 @@ int plot_render(const plot_chart *c, silk_target *t)
     return 0;
 }
 
+/* A chart drawn by render (0 or -1), written as a PNG. */
+static silk_status write_png(int rendered, silk_target *t, const char *path, silk_error *err)
+{
+    if (rendered != 0) return silk_fail(err, SILK_ERR_IO, path, 0, "cannot draw the chart (out of memory or empty)");
+    silk_status s = silk_png_write(t, path, err);
+    free(t->color);
+    return s;
+}
+
 silk_status plot_write_png(const plot_chart *c, const char *path, silk_error *err)
 {
     silk_target t;
-    if (plot_render(c, &t) != 0) return silk_fail(err, SILK_ERR_IO, path, 0, "cannot draw the chart (out of memory)");
-    silk_status s = silk_png_write(&t, path, err);
-    free(t.color);
-    return s;
+    return write_png(plot_render(c, &t), &t, path, err);
+}
+
+/* ---- x-y charts ---- */
+
+enum { XY_W = 720, XY_H = 420, MARK = 3 };
+
+/* A line two pixels wide from (x0, y0) to (x1, y1), by steps along the
+ * longer axis. */
+static void line(silk_target *t, int x0, int y0, int x1, int y1, uint32_t rgb)
+{
+    int dx = abs(x1 - x0), dy = abs(y1 - y0), n = dx > dy ? dx : dy;
+    for (int i = 0; i <= n; i++) {
+        int x = n ? x0 + (x1 - x0) * i / n : x0, y = n ? y0 + (y1 - y0) * i / n : y0;
+        fill(t, x, y, x + 2, y + 2, rgb);
+    }
+}
+
+typedef struct xy_range {
+    double lx0, lx1;          /* log10 of the x axis' ends */
+    double ytop;              /* the y axis' top */
+} xy_range;
+
+static int xy_range_of(const plot_xy *c, xy_range *r, double *ystep)
+{
+    double xmin = INFINITY, xmax = 0, ymax = 0;
+    for (int s = 0; s < c->nseries; s++)
+        for (int i = 0; i < c->series[s].n; i++) {
+            double x = c->series[s].x[i], y = c->series[s].y[i];
+            if (!(x > 0) || !isfinite(x) || !isfinite(y)) continue;
+            if (x < xmin) xmin = x;
+            if (x > xmax) xmax = x;
+            if (y > ymax) ymax = y;
+        }
+    if (xmax == 0) return -1;
+    r->lx0 = floor(log10(xmin / 1.2) * 4) / 4;   /* a quarter decade of room each side */
+    r->lx1 = ceil(log10(xmax * 1.2) * 4) / 4;
+    *ystep = nice_step(ymax > 0 ? ymax / TICKS : 1.0 / TICKS);
+    r->ytop = ceil(ymax / *ystep - 1e-9) * *ystep;
+    if (r->ytop <= 0) r->ytop = *ystep * TICKS;
+    return 0;
+}
+
+int plot_xy_render(const plot_xy *c, silk_target *t)
+{
+    memset(t, 0, sizeof *t);
+    xy_range R;
+    double ystep;
+    if (c->nseries < 1 || xy_range_of(c, &R, &ystep) != 0) return -1;
+    int left = MARGIN + FONT_LINE * SCALE + 8 + 6 * FONT_ADVANCE * SCALE;
+    int header = MARGIN + FONT_LINE * SCALE + (c->note ? FONT_LINE + 4 : 0) + 8 + FONT_LINE * SCALE + 12;
+    int width = left + XY_W + MARGIN, height = header + XY_H + 8 + 2 * FONT_LINE * SCALE + 16 + MARGIN;
+    uint8_t *rgb = malloc((size_t)width * height * 3);
+    if (!rgb) return -1;
+    silk_target_init(t, width, height, 0, height, SILK_PIX_RGB888, rgb, NULL);
+    fill(t, 0, 0, width, height, RGB_BG);
+
+    int y = MARGIN;
+    font_draw(t, MARGIN, y, c->title ? c->title : "", RGB_TEXT, SCALE);
+    y += FONT_LINE * SCALE;
+    if (c->note) {
+        font_draw(t, MARGIN, y + 2, c->note, RGB_AXIS, 1);
+        y += FONT_LINE + 4;
+    }
+    y += 8;
+    int x = MARGIN;
+    for (int s = 0; s < c->nseries; s++) {
+        fill(t, x, y, x + 14, y + 14, c->series[s].rgb);
+        font_draw(t, x + 20, y, c->series[s].name, RGB_TEXT, SCALE);
+        x += 14 + 6 + font_text_width(c->series[s].name, SCALE) + 20;
+    }
+
+    int x0 = left, x1 = left + XY_W, y0 = header, y1 = header + XY_H;
+#define XPIX(v) (x0 + (int)lround((log10(v) - R.lx0) / (R.lx1 - R.lx0) * XY_W))
+#define YPIX(v) (y1 - (int)lround((v) / R.ytop * XY_H))
+    for (double v = 0; v <= R.ytop * (1 + 1e-9); v += ystep) {
+        int yy = YPIX(v);
+        fill(t, x0, yy, x1, yy + 1, RGB_GRID);
+        char buf[32];
+        snprintf(buf, sizeof buf, "%g", v);
+        font_draw(t, x0 - 6 - font_text_width(buf, SCALE), yy - FONT_H * SCALE / 2, buf, RGB_TEXT, SCALE);
+    }
+    /* x ticks at 1, 2 and 5 times powers of ten of the scaled unit */
+    double scale = c->x_scale > 0 ? c->x_scale : 1;
+    for (double d = pow(10, floor(R.lx0 - log10(scale))); d * scale <= pow(10, R.lx1); d *= 10)
+        for (int m = 1; m <= 5; m += m == 1 ? 1 : 3) {
+            double v = d * m * scale;
+            if (log10(v) < R.lx0 || log10(v) > R.lx1) continue;
+            int xx = XPIX(v);
+            fill(t, xx, y0, xx + 1, y1, RGB_GRID);
+            char buf[32];
+            snprintf(buf, sizeof buf, "%g", d * m);
+            font_draw(t, xx - font_text_width(buf, SCALE) / 2, y1 + 8, buf, RGB_TEXT, SCALE);
+        }
+    fill(t, x0, y0, x0 + 1, y1 + 1, RGB_AXIS);
+    fill(t, x0, y1, x1, y1 + 1, RGB_AXIS);
+    if (c->y_unit) {
+        int uw = font_text_width(c->y_unit, SCALE);
+        font_draw_up(t, MARGIN, y0 + XY_H / 2 + uw / 2, c->y_unit, RGB_TEXT, SCALE);
+    }
+    if (c->x_unit)
+        font_draw(t, x0 + (XY_W - font_text_width(c->x_unit, SCALE)) / 2, y1 + 8 + FONT_LINE * SCALE + 6, c->x_unit,
+                  RGB_TEXT, SCALE);
+
+    for (int s = 0; s < c->nseries; s++) {
+        const plot_series *S = &c->series[s];
+        int px = 0, py = 0, have = 0;
+        for (int i = 0; i < S->n; i++) {
+            if (!(S->x[i] > 0) || !isfinite(S->x[i]) || !isfinite(S->y[i])) continue;
+            int xx = XPIX(S->x[i]), yy = YPIX(S->y[i]);
+            if (have) line(t, px, py, xx, yy, S->rgb);
+            fill(t, xx - MARK, yy - MARK, xx + MARK + 1, yy + MARK + 1, S->rgb);
+            if (S->label && S->label[i]) font_draw(t, xx + MARK + 3, yy - FONT_H - 2, S->label[i], RGB_TEXT, 1);
+            px = xx, py = yy, have = 1;
+        }
+    }
+#undef XPIX
+#undef YPIX
+    return 0;
+}
+
+silk_status plot_xy_write_png(const plot_xy *c, const char *path, silk_error *err)
+{
+    silk_target t;
+    return write_png(plot_xy_render(c, &t), &t, path, err);
 }
