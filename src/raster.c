@@ -196,12 +196,13 @@ static int64_t plane_dist(int i, const silk_vec4 *c)
     }
 }
 
+/* Bit i set: outside plane i (plane_dist(i, c) < 0), every plane at once. */
 static unsigned outcode(const silk_vec4 *c)
 {
-    unsigned o = 0;
-    for (int i = 0; i < NPLANES; i++)
-        if (plane_dist(i, c) < 0) o |= 1u << i;
-    return o;
+    int64_t x = c->x, y = c->y, z = c->z, w = c->w, gw = GUARD * w;
+    return (unsigned)(z + w < 0) | (unsigned)(w - z < 0) << 1 | (unsigned)(gw + x < 0) << 2 |
+           (unsigned)(gw - x < 0) << 3 | (unsigned)(gw + y < 0) << 4 | (unsigned)(gw - y < 0) << 5 |
+           (unsigned)(w < W_MIN) << 6;
 }
 
 static silk_fx lerp30(silk_fx a, silk_fx b, int64_t t30)
@@ -275,14 +276,21 @@ void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *
     *d = (uint32_t)s.d;
 }
 
-static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
+/* The screen position alone (project_depth adds the depth). */
+static void project_xy(const silk_target *t, const silk_vertex_out *v, svert *s)
 {
     const silk_vec4 *c = &v->clip;
-    int64_t w2 = 2 * (int64_t)c->w;
     /* ndc -> pixels: x' = (x/w + 1) W/2, y' = (1 - y/w) H/2; with the guard band
      * the products stay below 2^50 */
-    s->x = round_div(((int64_t)c->x + c->w) * t->width * SUB, w2);
+    s->x = round_div(((int64_t)c->x + c->w) * t->width * SUB, 2 * (int64_t)c->w);
     s->y = screen_y(c, t->height);
+    s->w = c->w;
+    s->var = v->var;
+}
+
+static void project_depth(const silk_vertex_out *v, svert *s)
+{
+    const silk_vec4 *c = &v->clip;
     int64_t num = (int64_t)c->w - c->z;
     if (num <= 0) {
         s->d = 0;
@@ -291,8 +299,12 @@ static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
         int64_t d = q * ((int64_t)1 << 31) + (r << 31) / c->w;
         s->d = d > (int64_t)DEPTH_MAX ? (int64_t)DEPTH_MAX : d;
     }
-    s->w = c->w;
-    s->var = v->var;
+}
+
+static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
+{
+    project_xy(t, v, s);
+    project_depth(v, s);
 }
 
 /* ---- triangles ---------------------------------------------------------------- */
@@ -463,6 +475,39 @@ static void edge_init(rstep *e, const svert *a, const svert *b, int row)
 static int edge_x(const rstep *e) { return (int)(e->q + (e->r != 0)); }
 
 static int first_row(int64_t y) { return (int)ceil_div(y - SUB / 2, SUB); }
+
+/* floor(v / SUB) by a shift: SUB is a power of two, and v >> k floors
+ * where right shifts of negative values are arithmetic; elsewhere (never
+ * met on gcc or clang) the division. */
+static int64_t floor_sub(int64_t v)
+{
+    return (-1 >> 1) == -1 ? v >> SUB_BITS : floor_div(v, SUB);
+}
+
+/* Whether triangle p0 p1 p2 can cover a pixel centre of rows [lo, hi):
+ * not degenerate, not culled, and a pixel centre row and column within its
+ * bounding box.  raster_tri draws nothing for one that cannot. */
+static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p0, const svert *p1, const svert *p2)
+{
+    int64_t area = (p1->x - p0->x) * (p2->y - p0->y) - (p2->x - p0->x) * (p1->y - p0->y);
+    if (area == 0 || (t->cull_back && area > 0)) return 0;
+    int64_t x0 = p0->x, x1 = p0->x, y0 = p0->y, y1 = p0->y;
+    const svert *q[2] = { p1, p2 };
+    for (int i = 0; i < 2; i++) {
+        if (q[i]->x < x0) x0 = q[i]->x;
+        if (q[i]->x > x1) x1 = q[i]->x;
+        if (q[i]->y < y0) y0 = q[i]->y;
+        if (q[i]->y > y1) y1 = q[i]->y;
+    }
+    /* first centre at or after the low end, first at or after the high end (first_row) */
+    int64_t r0 = -floor_sub(SUB / 2 - y0), r1 = -floor_sub(SUB / 2 - y1);
+    int64_t c0 = -floor_sub(SUB / 2 - x0), c1 = -floor_sub(SUB / 2 - x1);
+    if (r0 < lo) r0 = lo;
+    if (r1 > hi) r1 = hi;
+    if (c0 < 0) c0 = 0;
+    if (c1 > t->width) c1 = t->width;
+    return r0 < r1 && c0 < c1;
+}
 
 static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
                        const svert *p0, const svert *p1, const svert *p2)
@@ -649,8 +694,12 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     for (int i = 0; i < n; i++) {
         const silk_vertex_out *v = poly ? &poly[i] : in3[i];
         if (v->clip.w <= 0) return;                 /* cannot happen after clipping */
-        project(t, v, &sv[i]);
+        project_xy(t, v, &sv[i]);
     }
+    /* Most triangles of a fine mesh are culled or fall between pixel
+     * centres: those are known from the positions alone. */
+    if (n == 3 && !tri_reaches(t, lo, hi, &sv[0], &sv[1], &sv[2])) return;
+    for (int i = 0; i < n; i++) project_depth(poly ? &poly[i] : in3[i], &sv[i]);
     if (n == 3) raster_tri(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2]);
     else raster_polygon(t, h, nvar, lo, hi, sv, n);
 }
