@@ -487,9 +487,9 @@ static int64_t floor_sub(int64_t v)
 /* Whether triangle p0 p1 p2 can cover a pixel centre of rows [lo, hi):
  * not degenerate, not culled, and a pixel centre row and column within its
  * bounding box.  raster_tri draws nothing for one that cannot. */
-static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p0, const svert *p1, const svert *p2)
+static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p0, const svert *p1, const svert *p2,
+                       int64_t area)
 {
-    int64_t area = (p1->x - p0->x) * (p2->y - p0->y) - (p2->x - p0->x) * (p1->y - p0->y);
     if (area == 0 || (t->cull_back && area > 0)) return 0;
     int64_t x0 = p0->x, x1 = p0->x, y0 = p0->y, y1 = p0->y;
     const svert *q[2] = { p1, p2 };
@@ -509,11 +509,17 @@ static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p0, co
     return r0 < r1 && c0 < c1;
 }
 
-static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
-                       const svert *p0, const svert *p1, const svert *p2)
+static int64_t orient(const svert *a, const svert *b, const svert *c)
+{
+    return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
+}
+
+/* area: orient(p0, p1, p2), twice the signed area */
+static void raster_tri_area(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
+                            const svert *p0, const svert *p1, const svert *p2, int64_t area)
 {
     tri_setup s;
-    s.area = (p1->x - p0->x) * (p2->y - p0->y) - (p2->x - p0->x) * (p1->y - p0->y);
+    s.area = area;
     if (s.area == 0 || (t->cull_back && s.area > 0)) return;   /* y down: counter-clockwise is negative */
     s.v[0] = p0;
     s.v[1] = s.area > 0 ? p1 : p2;
@@ -593,9 +599,10 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     }
 }
 
-static int64_t orient(const svert *a, const svert *b, const svert *c)
+static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
+                       const svert *p0, const svert *p1, const svert *p2)
 {
-    return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
+    raster_tri_area(t, h, nvar, lo, hi, p0, p1, p2, orient(p0, p1, p2));
 }
 
 static int sgn(int64_t v) { return (v > 0) - (v < 0); }
@@ -698,9 +705,10 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     }
     /* Most triangles of a fine mesh are culled or fall between pixel
      * centres: those are known from the positions alone. */
-    if (n == 3 && !tri_reaches(t, lo, hi, &sv[0], &sv[1], &sv[2])) return;
+    int64_t area = n == 3 ? orient(&sv[0], &sv[1], &sv[2]) : 0;
+    if (n == 3 && !tri_reaches(t, lo, hi, &sv[0], &sv[1], &sv[2], area)) return;
     for (int i = 0; i < n; i++) project_depth(poly ? &poly[i] : in3[i], &sv[i]);
-    if (n == 3) raster_tri(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2]);
+    if (n == 3) raster_tri_area(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2], area);
     else raster_polygon(t, h, nvar, lo, hi, sv, n);
 }
 

@@ -18,6 +18,7 @@
 #include "plan.h"
 #include "stages.h"
 #include "curve.h"
+#include "mesh_build.h"
 
 /* ---- small helpers ---------------------------------------------------------- */
 
@@ -42,12 +43,35 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     else { s->uv0 = SILK_NO_INDEX; s->uv1 = SILK_NO_INDEX; }
 }
 
+static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
+
+/* The face normal is normalised (a square root) before the dot product
+ * with the direction to the eye, so that every caller gets the same
+ * rounded answer.  That rounding tilts the normal by a few 2^-16 at most:
+ * where the unnormalised normal c, cut to 29 bits, and the direction e
+ * already make an angle with |cos| above about 2^-12, the sign is the
+ * rounded one's and is taken from c.  Only triangles seen nearly edge-on
+ * (and zero-area ones) are normalised. */
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
     for (int k = 0; k < 3; k++)
         if (m->tri[3 * t + k] >= m->nverts) return 0;
+    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+    int64_t c[3];
+    silk_tri_cross64(m, t, c);
+    uint64_t big = mag(c[0]) | mag(c[1]) | mag(c[2]);
+    int s = 0;
+    while ((big >> s) >= ((uint64_t)1 << 29)) s++;
+    if (big) {
+        /* |c_i >> s| <= 2^29, |e_i| <= 2^31: each product below 2^60 */
+        int64_t cs[3] = { c[0] / ((int64_t)1 << s), c[1] / ((int64_t)1 << s), c[2] / ((int64_t)1 << s) };
+        int64_t d = cs[0] * e.x + cs[1] * e.y + cs[2] * e.z;
+        uint64_t n1 = mag(cs[0]) + mag(cs[1]) + mag(cs[2]), e1 = mag(e.x) + mag(e.y) + mag(e.z);
+        /* |c| |e| <= n1 e1; n1 >= 2^28 when cut, so the cut moves c by under 2^-27 */
+        if (n1 >= 64 && mag(d) > ((n1 >> 6) + 1) * ((e1 >> 6) + 1)) return d > 0;
+    }
     silk_vec3 fn = silk_mesh_face_normal(m, t);
-    return silk_v3_dot64(fn, silk_view_to_eye(v, m->pos[m->tri[3 * t]])) > 0;
+    return silk_v3_dot64(fn, e) > 0;
 }
 
 /* Triangles whose three normals and corners are usable; anything else is
