@@ -196,13 +196,12 @@ static int64_t plane_dist(int i, const silk_vec4 *c)
     }
 }
 
-/* Bit i set: outside plane i (plane_dist(i, c) < 0), every plane at once. */
 static unsigned outcode(const silk_vec4 *c)
 {
-    int64_t x = c->x, y = c->y, z = c->z, w = c->w, gw = GUARD * w;
-    return (unsigned)(z + w < 0) | (unsigned)(w - z < 0) << 1 | (unsigned)(gw + x < 0) << 2 |
-           (unsigned)(gw - x < 0) << 3 | (unsigned)(gw + y < 0) << 4 | (unsigned)(gw - y < 0) << 5 |
-           (unsigned)(w < W_MIN) << 6;
+    unsigned o = 0;
+    for (int i = 0; i < NPLANES; i++)
+        if (plane_dist(i, c) < 0) o |= 1u << i;
+    return o;
 }
 
 static silk_fx lerp30(silk_fx a, silk_fx b, int64_t t30)
@@ -476,37 +475,37 @@ static int edge_x(const rstep *e) { return (int)(e->q + (e->r != 0)); }
 
 static int first_row(int64_t y) { return (int)ceil_div(y - SUB / 2, SUB); }
 
-/* floor(v / SUB) by a shift: SUB is a power of two, and v >> k floors
- * where right shifts of negative values are arithmetic; elsewhere (never
- * met on gcc or clang) the division. */
-static int64_t floor_sub(int64_t v)
+/* The first pixel centre at or after subpixel position v (first_row). */
+static int64_t first_centre(int64_t v)
 {
-    return (-1 >> 1) == -1 ? v >> SUB_BITS : floor_div(v, SUB);
+    /* floor by a shift where right shifts of negative values are
+     * arithmetic (gcc, clang), else by the division */
+    int64_t n = SUB / 2 - v;
+    return -((-1 >> 1) == -1 ? n >> SUB_BITS : floor_div(n, SUB));
 }
 
-/* Whether triangle p0 p1 p2 can cover a pixel centre of rows [lo, hi):
- * not degenerate, not culled, and a pixel centre row and column within its
- * bounding box.  raster_tri draws nothing for one that cannot. */
-static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p0, const svert *p1, const svert *p2,
-                       int64_t area)
+/* Whether triangle p[0] p[1] p[2], twice its signed area `area`, can cover
+ * a pixel centre of rows [lo, hi): not degenerate, not culled, and a pixel
+ * centre row and column within its bounding box.  raster_tri draws nothing
+ * for one that cannot. */
+#if defined(__GNUC__)
+__attribute__((noinline))   /* its locals stay off the stack under every span */
+#endif
+static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p, int64_t area)
 {
     if (area == 0 || (t->cull_back && area > 0)) return 0;
-    int64_t x0 = p0->x, x1 = p0->x, y0 = p0->y, y1 = p0->y;
-    const svert *q[2] = { p1, p2 };
-    for (int i = 0; i < 2; i++) {
-        if (q[i]->x < x0) x0 = q[i]->x;
-        if (q[i]->x > x1) x1 = q[i]->x;
-        if (q[i]->y < y0) y0 = q[i]->y;
-        if (q[i]->y > y1) y1 = q[i]->y;
+    const int64_t lim[2][2] = { { lo, hi }, { 0, t->width } };
+    for (int a = 0; a < 2; a++) {                  /* rows, then columns */
+        int64_t lo_v = a ? p[0].x : p[0].y, hi_v = lo_v;
+        for (int i = 1; i < 3; i++) {
+            int64_t v = a ? p[i].x : p[i].y;
+            if (v < lo_v) lo_v = v;
+            if (v > hi_v) hi_v = v;
+        }
+        int64_t c0 = first_centre(lo_v), c1 = first_centre(hi_v);
+        if ((c0 > lim[a][0] ? c0 : lim[a][0]) >= (c1 < lim[a][1] ? c1 : lim[a][1])) return 0;
     }
-    /* first centre at or after the low end, first at or after the high end (first_row) */
-    int64_t r0 = -floor_sub(SUB / 2 - y0), r1 = -floor_sub(SUB / 2 - y1);
-    int64_t c0 = -floor_sub(SUB / 2 - x0), c1 = -floor_sub(SUB / 2 - x1);
-    if (r0 < lo) r0 = lo;
-    if (r1 > hi) r1 = hi;
-    if (c0 < 0) c0 = 0;
-    if (c1 > t->width) c1 = t->width;
-    return r0 < r1 && c0 < c1;
+    return 1;
 }
 
 static int64_t orient(const svert *a, const svert *b, const svert *c)
@@ -514,12 +513,11 @@ static int64_t orient(const svert *a, const svert *b, const svert *c)
     return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
 }
 
-/* area: orient(p0, p1, p2), twice the signed area */
-static void raster_tri_area(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
-                            const svert *p0, const svert *p1, const svert *p2, int64_t area)
+static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
+                       const svert *p0, const svert *p1, const svert *p2)
 {
     tri_setup s;
-    s.area = area;
+    s.area = orient(p0, p1, p2);
     if (s.area == 0 || (t->cull_back && s.area > 0)) return;   /* y down: counter-clockwise is negative */
     s.v[0] = p0;
     s.v[1] = s.area > 0 ? p1 : p2;
@@ -597,12 +595,6 @@ static void raster_tri_area(silk_target *t, const silk_hal *h, int nvar, int lo,
             rstep_next(&sht);
         }
     }
-}
-
-static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
-                       const svert *p0, const svert *p1, const svert *p2)
-{
-    raster_tri_area(t, h, nvar, lo, hi, p0, p1, p2, orient(p0, p1, p2));
 }
 
 static int sgn(int64_t v) { return (v > 0) - (v < 0); }
@@ -705,10 +697,9 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     }
     /* Most triangles of a fine mesh are culled or fall between pixel
      * centres: those are known from the positions alone. */
-    int64_t area = n == 3 ? orient(&sv[0], &sv[1], &sv[2]) : 0;
-    if (n == 3 && !tri_reaches(t, lo, hi, &sv[0], &sv[1], &sv[2], area)) return;
+    if (n == 3 && !tri_reaches(t, lo, hi, sv, orient(&sv[0], &sv[1], &sv[2]))) return;
     for (int i = 0; i < n; i++) project_depth(poly ? &poly[i] : in3[i], &sv[i]);
-    if (n == 3) raster_tri_area(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2], area);
+    if (n == 3) raster_tri(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2]);
     else raster_polygon(t, h, nvar, lo, hi, sv, n);
 }
 
