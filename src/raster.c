@@ -695,9 +695,10 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
         if (v->clip.w <= 0) return;                 /* cannot happen after clipping */
         project_xy(t, v, &sv[i]);
     }
-    /* Most triangles of a fine mesh are culled or fall between pixel
-     * centres: those are known from the positions alone. */
-    if (n == 3 && !tri_reaches(t, lo, hi, sv, orient(&sv[0], &sv[1], &sv[2]))) return;
+    /* Where back faces are culled, most triangles of a fine mesh are
+     * culled or fall between pixel centres: those are known from the
+     * positions alone.  (Elsewhere raster_tri finds the few that do.) */
+    if (n == 3 && t->cull_back && !tri_reaches(t, lo, hi, sv, orient(&sv[0], &sv[1], &sv[2]))) return;
     for (int i = 0; i < n; i++) project_depth(poly ? &poly[i] : in3[i], &sv[i]);
     if (n == 3) raster_tri(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2]);
     else raster_polygon(t, h, nvar, lo, hi, sv, n);

@@ -111,10 +111,11 @@ typedef struct frame {
     silk_vertex_out *vc;
     uint32_t *vc_tag;
     uint32_t vc_mask;
-    size_t vc_bytes;          /* the arena it and the facing memo take */
     uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
-    int cull;                 /* back faces cannot show (back_faces_hidden) */
-    int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
+    size_t vc_bytes;          /* the arena it and the facing memo take */
+    uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
+    uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
+                                 frame is on a small board's stack) */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could

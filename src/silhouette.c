@@ -45,6 +45,19 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
 
 #ifndef SILK_NO_AA
 static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
+
+/* The smallest s with v >> s below 2^14. */
+static int cut14(uint64_t v)
+{
+#if defined(__GNUC__)
+    int n = v ? 64 - __builtin_clzll(v) : 0;
+    return n > 14 ? n - 14 : 0;
+#else
+    int s = 0;
+    while ((v >> s) >= (1u << 14)) s++;
+    return s;
+#endif
+}
 #endif
 
 /* The face normal is normalised (a square root) before the dot product
@@ -67,9 +80,7 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
     int64_t c[3];
     silk_tri_cross64(m, t, c);
     uint64_t bc = mag(c[0]) | mag(c[1]) | mag(c[2]), be = mag(ev[0]) | mag(ev[1]) | mag(ev[2]);
-    int sc = 0, se = 0;
-    while ((bc >> sc) >= (1u << 14)) sc++;
-    while ((be >> se) >= (1u << 14)) se++;
+    int sc = cut14(bc), se = cut14(be);
     int32_t d = 0;                  /* |c_i|, |e_i| < 2^14: d below 2^30 */
     uint32_t n1 = 0, e1 = 0;        /* |c| |e| <= n1 e1 < 2^32 */
     for (int i = 0; i < 3; i++) {
