@@ -199,23 +199,34 @@ static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k)
     if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c));
 }
 
+/* silk_sil_tri_front, through aa->facing when there is one: the outline
+ * test asks it of a triangle once for itself and once for each neighbour. */
+static int tri_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
+{
+    if (!aa->facing) return silk_sil_tri_front(m, v, t);
+    uint8_t *b = &aa->facing[t / 4];
+    unsigned sh = 2 * (t % 4);
+    if (!(*b >> sh & 2)) *b = (uint8_t)(*b | (2u | (unsigned)silk_sil_tri_front(m, v, t)) << sh);
+    return *b >> sh & 1;
+}
+
 /* FLAT's rule for side k of input triangle t. */
-static int coarse_outline(const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
+static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
 {
     silk_index e = silk_mesh_tri_edge(m, t, k);   /* a packed mesh has no tri_edge */
     if (e >= m->nedges) return 0;
     const silk_edge *ed = &m->edge[e];
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
     if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
-    return front && !silk_sil_tri_front(m, v, nb);
+    return front && !tri_front(aa, m, v, nb);
 }
 
-int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t)
+int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t)
 {
     if (f && f->tri_state && (f->tri_state[t] & SILK_TS_SIL)) return 1;
-    int front = silk_sil_tri_front(m, v, t);
+    int front = tri_front(aa, m, v, t);
     for (int k = 0; k < 3; k++)
-        if (coarse_outline(m, v, t, k, front)) return 1;
+        if (coarse_outline(aa, m, v, t, k, front)) return 1;
     return 0;
 }
 
@@ -234,9 +245,9 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
     if (g->ntri == 1) {
         /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
         silk_aa_pt p[3] = { aa->pt[tri[0]], aa->pt[tri[1]], aa->pt[tri[2]] };
-        int front = silk_sil_tri_front(m, v, t);
+        int front = tri_front(aa, m, v, t);
         for (int k = 0; k < 3; k++)
-            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k);
+            if (coarse_outline(aa, m, v, t, k, front)) tri_side(aa, p, k);
         return;
     }
     /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */

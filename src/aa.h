@@ -32,6 +32,10 @@ typedef struct silk_aa {
     silk_aa_pt *pt;   uint32_t npt;   /* per record of one share */
     silk_aa_px *px;   uint32_t npx, cap;
     uint32_t dropped;             /* outline pixels left aliased: no room in px */
+    /* Which way the frame's input triangles face, 2 bits each (known,
+     * front), filled as asked; NULL: computed every time (same answers).
+     * The caller owns it: it holds for the whole frame, every band. */
+    uint8_t *facing;
 } silk_aa;
 
 /* Room from the top of the arena for band t: the pending pixels, max_recs
@@ -44,7 +48,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
  * against nothing or between a front- and a back-facing triangle, or (with
  * a SMOOTH plan f) a silhouette triangle, whose share folds along its
  * silhouette segment. */
-int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t);
+int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t);
 
 /* The outline sides of input triangle t's share g (out: its vertex-stage
  * output per record), walked over the band: a share that is t as it is

@@ -275,14 +275,21 @@ void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *
     *d = (uint32_t)s.d;
 }
 
-static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
+/* The screen position alone (project_depth adds the depth). */
+static void project_xy(const silk_target *t, const silk_vertex_out *v, svert *s)
 {
     const silk_vec4 *c = &v->clip;
-    int64_t w2 = 2 * (int64_t)c->w;
     /* ndc -> pixels: x' = (x/w + 1) W/2, y' = (1 - y/w) H/2; with the guard band
      * the products stay below 2^50 */
-    s->x = round_div(((int64_t)c->x + c->w) * t->width * SUB, w2);
+    s->x = round_div(((int64_t)c->x + c->w) * t->width * SUB, 2 * (int64_t)c->w);
     s->y = screen_y(c, t->height);
+    s->w = c->w;
+    s->var = v->var;
+}
+
+static void project_depth(const silk_vertex_out *v, svert *s)
+{
+    const silk_vec4 *c = &v->clip;
     int64_t num = (int64_t)c->w - c->z;
     if (num <= 0) {
         s->d = 0;
@@ -291,8 +298,12 @@ static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
         int64_t d = q * ((int64_t)1 << 31) + (r << 31) / c->w;
         s->d = d > (int64_t)DEPTH_MAX ? (int64_t)DEPTH_MAX : d;
     }
-    s->w = c->w;
-    s->var = v->var;
+}
+
+static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
+{
+    project_xy(t, v, s);
+    project_depth(v, s);
 }
 
 /* ---- triangles ---------------------------------------------------------------- */
@@ -464,11 +475,49 @@ static int edge_x(const rstep *e) { return (int)(e->q + (e->r != 0)); }
 
 static int first_row(int64_t y) { return (int)ceil_div(y - SUB / 2, SUB); }
 
+/* The first pixel centre at or after subpixel position v (first_row). */
+static int64_t first_centre(int64_t v)
+{
+    /* floor by a shift where right shifts of negative values are
+     * arithmetic (gcc, clang), else by the division */
+    int64_t n = SUB / 2 - v;
+    return -((-1 >> 1) == -1 ? n >> SUB_BITS : floor_div(n, SUB));
+}
+
+/* Whether triangle p[0] p[1] p[2], twice its signed area `area`, can cover
+ * a pixel centre of rows [lo, hi): not degenerate, not culled, and a pixel
+ * centre row and column within its bounding box.  raster_tri draws nothing
+ * for one that cannot. */
+#if defined(__GNUC__)
+__attribute__((noinline))   /* its locals stay off the stack under every span */
+#endif
+static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p, int64_t area)
+{
+    if (area == 0 || (t->cull_back && area > 0)) return 0;
+    const int64_t lim[2][2] = { { lo, hi }, { 0, t->width } };
+    for (int a = 0; a < 2; a++) {                  /* rows, then columns */
+        int64_t lo_v = a ? p[0].x : p[0].y, hi_v = lo_v;
+        for (int i = 1; i < 3; i++) {
+            int64_t v = a ? p[i].x : p[i].y;
+            if (v < lo_v) lo_v = v;
+            if (v > hi_v) hi_v = v;
+        }
+        int64_t c0 = first_centre(lo_v), c1 = first_centre(hi_v);
+        if ((c0 > lim[a][0] ? c0 : lim[a][0]) >= (c1 < lim[a][1] ? c1 : lim[a][1])) return 0;
+    }
+    return 1;
+}
+
+static int64_t orient(const svert *a, const svert *b, const svert *c)
+{
+    return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
+}
+
 static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
                        const svert *p0, const svert *p1, const svert *p2)
 {
     tri_setup s;
-    s.area = (p1->x - p0->x) * (p2->y - p0->y) - (p2->x - p0->x) * (p1->y - p0->y);
+    s.area = orient(p0, p1, p2);
     if (s.area == 0 || (t->cull_back && s.area > 0)) return;   /* y down: counter-clockwise is negative */
     s.v[0] = p0;
     s.v[1] = s.area > 0 ? p1 : p2;
@@ -546,11 +595,6 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             rstep_next(&sht);
         }
     }
-}
-
-static int64_t orient(const svert *a, const svert *b, const svert *c)
-{
-    return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
 }
 
 static int sgn(int64_t v) { return (v > 0) - (v < 0); }
@@ -649,8 +693,13 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     for (int i = 0; i < n; i++) {
         const silk_vertex_out *v = poly ? &poly[i] : in3[i];
         if (v->clip.w <= 0) return;                 /* cannot happen after clipping */
-        project(t, v, &sv[i]);
+        project_xy(t, v, &sv[i]);
     }
+    /* Where back faces are culled, most triangles of a fine mesh are
+     * culled or fall between pixel centres: those are known from the
+     * positions alone.  (Elsewhere raster_tri finds the few that do.) */
+    if (n == 3 && t->cull_back && !tri_reaches(t, lo, hi, sv, orient(&sv[0], &sv[1], &sv[2]))) return;
+    for (int i = 0; i < n; i++) project_depth(poly ? &poly[i] : in3[i], &sv[i]);
     if (n == 3) raster_tri(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2]);
     else raster_polygon(t, h, nvar, lo, hi, sv, n);
 }

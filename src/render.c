@@ -111,9 +111,11 @@ typedef struct frame {
     silk_vertex_out *vc;
     uint32_t *vc_tag;
     uint32_t vc_mask;
-    size_t vc_bytes;          /* the arena it takes */
-    int cull;                 /* back faces cannot show (back_faces_hidden) */
-    int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
+    uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
+    size_t vc_bytes;          /* the arena it and the facing memo take */
+    uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
+    uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
+                                 frame is on a small board's stack) */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -264,6 +266,29 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     memset(f->vc_tag, 0xFF, 3 * (size_t)n * sizeof *f->vc_tag);   /* empty: no normal index is UINT32_MAX */
     f->vc_bytes = free0 - silk_arena_free_bytes(a);
     f->vc_mask = n - 1;
+}
+
+/* The outline's memo of which way each input triangle faces
+ * (silk_aa.facing), under the same budget as the vertex cache and, like
+ * it, not part of the frame's need: without it each triangle's facing is
+ * worked out up to four times a band, with the same answers. */
+static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
+{
+#ifndef SILK_NO_AA
+    size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a),
+           budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
+    if (!o->aa || o->wire || f->part != share_part || f->clip || n + SILK_ARENA_ALIGN > budget ||
+        n + SILK_ARENA_ALIGN > free0 / 2)
+        return;
+    f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);
+    if (!f->facing) return;
+    memset(f->facing, 0, n);   /* nothing known yet */
+    f->vc_bytes += free0 - silk_arena_free_bytes(a);
+#else
+    (void)f;
+    (void)a;
+    (void)o;
+#endif
 }
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
@@ -577,11 +602,12 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         silk_arena_top_release(a, &mark);
         return;
     }
+    aa.facing = f->facing;
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
     for (uint32_t k = 0; k < f->nparts; k++) {
         if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
-        if (!silk_aa_candidate(f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
+        if (!silk_aa_candidate(&aa, f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }
@@ -619,6 +645,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
+        facing_memo(&f, a, o);
         frame_draw(&f, o, t);
         frame_aa(&f, a, v, o, t, stats);
         if (f.clip) stats->clip_spans = f.clip->spans;
@@ -649,6 +676,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
+        facing_memo(&f, a, o);
         share_rows(&f, band->height);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {

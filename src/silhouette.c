@@ -18,6 +18,7 @@
 #include "plan.h"
 #include "stages.h"
 #include "curve.h"
+#include "mesh_build.h"
 
 /* ---- small helpers ---------------------------------------------------------- */
 
@@ -42,12 +43,56 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     else { s->uv0 = SILK_NO_INDEX; s->uv1 = SILK_NO_INDEX; }
 }
 
+#ifndef SILK_NO_AA
+static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
+
+/* The smallest s with v >> s below 2^14. */
+static int cut14(uint64_t v)
+{
+#if defined(__GNUC__)
+    int n = v ? 64 - __builtin_clzll(v) : 0;
+    return n > 14 ? n - 14 : 0;
+#else
+    int s = 0;
+    while ((v >> s) >= (1u << 14)) s++;
+    return s;
+#endif
+}
+#endif
+
+/* The face normal is normalised (a square root) before the dot product
+ * with the direction to the eye, so that every caller gets the same
+ * rounded answer; that rounding tilts it by a few 2^-16.  Cut to 14 bits,
+ * the normal and the direction tilt by under 2^-11 each (their largest
+ * component keeps 13 bits): where the cut ones already make an angle with
+ * |cos| above 2^-8, the sign is the rounded one's.  Only triangles seen
+ * nearly edge-on (and zero-area ones) are normalised.  The anti-aliased
+ * outline asks every triangle every frame; a build without it
+ * (-DSILK_NO_AA) asks only of feature edges' triangles and keeps the
+ * 0.4 KiB of Cortex-M3 code the shortcut takes. */
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
     for (int k = 0; k < 3; k++)
         if (m->tri[3 * t + k] >= m->nverts) return 0;
+    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+#ifndef SILK_NO_AA
+    const int64_t ev[3] = { e.x, e.y, e.z };
+    int64_t c[3];
+    silk_tri_cross64(m, t, c);
+    uint64_t bc = mag(c[0]) | mag(c[1]) | mag(c[2]), be = mag(ev[0]) | mag(ev[1]) | mag(ev[2]);
+    int sc = cut14(bc), se = cut14(be);
+    int32_t d = 0;                  /* |c_i|, |e_i| < 2^14: d below 2^30 */
+    uint32_t n1 = 0, e1 = 0;        /* |c| |e| <= n1 e1 < 2^32 */
+    for (int i = 0; i < 3; i++) {
+        int32_t ci = (int32_t)(c[i] >> sc), ei = (int32_t)(ev[i] >> se);
+        d += ci * ei;
+        n1 += (uint32_t)(ci < 0 ? -ci : ci);
+        e1 += (uint32_t)(ei < 0 ? -ei : ei);
+    }
+    if ((uint32_t)(d < 0 ? -d : d) > (n1 * e1 >> 8)) return d > 0;
+#endif
     silk_vec3 fn = silk_mesh_face_normal(m, t);
-    return silk_v3_dot64(fn, silk_view_to_eye(v, m->pos[m->tri[3 * t]])) > 0;
+    return silk_v3_dot64(fn, e) > 0;
 }
 
 /* Triangles whose three normals and corners are usable; anything else is

@@ -140,6 +140,42 @@ static void silhouette_triangles(const char *name, int nviews)
 }
 
 TEST(silhouette_triangles_sphere) { silhouette_triangles("sphere-200.obj", 40); }
+
+/* silk_sil_tri_front decides most triangles without normalising the face
+ * normal: the same answers as the normalised test, edge-on triangles
+ * (|cos| < 1e-3 between face normal and eye direction, counted) included. */
+static void tri_front_as_normalised(const char *name, int nviews)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    uint32_t wrong = 0, grazing = 0;
+    for (int i = 0; i < nviews; i++) {
+        double d[3];
+        random_dir(d);
+        silk_view v;
+        if (!tf_view_around(&m, d, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        for (uint32_t t = 0; t < m.ntris; t++) {
+            silk_vec3 e = silk_view_to_eye(&v, m.pos[m.tri[3 * t]]);
+            int want = silk_v3_dot64(silk_mesh_face_normal(&m, t), e) > 0;
+            wrong += silk_sil_tri_front(&m, &v, t) != want;
+            double n[3], ed[3];
+            vec3d(silk_mesh_face_normal(&m, t), n);
+            vec3d(e, ed);
+            double c = dot3(n, ed) / sqrt(dot3(n, n) * dot3(ed, ed) + 1e-300);
+            grazing += fabs(c) < 1e-3;
+        }
+    }
+    printf("  %s: %d views, %u edge-on triangles\n", name, nviews, grazing);
+    CHECKF(wrong == 0, "%s: %u triangles face the other way", name, wrong);
+}
+
+TEST(tri_front_as_normalised_test)
+{
+    tri_front_as_normalised("sphere-200.obj", 200);
+    tri_front_as_normalised("fandisk-1000.obj", 100);
+    tri_front_as_normalised("bunny-500.obj", 100);
+}
 TEST(silhouette_triangles_torus) { silhouette_triangles("torus-576.obj", 40); }
 TEST(silhouette_triangles_split_normals) { silhouette_triangles("fandisk-128.obj", 40); silhouette_triangles("cone-70.obj", 40); }
 
@@ -581,6 +617,7 @@ int main(void)
 {
     arena_buf = malloc(ARENA_BYTES);
     RUN(silhouette_triangles_sphere);
+    RUN(tri_front_as_normalised_test);
     RUN(silhouette_triangles_torus);
     RUN(silhouette_triangles_split_normals);
     RUN(bridges_and_points_sphere);

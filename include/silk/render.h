@@ -112,8 +112,10 @@ typedef struct silk_render_opts {
      * with the default vertex stage, each mesh vertex is evaluated once per
      * frame instead of once per triangle corner).  It takes at most half of
      * what the frame leaves and at least 64 slots of 72 bytes, else nothing;
-     * the pixels are the same either way.  Default SIZE_MAX; a device whose
-     * RAM budget is tight sets what it can spare, 0 for none. */
+     * the pixels are the same either way.  The anti-aliased outline's memo
+     * of which way each triangle faces (2 bits per triangle) comes out of
+     * the same budget.  Default SIZE_MAX; a device whose RAM budget is
+     * tight sets what it can spare, 0 for none. */
     size_t vertex_cache_bytes;
     /* CLIP: the model's silhouette map (silk_model_silmap), the polytope
      * triangle to start looking for the eye from (the last frame's
