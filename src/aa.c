@@ -46,6 +46,7 @@
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
+#define SUBDIV 4                   /* the curve between two samples as SUBDIV chords */
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
 
@@ -108,22 +109,25 @@ static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)
     return 1;
 }
 
-/* Crossed pixel (x, y), its inside towards (sx, sy), covered cov / FRAC by
- * the surface; a pixel on either side nearer than lim hides the side there. */
-static void crossing(silk_aa *aa, int x, int y, int sx, int sy, uint32_t cov, uint32_t lim)
+/* Pixel r of column c (rows across the walk; steep: the roles of x and y
+ * swapped) becomes cov / FRAC of the inside pixel ri and the rest of the
+ * outside pixel ro, both of its column; a pixel of them nearer than lim
+ * hides the side there. */
+static void crossing(silk_aa *aa, int steep, int c, int r, int ri, int ro, uint32_t cov, uint32_t lim)
 {
     const silk_target *t = aa->t;
+    int x = steep ? r : c, y = steep ? c : r;
     if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
-    int here = 2 * cov > FRAC;   /* the rasterizer drew the surface here */
-    uint32_t ci, co, di, dout;
-    if (!fetch(aa, here ? x : x + sx, here ? y : y + sy, &ci, &di) ||
-        !fetch(aa, here ? x - sx : x, here ? y - sy : y, &co, &dout))
+    uint32_t ci, co, di, dout, cs, ds;
+    if (!fetch(aa, steep ? ri : c, steep ? c : ri, &ci, &di) || !fetch(aa, steep ? ro : c, steep ? c : ro, &co, &dout))
         return;
     if (di > lim || dout > lim) return;   /* hidden here */
+    /* the curve beyond the drawn pixels: only over what is behind */
+    if (r != ri && r != ro && (!fetch(aa, x, y, &cs, &ds) || ds > lim)) return;
     uint32_t c8 = (cov * 255 + FRAC / 2) / FRAC;
     /* weights: the coverage, and whether a pixel holds anything (alpha plane only) */
     uint32_t ai = !t->alpha || di ? 255 : 0, ao = !t->alpha || dout ? 255 : 0;
-    uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = here ? ci : co;
+    uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = 2 * cov > FRAC ? ci : co;
     if (sum) {
         rgb = 0;
         for (int s = 16; s >= 0; s -= 8)
@@ -139,43 +143,79 @@ static void crossing(silk_aa *aa, int x, int y, int sx, int sy, uint32_t cov, ui
     p->argb = ((sum + 127) / 255) << 24 | rgb;
 }
 
+/* Where a through b crosses u = uc, in 1/FRAC pixels across (a.x <= uc < b.x). */
+static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
+{
+    return (int64_t)a->y * (FRAC / SILK_RASTER_SUB) +
+           floor_div((int64_t)(uc - a->x) * (b->y - a->y) * (FRAC / SILK_RASTER_SUB), b->x - a->x);
+}
+
 /* Walk side p-q, whose inside is the side of it `in` lies on; tol: how
- * far from the side's depth its surface may be seen (tolerance()). */
-static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol)
+ * far from the side's depth its surface may be seen (tolerance()).  The
+ * rasterizer drew the chord p-q; with mid (SUBDIV - 1 points from p to q)
+ * the outline is the curve through them, and the pixels between the two
+ * get the curve's coverage too, their colours from the drawn pixels next
+ * to the chord. */
+static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid)
 {
     int64_t cross = area2(&p, &q, in);
     if (!cross) return;
+    silk_aa_pt k[SUBDIV + 1];
+    k[0] = p;
+    k[SUBDIV] = q;
+    for (int j = 1; mid && j < SUBDIV; j++) k[j] = mid[j - 1];
     /* u along the walk (x, or y when steep), v across; then p before q */
     int steep = absl(q.y - p.y) > absl(q.x - p.x);
-    if (steep) {
-        int32_t s = p.x;
-        p.x = p.y, p.y = s;
-        s = q.x, q.x = q.y, q.y = s;
-    }
+    if (steep)
+        for (int j = 0; j <= SUBDIV; j++) {
+            int32_t s = k[j].x;
+            k[j].x = k[j].y, k[j].y = s;
+        }
     /* the inside is towards +v when (cross > 0) == (u grows from p to q), the opposite walking y */
-    int dir = ((cross > 0) == (q.x > p.x)) != steep ? 1 : -1;
-    if (q.x < p.x) {
-        silk_aa_pt s = p;
-        p = q, q = s;
-    }
+    int dir = ((cross > 0) == (k[SUBDIV].x > k[0].x)) != steep ? 1 : -1;
+    if (k[SUBDIV].x < k[0].x)
+        for (int j = 0; j < SUBDIV / 2; j++) {
+            silk_aa_pt s = k[j];
+            k[j] = k[SUBDIV - j], k[SUBDIV - j] = s;
+        }
+    /* the curve is followed where it runs along u as the chord does */
+    for (int j = 0; mid && j < SUBDIV; j++)
+        if (k[j + 1].x < k[j].x) mid = NULL;
+    p = k[0];
+    q = k[SUBDIV];
     const silk_target *t = aa->t;
-    int32_t du = q.x - p.x, dv = q.y - p.y, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
+    int32_t du = q.x - p.x, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
     if (!du) return;
     int64_t lo = floor_div(p.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);   /* centres in [p.x, q.x) */
     int64_t hi = floor_div(q.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
     int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
     if (lo < ulo) lo = ulo;
     if (hi > uhi) hi = uhi;
+    int j = 0;
     for (int64_t c = lo; c < hi; c++) {
-        int32_t U = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2 - p.x;
-        int64_t ve = (int64_t)p.y * (FRAC / SILK_RASTER_SUB) + floor_div((int64_t)U * dv * (FRAC / SILK_RASTER_SUB), du);
-        int64_t r = floor_div(ve, FRAC), f = ve - r * FRAC;
-        /* covered: the part of the pixel on the inside */
-        uint32_t cov = (uint32_t)(dir > 0 ? FRAC - f : f);
+        int32_t uc = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2, U = uc - p.x;
+        /* the chord, as drawn: the pixel it leaves inside, and the one outside */
+        int64_t ve = cross_at(&p, &q, uc), rc = floor_div(ve, FRAC), fc = ve - rc * FRAC;
+        int here = 2 * (dir > 0 ? FRAC - fc : fc) > FRAC;
+        int64_t ri = here ? rc : rc + dir, ro = ri - dir;
+        /* the outline: where it crosses, and every pixel it covers otherwise than drawn */
+        int64_t vk = ve;
+        if (mid) {
+            while (k[j + 1].x <= uc) j++;
+            vk = cross_at(&k[j], &k[j + 1], uc);
+        }
+        int64_t rk = floor_div(vk, FRAC), fk = vk - rk * FRAC;
         int64_t lim = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du) + tol;
         uint32_t l32 = lim > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)lim;
-        if (steep) crossing(aa, (int)r, (int)c, dir, 0, cov, l32);
-        else crossing(aa, (int)c, (int)r, 0, dir, cov, l32);
+        int64_t r0 = rk < ro ? rk : ro, r1 = rk > ro ? rk : ro;
+        if (ri < r0) r0 = ri;
+        if (ri > r1) r1 = ri;
+        for (int64_t r = r0; r <= r1; r++) {
+            /* covered: the part of the pixel on the inside */
+            uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
+            if (cov == ((r - ri) * dir >= 0 ? FRAC : 0)) continue;   /* as drawn */
+            crossing(aa, steep, (int)c, (int)r, (int)ri, (int)ro, cov, l32);
+        }
     }
 }
 
@@ -193,10 +233,10 @@ static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa
     return (int64_t)(hi - lo) + hi / 64;
 }
 
-static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k)
+static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k, const silk_aa_pt *mid)
 {
     const silk_aa_pt *a = &p[k], *b = &p[(k + 1) % 3], *c = &p[(k + 2) % 3];
-    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c));
+    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c), mid);
 }
 
 /* FLAT's rule for side k of input triangle t. */
@@ -225,8 +265,36 @@ static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
     return memcmp(&a->clip, &b->clip, sizeof a->clip) == 0;
 }
 
+/* Record rec's parameter on the segment's curve; 0 if it is not on it. */
+static int seg_param(const silk_aa_seg *s, const silk_frame_geom *g, uint32_t rec, silk_fx *u)
+{
+    const silk_vrec *r = &g->vrec[rec];
+    if (rec == s->a || rec == s->b) *u = rec == s->a ? 0 : SILK_FX_ONE;
+    else if (r->kind == SILK_VREC_CURVE && r->a == s->curve) *u = r->t;
+    else return 0;
+    return 1;
+}
+
+/* The segment's curve between records ra and rb, SUBDIV - 1 points from
+ * ra's end, projected by the vertex stage; 0 where the side is not one of
+ * its chords. */
+static int seg_points(silk_aa *aa, const silk_aa_seg *s, const silk_frame_geom *g, uint32_t ra, uint32_t rb,
+                      silk_aa_pt *mid)
+{
+    silk_fx ua, ub;
+    if (!s || !seg_param(s, g, ra, &ua) || !seg_param(s, g, rb, &ub) || ua == ub) return 0;
+    for (int j = 1; j < SUBDIV; j++) {
+        silk_vrec r = { SILK_VREC_CURVE, s->curve, 0, ua + (silk_fx)(((int64_t)ub - ua) * j / SUBDIV) };
+        silk_vertex_out o;
+        s->h->vertex(s->h, s->geom, &r, &o);
+        mid[j - 1] = point(aa->t, &o);
+        if (!mid[j - 1].ok) return 0;
+    }
+    return 1;
+}
+
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
-                   const silk_vertex_out *out, uint32_t t)
+                   const silk_vertex_out *out, uint32_t t, const silk_aa_seg *seg)
 {
     if (g->nvrec > aa->npt) return;
     for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
@@ -236,7 +304,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         silk_aa_pt p[3] = { aa->pt[tri[0]], aa->pt[tri[1]], aa->pt[tri[2]] };
         int front = silk_sil_tri_front(m, v, t);
         for (int k = 0; k < 3; k++)
-            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k);
+            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k, NULL);
         return;
     }
     /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
@@ -257,7 +325,8 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                 }
             }
             if (!fold) continue;
-            tri_side(aa, p, k);
+            silk_aa_pt mid[SUBDIV - 1];
+            tri_side(aa, p, k, seg_points(aa, seg, g, ti[k], ti[(k + 1) % 3], mid) ? mid : NULL);
         }
     }
 }

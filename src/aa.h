@@ -46,13 +46,24 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
  * silhouette segment. */
 int silk_aa_candidate(const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t);
 
+/* Where a SMOOTH share's silhouette segment is: its curve in the share's
+ * curves, and the records of its ends A and B (the interior samples are
+ * records on the curve itself).  Between two samples the outline is the
+ * curve, which the vertex stage h projects (with geom, the frame's). */
+typedef struct silk_aa_seg {
+    const silk_hal *h;
+    const silk_geom *geom;
+    uint32_t curve, a, b;
+} silk_aa_seg;
+
 /* The outline sides of input triangle t's share g (out: its vertex-stage
  * output per record), walked over the band: a share that is t as it is
  * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate; a
  * re-meshed share along every side its triangles share facing opposite
- * ways on screen. */
+ * ways on screen, its coverage from the segment's curve seg where the side
+ * is a chord of it (seg may be NULL). */
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
-                   const silk_vertex_out *out, uint32_t t);
+                   const silk_vertex_out *out, uint32_t t, const silk_aa_seg *seg);
 
 /* Write the pending pixels (and t->alpha, when the target has one). */
 void silk_aa_finish(silk_aa *aa);

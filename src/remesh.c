@@ -524,6 +524,13 @@ void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, ui
     rec[2] = silk_remesh_corner_rec(f, t, (lone + 2) % 3, base) + 1 + side_points(f, t, (lone + 2) % 3);
 }
 
+uint32_t silk_remesh_seg_curve(const silk_sil_frame *f, uint32_t t)
+{
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < 3; k++) n += side_points(f, t, k) > 0;   /* walk_side: a curve per side with points */
+    return n;
+}
+
 void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats)
 {
     if (!stats) return;
