@@ -46,6 +46,7 @@
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
+#define SNAP  (FRAC / 32)          /* coverage this close to 0 or 1 is 0 or 1 */
 #define SUBDIV 4                   /* the curve between two samples as SUBDIV chords */
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
@@ -213,6 +214,8 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         for (int64_t r = r0; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
+            /* within SNAP of empty or full: below what 1/16-pixel records place */
+            cov = cov < SNAP ? 0 : cov > FRAC - SNAP ? FRAC : cov;
             if (cov == ((r - ri) * dir >= 0 ? FRAC : 0)) continue;   /* as drawn */
             crossing(aa, steep, (int)c, (int)r, (int)ri, (int)ro, cov, l32);
         }
