@@ -43,11 +43,12 @@
  */
 #include <string.h>
 #include "aa.h"
+#include "remesh.h"
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
 #define SNAP  (FRAC / 32)          /* coverage this close to 0 or 1 is 0 or 1 */
-#define SUBDIV 4                   /* the curve between two samples as SUBDIV chords */
+#define SUBDIV SILK_AA_SUBDIV
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
 
@@ -88,6 +89,9 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     }
     aa->npt = max_recs;
     aa->pt = silk_arena_array_top(a, max_recs, sizeof *aa->pt, SILK_MEM_FRAME);
+    /* a side's scratch from the arena, not the stack: the walk is the deepest call of a frame */
+    aa->walk = silk_arena_array_top(a, SILK_AA_WALK, sizeof *aa->walk, SILK_MEM_FRAME);
+    aa->out = silk_arena_array_top(a, 1, sizeof *aa->out, SILK_MEM_FRAME);
     /* An outline crosses a band about once per row or column it spans:
      * room for three times the band's width and height (a knot at 640x480
      * needs 2.4 times), within half of what is left (the rest is left
@@ -95,7 +99,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
-    return aa->pt && aa->px;
+    return aa->pt && aa->walk && aa->out && aa->px;
 }
 
 /* Pixel (x, y) of the band or its aprons: colour and depth; 0 if neither has it. */
@@ -161,7 +165,7 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
 {
     int64_t cross = area2(&p, &q, in);
     if (!cross) return;
-    silk_aa_pt k[SUBDIV + 1];
+    silk_aa_pt *k = aa->walk;
     k[0] = p;
     k[SUBDIV] = q;
     for (int j = 1; mid && j < SUBDIV; j++) k[j] = mid[j - 1];
@@ -236,9 +240,9 @@ static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa
     return (int64_t)(hi - lo) + hi / 64;
 }
 
-static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k, const silk_aa_pt *mid)
+/* Side a-b of a triangle a b c (walked when all three are placed). */
+static void tri_side(silk_aa *aa, const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c, const silk_aa_pt *mid)
 {
-    const silk_aa_pt *a = &p[k], *b = &p[(k + 1) % 3], *c = &p[(k + 2) % 3];
     if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c), mid);
 }
 
@@ -268,8 +272,15 @@ static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
     return memcmp(&a->clip, &b->clip, sizeof a->clip) == 0;
 }
 
+/* Where a share's silhouette segment is: its curve among the share's
+ * curves, and the records of its ends A and B (the samples between are
+ * records on the curve itself). */
+typedef struct seg_at {
+    uint32_t curve, a, b;
+} seg_at;
+
 /* Record rec's parameter on the segment's curve; 0 if it is not on it. */
-static int seg_param(const silk_aa_seg *s, const silk_frame_geom *g, uint32_t rec, silk_fx *u)
+static int seg_param(const seg_at *s, const silk_frame_geom *g, uint32_t rec, silk_fx *u)
 {
     const silk_vrec *r = &g->vrec[rec];
     if (rec == s->a || rec == s->b) *u = rec == s->a ? 0 : SILK_FX_ONE;
@@ -281,40 +292,46 @@ static int seg_param(const silk_aa_seg *s, const silk_frame_geom *g, uint32_t re
 /* The segment's curve between records ra and rb, SUBDIV - 1 points from
  * ra's end, projected by the vertex stage; 0 where the side is not one of
  * its chords. */
-static int seg_points(silk_aa *aa, const silk_aa_seg *s, const silk_frame_geom *g, uint32_t ra, uint32_t rb,
+static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, uint32_t ra, uint32_t rb,
                       silk_aa_pt *mid)
 {
     silk_fx ua, ub;
     if (!s || !seg_param(s, g, ra, &ua) || !seg_param(s, g, rb, &ub) || ua == ub) return 0;
     for (int j = 1; j < SUBDIV; j++) {
         silk_vrec r = { SILK_VREC_CURVE, s->curve, 0, ua + (silk_fx)(((int64_t)ub - ua) * j / SUBDIV) };
-        silk_vertex_out o;
-        s->h->vertex(s->h, s->geom, &r, &o);
-        mid[j - 1] = point(aa->t, &o);
+        aa->hal->vertex(aa->hal, aa->geom, &r, aa->out);
+        mid[j - 1] = point(aa->t, aa->out);
         if (!mid[j - 1].ok) return 0;
     }
     return 1;
 }
 
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
-                   const silk_vertex_out *out, uint32_t t, const silk_aa_seg *seg)
+                   const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
     for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
     const uint32_t *tri = g->tri;
     if (g->ntri == 1) {
         /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
-        silk_aa_pt p[3] = { aa->pt[tri[0]], aa->pt[tri[1]], aa->pt[tri[2]] };
         int front = silk_sil_tri_front(m, v, t);
         for (int k = 0; k < 3; k++)
-            if (coarse_outline(m, v, t, k, front)) tri_side(aa, p, k, NULL);
+            if (coarse_outline(m, v, t, k, front))
+                tri_side(aa, &aa->pt[tri[k]], &aa->pt[tri[(k + 1) % 3]], &aa->pt[tri[(k + 2) % 3]], NULL);
         return;
+    }
+    seg_at at, *seg = NULL;
+    uint32_t ends[2];
+    if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, ends, &at.curve)) {
+        at.a = ends[0];
+        at.b = ends[1];
+        seg = &at;
     }
     /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
     for (uint32_t i = 0; i < g->ntri; i++) {
         const uint32_t *ti = &tri[3 * i];
-        silk_aa_pt p[3] = { aa->pt[ti[0]], aa->pt[ti[1]], aa->pt[ti[2]] };
-        if (!p[0].ok || !p[1].ok || !p[2].ok || area2(&p[0], &p[1], &p[2]) <= 0) continue;
+        const silk_aa_pt *p0 = &aa->pt[ti[0]], *p1 = &aa->pt[ti[1]], *p2 = &aa->pt[ti[2]];
+        if (!p0->ok || !p1->ok || !p2->ok || area2(p0, p1, p2) <= 0) continue;
         for (int k = 0; k < 3; k++) {
             const silk_vertex_out *a = &out[ti[k]], *b = &out[ti[(k + 1) % 3]];
             int fold = 0;
@@ -323,13 +340,13 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                 for (int l = 0; l < 3 && !fold; l++) {
                     const silk_vertex_out *c = &out[tj[l]], *d = &out[tj[(l + 1) % 3]];
                     if (!((same_clip(a, d) && same_clip(b, c)) || (same_clip(a, c) && same_clip(b, d)))) continue;
-                    silk_aa_pt q0 = aa->pt[tj[0]], q1 = aa->pt[tj[1]], q2 = aa->pt[tj[2]];
-                    fold = j != i && area2(&q0, &q1, &q2) < 0;
+                    fold = j != i && area2(&aa->pt[tj[0]], &aa->pt[tj[1]], &aa->pt[tj[2]]) < 0;
                 }
             }
             if (!fold) continue;
-            silk_aa_pt mid[SUBDIV - 1];
-            tri_side(aa, p, k, seg_points(aa, seg, g, ti[k], ti[(k + 1) % 3], mid) ? mid : NULL);
+            silk_aa_pt *mid = aa->walk + SUBDIV + 1;
+            tri_side(aa, &aa->pt[ti[k]], &aa->pt[ti[(k + 1) % 3]], &aa->pt[ti[(k + 2) % 3]],
+                     seg_points(aa, seg, g, ti[k], ti[(k + 1) % 3], mid) ? mid : NULL);
         }
     }
 }

@@ -579,20 +579,14 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     }
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
+    aa.sil = f->smooth ? &f->sil : NULL;
+    aa.hal = f->hal;
+    aa.geom = &f->geom;
     for (uint32_t k = 0; k < f->nparts; k++) {
         if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
-        if (!silk_aa_candidate(f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
+        if (!silk_aa_candidate(f->geom.mesh, v, aa.sil, k)) continue;
         f->part(f, k);
-        silk_aa_seg seg = { f->hal, &f->geom, 0, 0, 0 };
-        int sil = f->smooth && (f->sil.tri_state[k] & SILK_TS_SIL);
-        if (sil) {
-            uint32_t rec[3];
-            silk_remesh_seg_recs(&f->sil, k, 0, rec);
-            seg.a = rec[0];
-            seg.b = rec[1];
-            seg.curve = silk_remesh_seg_curve(&f->sil, k);
-        }
-        silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k, sil ? &seg : NULL);
+        silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }
     silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
     stats->aa_aliased += aa.dropped;
