@@ -17,18 +17,25 @@
  * whose centre the side spans is crossed at height y_e; the pixel the
  * crossing falls in is covered by the side's inside over the part of it
  * on that side, 1 - frac(y_e) or frac(y_e) (the area of the pixel column
- * cut by the straight side, exact unless the side crosses a pixel corner
- * within the column, where it is off by at most 1/8).  Sides steeper than
- * 45 degrees walk rows the same way.  This is the pixel's area coverage by
- * a half-plane, from the rasterizer's own subpixel positions of the
- * records, so it is the coverage of the surface as drawn (whose chords lie
- * within the sampling tolerance of the curve).
+ * cut by a straight outline, exact unless it crosses a pixel corner within
+ * the column, where it is off by at most 1/8).  Sides steeper than 45
+ * degrees walk rows the same way.  The rasterizer draws a silhouette
+ * segment as chords between its samples, which lie inside the curve by up
+ * to the sampling tolerance (eq. 8); so along a chord the crossing is
+ * taken from the curve itself, eq. 5 evaluated at SUBDIV - 1 parameters
+ * between the chord's samples and projected by the vertex stage (a
+ * polyline within 1/16 of the chord's distance from the curve), and every
+ * pixel between the curve and the chord gets the curve's coverage.  Other
+ * sides (flat mode's silhouette edges) are the outline as it is.  Positions
+ * are the rasterizer's own subpixel ones (silk_raster_point), 1/16 pixel,
+ * so a coverage within 1/32 of empty or full is taken as empty or full.
  *
- * Blending.  The rasterizer decided the crossed pixel by its centre, so it
- * holds either the surface (coverage >= 1/2) or what is behind; the pixel
- * next to it across the side holds the other (a post-process blend as in
- * geometric post-process anti-aliasing, Persson 2011).  The crossed pixel
- * becomes coverage x inside + (1 - coverage) x outside.  With an alpha
+ * Blending.  The rasterizer decided each pixel by its centre against the
+ * chord, so of the two pixels next to the chord in the column one holds the
+ * surface and the other what is behind (a post-process blend as in
+ * geometric post-process anti-aliasing, Persson 2011).  A pixel the
+ * outline crosses becomes coverage x inside + (1 - coverage) x outside,
+ * and one the curve covers past the chord takes the inside's colour.  With an alpha
  * plane (a PNG with --bg none) an empty pixel has alpha 0 and weighs
  * nothing in the colour, so alpha is the coverage and the colour the
  * surface's.  Where the inside or the outside pixel is nearer than the
