@@ -130,12 +130,10 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int ri, int ro, uint3
     const silk_target *t = aa->t;
     int x = steep ? r : c, y = steep ? c : r;
     if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
-    uint32_t ci, co, di, dout, cs, ds;
+    uint32_t ci, co, di, dout;
     if (!fetch(aa, steep ? ri : c, steep ? c : ri, &ci, &di) || !fetch(aa, steep ? ro : c, steep ? c : ro, &co, &dout))
         return;
     if (di > lim || dout > lim) return;   /* hidden here */
-    /* the curve beyond the drawn pixels: only over what is behind */
-    if (r != ri && r != ro && (!fetch(aa, x, y, &cs, &ds) || ds > lim)) return;
     uint32_t c8 = (cov * 255 + FRAC / 2) / FRAC;
     /* weights: the coverage, and whether a pixel holds anything (alpha plane only) */
     uint32_t ai = !t->alpha || di ? 255 : 0, ao = !t->alpha || dout ? 255 : 0;
@@ -219,10 +217,10 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         int64_t rk = floor_div(vk, FRAC), fk = vk - rk * FRAC;
         int64_t lim = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du) + tol;
         uint32_t l32 = lim > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)lim;
-        int64_t r0 = rk < ro ? rk : ro, r1 = rk > ro ? rk : ro;
-        if (ri < r0) r0 = ri;
-        if (ri > r1) r1 = ri;
-        for (int64_t r = r0; r <= r1; r++) {
+        /* The two pixels next to the chord: a pixel further out or in would
+         * take a colour from two rows away, past a band's apron, so where the
+         * curve crosses one it is left as drawn (bands equal the frame). */
+        for (int64_t r = ri < ro ? ri : ro, r1 = r + 1; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
             /* within SNAP of empty or full: below what 1/16-pixel records place */
