@@ -24,8 +24,8 @@
  * to the sampling tolerance (eq. 8); so along a chord the crossing is
  * taken from the curve itself, eq. 5 evaluated at SUBDIV - 1 parameters
  * between the chord's samples and projected by the vertex stage (a
- * polyline within 1/16 of the chord's distance from the curve), and every
- * pixel between the curve and the chord gets the curve's coverage.  Other
+ * polyline within 1/16 of the chord's distance from the curve), and the
+ * two pixels next to the chord get the curve's coverage.  Other
  * sides (flat mode's silhouette edges) are the outline as it is.  Positions
  * are the rasterizer's own subpixel ones (silk_raster_point), 1/16 pixel,
  * so a coverage within 1/32 of empty or full is taken as empty or full.
@@ -34,8 +34,9 @@
  * chord, so of the two pixels next to the chord in the column one holds the
  * surface and the other what is behind (a post-process blend as in
  * geometric post-process anti-aliasing, Persson 2011).  A pixel the
- * outline crosses becomes coverage x inside + (1 - coverage) x outside,
- * and one the curve covers past the chord takes the inside's colour.  With an alpha
+ * outline crosses becomes coverage x inside + (1 - coverage) x outside
+ * (only those two: the curve is seldom a whole pixel off the chord, and a
+ * pixel past them would take a colour from beyond a band's apron).  With an alpha
  * plane (a PNG with --bg none) an empty pixel has alpha 0 and weighs
  * nothing in the colour, so alpha is the coverage and the colour the
  * surface's.  Where the inside or the outside pixel is nearer than the
