@@ -17,18 +17,26 @@
  * whose centre the side spans is crossed at height y_e; the pixel the
  * crossing falls in is covered by the side's inside over the part of it
  * on that side, 1 - frac(y_e) or frac(y_e) (the area of the pixel column
- * cut by the straight side, exact unless the side crosses a pixel corner
- * within the column, where it is off by at most 1/8).  Sides steeper than
- * 45 degrees walk rows the same way.  This is the pixel's area coverage by
- * a half-plane, from the rasterizer's own subpixel positions of the
- * records, so it is the coverage of the surface as drawn (whose chords lie
- * within the sampling tolerance of the curve).
+ * cut by a straight outline, exact unless it crosses a pixel corner within
+ * the column, where it is off by at most 1/8).  Sides steeper than 45
+ * degrees walk rows the same way.  The rasterizer draws a silhouette
+ * segment as chords between its samples, which lie inside the curve by up
+ * to the sampling tolerance (eq. 8); so along a chord the crossing is
+ * taken from the curve itself, eq. 5 evaluated at SUBDIV - 1 parameters
+ * between the chord's samples and projected by the vertex stage (a
+ * polyline within 1/16 of the chord's distance from the curve), and the
+ * two pixels next to the chord get the curve's coverage.  Other
+ * sides (flat mode's silhouette edges) are the outline as it is.  Positions
+ * are the rasterizer's own subpixel ones (silk_raster_point), 1/16 pixel,
+ * so a coverage within 1/32 of empty or full is taken as empty or full.
  *
- * Blending.  The rasterizer decided the crossed pixel by its centre, so it
- * holds either the surface (coverage >= 1/2) or what is behind; the pixel
- * next to it across the side holds the other (a post-process blend as in
- * geometric post-process anti-aliasing, Persson 2011).  The crossed pixel
- * becomes coverage x inside + (1 - coverage) x outside.  With an alpha
+ * Blending.  The rasterizer decided each pixel by its centre against the
+ * chord, so of the two pixels next to the chord in the column one holds the
+ * surface and the other what is behind (a post-process blend as in
+ * geometric post-process anti-aliasing, Persson 2011).  A pixel the
+ * outline crosses becomes coverage x inside + (1 - coverage) x outside
+ * (only those two: the curve is seldom a whole pixel off the chord, and a
+ * pixel past them would take a colour from beyond a band's apron).  With an alpha
  * plane (a PNG with --bg none) an empty pixel has alpha 0 and weighs
  * nothing in the colour, so alpha is the coverage and the colour the
  * surface's.  Where the inside or the outside pixel is nearer than the
@@ -43,9 +51,12 @@
  */
 #include <string.h>
 #include "aa.h"
+#include "remesh.h"
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
+#define SNAP  (FRAC / 32)          /* coverage this close to 0 or 1 is 0 or 1 */
+#define SUBDIV SILK_AA_SUBDIV
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
 
@@ -86,6 +97,9 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     }
     aa->npt = max_recs;
     aa->pt = silk_arena_array_top(a, max_recs, sizeof *aa->pt, SILK_MEM_FRAME);
+    /* a side's scratch from the arena, not the stack: the walk is the deepest call of a frame */
+    aa->walk = silk_arena_array_top(a, SILK_AA_WALK, sizeof *aa->walk, SILK_MEM_FRAME);
+    aa->out = silk_arena_array_top(a, 1, sizeof *aa->out, SILK_MEM_FRAME);
     /* An outline crosses a band about once per row or column it spans:
      * room for three times the band's width and height (a knot at 640x480
      * needs 2.4 times), within half of what is left (the rest is left
@@ -93,7 +107,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
-    return aa->pt && aa->px;
+    return aa->pt && aa->walk && aa->out && aa->px;
 }
 
 /* Pixel (x, y) of the band or its aprons: colour and depth; 0 if neither has it. */
@@ -108,22 +122,23 @@ static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)
     return 1;
 }
 
-/* Crossed pixel (x, y), its inside towards (sx, sy), covered cov / FRAC by
- * the surface; a pixel on either side nearer than lim hides the side there. */
-static void crossing(silk_aa *aa, int x, int y, int sx, int sy, uint32_t cov, uint32_t lim)
+/* Pixel r of column c (rows across the walk; steep: the roles of x and y
+ * swapped) becomes cov / FRAC of the inside pixel ri and the rest of the
+ * outside pixel ro, both of its column; a pixel of them nearer than lim
+ * hides the side there. */
+static void crossing(silk_aa *aa, int steep, int c, int r, int ri, int ro, uint32_t cov, uint32_t lim)
 {
     const silk_target *t = aa->t;
+    int x = steep ? r : c, y = steep ? c : r;
     if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
-    int here = 2 * cov > FRAC;   /* the rasterizer drew the surface here */
     uint32_t ci, co, di, dout;
-    if (!fetch(aa, here ? x : x + sx, here ? y : y + sy, &ci, &di) ||
-        !fetch(aa, here ? x - sx : x, here ? y - sy : y, &co, &dout))
+    if (!fetch(aa, steep ? ri : c, steep ? c : ri, &ci, &di) || !fetch(aa, steep ? ro : c, steep ? c : ro, &co, &dout))
         return;
     if (di > lim || dout > lim) return;   /* hidden here */
     uint32_t c8 = (cov * 255 + FRAC / 2) / FRAC;
     /* weights: the coverage, and whether a pixel holds anything (alpha plane only) */
     uint32_t ai = !t->alpha || di ? 255 : 0, ao = !t->alpha || dout ? 255 : 0;
-    uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = here ? ci : co;
+    uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = 2 * cov > FRAC ? ci : co;
     if (sum) {
         rgb = 0;
         for (int s = 16; s >= 0; s -= 8)
@@ -139,43 +154,81 @@ static void crossing(silk_aa *aa, int x, int y, int sx, int sy, uint32_t cov, ui
     p->argb = ((sum + 127) / 255) << 24 | rgb;
 }
 
+/* Where a through b crosses u = uc, in 1/FRAC pixels across (a.x <= uc < b.x). */
+static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
+{
+    return (int64_t)a->y * (FRAC / SILK_RASTER_SUB) +
+           floor_div((int64_t)(uc - a->x) * (b->y - a->y) * (FRAC / SILK_RASTER_SUB), b->x - a->x);
+}
+
 /* Walk side p-q, whose inside is the side of it `in` lies on; tol: how
- * far from the side's depth its surface may be seen (tolerance()). */
-static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol)
+ * far from the side's depth its surface may be seen (tolerance()).  The
+ * rasterizer drew the chord p-q; with mid (SUBDIV - 1 points from p to q)
+ * the outline is the curve through them, and the pixels between the two
+ * get the curve's coverage too, their colours from the drawn pixels next
+ * to the chord. */
+static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid)
 {
     int64_t cross = area2(&p, &q, in);
     if (!cross) return;
+    silk_aa_pt *k = aa->walk;
+    k[0] = p;
+    k[SUBDIV] = q;
+    for (int j = 1; mid && j < SUBDIV; j++) k[j] = mid[j - 1];
     /* u along the walk (x, or y when steep), v across; then p before q */
     int steep = absl(q.y - p.y) > absl(q.x - p.x);
-    if (steep) {
-        int32_t s = p.x;
-        p.x = p.y, p.y = s;
-        s = q.x, q.x = q.y, q.y = s;
-    }
+    if (steep)
+        for (int j = 0; j <= SUBDIV; j++) {
+            int32_t s = k[j].x;
+            k[j].x = k[j].y, k[j].y = s;
+        }
     /* the inside is towards +v when (cross > 0) == (u grows from p to q), the opposite walking y */
-    int dir = ((cross > 0) == (q.x > p.x)) != steep ? 1 : -1;
-    if (q.x < p.x) {
-        silk_aa_pt s = p;
-        p = q, q = s;
-    }
+    int dir = ((cross > 0) == (k[SUBDIV].x > k[0].x)) != steep ? 1 : -1;
+    if (k[SUBDIV].x < k[0].x)
+        for (int j = 0; j < SUBDIV / 2; j++) {
+            silk_aa_pt s = k[j];
+            k[j] = k[SUBDIV - j], k[SUBDIV - j] = s;
+        }
+    /* the curve is followed where it runs along u as the chord does */
+    for (int j = 0; mid && j < SUBDIV; j++)
+        if (k[j + 1].x < k[j].x) mid = NULL;
+    p = k[0];
+    q = k[SUBDIV];
     const silk_target *t = aa->t;
-    int32_t du = q.x - p.x, dv = q.y - p.y, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
+    int32_t du = q.x - p.x, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
     if (!du) return;
     int64_t lo = floor_div(p.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);   /* centres in [p.x, q.x) */
     int64_t hi = floor_div(q.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
     int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
     if (lo < ulo) lo = ulo;
     if (hi > uhi) hi = uhi;
+    int j = 0;
     for (int64_t c = lo; c < hi; c++) {
-        int32_t U = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2 - p.x;
-        int64_t ve = (int64_t)p.y * (FRAC / SILK_RASTER_SUB) + floor_div((int64_t)U * dv * (FRAC / SILK_RASTER_SUB), du);
-        int64_t r = floor_div(ve, FRAC), f = ve - r * FRAC;
-        /* covered: the part of the pixel on the inside */
-        uint32_t cov = (uint32_t)(dir > 0 ? FRAC - f : f);
+        int32_t uc = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2, U = uc - p.x;
+        /* the chord, as drawn: the pixel it leaves inside, and the one outside */
+        int64_t ve = cross_at(&p, &q, uc), rc = floor_div(ve, FRAC), fc = ve - rc * FRAC;
+        int here = 2 * (dir > 0 ? FRAC - fc : fc) > FRAC;
+        int64_t ri = here ? rc : rc + dir, ro = ri - dir;
+        /* the outline: where it crosses, and every pixel it covers otherwise than drawn */
+        int64_t vk = ve;
+        if (mid) {
+            while (k[j + 1].x <= uc) j++;
+            vk = cross_at(&k[j], &k[j + 1], uc);
+        }
+        int64_t rk = floor_div(vk, FRAC), fk = vk - rk * FRAC;
         int64_t lim = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du) + tol;
         uint32_t l32 = lim > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)lim;
-        if (steep) crossing(aa, (int)r, (int)c, dir, 0, cov, l32);
-        else crossing(aa, (int)c, (int)r, 0, dir, cov, l32);
+        /* The two pixels next to the chord: a pixel further out or in would
+         * take a colour from two rows away, past a band's apron, so where the
+         * curve crosses one it is left as drawn (bands equal the frame). */
+        for (int64_t r = ri < ro ? ri : ro, r1 = r + 1; r <= r1; r++) {
+            /* covered: the part of the pixel on the inside */
+            uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
+            /* within SNAP of empty or full: below what 1/16-pixel records place */
+            cov = cov < SNAP ? 0 : cov > FRAC - SNAP ? FRAC : cov;
+            if (cov == ((r - ri) * dir >= 0 ? FRAC : 0)) continue;   /* as drawn */
+            crossing(aa, steep, (int)c, (int)r, (int)ri, (int)ro, cov, l32);
+        }
     }
 }
 
@@ -193,10 +246,10 @@ static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa
     return (int64_t)(hi - lo) + hi / 64;
 }
 
-static void tri_side(silk_aa *aa, const silk_aa_pt *p, int k)
+/* Side a-b of a triangle a b c (walked when all three are placed). */
+static void tri_side(silk_aa *aa, const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c, const silk_aa_pt *mid)
 {
-    const silk_aa_pt *a = &p[k], *b = &p[(k + 1) % 3], *c = &p[(k + 2) % 3];
-    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c));
+    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c), mid);
 }
 
 /* silk_sil_tri_front, through aa->facing when there is one: the outline
@@ -236,6 +289,40 @@ static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
     return memcmp(&a->clip, &b->clip, sizeof a->clip) == 0;
 }
 
+/* Where a share's silhouette segment is: its curve among the share's
+ * curves, and the records of its ends A and B (the samples between are
+ * records on the curve itself). */
+typedef struct seg_at {
+    uint32_t curve, a, b;
+} seg_at;
+
+/* Record rec's parameter on the segment's curve; 0 if it is not on it. */
+static int seg_param(const seg_at *s, const silk_frame_geom *g, uint32_t rec, silk_fx *u)
+{
+    const silk_vrec *r = &g->vrec[rec];
+    if (rec == s->a || rec == s->b) *u = rec == s->a ? 0 : SILK_FX_ONE;
+    else if (r->kind == SILK_VREC_CURVE && r->a == s->curve) *u = r->t;
+    else return 0;
+    return 1;
+}
+
+/* The segment's curve between records ra and rb, SUBDIV - 1 points from
+ * ra's end, projected by the vertex stage; 0 where the side is not one of
+ * its chords. */
+static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, uint32_t ra, uint32_t rb,
+                      silk_aa_pt *mid)
+{
+    silk_fx ua, ub;
+    if (!s || !seg_param(s, g, ra, &ua) || !seg_param(s, g, rb, &ub) || ua == ub) return 0;
+    for (int j = 1; j < SUBDIV; j++) {
+        silk_vrec r = { SILK_VREC_CURVE, s->curve, 0, ua + (silk_fx)(((int64_t)ub - ua) * j / SUBDIV) };
+        aa->hal->vertex(aa->hal, aa->geom, &r, aa->out);
+        mid[j - 1] = point(aa->t, aa->out);
+        if (!mid[j - 1].ok) return 0;
+    }
+    return 1;
+}
+
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
                    const silk_vertex_out *out, uint32_t t)
 {
@@ -244,17 +331,24 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
     const uint32_t *tri = g->tri;
     if (g->ntri == 1) {
         /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
-        silk_aa_pt p[3] = { aa->pt[tri[0]], aa->pt[tri[1]], aa->pt[tri[2]] };
         int front = tri_front(aa, m, v, t);
         for (int k = 0; k < 3; k++)
-            if (coarse_outline(aa, m, v, t, k, front)) tri_side(aa, p, k);
+            if (coarse_outline(aa, m, v, t, k, front))
+                tri_side(aa, &aa->pt[tri[k]], &aa->pt[tri[(k + 1) % 3]], &aa->pt[tri[(k + 2) % 3]], NULL);
         return;
+    }
+    seg_at at, *seg = NULL;
+    uint32_t ends[2];
+    if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, ends, &at.curve)) {
+        at.a = ends[0];
+        at.b = ends[1];
+        seg = &at;
     }
     /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
     for (uint32_t i = 0; i < g->ntri; i++) {
         const uint32_t *ti = &tri[3 * i];
-        silk_aa_pt p[3] = { aa->pt[ti[0]], aa->pt[ti[1]], aa->pt[ti[2]] };
-        if (!p[0].ok || !p[1].ok || !p[2].ok || area2(&p[0], &p[1], &p[2]) <= 0) continue;
+        const silk_aa_pt *p0 = &aa->pt[ti[0]], *p1 = &aa->pt[ti[1]], *p2 = &aa->pt[ti[2]];
+        if (!p0->ok || !p1->ok || !p2->ok || area2(p0, p1, p2) <= 0) continue;
         for (int k = 0; k < 3; k++) {
             const silk_vertex_out *a = &out[ti[k]], *b = &out[ti[(k + 1) % 3]];
             int fold = 0;
@@ -263,12 +357,13 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                 for (int l = 0; l < 3 && !fold; l++) {
                     const silk_vertex_out *c = &out[tj[l]], *d = &out[tj[(l + 1) % 3]];
                     if (!((same_clip(a, d) && same_clip(b, c)) || (same_clip(a, c) && same_clip(b, d)))) continue;
-                    silk_aa_pt q0 = aa->pt[tj[0]], q1 = aa->pt[tj[1]], q2 = aa->pt[tj[2]];
-                    fold = j != i && area2(&q0, &q1, &q2) < 0;
+                    fold = j != i && area2(&aa->pt[tj[0]], &aa->pt[tj[1]], &aa->pt[tj[2]]) < 0;
                 }
             }
             if (!fold) continue;
-            tri_side(aa, p, k);
+            silk_aa_pt *mid = aa->walk + SUBDIV + 1;
+            tri_side(aa, &aa->pt[ti[k]], &aa->pt[ti[(k + 1) % 3]], &aa->pt[ti[(k + 2) % 3]],
+                     seg_points(aa, seg, g, ti[k], ti[(k + 1) % 3], mid) ? mid : NULL);
         }
     }
 }

@@ -12,6 +12,10 @@
 
 #include "plan.h"
 
+/* The curve between two samples is followed as SILK_AA_SUBDIV chords. */
+#define SILK_AA_SUBDIV 4
+#define SILK_AA_WALK (2 * SILK_AA_SUBDIV)   /* its SILK_AA_SUBDIV + 1 points, and the SILK_AA_SUBDIV - 1 between */
+
 /* One outline pixel's new value, computed from the band as drawn and
  * written only when every outline has been walked. */
 typedef struct silk_aa_px {
@@ -30,6 +34,14 @@ typedef struct silk_aa {
     silk_target *t;               /* the band */
     silk_target apron[2];         /* the rows just above and below it, as drawn (rows 0: none) */
     silk_aa_pt *pt;   uint32_t npt;   /* per record of one share */
+    silk_aa_pt *walk;             /* scratch for one side: the points of the curve walked (SILK_AA_WALK) */
+    silk_vertex_out *out;         /* scratch: one point of a curve through the vertex stage */
+    /* SMOOTH frames (set by the caller after silk_aa_begin; sil NULL otherwise): the
+     * plan, which says where a share's silhouette segment is, and the vertex stage
+     * h with the frame's geom, which projects points of its curve */
+    const silk_sil_frame *sil;
+    const silk_hal *hal;
+    const silk_geom *geom;
     silk_aa_px *px;   uint32_t npx, cap;
     uint32_t dropped;             /* outline pixels left aliased: no room in px */
     /* Which way the frame's input triangles face, 2 bits each (known,
@@ -54,7 +66,8 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
  * output per record), walked over the band: a share that is t as it is
  * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate; a
  * re-meshed share along every side its triangles share facing opposite
- * ways on screen. */
+ * ways on screen, its coverage from the silhouette segment's curve (eq. 5)
+ * where the side is a chord of it. */
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
                    const silk_vertex_out *out, uint32_t t);
 

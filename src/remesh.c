@@ -524,6 +524,26 @@ void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, ui
     rec[2] = silk_remesh_corner_rec(f, t, (lone + 2) % 3, base) + 1 + side_points(f, t, (lone + 2) % 3);
 }
 
+int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[2], uint32_t *curve)
+{
+    /* what silk_remesh_seg needs before it builds anything: both silhouette points */
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
+    for (uint32_t k = lone; k <= lone + 2; k += 2) {
+        const silk_sil_edge *e = edge_at(f, t, k % 3);
+        silk_sil_side s;
+        if (!e) return 0;
+        silk_sil_side_attrs(f->m, t, k % 3, &f->m->edge[e->edge], &s);
+        if (!side_pair(f, e, &s)) return 0;
+    }
+    uint32_t r[3];
+    silk_remesh_seg_recs(f, t, 0, r);
+    rec[0] = r[0];
+    rec[1] = r[1];
+    *curve = 0;
+    for (uint32_t k = 0; k < 3; k++) *curve += side_points(f, t, k) > 0;   /* walk_side: a curve per side with points */
+    return 1;
+}
+
 void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats)
 {
     if (!stats) return;

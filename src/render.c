@@ -605,9 +605,12 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.facing = f->facing;
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
+    aa.sil = f->smooth ? &f->sil : NULL;
+    aa.hal = f->hal;
+    aa.geom = &f->geom;
     for (uint32_t k = 0; k < f->nparts; k++) {
         if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
-        if (!silk_aa_candidate(&aa, f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
+        if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }

@@ -14,22 +14,16 @@
  * pixels are not 0 or 255 as the exact coverage says; for smooth and flat,
  * anti-aliasing on and off, and smooth at a finer sampling tolerance.
  *
- * The coarse mesh's outline is not the analytic one.  Smooth mode draws
- * the silhouette segments as chords between their samples, within the
- * sampling tolerance (eq. 8, 0.5 px by default) of the curve, which runs
- * within a fraction of a pixel of the true sphere; the chords lie inside,
- * so the drawn outline is biased inwards by about a tenth of a pixel, and
- * a pixel's coverage is off by as much as its outline is.  So what is
- * checked is what anti-aliasing itself owes, against the exact coverage of
- * the surface silk draws (the same frame drawn SS x SS times larger with
- * the same samples and without anti-aliasing, covered sub-pixels
- * counted): mean error <= MEAN_BOUND over all views, no pixel off by more
- * than MAX_DRAWN.  Against the analytic surface, anti-aliasing must bring
- * the mean error well below what it is without, leave no edge pixel off
- * by more than it is without (where the drawn outline is a pixel off the
- * true one, no coverage from it can be right) and no whole pixel off by
- * more than MAX_BOUND; the MEAN_BOUND / MAX_BOUND of edge pixels there is
- * printed, not checked.
+ * Checked for smooth mode with anti-aliasing, against the analytic
+ * surface: mean error <= MEAN_BOUND over all views; no whole pixel off by
+ * more than MAX_BOUND; and no edge pixel off by more than it is without
+ * anti-aliasing (plus 0.01).  That last is not MAX_BOUND: where a
+ * silhouette triangle's segment does not fold on screen (its two parts
+ * face the same way), the drawn outline there is a side along the mesh
+ * edge, up to a pixel off the curve, and no coverage from the outline as
+ * drawn can be right; how many edge pixels are off by more than MAX_BOUND
+ * is printed.  Flat mode, --aa off and a finer sampling tolerance are
+ * printed for comparison.
  */
 #include <math.h>
 #include <stdint.h>
@@ -48,12 +42,10 @@
 #define H 256
 #define SUBS 16
 #define MEAN_BOUND 0.08
-#define MAX_BOUND 0.5           /* printed against the analytic surface */
-#define MAX_DRAWN 0.6
-#define SS 8                     /* silk's own supersampled reference: SS x SS per pixel */
+#define MAX_BOUND 0.5
 
 typedef struct aa_stats {
-    long edge, whole, whole_wrong;   /* pixels: exact coverage in (0, 1); 0 or 1; those not 0/255 as it says */
+    long edge, edge_far, whole, whole_wrong;   /* pixels: exact coverage in (0, 1), those off by > MAX_BOUND; 0 or 1; those not 0/255 as it says */
     double sum, bias, max, whole_max; /* |alpha - coverage| (and signed) over edge pixels; over the wrong whole ones */
 } aa_stats;
 
@@ -103,41 +95,6 @@ static int draw_alpha(tm_fixture *f, const silk_view *v, silk_mode mode, int aa,
     return silk_render(&f->a, &f->m, v, &hal, &o, &t, &st, &err) == SILK_OK && !st.fell_back;
 }
 
-/* The coverage of the surface silk draws, 0 .. 256: the frame SS times
- * larger without anti-aliasing, covered sub-pixels counted. */
-static int drawn_coverage(tm_fixture *f, const silk_view *v, silk_mode mode, uint16_t *cov)
-{
-    static uint8_t rgb[W * SS * H * SS * 3];
-    static uint32_t depth[W * SS * H * SS];
-    silk_camera cam = v->cam;
-    cam.width = W * SS;
-    cam.height = H * SS;
-    silk_view big;
-    silk_error err;
-    if (silk_view_init(&big, &cam, &err) != SILK_OK) return 0;
-    silk_phong ph;
-    silk_hal hal;
-    silk_phong_default(&ph, &big);
-    silk_hal_phong(&hal, &ph);
-    silk_render_opts o;
-    silk_render_opts_default(&o);
-    o.mode = mode;
-    o.aa = 0;
-    o.tolerance_px *= SS;   /* the same samples as at W x H (eq. 8 scales with the tolerance) */
-    silk_target t;
-    silk_target_init(&t, W * SS, H * SS, 0, H * SS, SILK_PIX_RGB888, rgb, depth);
-    silk_frame_stats st;
-    if (silk_render(&f->a, &f->m, &big, &hal, &o, &t, &st, &err) != SILK_OK || st.fell_back) return 0;
-    for (int y = 0; y < H; y++)
-        for (int x = 0; x < W; x++) {
-            int n = 0;
-            for (int j = 0; j < SS; j++)
-                for (int i = 0; i < SS; i++) n += depth[(size_t)(y * SS + j) * W * SS + (size_t)(x * SS + i)] != 0;
-            cov[y * W + x] = (uint16_t)(n * (SUBS * SUBS) / (SS * SS));
-        }
-    return 1;
-}
-
 static void compare(const uint16_t *cov, const uint8_t *alpha, aa_stats *s)
 {
     for (int i = 0; i < W * H; i++) {
@@ -147,6 +104,7 @@ static void compare(const uint16_t *cov, const uint8_t *alpha, aa_stats *s)
             s->sum += e;
             s->bias += alpha[i] / 255.0 - c;
             if (e > s->max) s->max = e;
+            s->edge_far += e > MAX_BOUND;
         } else {
             s->whole++;
             if (alpha[i] != (cov[i] ? 255 : 0)) {
@@ -159,15 +117,15 @@ static void compare(const uint16_t *cov, const uint8_t *alpha, aa_stats *s)
 
 static void report(const char *what, const aa_stats *s)
 {
-    printf("  %-26s edge pixels %5ld: mean error %.4f (signed %+.4f), max %.3f; whole pixels: %ld not 0/255 as "
-           "exact (max error %.3f)\n",
-           what, s->edge, s->edge ? s->sum / s->edge : 0, s->edge ? s->bias / s->edge : 0, s->max, s->whole_wrong,
-           s->whole_max);
+    printf("  %-26s edge pixels %5ld: mean error %.4f (signed %+.4f), max %.3f, %ld off by > %.1f; whole pixels: "
+           "%ld not 0/255 as exact (max error %.3f)\n",
+           what, s->edge, s->edge ? s->sum / s->edge : 0, s->edge ? s->bias / s->edge : 0, s->max, s->edge_far,
+           MAX_BOUND, s->whole_wrong, s->whole_max);
 }
 
 TEST(alpha_is_coverage)
 {
-    static uint16_t cov[W * H], drawn[W * H];
+    static uint16_t cov[W * H];
     static uint8_t alpha[W * H];
     const double dirs[][3] = { { 0.3, 0.4, 1 }, { 1, 0.1, 0.2 }, { -0.5, 1, 0.6 }, { 0.1, -0.3, -1 } };
     const gen_shape shapes[] = { GEN_SPHERE, GEN_TORUS };
@@ -183,10 +141,9 @@ TEST(alpha_is_coverage)
         }
         const char *name = gen_shape_name(shapes[k]);
         es_shape exact = shapes[k] == GEN_SPHERE ? es_sphere(0, 0, 0, 1) : es_torus(0, 0, 0, 0, 1, 0, 1.0, 0.4);
-        /* [mode][aa]: against the analytic surface; against the drawn one */
-        aa_stats an[2][2], dr[2][2], fine = { 0 };
+        /* [mode][aa] */
+        aa_stats an[2][2], fine = { 0 };
         memset(an, 0, sizeof an);
-        memset(dr, 0, sizeof dr);
         for (size_t d = 0; d < ndirs; d++)
             for (int ortho = 0; ortho < 2; ortho++) {
                 silk_view v;
@@ -199,11 +156,9 @@ TEST(alpha_is_coverage)
                 compare(cov, alpha, &fine);
                 for (int smooth = 0; smooth < 2; smooth++) {
                     silk_mode mode = smooth ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
-                    CHECK(drawn_coverage(&f, &v, mode, drawn));
                     for (int aa = 0; aa < 2; aa++) {
                         CHECK(draw_alpha(&f, &v, mode, aa, 0, alpha));
                         compare(cov, alpha, &an[smooth][aa]);
-                        compare(drawn, alpha, &dr[smooth][aa]);
                     }
                 }
             }
@@ -213,19 +168,9 @@ TEST(alpha_is_coverage)
         for (int m = 1; m >= 0; m--)
             for (int aa = 1; aa >= 0; aa--) report(what[m][aa], &an[m][aa]);
         report("smooth, aa on, tol 0.25 px", &fine);
-        printf("%s, alpha against the drawn surface (the frame drawn %dx%d larger):\n", name, SS, SS);
-        for (int m = 1; m >= 0; m--)
-            for (int aa = 1; aa >= 0; aa--) report(what[m][aa], &dr[m][aa]);
-        for (int m = 0; m < 2; m++) {
-            const aa_stats *s = &dr[m][1];
-            CHECKF(s->sum / s->edge <= MEAN_BOUND, "%s %s: mean error %.4f against the drawn surface", name,
-                   what[m][1], s->sum / s->edge);
-            CHECKF(s->max <= MAX_DRAWN && s->whole_max <= MAX_DRAWN, "%s %s: a pixel is off by %.3f / %.3f from "
-                   "the drawn surface", name, what[m][1], s->max, s->whole_max);
-        }
         const aa_stats *on = &an[1][1], *off = &an[1][0];
-        CHECKF(on->sum / on->edge < 0.6 * off->sum / off->edge, "%s smooth: mean error %.4f with aa, %.4f without",
-               name, on->sum / on->edge, off->sum / off->edge);
+        CHECKF(on->sum / on->edge <= MEAN_BOUND, "%s smooth: mean error %.4f with aa (%.4f without)", name,
+               on->sum / on->edge, off->sum / off->edge);
         CHECKF(on->max <= off->max + 0.01 && on->whole_max <= MAX_BOUND, "%s smooth: a pixel is off by %.3f / %.3f "
                "(%.3f without anti-aliasing)", name, on->max, on->whole_max, off->max);
         tm_fixture_free(&f);

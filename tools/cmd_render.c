@@ -85,6 +85,13 @@ static void blit(const silk_target *src, uint8_t *dst, size_t dst_stride, int x0
                (size_t)src->width * bpp);
 }
 
+/* One line when the arena left outline pixels without anti-aliasing
+ * (silk_frame_stats.aa_aliased). */
+static void aliased_warning(void)
+{
+    fprintf(stderr, "silk: warning: the arena ran short for anti-aliasing; part of the outline is left aliased\n");
+}
+
 /* --ssaa: the n x n blocks of big (the scene drawn n times larger) averaged
  * into small; with alpha (--bg none) each block's colour is the mean of
  * its covered samples and its alpha their share. */
@@ -136,6 +143,7 @@ static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt,
         silk_error err;
         silk_frame_stats stats;
         int fell_back = 0;
+        uint32_t aliased = 0;
         uint8_t *wide = NULL;
         size_t bpp = silk_pixfmt_bytes(o->fmt), wide_stride = 2 * (size_t)o->width * bpp;
         silk_render_opts ro = o->render;
@@ -148,6 +156,7 @@ static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt,
                 return cli_fail(CLI_EXIT_INPUT, "%s: %s", cli_input_name(o->mesh_path), err.msg);
             }
             fell_back |= stats.fell_back;
+            aliased += stats.aa_aliased;
             if (compare) {
                 if (!wide && !(wide = malloc(wide_stride * (size_t)o->height))) {
                     cli_scene_free(&s);
@@ -185,6 +194,8 @@ static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt,
         if (wrc) return wrc;
         if (fell_back)
             fprintf(stderr, "silk: warning: the arena ran out during the frame; part of it is not smoothed\n");
+        else if (aliased)
+            aliased_warning();
         return 0;
     }
 }
@@ -323,7 +334,7 @@ static void magnify(const silk_target *frame, int n, silk_target *big)
 /* Render every view and mode of the series from the loaded scene s: into
  * one sheet, or each frame into its own file (*written counts them). */
 static int series_frames(const cli_scene_opts *o, const char *out, silk_image_format out_fmt, const series *se,
-                         cli_scene *s, int *fell_back, int *written)
+                         cli_scene *s, int *fell_back, uint32_t *aliased, int *written)
 {
     int nmodes = se->nmodes ? se->nmodes : 1, cols, rows, rc = 0;
     if (nmodes > 1) {
@@ -378,6 +389,7 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
                 break;
             }
             *fell_back |= st.fell_back;
+            *aliased += st.aa_aliased;
             if (se->sheet) {
                 char label[160];
                 cell_label(se, &ro, &st, k, label, sizeof label);
@@ -414,7 +426,8 @@ static int render_series(cli_scene_opts *o, const char *out, silk_image_format o
         o->arena_doublings = attempt;
         int rc = cli_scene_load(&s, o);
         int fell_back = 0, written = 0;
-        if (!rc) rc = series_frames(o, out, out_fmt, se, &s, &fell_back, &written);
+        uint32_t aliased = 0;
+        if (!rc) rc = series_frames(o, out, out_fmt, se, &s, &fell_back, &aliased, &written);
         cli_scene_free(&s);
         /* As in render(): a frame that ran out of scratch means a larger
          * arena and the whole series again. */
@@ -426,6 +439,8 @@ static int render_series(cli_scene_opts *o, const char *out, silk_image_format o
         }
         if (!rc && fell_back)
             fprintf(stderr, "silk: warning: the arena ran out during a frame; part of it is not smoothed\n");
+        else if (!rc && aliased)
+            aliased_warning();
         return rc;
     }
 }
