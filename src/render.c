@@ -103,7 +103,8 @@ typedef struct frame {
     int smooth;
     silk_stage_clock *clock;  /* per-stage timing, or NULL */
     silk_sil_frame sil;       /* SMOOTH: the plan */
-    uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
+    uint8_t *rows;            /* per part: first and last row it can reach, in units of row_unit, or NULL */
+    int row_unit;             /* rows a unit of rows[] spans (share_rows) */
     silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
     /* The vertex cache of a frame drawn share by share (vertex_cache),
      * or NULL: slot s holds the vertex stage's output for the corner
@@ -270,11 +271,17 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
  * the screen triangles of its share's records, so between their highest and
  * lowest row; one row more on each side covers the rasterizer's rounding to
  * subpixels.  A record behind the eye plane (w <= 0) may reach anywhere.
- * f->rows is 2 per input triangle, or NULL: without room for the rows every
- * band rebuilds every triangle: slower, the same pixels. */
+ * f->rows is 2 bytes per input triangle, or NULL: without room for the rows
+ * every band rebuilds every triangle: slower, the same pixels.  A byte
+ * counts units of f->row_unit rows, the fewest that number a frame's rows
+ * below 255 (one row up to 254 rows high, so on a small display the rows
+ * are exact); the first and last unit are rounded outwards, so a band may
+ * rebuild a triangle it does not need, never miss one.  The pair 255, 0
+ * reaches no row. */
 static void share_rows(frame *f, int height)
 {
     uint32_t n = f->geom.mesh->ntris;
+    f->row_unit = height / 255 + 1;   /* 255 units more than the height: 255, 0 is past every band */
     for (uint32_t t = 0; f->rows && t < n; t++) {
         share_part(f, t);
         int64_t lo = height, hi = -1;
@@ -291,9 +298,17 @@ static void share_rows(frame *f, int height)
         }
         if (lo < 0) lo = 0;
         if (hi > height - 1) hi = height - 1;
-        f->rows[2 * t] = lo <= hi ? (uint16_t)lo : UINT16_MAX;   /* never reached: no band takes it */
-        f->rows[2 * t + 1] = lo <= hi ? (uint16_t)hi : 0;
+        f->rows[2 * t] = lo <= hi ? (uint8_t)(lo / f->row_unit) : UINT8_MAX;   /* never reached: no band takes it */
+        f->rows[2 * t + 1] = lo <= hi ? (uint8_t)(hi / f->row_unit) : 0;
     }
+}
+
+/* Whether part k can reach no row of y0 .. y1 (share_rows). */
+static int part_misses(const frame *f, uint32_t k, int y0, int y1)
+{
+    if (!f->rows) return 0;
+    int u = f->row_unit;
+    return f->rows[2 * k] * u > y1 || f->rows[2 * k + 1] * u + u - 1 < y0;
 }
 
 #ifndef STREAMED_ONLY
@@ -518,7 +533,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
-            if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
+            if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
             f->part(f, k);
             t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
             t0 = silk_stage_start(f->clock);
@@ -580,7 +595,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
     for (uint32_t k = 0; k < f->nparts; k++) {
-        if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
+        if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
         if (!silk_aa_candidate(f->geom.mesh, v, f->smooth ? &f->sil : NULL, k)) continue;
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
