@@ -73,7 +73,7 @@ typedef struct silk_sil_side {
  * SILK_SIL_SIDES_MAX makes the plan fail, and the frame falls back), the
  * frame's points and parameters are counted in silk_index (more of them
  * than the index type holds fails the same way) and nfeat is at most
- * SILK_MAX_SAMPLES: 16 bytes an edge with 16-bit indices, 24 with 32-bit. */
+ * SILK_MAX_SAMPLES: 14 bytes an edge with 16-bit indices, 20 with 32-bit. */
 typedef struct silk_sil_edge {
     silk_index pair0;        /* its silhouette points: pairs[pair0 .. pair0 + npairs) */
     silk_index chain0;       /* its interior parameters, ascending, distinct: chain[chain0 .. chain0 + nchain) */
@@ -81,8 +81,8 @@ typedef struct silk_sil_edge {
     uint16_t npairs, nchain;
     uint16_t nsides;         /* triangle sides on this edge */
     uint8_t nfeat;           /* feature sampling intervals (0: not sampled) */
-    uint8_t is_feature;
-    uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
+    _Bool is_feature : 1;
+    _Bool sampled : 1;       /* a visible feature edge: sampled by eq. 8 */
 } silk_sil_edge;
 
 /* The most sides one carrying edge may have: its chain (nfeat - 1 samples
@@ -119,6 +119,7 @@ typedef struct silk_sil_frame {
     silk_sil_edge *edges;  uint32_t nedges;   /* in mesh edge order */
     uint32_t side_tri1;      /* memo of silk_sil_side_edge: the triangle + 1 (0: none) */
     silk_sil_edge *side_edge[3];
+    silk_vec3 *tan_kept;     /* 2 per carrying edge (silk_sil_keep_tangents), or NULL */
     /* memo of silk_sil_edge_curve: the tangents of the last few edges asked for */
     const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
     silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
@@ -157,10 +158,15 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t);
  * mesh. */
 void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s);
 /* The curve of edge e: its vertices, its tangents; normals and uvs zero.
- * The tangents are computed (a bridge, or the feature segment's), the last
- * few kept in the frame's memo; the plan changes nothing they depend on
- * once silk_sil_find has filled the points. */
+ * The tangents are read from tan_kept, else computed (a bridge, or the
+ * feature segment's) and the last few kept in the frame's memo; the plan
+ * changes nothing they depend on once silk_sil_find has filled the points. */
 void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c);
+/* The tangents of every carrying edge into the arena, when there is room
+ * (room: the most it may take), so that silk_sil_edge_curve reads them
+ * instead of making them: the same bits, faster.  Returns the bytes taken
+ * (0: none). */
+size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room);
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,

@@ -113,6 +113,7 @@ typedef struct frame {
     uint32_t *vc_tag;
     uint32_t vc_mask;
     size_t vc_bytes;          /* the arena it takes */
+    size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
     int cull;                 /* back faces cannot show (back_faces_hidden) */
     int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
 } frame;
@@ -265,6 +266,17 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     memset(f->vc_tag, 0xFF, 3 * (size_t)n * sizeof *f->vc_tag);   /* empty: no normal index is UINT32_MAX */
     f->vc_bytes = free0 - silk_arena_free_bytes(a);
     f->vc_mask = n - 1;
+}
+
+/* SMOOTH: every carrying edge's tangents kept (silk_sil_keep_tangents)
+ * from at most half of the arena left once the frame has what it needs
+ * and its vertex cache: 24 bytes an edge (a few KiB) that spare remaking a
+ * bridge whenever an edge's curve is asked for, about a tenth of a
+ * smooth frame's instructions.  Not part of the frame's need either: a
+ * part without the room computes the same tangents. */
+static void keep_tangents(frame *f, silk_arena *a)
+{
+    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, silk_arena_free_bytes(a) / 2);
 }
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
@@ -634,11 +646,13 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
+        keep_tangents(&f, a);
         frame_draw(&f, o, t);
         frame_aa(&f, a, v, o, t, stats);
         if (f.clip) stats->clip_spans = f.clip->spans;
     }
-    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes;   /* the vertex cache not counted (vertex_cache) */
+    /* the vertex cache and the kept tangents not counted (vertex_cache, keep_tangents) */
+    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes - f.tan_bytes;
     silk_arena_top_release(a, &mark);
     return st;
 }
@@ -664,6 +678,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
+        keep_tangents(&f, a);
         share_rows(&f, band->height);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
@@ -677,7 +692,8 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
-    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes;   /* the vertex cache not counted (vertex_cache) */
+    /* the vertex cache and the kept tangents not counted (vertex_cache, keep_tangents) */
+    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes - f.tan_bytes;
     silk_arena_top_release(a, &mark);
     return st;
 }

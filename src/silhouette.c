@@ -120,21 +120,38 @@ static void edge_tangents(const silk_sil_frame *f, const silk_sil_edge *w, silk_
 
 void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c)
 {
-    silk_sil_frame *memo = (silk_sil_frame *)f;
-    uint32_t i = 0;
-    while (i < SILK_SIL_TAN_MEMO && f->tan_edge[i] != e) i++;
-    if (i == SILK_SIL_TAN_MEMO) {
-        i = memo->tan_next;
-        memo->tan_next = (i + 1) % SILK_SIL_TAN_MEMO;
-        memo->tan_edge[i] = e;
-        edge_tangents(f, e, memo->tan[i]);
+    const silk_vec3 *t;
+    if (f->tan_kept) {
+        t = &f->tan_kept[2 * (size_t)(e - f->edges)];
+    } else {
+        silk_sil_frame *memo = (silk_sil_frame *)f;
+        uint32_t i = 0;
+        while (i < SILK_SIL_TAN_MEMO && f->tan_edge[i] != e) i++;
+        if (i == SILK_SIL_TAN_MEMO) {
+            i = memo->tan_next;
+            memo->tan_next = (i + 1) % SILK_SIL_TAN_MEMO;
+            memo->tan_edge[i] = e;
+            edge_tangents(f, e, memo->tan[i]);
+        }
+        t = f->tan[i];
     }
     const silk_edge *me = &f->m->edge[e->edge];
     memset(c, 0, sizeof *c);
     c->p0 = f->m->pos[me->v[0]];
     c->p1 = f->m->pos[me->v[1]];
-    c->t0 = f->tan[i][0];
-    c->t1 = f->tan[i][1];
+    c->t0 = t[0];
+    c->t1 = t[1];
+}
+
+size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
+{
+    size_t free0 = silk_arena_free_bytes(f->a), need = 2 * (size_t)f->nedges * sizeof *f->tan_kept;
+    if (f->tan_kept || !f->nedges || need + SILK_ARENA_ALIGN > room) return 0;
+    silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)f->nedges, sizeof *t, SILK_MEM_FRAME);
+    if (!t) return 0;
+    for (uint32_t w = 0; w < f->nedges; w++) edge_tangents(f, &f->edges[w], &t[2 * w]);
+    f->tan_kept = t;
+    return free0 - silk_arena_free_bytes(f->a);
 }
 
 /* Eq. 8 reads n_s = ceil(sqrt(h r / e) / 2) with r = sin(alpha/2).  For a
