@@ -269,14 +269,21 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 }
 
 /* SMOOTH: every carrying edge's tangents kept (silk_sil_keep_tangents)
- * from at most half of the arena left once the frame has what it needs
- * and its vertex cache: 24 bytes an edge (a few KiB) that spare remaking a
- * bridge whenever an edge's curve is asked for, about a tenth of a
- * smooth frame's instructions.  Not part of the frame's need either: a
- * part without the room computes the same tangents. */
-static void keep_tangents(frame *f, silk_arena *a)
+ * from the arena left once the frame has what it needs and its vertex
+ * cache (half of it when anti-aliased outlines take their scratch per band
+ * after it): 24 bytes an edge (a few KiB) that spare remaking a bridge
+ * whenever an edge's curve is asked for, a tenth to a sixth of a smooth
+ * frame's instructions.  Not part of the frame's need either: a part
+ * without the room computes the same tangents. */
+static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
 {
-    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, silk_arena_free_bytes(a) / 2);
+    size_t room = silk_arena_free_bytes(a);
+#ifndef SILK_NO_AA
+    if (o->aa && !o->wire) room /= 2;
+#else
+    (void)o;
+#endif
+    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
 }
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
@@ -646,7 +653,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
-        keep_tangents(&f, a);
+        keep_tangents(&f, a, o);
         frame_draw(&f, o, t);
         frame_aa(&f, a, v, o, t, stats);
         if (f.clip) stats->clip_spans = f.clip->spans;
@@ -678,7 +685,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     if (st == SILK_OK) {
         f.cull = back_faces_hidden(&f, m, h, o);
         vertex_cache(&f, a, o);
-        keep_tangents(&f, a);
+        keep_tangents(&f, a, o);
         share_rows(&f, band->height);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
