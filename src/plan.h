@@ -119,7 +119,8 @@ typedef struct silk_sil_frame {
     silk_sil_edge *edges;  uint32_t nedges;   /* in mesh edge order */
     uint32_t side_tri1;      /* memo of silk_sil_side_edge: the triangle + 1 (0: none) */
     silk_sil_edge *side_edge[3];
-    silk_vec3 *tan_kept;     /* 2 per carrying edge (silk_sil_keep_tangents), or NULL */
+    silk_vec3 *tan_kept;     /* 2 per carrying edge of the first ntan_kept (silk_sil_keep_tangents) */
+    uint32_t ntan_kept;
     /* memo of silk_sil_edge_curve: the tangents of the last few edges asked for */
     const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
     silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
@@ -158,14 +159,14 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t);
  * mesh. */
 void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s);
 /* The curve of edge e: its vertices, its tangents; normals and uvs zero.
- * The tangents are read from tan_kept, else computed (a bridge, or the
+ * The tangents are read from tan_kept where kept, else computed (a bridge, or the
  * feature segment's) and the last few kept in the frame's memo; the plan
  * changes nothing they depend on once silk_sil_find has filled the points. */
 void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c);
-/* The tangents of every carrying edge into the arena, when there is room
- * (room: the most it may take), so that silk_sil_edge_curve reads them
- * instead of making them: the same bits, faster.  Returns the bytes taken
- * (0: none). */
+/* The tangents of the carrying edges into the arena, as many as room (the
+ * most it may take) holds, so that silk_sil_edge_curve reads them instead
+ * of making them: the same bits, faster.  Returns the bytes taken (0:
+ * none). */
 size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room);
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */

@@ -268,13 +268,13 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     f->vc_mask = n - 1;
 }
 
-/* SMOOTH: every carrying edge's tangents kept (silk_sil_keep_tangents)
- * from the arena left once the frame has what it needs and its vertex
- * cache (half of it when anti-aliased outlines take their scratch per band
- * after it): 24 bytes an edge (a few KiB) that spare remaking a bridge
- * whenever an edge's curve is asked for, a tenth to a sixth of a smooth
- * frame's instructions.  Not part of the frame's need either: a part
- * without the room computes the same tangents. */
+/* SMOOTH: the carrying edges' tangents kept (silk_sil_keep_tangents), as
+ * many as fit the arena left once the frame has what it needs and its
+ * vertex cache (half of it when anti-aliased outlines take their scratch
+ * per band after it): 24 bytes an edge (a few KiB for all) that spare
+ * remaking a bridge whenever an edge's curve is asked for, a tenth to a
+ * sixth of a smooth frame's instructions.  Not part of the frame's need
+ * either: a part without the room computes the same tangents. */
 static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
 {
     size_t room = silk_arena_free_bytes(a);

@@ -121,8 +121,9 @@ static void edge_tangents(const silk_sil_frame *f, const silk_sil_edge *w, silk_
 void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c)
 {
     const silk_vec3 *t;
-    if (f->tan_kept) {
-        t = &f->tan_kept[2 * (size_t)(e - f->edges)];
+    uint32_t w = (uint32_t)(e - f->edges);
+    if (w < f->ntan_kept) {
+        t = &f->tan_kept[2 * (size_t)w];
     } else {
         silk_sil_frame *memo = (silk_sil_frame *)f;
         uint32_t i = 0;
@@ -145,12 +146,15 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 
 size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
 {
-    size_t free0 = silk_arena_free_bytes(f->a), need = 2 * (size_t)f->nedges * sizeof *f->tan_kept;
-    if (f->tan_kept || !f->nedges || need + SILK_ARENA_ALIGN > room) return 0;
-    silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)f->nedges, sizeof *t, SILK_MEM_FRAME);
+    size_t free0 = silk_arena_free_bytes(f->a), each = 2 * sizeof *f->tan_kept;
+    uint32_t n = room > SILK_ARENA_ALIGN ? (uint32_t)((room - SILK_ARENA_ALIGN) / each < f->nedges
+                                                      ? (room - SILK_ARENA_ALIGN) / each : f->nedges) : 0;
+    if (f->tan_kept || n == 0) return 0;
+    silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
     if (!t) return 0;
-    for (uint32_t w = 0; w < f->nedges; w++) edge_tangents(f, &f->edges[w], &t[2 * w]);
+    for (uint32_t w = 0; w < n; w++) edge_tangents(f, &f->edges[w], &t[2 * w]);
     f->tan_kept = t;
+    f->ntan_kept = n;
     return free0 - silk_arena_free_bytes(f->a);
 }
 
