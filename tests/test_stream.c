@@ -306,6 +306,17 @@ TEST(pixels_are_the_stored_frame)
     CHECKF(band_differ == 0, "%u streamed frames in %d-row bands differ from the stored frame", band_differ, ROWS);
 }
 
+/* A perspective view from (yaw, pitch) at distance 3, lit by the default
+ * Phong HAL. */
+static int lit_view(const silk_mesh *m, double yaw, double pitch, int w, int h, silk_view *v, silk_phong *ph,
+                    silk_hal *hal)
+{
+    if (!make_view(m, yaw, pitch, 3, 0, w, h, v)) return 0;
+    silk_phong_default(ph, v);
+    silk_hal_phong(hal, ph);
+    return 1;
+}
+
 /* The edge tangents a frame keeps where the arena has room (render.c,
  * keep_tangents): none, some or all of them, the same pixels and the same
  * need.  The arena's free space is cut to the frame's need plus a margin
@@ -319,11 +330,9 @@ TEST(kept_tangents_change_no_pixel)
     silk_mesh m;
     if (!load(&a, "bunny-500.obj", NULL, &m)) { CHECK(0); return; }
     silk_view v;
-    if (!make_view(&m, 130, -35, 3, 0, W, H, &v)) { CHECK(0); return; }
     silk_phong ph;
     silk_hal hal;
-    silk_phong_default(&ph, &v);
-    silk_hal_phong(&hal, &ph);
+    if (!lit_view(&m, 130, -35, W, H, &v, &ph, &hal)) { CHECK(0); return; }
     silk_render_opts o;
     silk_render_opts_default(&o);
     o.aa = 0;
@@ -382,11 +391,9 @@ TEST(smooth_frame_fits_a_64k_part)
         uint32_t fell = 0, tris = 0;
         for (int i = 0; i < 16; i++) {
             silk_view v;
-            if (!make_view(&m, 22.5 * i, i & 1 ? -25 : 25, 3, 0, W, H, &v)) { CHECK(0); continue; }
             silk_phong ph;
             silk_hal hal;
-            silk_phong_default(&ph, &v);
-            silk_hal_phong(&hal, &ph);
+            if (!lit_view(&m, 22.5 * i, i & 1 ? -25 : 25, W, H, &v, &ph, &hal)) { CHECK(0); continue; }
             silk_render_opts o;
             silk_render_opts_default(&o);
             silk_target band;
