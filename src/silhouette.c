@@ -92,10 +92,11 @@ uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u)
 /* The curve every point on edge w lies on: the feature segment of a feature
  * edge (a straight one if it has none), else the silhouette bridge built from
  * the normals of the first silhouette point found on it.  Either way it ends
- * exactly on the vertices.  Made whenever it is asked for (a bridge is a
- * few hundred instructions; 24 bytes an edge kept would be the plan's
- * largest part), the tangents of the last few edges kept in the frame's
- * memo: emitting one triangle asks for each of its sides several times. */
+ * exactly on the vertices.  Made whenever it is asked for, unless kept
+ * (silk_sil_keep_tangents: 24 bytes an edge would otherwise be the plan's
+ * largest part; a bridge is about 4 000 instructions on a Cortex-M3), the
+ * tangents of the last few edges kept in the frame's memo: emitting one
+ * triangle asks for each of its sides several times. */
 static void edge_tangents(const silk_sil_frame *f, const silk_sil_edge *w, silk_vec3 t[2])
 {
     const silk_mesh *m = f->m;
@@ -146,9 +147,9 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 
 size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
 {
-    size_t free0 = silk_arena_free_bytes(f->a), each = 2 * sizeof *f->tan_kept;
-    uint32_t n = room > SILK_ARENA_ALIGN ? (uint32_t)((room - SILK_ARENA_ALIGN) / each < f->nedges
-                                                      ? (room - SILK_ARENA_ALIGN) / each : f->nedges) : 0;
+    size_t free0 = silk_arena_free_bytes(f->a);
+    size_t fit = room > SILK_ARENA_ALIGN ? (room - SILK_ARENA_ALIGN) / (2 * sizeof *f->tan_kept) : 0;
+    uint32_t n = fit < f->nedges ? (uint32_t)fit : f->nedges;
     if (f->tan_kept || n == 0) return 0;
     silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
     if (!t) return 0;
