@@ -377,17 +377,18 @@ static silk_status chain_points(silk_sil_frame *f)
     for (uint32_t w = 0; w < nwork; w++) {
         silk_sil_edge *we = &f->edges[w];
         const silk_edge *e = &m->edge[we->edge];
-        silk_curve c;
-        silk_sil_edge_curve(f, we, &c);
-        silk_vec3 d0 = silk_view_to_eye(v, c.p0), d1 = silk_view_to_eye(v, c.p1);
+        silk_vec3 d0 = silk_view_to_eye(v, m->pos[e->v[0]]), d1 = silk_view_to_eye(v, m->pos[e->v[1]]);
         for (uint32_t i = 0; i < we->npairs; i++) {
             silk_sil_pair *p = &f->pairs[we->pair0 + i];
             p->u = silk_fx_clamp(silk_silhouette_param(m->normal[p->n0], d0, m->normal[p->n1], d1),
                                  0, SILK_FX_ONE);
         }
         we->nfeat = 0;
-        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))   /* at most SILK_MAX_SAMPLES */
+        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE)) {   /* at most SILK_MAX_SAMPLES */
+            silk_curve c;   /* only a sampled edge's tangents are needed here */
+            silk_sil_edge_curve(f, we, &c);
             we->nfeat = (uint8_t)silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
+        }
         nchain += (we->nfeat > 1 ? we->nfeat - 1 : 0) + we->npairs;
     }
     if (nchain >= SILK_NO_INDEX) return SILK_ERR_NOMEM;   /* chain0 could not index them */
