@@ -119,12 +119,6 @@ typedef struct silk_sil_frame {
     silk_sil_edge *edges;  uint32_t nedges;   /* in mesh edge order */
     uint32_t side_tri1;      /* memo of silk_sil_side_edge: the triangle + 1 (0: none) */
     silk_sil_edge *side_edge[3];
-    silk_vec3 *tan_kept;     /* 2 per carrying edge of the first ntan_kept (silk_sil_keep_tangents) */
-    uint32_t ntan_kept;
-    /* memo of silk_sil_edge_curve: the tangents of the last few edges asked for */
-    const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
-    silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
-    uint32_t tan_next;
     silk_sil_pair *pairs;  uint32_t npairs;
     uint32_t nsides;         /* triangle sides on carrying edges */
     silk_fx *chain;        uint32_t nchain;
@@ -147,6 +141,16 @@ typedef struct silk_sil_frame {
     silk_vec3 *offset;     uint32_t noffset;   /* the offsets, in acc's memory */
 
     silk_stage_clock *clock; /* per-stage timing (include/silk/render.h), or NULL */
+
+    /* Edge tangents (silk_sil_edge_curve), last: the fields above are read
+     * far more often, and a small part's short loads reach only the first
+     * few dozen words. */
+    silk_vec3 *tan_kept;     /* 2 per carrying edge of the first ntan_kept (silk_sil_keep_tangents) */
+    uint32_t ntan_kept;
+    /* memo of silk_sil_edge_curve: the tangents of the last few edges asked for */
+    const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
+    silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
+    uint32_t tan_next;
 } silk_sil_frame;
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs
@@ -219,15 +223,12 @@ static inline silk_sil_edge *silk_sil_side_edge(const silk_sil_frame *f, uint32_
 }
 
 /* The index of parameter u in the ascending chain c[0 .. n): where a
- * silhouette point lies in its edge's chain. */
+ * silhouette point lies in its edge's chain (a chain holds a few points). */
 static inline uint32_t silk_sil_chain_index(const silk_fx *c, uint32_t n, silk_fx u)
 {
-    uint32_t lo = 0, hi = n;
-    while (lo < hi) {
-        uint32_t mid = lo + (hi - lo) / 2;
-        if (c[mid] < u) lo = mid + 1; else hi = mid;
-    }
-    return lo;
+    uint32_t i = 0;
+    while (i < n && c[i] < u) i++;
+    return i;
 }
 
 /* Whether mesh edge `edge` carries points this frame. */

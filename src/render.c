@@ -102,7 +102,6 @@ typedef struct frame {
     void (*part)(struct frame *f, uint32_t k);
     int smooth;
     silk_stage_clock *clock;  /* per-stage timing, or NULL */
-    silk_sil_frame sil;       /* SMOOTH: the plan */
     uint8_t *rows;            /* per part: first and last row it can reach, in units of row_unit, or NULL */
     int row_unit;             /* rows a unit of rows[] spans (share_rows) */
     silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
@@ -114,8 +113,10 @@ typedef struct frame {
     uint32_t vc_mask;
     size_t vc_bytes;          /* the arena it takes */
     size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
+    size_t peak_before;       /* the arena's top high-water before those two */
     int cull;                 /* back faces cannot show (back_faces_hidden) */
     int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
+    silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -343,6 +344,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
                                  const silk_hal *h, const silk_render_opts *o, int band_rows,
                                  silk_frame_stats *stats, silk_error *err)
 {
+    memset(f, 0, sizeof *f);   /* first: frame_need reads it even when the frame is refused */
     if (!a || !m || !v || !h || !o || !h->vertex || !h->fragment)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
     if ((unsigned)o->lines > SILK_LINES_ONLY)
@@ -357,7 +359,6 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     if (o->lines || o->wire)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: lines and wire are not built in (SILK_NO_LINES)");
 #endif
-    memset(f, 0, sizeof *f);
     f->clock = o->clock;
     (void)band_rows;   /* the stencil's height: clip mode's only */
     if (o->mode == SILK_MODE_CLIP) {
@@ -625,6 +626,28 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 #endif
 }
 
+/* What a prepared frame may add for speed: back faces culled where they
+ * cannot show, then the vertex cache and the kept tangents from what the
+ * arena has left (the frame's need is its high-water before them). */
+static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
+{
+    f->cull = back_faces_hidden(f, m, h, o);
+    f->peak_before = a->top_peak;
+    vertex_cache(f, a, o);
+    keep_tangents(f, a, o);
+}
+
+/* The top of the arena the frame needed since mark: its high-water, the
+ * vertex cache and the kept tangents not counted (vertex_cache,
+ * keep_tangents: taken only from what is left).  The plan gives back
+ * scratch as it goes, so its own peak may lie above everything taken
+ * after it. */
+static size_t frame_need(const frame *f, const silk_arena *a, const silk_arena_mark *mark)
+{
+    size_t after = a->top_peak - f->vc_bytes - f->tan_bytes;   /* >= mark->top */
+    return (after > f->peak_before ? after : f->peak_before) - mark->top;
+}
+
 /* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its
  * subpixel products are sized for it, docs/overflow.md); say so instead of
  * returning a blank image. */
@@ -651,15 +674,12 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
     if (st == SILK_OK) {
-        f.cull = back_faces_hidden(&f, m, h, o);
-        vertex_cache(&f, a, o);
-        keep_tangents(&f, a, o);
+        frame_extras(&f, a, m, h, o);
         frame_draw(&f, o, t);
         frame_aa(&f, a, v, o, t, stats);
         if (f.clip) stats->clip_spans = f.clip->spans;
     }
-    /* the vertex cache and the kept tangents not counted (vertex_cache, keep_tangents) */
-    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes - f.tan_bytes;
+    stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
     return st;
 }
@@ -683,9 +703,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     if (st == SILK_OK && f.nparts > 1 && rows < band->height)
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
     if (st == SILK_OK) {
-        f.cull = back_faces_hidden(&f, m, h, o);
-        vertex_cache(&f, a, o);
-        keep_tangents(&f, a, o);
+        frame_extras(&f, a, m, h, o);
         share_rows(&f, band->height);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
@@ -699,8 +717,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
-    /* the vertex cache and the kept tangents not counted (vertex_cache, keep_tangents) */
-    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes - f.tan_bytes;
+    stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
     return st;
 }

@@ -131,7 +131,7 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
         while (i < SILK_SIL_TAN_MEMO && f->tan_edge[i] != e) i++;
         if (i == SILK_SIL_TAN_MEMO) {
             i = memo->tan_next;
-            memo->tan_next = (i + 1) % SILK_SIL_TAN_MEMO;
+            memo->tan_next = i + 1 < SILK_SIL_TAN_MEMO ? i + 1 : 0;
             memo->tan_edge[i] = e;
             edge_tangents(f, e, memo->tan[i]);
         }
