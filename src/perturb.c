@@ -60,12 +60,9 @@ int silk_perturb_alloc(silk_sil_frame *f)
     uint32_t b = f->near_bound = f->nslots;
     f->nslots = 0;
     f->acc = silk_arena_array_top(a, b, sizeof *f->acc, SILK_MEM_FRAME);
-    f->lift = silk_arena_array_top(a, b, sizeof *f->lift, SILK_MEM_FRAME);
-    f->slot_vert = silk_arena_array_top(a, b, sizeof *f->slot_vert, SILK_MEM_FRAME);
-    f->slot_stamp = silk_arena_array_top(a, b, sizeof *f->slot_stamp, SILK_MEM_FRAME);
     /* the offsets are written over acc (offset j from slot j or a later one) */
     f->offset = f->acc;
-    return f->acc && f->lift && f->slot_vert && f->slot_stamp;
+    return f->acc != NULL;
 }
 
 /* One neighbouring vertex of segment s, once per stamp.  Pass -1 only
@@ -141,9 +138,19 @@ static int silhouette_at(const silk_sil_frame *f, silk_index vtx)
     return 0;
 }
 
-void silk_perturb(silk_sil_frame *f)
+int silk_perturb(silk_sil_frame *f)
 {
-    if (!f->near_bound) return;
+    if (!f->near_bound) return 1;
+    /* The slots' lifts, vertices and stamps are needed only here: taken
+     * above the offsets and given back, so the frame keeps 12 bytes a slot
+     * (acc, then the offsets) instead of 22. */
+    silk_arena *a = f->a;
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    uint32_t b = f->near_bound;
+    f->lift = silk_arena_array_top(a, b, sizeof *f->lift, SILK_MEM_FRAME);
+    f->slot_vert = silk_arena_array_top(a, b, sizeof *f->slot_vert, SILK_MEM_FRAME);
+    f->slot_stamp = silk_arena_array_top(a, b, sizeof *f->slot_stamp, SILK_MEM_FRAME);
+    if (!f->lift || !f->slot_vert || !f->slot_stamp) return 0;
     uint32_t ns = f->nsegs;
     for (int pass = 0; pass < 2; pass++) {
         /* the segments in triangle order */
@@ -171,4 +178,9 @@ void silk_perturb(silk_sil_frame *f)
         }
     }
     f->vert_offset = f->vert_slot;
+    silk_arena_top_release(a, &mark);
+    f->lift = NULL;
+    f->slot_vert = NULL;
+    f->slot_stamp = NULL;
+    return 1;
 }

@@ -8,7 +8,7 @@
 
 #include "plan.h"
 
-int  silk_perturb_alloc(silk_sil_frame *f);          /* 0 when it does not fit */
-void silk_perturb(silk_sil_frame *f);                /* fills offset, vert_offset */
+int silk_perturb_alloc(silk_sil_frame *f);           /* the slots and offsets; 0 when they do not fit */
+int silk_perturb(silk_sil_frame *f);                 /* fills offset, vert_offset; 0 when its scratch does not fit */
 
 #endif

@@ -46,11 +46,12 @@ enum {
     SILK_TS_CARRY0 = 32     /* << k: side k lies on a carrying edge (whole triangles only) */
 };
 
-/* A silhouette point (eqs. 6-7): one normal pair on one edge. */
+/* A silhouette point (eqs. 6-7): one normal pair on one edge.  Its place
+ * in the edge's chain is found by u (silk_sil_chain_index) rather than
+ * stored: 8 bytes a point with 16-bit indices. */
 typedef struct silk_sil_pair {
     silk_index n0, n1;       /* normals at edge.v[0] and edge.v[1] */
     silk_fx u;               /* parameter from edge.v[0] */
-    uint32_t chain;          /* index of u in the edge's chain */
 } silk_sil_pair;
 
 /* One triangle side lying on a carrying edge, as that triangle sees the
@@ -64,21 +65,24 @@ typedef struct silk_sil_side {
 } silk_sil_side;
 
 /* An edge that carries points this frame.  Its curve runs from edge.v[0] to
- * edge.v[1], exactly through the two vertices, so only the tangents are
- * kept (silk_sil_edge_curve makes the whole curve).  The per-edge counts
- * are 16 bits (an edge with more sides than SILK_SIL_SIDES_MAX makes the
- * plan fail, and the frame falls back) and nfeat at most SILK_MAX_SAMPLES:
- * 44 bytes an edge with 16-bit indices, the plan's largest part. */
+ * edge.v[1], exactly through the two vertices, with the tangents of its
+ * feature segment or of the bridge over its first silhouette point: both
+ * follow from the mesh and the edge's points, so silk_sil_edge_curve makes
+ * the curve when it is asked for instead of keeping 24 bytes of tangents
+ * per edge.  The per-edge counts are 16 bits (an edge with more sides than
+ * SILK_SIL_SIDES_MAX makes the plan fail, and the frame falls back), the
+ * frame's points and parameters are counted in silk_index (more of them
+ * than the index type holds fails the same way) and nfeat is at most
+ * SILK_MAX_SAMPLES: 14 bytes an edge with 16-bit indices, 20 with 32-bit. */
 typedef struct silk_sil_edge {
-    silk_vec3 t0, t1;        /* tangents of the bridge or of the feature segment */
-    uint32_t pair0;          /* its silhouette points: pairs[pair0 .. pair0 + npairs) */
-    uint32_t chain0;         /* its interior parameters, ascending, distinct: chain[chain0 .. chain0 + nchain) */
+    silk_index pair0;        /* its silhouette points: pairs[pair0 .. pair0 + npairs) */
+    silk_index chain0;       /* its interior parameters, ascending, distinct: chain[chain0 .. chain0 + nchain) */
     silk_index edge;         /* mesh edge index */
     uint16_t npairs, nchain;
     uint16_t nsides;         /* triangle sides on this edge */
     uint8_t nfeat;           /* feature sampling intervals (0: not sampled) */
-    uint8_t is_feature;
-    uint8_t sampled;         /* a visible feature edge: sampled by eq. 8 */
+    _Bool is_feature : 1;
+    _Bool sampled : 1;       /* a visible feature edge: sampled by eq. 8 */
 } silk_sil_edge;
 
 /* The most sides one carrying edge may have: its chain (nfeat - 1 samples
@@ -96,6 +100,10 @@ typedef struct silk_sil_seg {
     silk_fx rise;            /* how far the segment's ends rise above P_i */
 } silk_sil_seg;
 
+/* Edge tangents kept by silk_sil_edge_curve: the three sides of the
+ * triangle being emitted. */
+#define SILK_SIL_TAN_MEMO 3
+
 typedef struct silk_sil_frame {
     silk_arena *a;
     const silk_mesh *m;
@@ -103,7 +111,7 @@ typedef struct silk_sil_frame {
     silk_fx tol;
     silk_vis_method vis;
 
-    uint8_t *visible;        /* nnormals */
+    uint8_t *visible;        /* nnormals, while silhouette.c finds the triangles (NULL after) */
     uint8_t *tri_state;      /* ntris, SILK_TS_*; read only after silhouette.c */
     uint8_t *carrying;       /* nedges bits: the edges that carry points (find them with silk_sil_slot) */
     uint32_t nsil;
@@ -126,13 +134,23 @@ typedef struct silk_sil_frame {
     uint32_t near_bound;     /* vertices next to a concave segment: one slot each */
     silk_index *vert_slot;   /* nverts: perturbation slot, or SILK_NO_INDEX */
     silk_vec3 *acc;          /* per slot: sum of plane normals, then the unit R */
-    silk_fx *lift;           /* per slot: how far to move down along R */
-    silk_index *slot_vert;   /* per slot: its vertex */
-    uint32_t *slot_stamp, nslots;
+    silk_fx *lift;           /* per slot: how far to move down along R (silk_perturb only, then NULL) */
+    silk_index *slot_vert;   /* per slot: its vertex (the same) */
+    uint32_t *slot_stamp, nslots;   /* (the same) */
     silk_index *vert_offset; /* nverts view of vert_slot after perturbation: offset index, or SILK_NO_INDEX */
     silk_vec3 *offset;     uint32_t noffset;   /* the offsets, in acc's memory */
 
     silk_stage_clock *clock; /* per-stage timing (include/silk/render.h), or NULL */
+
+    /* Edge tangents (silk_sil_edge_curve), last: the fields above are read
+     * far more often, and a small part's short loads reach only the first
+     * few dozen words. */
+    silk_vec3 *tan_kept;     /* 2 per carrying edge of the first ntan_kept (silk_sil_keep_tangents) */
+    uint32_t ntan_kept;
+    /* memo of silk_sil_edge_curve: the tangents of the last few edges asked for */
+    const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
+    silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
+    uint32_t tan_next;
 } silk_sil_frame;
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs
@@ -144,8 +162,16 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t);
 /* tri, k, normals and uvs of triangle t's side k on mesh edge e, from the
  * mesh. */
 void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s);
-/* The curve of edge e: its vertices, its tangents; normals and uvs zero. */
+/* The curve of edge e: its vertices, its tangents; normals and uvs zero.
+ * The tangents are read from tan_kept where kept, else computed (a bridge, or the
+ * feature segment's) and the last few kept in the frame's memo; the plan
+ * changes nothing they depend on once silk_sil_find has filled the points. */
 void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c);
+/* The tangents of the carrying edges into the arena, as many as room (the
+ * most it may take) holds, so that silk_sil_edge_curve reads them instead
+ * of making them: the same bits, faster.  Returns the bytes taken (0:
+ * none). */
+size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room);
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
@@ -180,7 +206,7 @@ static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 /* The carrying edge side k of triangle t lies on, or NULL: most sides are
  * on none, and their tri_state bit says so without looking the edge up.
  * The emitter asks for the same triangle's sides again and again, so the
- * last triangle's three are kept (the frame's only mutable memo). */
+ * last triangle's three are kept (one of the frame's two memos). */
 static inline silk_sil_edge *silk_sil_side_edge(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     if (!(f->tri_state[t] & (SILK_TS_CARRY0 << k))) return NULL;
@@ -194,6 +220,15 @@ static inline silk_sil_edge *silk_sil_side_edge(const silk_sil_frame *f, uint32_
         }
     }
     return memo->side_edge[k];
+}
+
+/* The index of parameter u in the ascending chain c[0 .. n): where a
+ * silhouette point lies in its edge's chain (a chain holds a few points). */
+static inline uint32_t silk_sil_chain_index(const silk_fx *c, uint32_t n, silk_fx u)
+{
+    uint32_t i = 0;
+    while (i < n && c[i] < u) i++;
+    return i;
 }
 
 /* Whether mesh edge `edge` carries points this frame. */

@@ -106,7 +106,7 @@ static uint32_t pair_chain(const silk_sil_frame *f, uint32_t t, uint32_t k)
     const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
     silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
-    return side_pair(f, e, &s)->chain;
+    return silk_sil_chain_index(&f->chain[e->chain0], e->nchain, side_pair(f, e, &s)->u);
 }
 
 /* The same in triangle direction. */

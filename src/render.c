@@ -102,8 +102,8 @@ typedef struct frame {
     void (*part)(struct frame *f, uint32_t k);
     int smooth;
     silk_stage_clock *clock;  /* per-stage timing, or NULL */
-    silk_sil_frame sil;       /* SMOOTH: the plan */
-    uint16_t *rows;           /* per part: first and last row it can reach, or NULL */
+    uint8_t *rows;            /* per part: first and last row it can reach, in units of row_unit, or NULL */
+    int row_unit;             /* rows a unit of rows[] spans (share_rows) */
     silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
     /* The vertex cache of a frame drawn share by share (vertex_cache),
      * or NULL: slot s holds the vertex stage's output for the corner
@@ -113,9 +113,12 @@ typedef struct frame {
     uint32_t vc_mask;
     uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
     size_t vc_bytes;          /* the arena it and the facing memo take */
+    size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
+    size_t peak_before;       /* the arena's top high-water before those */
     uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
     uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
                                  frame is on a small board's stack) */
+    silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -291,15 +294,39 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 #endif
 }
 
+/* SMOOTH: the carrying edges' tangents kept (silk_sil_keep_tangents), as
+ * many as fit the arena left once the frame has what it needs and its
+ * vertex cache (half of it when anti-aliased outlines take their scratch
+ * per band after it): 24 bytes an edge (a few KiB for all) that spare
+ * remaking a bridge whenever an edge's curve is asked for, a tenth to a
+ * sixth of a smooth frame's instructions.  Not part of the frame's need
+ * either: a part without the room computes the same tangents. */
+static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
+{
+    size_t room = silk_arena_free_bytes(a);
+#ifndef SILK_NO_AA
+    if (o->aa && !o->wire) room /= 2;
+#else
+    (void)o;
+#endif
+    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
+}
+
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
  * lowest row; one row more on each side covers the rasterizer's rounding to
  * subpixels.  A record behind the eye plane (w <= 0) may reach anywhere.
- * f->rows is 2 per input triangle, or NULL: without room for the rows every
- * band rebuilds every triangle: slower, the same pixels. */
+ * f->rows is 2 bytes per input triangle, or NULL: without room for the rows
+ * every band rebuilds every triangle: slower, the same pixels.  A byte
+ * counts units of f->row_unit rows, the fewest that number a frame's rows
+ * below 255 (one row up to 254 rows high, so on a small display the rows
+ * are exact); the first and last unit are rounded outwards, so a band may
+ * rebuild a triangle it does not need, never miss one.  The pair 255, 0
+ * reaches no row. */
 static void share_rows(frame *f, int height)
 {
     uint32_t n = f->geom.mesh->ntris;
+    f->row_unit = height / 255 + 1;   /* 255 units more than the height: 255, 0 is past every band */
     for (uint32_t t = 0; f->rows && t < n; t++) {
         share_part(f, t);
         int64_t lo = height, hi = -1;
@@ -316,9 +343,17 @@ static void share_rows(frame *f, int height)
         }
         if (lo < 0) lo = 0;
         if (hi > height - 1) hi = height - 1;
-        f->rows[2 * t] = lo <= hi ? (uint16_t)lo : UINT16_MAX;   /* never reached: no band takes it */
-        f->rows[2 * t + 1] = lo <= hi ? (uint16_t)hi : 0;
+        f->rows[2 * t] = lo <= hi ? (uint8_t)(lo / f->row_unit) : UINT8_MAX;   /* never reached: no band takes it */
+        f->rows[2 * t + 1] = lo <= hi ? (uint8_t)(hi / f->row_unit) : 0;
     }
+}
+
+/* Whether part k can reach no row of y0 .. y1 (share_rows). */
+static int part_misses(const frame *f, uint32_t k, int y0, int y1)
+{
+    if (!f->rows) return 0;
+    int u = f->row_unit;
+    return f->rows[2 * k] * u > y1 || f->rows[2 * k + 1] * u + u - 1 < y0;
 }
 
 #ifndef STREAMED_ONLY
@@ -334,6 +369,7 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
                                  const silk_hal *h, const silk_render_opts *o, int band_rows,
                                  silk_frame_stats *stats, silk_error *err)
 {
+    memset(f, 0, sizeof *f);   /* first: frame_need reads it even when the frame is refused */
     if (!a || !m || !v || !h || !o || !h->vertex || !h->fragment)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
     if ((unsigned)o->lines > SILK_LINES_ONLY)
@@ -348,7 +384,6 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     if (o->lines || o->wire)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: lines and wire are not built in (SILK_NO_LINES)");
 #endif
-    memset(f, 0, sizeof *f);
     f->clock = o->clock;
     (void)band_rows;   /* the stencil's height: clip mode's only */
     if (o->mode == SILK_MODE_CLIP) {
@@ -543,7 +578,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
-            if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
+            if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
             f->part(f, k);
             t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
             t0 = silk_stage_start(f->clock);
@@ -609,7 +644,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.hal = f->hal;
     aa.geom = &f->geom;
     for (uint32_t k = 0; k < f->nparts; k++) {
-        if (f->rows && (f->rows[2 * k] > t->y0 + t->rows || f->rows[2 * k + 1] + 1 < t->y0)) continue;
+        if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
@@ -618,6 +653,29 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     stats->aa_aliased += aa.dropped;
     silk_arena_top_release(a, &mark);
 #endif
+}
+
+/* What a prepared frame may add for speed: back faces culled where they
+ * cannot show, then the vertex cache and the kept tangents from what the
+ * arena has left (the frame's need is its high-water before them). */
+static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
+{
+    f->cull = back_faces_hidden(f, m, h, o);
+    f->peak_before = a->top_peak;
+    vertex_cache(f, a, o);
+    facing_memo(f, a, o);
+    keep_tangents(f, a, o);
+}
+
+/* The top of the arena the frame needed since mark: its high-water, the
+ * vertex cache and the kept tangents not counted (vertex_cache,
+ * keep_tangents: taken only from what is left).  The plan gives back
+ * scratch as it goes, so its own peak may lie above everything taken
+ * after it. */
+static size_t frame_need(const frame *f, const silk_arena *a, const silk_arena_mark *mark)
+{
+    size_t after = a->top_peak - f->vc_bytes - f->tan_bytes;   /* >= mark->top */
+    return (after > f->peak_before ? after : f->peak_before) - mark->top;
 }
 
 /* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its
@@ -646,14 +704,12 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
     if (st == SILK_OK) {
-        f.cull = back_faces_hidden(&f, m, h, o);
-        vertex_cache(&f, a, o);
-        facing_memo(&f, a, o);
+        frame_extras(&f, a, m, h, o);
         frame_draw(&f, o, t);
         frame_aa(&f, a, v, o, t, stats);
         if (f.clip) stats->clip_spans = f.clip->spans;
     }
-    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes;   /* the vertex cache not counted (vertex_cache) */
+    stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
     return st;
 }
@@ -677,9 +733,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     if (st == SILK_OK && f.nparts > 1 && rows < band->height)
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
     if (st == SILK_OK) {
-        f.cull = back_faces_hidden(&f, m, h, o);
-        vertex_cache(&f, a, o);
-        facing_memo(&f, a, o);
+        frame_extras(&f, a, m, h, o);
         share_rows(&f, band->height);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
@@ -693,7 +747,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
-    stats->frame_bytes = a->top_peak - mark.top - f.vc_bytes;   /* the vertex cache not counted (vertex_cache) */
+    stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
     return st;
 }

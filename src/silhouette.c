@@ -106,16 +106,6 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
     return 1;
 }
 
-void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c)
-{
-    const silk_edge *me = &f->m->edge[e->edge];
-    memset(c, 0, sizeof *c);
-    c->p0 = f->m->pos[me->v[0]];
-    c->p1 = f->m->pos[me->v[1]];
-    c->t0 = e->t0;
-    c->t1 = e->t1;
-}
-
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
@@ -147,8 +137,12 @@ uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u)
 /* The curve every point on edge w lies on: the feature segment of a feature
  * edge (a straight one if it has none), else the silhouette bridge built from
  * the normals of the first silhouette point found on it.  Either way it ends
- * exactly on the vertices (silk_sil_edge_curve). */
-static void edge_geometry(const silk_sil_frame *f, silk_sil_edge *w)
+ * exactly on the vertices.  Made whenever it is asked for, unless kept
+ * (silk_sil_keep_tangents: 24 bytes an edge would otherwise be the plan's
+ * largest part; a bridge is about 4 000 instructions on a Cortex-M3), the
+ * tangents of the last few edges kept in the frame's memo: emitting one
+ * triangle asks for each of its sides several times. */
+static void edge_tangents(const silk_sil_frame *f, const silk_sil_edge *w, silk_vec3 t[2])
 {
     const silk_mesh *m = f->m;
     const silk_edge *e = &m->edge[w->edge];
@@ -156,18 +150,58 @@ static void edge_geometry(const silk_sil_frame *f, silk_sil_edge *w)
     if (w->is_feature || w->npairs == 0) {
         silk_index fi = silk_mesh_edge_feature(m, w->edge);
         if (fi != SILK_NO_INDEX && fi < m->nfeature_edges && m->feature) {
-            w->t0 = m->feature[fi].t0;
-            w->t1 = m->feature[fi].t1;
+            t[0] = m->feature[fi].t0;
+            t[1] = m->feature[fi].t1;
         } else {
-            w->t0 = w->t1 = silk_v3_sub(p1, p0);
+            t[0] = t[1] = silk_v3_sub(p1, p0);
         }
     } else {
         const silk_sil_pair *p = &f->pairs[w->pair0];
         silk_curve c;
         silk_bridge(p0, m->normal[p->n0], p1, m->normal[p->n1], &c);
-        w->t0 = c.t0;
-        w->t1 = c.t1;
+        t[0] = c.t0;
+        t[1] = c.t1;
     }
+}
+
+void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_curve *c)
+{
+    const silk_vec3 *t;
+    uint32_t w = (uint32_t)(e - f->edges);
+    if (w < f->ntan_kept) {
+        t = &f->tan_kept[2 * (size_t)w];
+    } else {
+        silk_sil_frame *memo = (silk_sil_frame *)f;
+        uint32_t i = 0;
+        while (i < SILK_SIL_TAN_MEMO && f->tan_edge[i] != e) i++;
+        if (i == SILK_SIL_TAN_MEMO) {
+            i = memo->tan_next;
+            memo->tan_next = i + 1 < SILK_SIL_TAN_MEMO ? i + 1 : 0;
+            memo->tan_edge[i] = e;
+            edge_tangents(f, e, memo->tan[i]);
+        }
+        t = f->tan[i];
+    }
+    const silk_edge *me = &f->m->edge[e->edge];
+    memset(c, 0, sizeof *c);
+    c->p0 = f->m->pos[me->v[0]];
+    c->p1 = f->m->pos[me->v[1]];
+    c->t0 = t[0];
+    c->t1 = t[1];
+}
+
+size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
+{
+    size_t free0 = silk_arena_free_bytes(f->a);
+    size_t fit = room > SILK_ARENA_ALIGN ? (room - SILK_ARENA_ALIGN) / (2 * sizeof *f->tan_kept) : 0;
+    uint32_t n = fit < f->nedges ? (uint32_t)fit : f->nedges;
+    if (f->tan_kept || n == 0) return 0;
+    silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
+    if (!t) return 0;
+    for (uint32_t w = 0; w < n; w++) edge_tangents(f, &f->edges[w], &t[2 * w]);
+    f->tan_kept = t;
+    f->ntan_kept = n;
+    return free0 - silk_arena_free_bytes(f->a);
 }
 
 /* Eq. 8 reads n_s = ceil(sqrt(h r / e) / 2) with r = sin(alpha/2).  For a
@@ -205,16 +239,6 @@ static void chain_insert(silk_fx *c, uint32_t *n, silk_fx u)
     (*n)++;
 }
 
-static uint32_t chain_index(const silk_fx *c, uint32_t n, silk_fx u)
-{
-    uint32_t lo = 0, hi = n;
-    while (lo < hi) {
-        uint32_t mid = lo + (hi - lo) / 2;
-        if (c[mid] < u) lo = mid + 1; else hi = mid;
-    }
-    return lo;
-}
-
 /* ---- the stage ----------------------------------------------------------------- */
 
 /* Mark edge e as carrying points, counting it the first time. */
@@ -234,10 +258,13 @@ static silk_status find_triangles(silk_sil_frame *f)
     const silk_view *v = f->v;
     silk_arena *a = f->a;
 
-    f->visible = silk_arena_array_top(a, m->nnormals, 1, SILK_MEM_FRAME);
     f->tri_state = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
     size_t bits = ((size_t)m->nedges + 7) / 8;
     f->carrying = silk_arena_array_top(a, bits, 1, SILK_MEM_FRAME);   /* zeroed */
+    /* The normals' visibility is needed only here: taken last, given back
+     * before the edges are laid out in its place. */
+    silk_arena_mark mark = silk_arena_top_mark(a);
+    f->visible = silk_arena_array_top(a, m->nnormals, 1, SILK_MEM_FRAME);
     if (!f->visible || !f->tri_state || !f->carrying) return SILK_ERR_NOMEM;
 
     /* III-B.  The hierarchy may want scratch we do not have; the brute pass
@@ -279,6 +306,8 @@ static silk_status find_triangles(silk_sil_frame *f)
         f->tri_state[t] = st;
     }
     f->nedges = nwork;
+    silk_arena_top_release(a, &mark);
+    f->visible = NULL;
     return SILK_OK;
 }
 
@@ -342,7 +371,8 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
         nsides += f->edges[w].nsides;
-        f->edges[w].pair0 = npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
+        f->edges[w].pair0 = (silk_index)npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
+        if (npairs >= SILK_NO_INDEX) return SILK_ERR_NOMEM;   /* pair0 could not index them */
     }
     f->nsides = nsides;
     f->npairs = npairs;
@@ -392,20 +422,21 @@ static silk_status chain_points(silk_sil_frame *f)
     for (uint32_t w = 0; w < nwork; w++) {
         silk_sil_edge *we = &f->edges[w];
         const silk_edge *e = &m->edge[we->edge];
-        edge_geometry(f, we);
-        silk_curve c;
-        silk_sil_edge_curve(f, we, &c);
-        silk_vec3 d0 = silk_view_to_eye(v, c.p0), d1 = silk_view_to_eye(v, c.p1);
+        silk_vec3 d0 = silk_view_to_eye(v, m->pos[e->v[0]]), d1 = silk_view_to_eye(v, m->pos[e->v[1]]);
         for (uint32_t i = 0; i < we->npairs; i++) {
             silk_sil_pair *p = &f->pairs[we->pair0 + i];
             p->u = silk_fx_clamp(silk_silhouette_param(m->normal[p->n0], d0, m->normal[p->n1], d1),
                                  0, SILK_FX_ONE);
         }
         we->nfeat = 0;
-        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE))   /* at most SILK_MAX_SAMPLES */
+        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE)) {   /* at most SILK_MAX_SAMPLES */
+            silk_curve c;   /* only a sampled edge's tangents are needed here */
+            silk_sil_edge_curve(f, we, &c);
             we->nfeat = (uint8_t)silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
+        }
         nchain += (we->nfeat > 1 ? we->nfeat - 1 : 0) + we->npairs;
     }
+    if (nchain >= SILK_NO_INDEX) return SILK_ERR_NOMEM;   /* chain0 could not index them */
     f->chain = silk_arena_array_top(a, nchain, sizeof *f->chain, SILK_MEM_FRAME);
     if (!f->chain) return SILK_ERR_NOMEM;
     nchain = 0;
@@ -416,11 +447,7 @@ static silk_status chain_points(silk_sil_frame *f)
         for (uint32_t i = 1; i < we->nfeat; i++)
             c[n++] = silk_sample_param(i, we->nfeat);
         for (uint32_t i = 0; i < we->npairs; i++) chain_insert(c, &n, f->pairs[we->pair0 + i].u);
-        for (uint32_t i = 0; i < we->npairs; i++) {
-            silk_sil_pair *p = &f->pairs[we->pair0 + i];
-            p->chain = chain_index(c, n, p->u);
-        }
-        we->chain0 = nchain;
+        we->chain0 = (silk_index)nchain;
         we->nchain = (uint16_t)n;
         nchain += n;
     }

@@ -38,9 +38,7 @@ static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const
     f->v = v;
     f->tol = tolerance_px;
     f->vis = vis;
-    if (silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK || !silk_perturb_alloc(f)) return 0;
-    silk_perturb(f);
-    return 1;
+    return silk_sil_find(f) == SILK_OK && silk_remesh_plan(f) == SILK_OK && silk_perturb_alloc(f) && silk_perturb(f);
 }
 
 silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const silk_view *v,

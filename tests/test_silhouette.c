@@ -200,6 +200,8 @@ static void bridges_vs_reference(const char *name, int nviews)
         for (uint32_t w = 0; w < f.nedges; w++) {
             const silk_sil_edge *e = &f.edges[w];
             const silk_edge *me = &m.edge[e->edge];
+            silk_curve ec;
+            silk_sil_edge_curve(&f, e, &ec);
             double p0[3], p1[3], n0[3], n1[3], t0[3], t1[3];
             vec3d(m.pos[me->v[0]], p0);
             vec3d(m.pos[me->v[1]], p1);
@@ -211,16 +213,16 @@ static void bridges_vs_reference(const char *name, int nviews)
                 vec3d(m.normal[f.pairs[e->pair0].n1], n1);
                 bridge_ref(p0, n0, p1, n1, t0, t1);
                 double g0[3], g1[3];
-                vec3d(e->t0, g0);
-                vec3d(e->t1, g1);
+                vec3d(ec.t0, g0);
+                vec3d(ec.t1, g1);
                 for (int k = 0; k < 3; k++) {
                     double err = fmax(fabs(g0[k] - t0[k]), fabs(g1[k] - t1[k])) / chord;
                     if (err > worst_t) worst_t = err;
                 }
                 n_bridges++;
             } else {
-                vec3d(e->t0, t0);
-                vec3d(e->t1, t1);
+                vec3d(ec.t0, t0);
+                vec3d(ec.t1, t1);
             }
             double d0[3], d1[3];
             to_eye_d(&v, m.pos[me->v[0]], d0);

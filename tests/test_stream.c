@@ -14,6 +14,8 @@
  *     bands: only the triangles that reach into a band are rebuilt) against
  *     the stored frame rasterized by hand, FLAT and SMOOTH, with and
  *     without --wire.
+ *   - The edge tangents a frame keeps where there is room (none, some,
+ *     all) change no pixel and not the frame's need.
  *   - And a smooth frame fits a 64 KiB part: bunny-500 and knot-480 at
  *     320x240 in 8-row bands need at most 43 776 bytes of frame scratch
  *     from 16 views (the mps2-an385 board's arena, 59 136 bytes, less its
@@ -304,6 +306,68 @@ TEST(pixels_are_the_stored_frame)
     CHECKF(band_differ == 0, "%u streamed frames in %d-row bands differ from the stored frame", band_differ, ROWS);
 }
 
+/* A perspective view from (yaw, pitch) at distance 3, lit by the default
+ * Phong HAL. */
+static int lit_view(const silk_mesh *m, double yaw, double pitch, int w, int h, silk_view *v, silk_phong *ph,
+                    silk_hal *hal)
+{
+    if (!make_view(m, yaw, pitch, 3, 0, w, h, v)) return 0;
+    silk_phong_default(ph, v);
+    silk_hal_phong(hal, ph);
+    return 1;
+}
+
+/* The edge tangents a frame keeps where the arena has room (render.c,
+ * keep_tangents): none, some or all of them, the same pixels and the same
+ * need.  The arena's free space is cut to the frame's need plus a margin
+ * by a block taken from the top before the frame. */
+TEST(kept_tangents_change_no_pixel)
+{
+    enum { W = 320, H = 240, ROWS = 4 };
+    static uint8_t ref[W * H * 2], img[W * H * 2], band_rgb[W * ROWS * 2];
+    static uint32_t band_depth[W * ROWS];
+    silk_arena a;
+    silk_mesh m;
+    if (!load(&a, "bunny-500.obj", NULL, &m)) { CHECK(0); return; }
+    silk_view v;
+    silk_phong ph;
+    silk_hal hal;
+    if (!lit_view(&m, 130, -35, W, H, &v, &ph, &hal)) { CHECK(0); return; }
+    silk_render_opts o;
+    silk_render_opts_default(&o);
+    o.aa = 0;
+    o.vertex_cache_bytes = 0;
+    silk_target band;
+    silk_target_init(&band, W, H, 0, ROWS, SILK_PIX_RGB565, band_rgb, band_depth);
+    /* SIZE_MAX: the whole arena (every tangent kept); 8: none (the room
+     * one allocation's alignment takes); 40: one; 1000: some 40 */
+    const size_t margin[] = { SIZE_MAX, 8, 40, 1000 };
+    size_t need = 0;
+    uint32_t differ = 0, lost = 0;
+    for (size_t i = 0; i < sizeof margin / sizeof margin[0]; i++) {
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        size_t free0 = silk_arena_free_bytes(&a);
+        if (margin[i] != SIZE_MAX && !silk_arena_alloc_top(&a, free0 - need - margin[i], SILK_MEM_LOAD)) {
+            CHECK(0);
+            continue;
+        }
+        band_copy bc = { i ? img : ref, (size_t)W * 2 };
+        silk_sink sink = { take_band, &bc };
+        silk_frame_stats fs;
+        silk_error err;
+        if (silk_render_bands(&a, &m, &v, &hal, &o, &band, &sink, &fs, &err) != SILK_OK || fs.fell_back) lost++;
+        silk_arena_top_release(&a, &mk);
+        if (i == 0) {   /* the whole arena first: the need, then the cut ones */
+            need = fs.frame_bytes;
+            continue;
+        }
+        differ += memcmp(ref, img, sizeof ref) != 0 || fs.frame_bytes != need;
+    }
+    CHECK(need > 0);
+    CHECKF(lost == 0, "%u frames failed or fell back", lost);
+    CHECKF(differ == 0, "%u frames with fewer kept tangents differ", differ);
+}
+
 /* ---- memory ----------------------------------------------------------------------------- */
 
 static int band_none(void *user, const silk_target *b)
@@ -327,11 +391,9 @@ TEST(smooth_frame_fits_a_64k_part)
         uint32_t fell = 0, tris = 0;
         for (int i = 0; i < 16; i++) {
             silk_view v;
-            if (!make_view(&m, 22.5 * i, i & 1 ? -25 : 25, 3, 0, W, H, &v)) { CHECK(0); continue; }
             silk_phong ph;
             silk_hal hal;
-            silk_phong_default(&ph, &v);
-            silk_hal_phong(&hal, &ph);
+            if (!lit_view(&m, 22.5 * i, i & 1 ? -25 : 25, W, H, &v, &ph, &hal)) { CHECK(0); continue; }
             silk_render_opts o;
             silk_render_opts_default(&o);
             silk_target band;
@@ -358,6 +420,7 @@ int main(void)
     arena_buf = malloc(ARENA_BYTES);
     RUN(shares_are_the_stored_frame);
     RUN(pixels_are_the_stored_frame);
+    RUN(kept_tangents_change_no_pixel);
     RUN(smooth_frame_fits_a_64k_part);
     free(arena_buf);
     return check_done();

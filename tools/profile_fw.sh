@@ -135,6 +135,7 @@ BEGIN {
 FILENAME ~ /report\.txt$/ {
     if ($0 ~ /^fw frame=/) {
         frames++
+        if (field("frame_bytes") + 0 > frame_need) frame_need = field("frame_bytes") + 0
         if (field("fell_back") == 1) { fell++; if ($0 ~ / mode=smooth /) smooth_fell++ }
     } else if ($0 ~ /^fw arena size=/) {
         arena_size = field("size"); arena_peak = field("peak")
@@ -212,8 +213,12 @@ END {
     row("ram", "static .data", data, "libc state")
     row("ram", "static .bss besides the arena", bss - arena_size, "")
     row("ram", "arena", arena_peak, sprintf("high-water of %d reserved", arena_size))
-    for (i = 1; i <= npurpose; i++) if (ppeak[i] > 0)
+    for (i = 1; i <= npurpose; i++) if (ppeak[i] > 0) {
         row("ram", "  arena " pname[i], ppeak[i], pname[i] == "raster" ? "band buffers: colour + depth" : pname[i] == "frame" ? "per-frame scratch, peak" : "")
+        # the rest of the peak is optional: kept edge tangents (src/render.c, keep_tangents)
+        if (pname[i] == "frame" && frame_need < ppeak[i])
+            row("ram", "    of it the frames need", frame_need, "the rest: edge tangents kept for speed where there was room")
+    }
     row("ram", "stack", stack_used, sprintf("painted high-water of %d reserved", stack_size))
     row("ram", "ram total", ram_total, sprintf("of %d budget (%s)", ram_budget, ram_total <= ram_budget ? "fits" : "OVER"))
     if (fell) printf "\n  %d of %d frames fell back (%d smooth): the arena could not hold their per-frame\n" \

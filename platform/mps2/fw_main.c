@@ -237,31 +237,32 @@ static int discard_band(void *user, const silk_target *t)
 
 /* A pass over the frames: written to PREFIX (or nowhere), or the stage pass. */
 typedef struct fw_pass {
-    const char *prefix;
+    int files;                   /* write the frames (a PREFIX was given) */
     int stages;                  /* time the HAL's stages, write nothing */
     uint32_t overhead;           /* timing_overhead(), for the report */
     uint32_t clock_overhead;     /* clock_overhead(), for the report */
 } fw_pass;
 
 /* The stage pass of one frame: unwritten, the HAL's stages timed.  Never
- * inlined, so its timed_hal adds nothing to the stack of the frames written. */
+ * inlined, so its timed_hal adds nothing to the stack of the frames written;
+ * it uses the caller's options, statistics and error, so it adds little
+ * to the stack of its own frames either (the board's stack holds both). */
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
 static int time_stages(silk_arena *a, const silk_mesh *m, const silk_view *view, const silk_hal *hal,
-                       const silk_render_opts *ro, silk_target *band, const fw_pass *pass, int frame, int k)
+                       silk_render_opts *ro, silk_target *band, const fw_pass *pass, int frame, int k,
+                       silk_frame_stats *st, silk_error *err)
 {
     timed_hal th;
     timed_hal_init(&th, hal);
     silk_sink none = { discard_band, NULL };
-    silk_frame_stats st;
-    silk_error err;
     silk_stage_clock clock = { clock_now, NULL, { 0 }, { 0 } };
-    silk_render_opts clocked = *ro;
-    clocked.clock = &clock;
-    if (silk_render_bands(a, m, view, hal, &clocked, band, &none, &st, &err) != SILK_OK ||
-        silk_render_bands(a, m, view, &th.hal, ro, band, &none, &st, &err) != SILK_OK) {
-        say("fw error frame=%d %s", frame, err.msg);
+    ro->clock = &clock;
+    silk_status s = silk_render_bands(a, m, view, hal, ro, band, &none, st, err);
+    ro->clock = NULL;
+    if (s != SILK_OK || silk_render_bands(a, m, view, &th.hal, ro, band, &none, st, err) != SILK_OK) {
+        say("fw error frame=%d %s", frame, err->msg);
         return 1;
     }
     const char *mname = ro->mode == SILK_MODE_FLAT ? "flat" : "smooth";
@@ -288,15 +289,27 @@ static const char *out_prefix(char *cmd, size_t size)
     return *p ? p : NULL;
 }
 
+/* Whether the command line names a PREFIX.  Not inlined: the command line
+ * is read again where a frame's file is opened, so that its buffer is not
+ * on the stack under every frame. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int want_files(void)
+{
+    char cmd[160];
+    return out_prefix(cmd, sizeof cmd) != NULL;
+}
+
 /* PREFIX-cK-MODE.ppm opened on the host and its header written.  Not
  * inlined: its buffers would otherwise stay on the stack under the frame. */
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-static int open_frame(band_out *o, const char *prefix, int k, const char *mname, const silk_camera *cam)
+static int open_frame(band_out *o, int k, const char *mname, const silk_camera *cam)
 {
-    char path[128];
-    snprintf(path, sizeof path, "%s-c%d-%s.ppm", prefix, k, mname);
+    char cmd[160], path[128];
+    snprintf(path, sizeof path, "%s-c%d-%s.ppm", out_prefix(cmd, sizeof cmd), k, mname);
     if ((o->handle = fw_open_write(path)) < 0) {
         say("fw error cannot open %s on the host", path);
         return 0;
@@ -310,7 +323,6 @@ static int open_frame(band_out *o, const char *prefix, int k, const char *mname,
 static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
                       const fw_pass *pass, int frame)
 {
-    const char *prefix = pass->prefix;
     const silk_camera *cam = fwmodel_camera(k);
     silk_view view;
     silk_error err;
@@ -329,10 +341,10 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
     ro.vertex_cache_bytes = FW_VERTEX_CACHE_BYTES;
     const char *mname = mode == SILK_MODE_FLAT ? "flat" : "smooth";
     silk_frame_stats st;
-    if (pass->stages) return time_stages(a, m, &view, &hal, &ro, band, pass, frame, k);
+    if (pass->stages) return time_stages(a, m, &view, &hal, &ro, band, pass, frame, k, &st, &err);
 
     band_out o = { -1, 0, 2166136261u, 0, 0 };
-    if (prefix && !open_frame(&o, prefix, k, mname, cam)) return 1;
+    if (pass->files && !open_frame(&o, k, mname, cam)) return 1;
     silk_sink sink = { send_band, &o };
     o.frame_ticks = fw_ticks();
     silk_status s = silk_render_bands(a, m, &view, &hal, &ro, band, &sink, &st, &err);
@@ -394,8 +406,7 @@ static int model_ok(const silk_mesh *mesh, const silk_camera *c0)
 
 int fw_scene(void)
 {
-    char cmd[160];
-    const char *prefix = out_prefix(cmd, sizeof cmd);
+    int files = want_files();
     silk_mesh mesh;
     fwmodel_mesh(&mesh);
     const silk_camera *c0 = fwmodel_camera(0);
@@ -423,12 +434,12 @@ int fw_scene(void)
     silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
 
     int rc = 0;
-    fw_pass pass = { prefix, 0, 0, 0 };
+    fw_pass pass = { files, 0, 0, 0 };
     for (int p = 0; p < 2; p++) {
         if (p == 1) {   /* the stage pass last, so that its timing adds nothing to the memory reported */
             report_memory(&arena, band_bytes);
             if (rc) break;
-            pass = (fw_pass){ NULL, 1, timing_overhead(), clock_overhead() };
+            pass = (fw_pass){ 0, 1, timing_overhead(), clock_overhead() };
         }
         for (int k = 0, frame = 0; k < fwmodel_NCAMERAS && !rc; k++)
             for (int mode = 0; mode < 2 && !rc; mode++)

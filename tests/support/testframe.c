@@ -96,8 +96,7 @@ int tf_run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx 
     memset(st, 0, sizeof *st);
     f->a = a; f->m = m; f->v = v; f->tol = tol; f->vis = SILK_VIS_BRUTE;
     if (silk_sil_find(f) != SILK_OK || silk_remesh_plan(f) != SILK_OK) return 0;
-    if (!silk_perturb_alloc(f)) return 0;
-    silk_perturb(f);
+    if (!silk_perturb_alloc(f) || !silk_perturb(f)) return 0;
     if (!silk_remesh_store(f, g)) return 0;
     silk_remesh_stats(f, st);
     return 1;
