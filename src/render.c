@@ -25,7 +25,10 @@
  * (clip.c and the silhouette interpolation, about 11 KiB), -DSILK_NO_AA the
  * anti-aliased outlines (frame_aa) and -DSILK_NO_TEXTURE texture sampling
  * (phong.c, raster.c): a part with 32 KiB of RAM and 40 KiB for the core
- * draws flat and smooth frames without them.
+ * draws flat and smooth frames without them.  -DSILK_NO_VERTEX_CACHE leaves
+ * out the vertex cache's code (a board whose arena has no bytes to spare
+ * for it sets silk_render_opts.vertex_cache_bytes to 0 and draws the same
+ * pixels without it).
  */
 #include <string.h>
 #include "smooth.h"
@@ -226,6 +229,12 @@ static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *o
     f->hal->vertex(f->hal, &f->geom, r, out);
 }
 
+#ifdef SILK_NO_VERTEX_CACHE
+#define VERTEX_CACHED(f) 0
+#else
+#define VERTEX_CACHED(f) ((f)->vc != NULL)
+#endif
+
 /* Input triangle t's share into g, through the vertex stage into cache. */
 static void share_part(frame *f, uint32_t t)
 {
@@ -239,7 +248,7 @@ static void share_part(frame *f, uint32_t t)
     f->plain = g->ntri == 1;
     for (uint32_t i = 0; i < g->nvrec; i++) {
         f->plain &= g->vrec[i].kind == SILK_VREC_CORNER;
-        if (f->vc && g->vrec[i].kind == SILK_VREC_CORNER) corner_cached(f, &g->vrec[i], &f->cache[i]);
+        if (VERTEX_CACHED(f) && g->vrec[i].kind == SILK_VREC_CORNER) corner_cached(f, &g->vrec[i], &f->cache[i]);
         else f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
     }
     silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
@@ -253,6 +262,11 @@ static void share_part(frame *f, uint32_t t)
 #define VCACHE_MAX 4096
 static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 {
+#ifdef SILK_NO_VERTEX_CACHE
+    (void)f;
+    (void)a;
+    (void)o;
+#else
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
     const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
@@ -269,6 +283,7 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     memset(f->vc_tag, 0xFF, 3 * (size_t)n * sizeof *f->vc_tag);   /* empty: no normal index is UINT32_MAX */
     f->vc_bytes = free0 - silk_arena_free_bytes(a);
     f->vc_mask = n - 1;
+#endif
 }
 
 /* The outline's memo of which way each input triangle faces

@@ -40,8 +40,10 @@ BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # per-frame outline does not fit the board's RAM yet), anti-aliased
 # outlines (2.4 KiB of code and about 12 KiB of scratch a band) and
 # textures (3 KiB): boards/mps2-an385-full is the same part with 64 KiB of
-# RAM and those two.
-BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE -DSILK_NO_AA -DSILK_NO_TEXTURE
+# RAM and those two.  The vertex cache's code goes too: the firmware gives
+# it no arena (FW_VERTEX_CACHE_BYTES), so it would never run.
+BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE -DSILK_NO_AA -DSILK_NO_TEXTURE \
+                  -DSILK_NO_VERTEX_CACHE
 BOARD_OPT   := -Os
 # The core's code budget (`make profile` checks it)
 BOARD_CODE_BYTES := 40960

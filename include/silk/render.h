@@ -115,7 +115,8 @@ typedef struct silk_render_opts {
      * the pixels are the same either way.  The anti-aliased outline's memo
      * of which way each triangle faces (2 bits per triangle) comes out of
      * the same budget.  Default SIZE_MAX; a device whose RAM budget is
-     * tight sets what it can spare, 0 for none. */
+     * tight sets what it can spare, 0 for none (and may leave the code
+     * out: -DSILK_NO_VERTEX_CACHE, src/render.c). */
     size_t vertex_cache_bytes;
     /* CLIP: the model's silhouette map (silk_model_silmap), the polytope
      * triangle to start looking for the eye from (the last frame's
