@@ -38,6 +38,7 @@
 #endif
 #include "clip.h"
 #include "aa.h"
+#include "silk/siltex.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -57,6 +58,7 @@ void silk_render_opts_default(silk_render_opts *o)
     o->line_feature_rgb = 0x000000;
     o->silmap = NULL;
     o->silmap_hint = 0;
+    o->siltex = NULL;
     o->aa = 1;
     o->clock = NULL;
     o->vertex_cache_bytes = SIZE_MAX;
@@ -83,6 +85,7 @@ const char *silk_mode_name(silk_mode mode)
     case SILK_MODE_PN: return "pn";
     case SILK_MODE_BLEND: return "blend";
     case SILK_MODE_CLIP: return "clip";
+    case SILK_MODE_SILTEX: return "siltex";
     }
     return "?";
 }
@@ -114,6 +117,11 @@ typedef struct frame {
     size_t vc_bytes;          /* the arena it takes */
     int cull;                 /* back faces cannot show (back_faces_hidden) */
     int plain;                /* SMOOTH: the part drawn last is its input triangle as it is */
+    /* SILTEX: the hull drawn through the silhouette texture by these stages
+     * (siltex.c), which kill the pixels where the detailed model is not seen */
+    int siltex;
+    silk_hal siltex_hal;
+    silk_siltex_stage siltex_stage;
 } frame;
 
 /* Vertex stage output for record i: from the cache when the frame could
@@ -347,6 +355,27 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         return st;
 #endif
     }
+    if (o->mode == SILK_MODE_SILTEX) {
+#ifdef SILK_NO_SILTEX_MODE
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode is not built in (SILK_NO_SILTEX_MODE)");
+#else
+        /* the hull drawn as flat draws a mesh, each pixel through eq. 4 */
+        if (!o->siltex)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode needs the model's silhouette texture");
+        if (o->siltex->ntris != m->ntris || o->siltex->nverts != m->nverts)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                             "silk_render: the silhouette texture is for a hull of %lu triangles, the mesh has %lu",
+                             (unsigned long)o->siltex->ntris, (unsigned long)m->ntris);
+        if (o->lines)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: no lines in siltex mode (the outline is the texture's)");
+        f->siltex = 1;
+        f->siltex_stage.tex = o->siltex;
+        f->siltex_stage.shade = h;
+        f->siltex_stage.view = v;
+        silk_siltex_hal(&f->siltex_hal, &f->siltex_stage);
+        return shares_prepare(f, a, m, v, &f->siltex_hal, o, stats, err);
+#endif
+    }
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
 #ifdef STREAMED_ONLY
     if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
@@ -513,7 +542,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
      * the pixel, as in a single pass.  It doubles the per-triangle work, so
      * only where triangles are large (16 pixels on average or more). */
     uint64_t ntri = f->part == share_part ? f->geom.mesh->ntris : g->ntri;
-    int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height;
+    /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
+    int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
+                      !f->siltex;
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
@@ -521,6 +552,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             if (f->rows && (f->rows[2 * k] >= t->y0 + t->rows || f->rows[2 * k + 1] < t->y0)) continue;
             f->part(f, k);
             t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
+            /* SILTEX: a back face of the hull is seen from inside it, where
+             * no visibility function was made: hull behind shows instead */
+            t->cull_back |= pass <= 0 && f->siltex;
             t0 = silk_stage_start(f->clock);
             draw_tris(f, o, t, pass);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
@@ -570,7 +604,8 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 #else
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip;   /* clip.c does its own */
+    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip &&   /* clip.c does its own */
+                 !f->siltex;   /* the hull's edges are not siltex's outline */
     if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);
