@@ -168,13 +168,13 @@ uint32_t silk_siltex_azimuth(int64_t x, int64_t y)
     if (ax == 0 && ay == 0) return 0;
     /* the octant: the smaller over the larger is a ratio in [0, 1] */
     uint64_t lo = ay <= ax ? ay : ax, hi = ay <= ax ? ax : ay;
-    while (hi >= ((uint64_t)1 << 40)) {   /* room for the ratio's 16 bits */
+    while (hi >= ((uint64_t)1 << 38)) {   /* room for the ratio's 24 bits */
         hi >>= 1;
         lo >>= 1;
     }
-    uint32_t r = (uint32_t)((lo << 16) / hi);   /* Q16, 0 .. 65536 */
-    uint32_t i = r >> 8, f = r & 255;
-    uint32_t a = atan_turns[i] + (i < 256 ? (uint32_t)(((atan_turns[i + 1] - atan_turns[i]) * f + 128) >> 8) : 0);
+    uint32_t r = (uint32_t)((lo << 24) / hi);   /* Q24, 0 .. 2^24 */
+    uint32_t i = r >> 16, f = r & 0xffff;
+    uint32_t a = atan_turns[i] + (i < 256 ? (uint32_t)(((atan_turns[i + 1] - atan_turns[i]) * f + 32768) >> 16) : 0);
     if (ay > ax) a = (1u << 18) - a;                  /* pi/2 - atan(x/y) */
     if (x < 0) a = (1u << 19) - a;                    /* left half: pi - a */
     if (y < 0) a = ((1u << 20) - a) & ((1u << 20) - 1);   /* lower half: 2 pi - a */
