@@ -364,8 +364,7 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
         cm.filter = SILK_TEX_BILINEAR;
         cm.wrap = SILK_TEX_CLAMP;
         /* the texture's v runs upwards, the atlas's downwards */
-        rgb = silk_texture_sample(&cm, (silk_fx)(((int64_t)u * 65536) / st->w),
-                                  (silk_fx)(SILK_FX_ONE - ((int64_t)v * 65536) / st->h), 0, 0);
+        rgb = silk_texture_sample(&cm, (silk_fx)(u / (int32_t)st->w), (silk_fx)(SILK_FX_ONE - v / (int32_t)st->h), 0, 0);
     }
 #endif
     return silk_hal_phong_tinted(s->shade, shade_var, rgb);
