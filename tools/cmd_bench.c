@@ -81,7 +81,8 @@ typedef struct loaded {
     silk_mesh mesh;
     uint8_t *file;             /* the hull of a prepared model: the file, which holds its map */
     silk_silmap silmap;
-    struct loaded *hull;       /* clip mode's mesh and map, when a mode is clip */
+    silk_siltex siltex;
+    struct loaded *hull;       /* clip and siltex mode's mesh, map and texture, when a mode needs them */
 } loaded;
 
 static void help(FILE *f)
@@ -102,7 +103,7 @@ static void help(FILE *f)
             "  --pair COARSE:FINE  a coarse mesh and its fine reference (repeatable)\n"
             "  --views N           views per projection along the camera path [12]\n"
             "  --size WxH          image size [640x480]\n"
-            "  --modes LIST        comma-separated: flat, smooth, blend, clip, pnL (PN triangles\n"
+            "  --modes LIST        comma-separated: flat, smooth, blend, clip, siltex, pnL (PN triangles\n"
             "                      at level L = 1..%u) [flat,smooth,blend,pn2,pn3]\n"
             "  --projection ortho|perspective|both   [both]\n"
             "  --reps N            timed renders per view, the fastest kept [3]\n"
@@ -175,8 +176,10 @@ static void mesh_name(const char *path, char *out, size_t n)
 }
 
 /* Load with room for the per-frame scratch on top: 8 MiB times 2^grow
- * besides the mesh (cli_mesh_load doubles it while the mesh does not fit). */
-static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_part part)
+ * besides the mesh (cli_mesh_load doubles it while the mesh does not fit).
+ * The hull comes with the silhouette map (clip) and texture (siltex) the
+ * modes want. */
+static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_part part, int clip, int siltex)
 {
     memset(l, 0, sizeof *l);
     l->path = path;
@@ -192,7 +195,8 @@ static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_
     l->mesh = lm.mesh;
     if (part == SILK_PART_HULL) {
         l->file = lm.file;
-        if (!rc) rc = cli_silmap(lm.file, lm.file_len, lm.name, &l->silmap);
+        if (!rc && clip) rc = cli_silmap(lm.file, lm.file_len, lm.name, &l->silmap);
+        if (!rc && siltex) rc = cli_siltex(lm.file, lm.file_len, lm.name, &l->siltex);
     } else {
         free(lm.file);
     }
@@ -390,9 +394,10 @@ static int bench_proj(ctx *x, loaded *coarse, loaded *fine, int proj, acc *mode_
             ro.aa = !c->mode[m].aa_off;
             if (c->mode[m].level) ro.level = c->mode[m].level;
             loaded *drawn = coarse;
-            if (ro.mode == SILK_MODE_CLIP) {
+            if (ro.mode == SILK_MODE_CLIP || ro.mode == SILK_MODE_SILTEX) {
                 drawn = coarse->hull;
                 ro.silmap = &drawn->silmap;
+                ro.siltex = &drawn->siltex;
             }
             if (measure(x, drawn, &view, &ro, a, k) != 0) {
                 rc = CLI_EXIT_INPUT;   /* reported; the other modes go on */
@@ -418,19 +423,22 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ro
         loaded coarse, fine;
         memset(&fine, 0, sizeof fine);
         rc = 0;
-        if ((rc = load_mesh(&coarse, coarse_path, 1, grow, SILK_PART_COARSE)) != 0) {
+        if ((rc = load_mesh(&coarse, coarse_path, 1, grow, SILK_PART_COARSE, 0, 0)) != 0) {
             unload(&coarse);
             return rc;
         }
-        int clip = 0;
-        for (int m = 0; m < c->nmodes; m++) clip |= c->mode[m].mode == SILK_MODE_CLIP;
-        if (clip && (!(coarse.hull = malloc(sizeof *coarse.hull)) ||
-                     (rc = load_mesh(coarse.hull, coarse_path, 0, grow, SILK_PART_HULL)) != 0)) {
+        int clip = 0, siltex = 0;
+        for (int m = 0; m < c->nmodes; m++) {
+            clip |= c->mode[m].mode == SILK_MODE_CLIP;
+            siltex |= c->mode[m].mode == SILK_MODE_SILTEX;
+        }
+        if ((clip || siltex) && (!(coarse.hull = malloc(sizeof *coarse.hull)) ||
+                                 (rc = load_mesh(coarse.hull, coarse_path, 0, grow, SILK_PART_HULL, clip, siltex)) != 0)) {
             if (!coarse.hull) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
             unload(&coarse);
             return rc;
         }
-        if (fine_path && (rc = load_mesh(&fine, fine_path, 0, 0, SILK_PART_COARSE)) != 0) {
+        if (fine_path && (rc = load_mesh(&fine, fine_path, 0, 0, SILK_PART_COARSE, 0, 0)) != 0) {
             unload(&coarse);
             unload(&fine);
             return rc;
