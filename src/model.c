@@ -212,6 +212,10 @@ static silk_status mesh_check(const silk_model_section *s, const char *sec, cons
 }
 
 static silk_status smap_check(const silk_model_section *sp, const char *name, silk_silmap *out, silk_error *err);
+#ifndef SILK_NO_SILTEX_MODE
+static silk_status stex_of(const silk_model *m, const silk_model_section *s, const char *name, silk_siltex *out,
+                           silk_error *err);
+#endif
 
 silk_status silk_load_model(const void *data, size_t len, const char *name, const silk_load_opts *opts,
                             silk_arena *a, silk_mesh *out, silk_error *err)
@@ -249,6 +253,10 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
     silk_model_section ms;
     silk_silmap map;
     if (silk_model_find(&m, SILK_SECTION_SMAP, &ms) && (st = smap_check(&ms, name, &map, err))) return st;
+#ifndef SILK_NO_SILTEX_MODE
+    silk_siltex tex;
+    if (silk_model_find(&m, SILK_SECTION_STEX, &ms) && (st = stex_of(&m, &ms, name, &tex, err))) return st;
+#endif
 
     int want_n = opts->normals != SILK_NORMALS_COMPUTE;
     size_t need = 0;
@@ -515,20 +523,30 @@ static silk_status stex_check(const silk_model_section *sp, const mesh_layout *h
     return SILK_OK;
 }
 
+/* The opened model's STEX section s, with the HULL it goes with. */
+static silk_status stex_of(const silk_model *m, const silk_model_section *s, const char *name, silk_siltex *out,
+                           silk_error *err)
+{
+    silk_model_section hs;
+    mesh_layout hull;
+    silk_status st;
+    if (!silk_model_find(m, SILK_SECTION_HULL, &hs)) return BAD("STEX section without the HULL section it goes with");
+    if ((st = mesh_layout_of(&hs, "HULL", name, &hull, err))) return st;
+    if ((st = mesh_check(&hs, "HULL", &hull, name, err))) return st;
+    return stex_check(s, &hull, hs.data + hull.tri, name, out, err);
+}
+
 silk_status silk_model_siltex(const void *data, size_t len, const char *name, silk_siltex *out, silk_error *err)
 {
     if (!name) name = "model";
     memset(out, 0, sizeof *out);
     silk_model m;
-    silk_model_section s, hs;
-    mesh_layout hull;
+    silk_model_section s;
     silk_status st = silk_model_open(data, len, name, &m, err);
     if (st) return st;
     if (!silk_model_find(&m, SILK_SECTION_STEX, &s))
         return BAD("no STEX section (prepared without the silhouette texture siltex mode needs)");
-    if (!silk_model_find(&m, SILK_SECTION_HULL, &hs)) return BAD("STEX section without the HULL section it goes with");
-    if ((st = mesh_layout_of(&hs, "HULL", name, &hull, err))) return st;
-    if ((st = mesh_check(&hs, "HULL", &hull, name, err))) return st;
-    return stex_check(&s, &hull, hs.data + hull.tri, name, out, err);
+    if ((st = stex_of(&m, &s, name, out, err))) memset(out, 0, sizeof *out);
+    return st;
 }
 #endif

@@ -6,8 +6,9 @@
  * frames of siltex mode: bands equal to the whole frame, the outline of a
  * sphere against its exact outline, one sphere in front of another.
  *
- *   test_siltex --write FILE [two]   write the analytic model (for the
- *                                    command's tests and the fuzz seeds)
+ *   test_siltex --write FILE [two|tiny]   write the analytic model (for
+ *                                         the command's tests, tests/bad and
+ *                                         the fuzz seeds)
  */
 #include <math.h>
 #include <stdint.h>
@@ -546,8 +547,12 @@ int main(int argc, char **argv)
 {
     if (argc >= 3 && !strcmp(argv[1], "--write")) {
         stexgen_opts o;
-        if (argc > 3 && !strcmp(argv[3], "two")) two_spheres(&o);
-        else stexgen_defaults(&o);
+        if (argc > 3 && !strcmp(argv[3], "two")) {
+            two_spheres(&o);
+        } else {
+            stexgen_defaults(&o);
+            if (argc > 3 && !strcmp(argv[3], "tiny")) o.level = 0, o.cell = 4, o.k = 4, o.R[0] = 1.3;
+        }
         size_t len;
         uint8_t *file = stexgen_model(&o, &len);
         FILE *f = file ? fopen(argv[2], "wb") : NULL;
