@@ -549,4 +549,13 @@ silk_status silk_model_siltex(const void *data, size_t len, const char *name, si
     if ((st = stex_of(&m, &s, name, out, err))) memset(out, 0, sizeof *out);
     return st;
 }
+#else
+silk_status silk_model_siltex(const void *data, size_t len, const char *name, silk_siltex *out, silk_error *err)
+{
+    (void)data;
+    (void)len;
+    if (!name) name = "model";
+    memset(out, 0, sizeof *out);
+    return BAD("silhouette textures are not built in (SILK_NO_SILTEX_MODE)");
+}
 #endif

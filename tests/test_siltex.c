@@ -6,7 +6,7 @@
  * frames of siltex mode: bands equal to the whole frame, the outline of a
  * sphere against its exact outline, one sphere in front of another.
  *
- *   test_siltex --write FILE [two|tiny]   write the analytic model (for
+ *   test_siltex --write FILE [two|tiny|tiny-compressed]   write the analytic model (for
  *                                         the command's tests, tests/bad and
  *                                         the fuzz seeds)
  */
@@ -551,7 +551,8 @@ int main(int argc, char **argv)
             two_spheres(&o);
         } else {
             stexgen_defaults(&o);
-            if (argc > 3 && !strcmp(argv[3], "tiny")) o.level = 0, o.cell = 4, o.k = 4, o.R[0] = 1.3;
+            if (argc > 3 && !strncmp(argv[3], "tiny", 4)) o.level = 0, o.cell = 4, o.k = 4, o.R[0] = 1.3;
+            if (argc > 3 && !strcmp(argv[3], "tiny-compressed")) o.eigen = 1, o.color = 1;
         }
         size_t len;
         uint8_t *file = stexgen_model(&o, &len);
