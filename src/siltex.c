@@ -241,34 +241,49 @@ static int64_t blend4(const texels *tx, const int64_t p[4])
     return (top * 65536 + (bot - top) * tx->wy + ((int64_t)1 << 31)) >> 32;
 }
 
-uint32_t silk_siltex_phi(const silk_siltex *st, silk_fx u, silk_fx v, uint32_t az)
+/* phi at the texels around a point, azimuth az (silk_siltex_phi). */
+static uint32_t phi_at(const silk_siltex *st, const texels *tx, uint32_t az)
 {
-    texels tx;
-    texels_at(st, u, v, &tx);
     uint64_t s = (uint64_t)(az & ((1u << 20) - 1)) * st->k;   /* Q20 samples */
     uint32_t i0 = (uint32_t)(s >> 20), i1 = i0 + 1 == st->k ? 0 : i0 + 1;
     int64_t f = (int64_t)((s >> 4) & 0xffff), p[4];
     for (int k = 0; k < 4; k++) {
-        int64_t a = silk_siltex_q(st, tx.t[k], i0), b = silk_siltex_q(st, tx.t[k], i1);
+        int64_t a = silk_siltex_q(st, tx->t[k], i0), b = silk_siltex_q(st, tx->t[k], i1);
         p[k] = a * 65536 + (b - a) * f;   /* Q16 q units */
     }
-    int64_t phi = blend4(&tx, p);
+    int64_t phi = blend4(tx, p);
     return phi < 0 ? 0 : (uint32_t)phi;
 }
 
-int silk_siltex_visible(const silk_siltex *st, silk_fx u, silk_fx v, const silk_fx c[3], const silk_fx t[3],
-                        const int64_t d[3])
+uint32_t silk_siltex_phi(const silk_siltex *st, silk_fx u, silk_fx v, uint32_t az)
+{
+    texels tx;
+    texels_at(st, u, v, &tx);
+    return phi_at(st, &tx, az);
+}
+
+/* Eq. 4 at the texels around a point (silk_siltex_visible). */
+static int visible_at(const silk_siltex *st, const texels *tx, const silk_fx c[3], const silk_fx t[3],
+                      const int64_t d[3])
 {
     int64_t C[3], T[3], B[3];
     if (!silk_siltex_frame(c, t, C, T, B)) return 0;
     int64_t dc = d[0] * C[0] + d[1] * C[1] + d[2] * C[2];   /* Q32 */
     int64_t dt = (d[0] * T[0] + d[1] * T[1] + d[2] * T[2]) >> 16;
     int64_t db = (d[0] * B[0] + d[1] * B[1] + d[2] * B[2]) >> 16;
-    uint32_t phi = silk_siltex_phi(st, u, v, silk_siltex_azimuth(dt, db));
+    uint32_t phi = phi_at(st, tx, silk_siltex_azimuth(dt, db));
     return (dc >> 2) >= silk_siltex_cos(phi);
 }
 
-/* Octahedral normal of texel t, unit, Q16.16. */
+int silk_siltex_visible(const silk_siltex *st, silk_fx u, silk_fx v, const silk_fx c[3], const silk_fx t[3],
+                        const int64_t d[3])
+{
+    texels tx;
+    texels_at(st, u, v, &tx);
+    return visible_at(st, &tx, c, t, d);
+}
+
+/* Octahedral normal of texel t, decoded: |x| + |y| + |z| = 127. */
 static void normal_of(const silk_siltex *st, uint32_t t, int64_t n[3])
 {
     int64_t x = (int8_t)st->normal[2 * (size_t)t], y = (int8_t)st->normal[2 * (size_t)t + 1];
@@ -280,19 +295,30 @@ static void normal_of(const silk_siltex *st, uint32_t t, int64_t n[3])
         x = nx;
         y = ny;
     }
-    if (!silk_unit64(x, y, z, n)) n[0] = n[1] = 0, n[2] = SILK_FX_ONE;
+    n[0] = x;
+    n[1] = y;
+    n[2] = z;
+}
+
+/* The decoded normals blended, then normalised once: neighbouring texels'
+ * codes are of nearly equal length, so this is the blend of the unit
+ * normals to well under a level of shading. */
+static void normal_at(const silk_siltex *st, const texels *tx, int64_t n[3])
+{
+    int64_t m[4][3], b[3];
+    for (int k = 0; k < 4; k++) normal_of(st, tx->t[k], m[k]);
+    for (int i = 0; i < 3; i++) {
+        int64_t p[4] = { m[0][i] << 16, m[1][i] << 16, m[2][i] << 16, m[3][i] << 16 };
+        b[i] = blend4(tx, p);
+    }
+    if (!silk_unit64(b[0], b[1], b[2], n)) n[0] = n[1] = 0, n[2] = SILK_FX_ONE;
 }
 
 void silk_siltex_normal(const silk_siltex *st, silk_fx u, silk_fx v, int64_t n[3])
 {
     texels tx;
     texels_at(st, u, v, &tx);
-    int64_t m[4][3];
-    for (int k = 0; k < 4; k++) normal_of(st, tx.t[k], m[k]);
-    for (int i = 0; i < 3; i++) {
-        int64_t p[4] = { m[0][i], m[1][i], m[2][i], m[3][i] };
-        n[i] = blend4(&tx, p);
-    }
+    normal_at(st, &tx, n);
 }
 
 /* ---- the HAL stages ------------------------------------------------------------- */
@@ -342,9 +368,11 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
         d[0] = view->forward.x, d[1] = view->forward.y, d[2] = view->forward.z;
     }
     silk_fx u = var[VAR_UV], v = var[VAR_UV + 1];
-    if (!silk_siltex_visible(st, u, v, &var[VAR_C], &var[VAR_T], d)) return SILK_FRAGMENT_DISCARD;
+    texels tx;
+    texels_at(st, u, v, &tx);
+    if (!visible_at(st, &tx, &var[VAR_C], &var[VAR_T], d)) return SILK_FRAGMENT_DISCARD;
     int64_t n[3];
-    silk_siltex_normal(st, u, v, n);
+    normal_at(st, &tx, n);
     silk_fx shade_var[SILK_MAX_VARYINGS + 2];
     memset(shade_var, 0, sizeof shade_var);
     for (int k = 0; k < 3; k++) {

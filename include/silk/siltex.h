@@ -93,8 +93,8 @@ uint32_t silk_siltex_phi(const silk_siltex *st, silk_fx u, silk_fx v, uint32_t a
 int silk_siltex_visible(const silk_siltex *st, silk_fx u, silk_fx v, const silk_fx c[3], const silk_fx t[3],
                         const int64_t d[3]);
 
-/* The normal map's normal at (u, v), bilinear over the four texels around
- * it (each decoded and normalised), not normalised after; Q16.16. */
+/* The normal map's unit normal at (u, v): the four texels around it
+ * decoded, blended bilinearly, normalised; Q16.16. */
 void silk_siltex_normal(const silk_siltex *st, silk_fx u, silk_fx v, int64_t n[3]);
 
 /* ---- drawing: the HAL stages of siltex mode ----------------------------------- */
