@@ -314,29 +314,30 @@ typedef struct scene {
     silk_siltex st;
 } scene;
 
+static void scene_close(scene *s)
+{
+    free(s->file);
+    free(s->buf);
+}
+
+/* The model of o loaded: its hull and texture.  0 (a failed check, the
+ * scene closed) when that fails. */
 static int scene_open(scene *s, const stexgen_opts *o)
 {
     memset(s, 0, sizeof *s);
     s->file = stexgen_model(o, &s->len);
     s->buf = malloc(64u << 20);
-    if (!s->file || !s->buf) return 0;
-    silk_arena_init(&s->a, s->buf, 64u << 20);
+    silk_error err = { SILK_OK, 0, "out of memory" };
     silk_load_opts lo;
     silk_load_opts_default(&lo);
     lo.part = SILK_PART_HULL;
-    silk_error err;
-    if (silk_load_model(s->file, s->len, "spheres.silk", &lo, &s->a, &s->hull, &err) != SILK_OK ||
-        silk_model_siltex(s->file, s->len, "spheres.silk", &s->st, &err) != SILK_OK) {
-        fprintf(stderr, "%s\n", err.msg);
-        return 0;
-    }
-    return 1;
-}
-
-static void scene_close(scene *s)
-{
-    free(s->file);
-    free(s->buf);
+    int ok = s->file && s->buf;
+    if (ok) silk_arena_init(&s->a, s->buf, 64u << 20);
+    ok = ok && silk_load_model(s->file, s->len, "spheres.silk", &lo, &s->a, &s->hull, &err) == SILK_OK &&
+         silk_model_siltex(s->file, s->len, "spheres.silk", &s->st, &err) == SILK_OK;
+    CHECKF(ok, "the analytic model: %s", err.msg);
+    if (!ok) scene_close(s);
+    return ok;
 }
 
 static void render_opts(silk_render_opts *ro, const silk_siltex *st)
@@ -353,11 +354,7 @@ TEST(outline_matches_sphere)
     stexgen_opts o;
     stexgen_defaults(&o);
     scene s;
-    CHECK(scene_open(&s, &o));
-    if (!s.hull.ntris) {
-        scene_close(&s);
-        return;
-    }
+    if (!scene_open(&s, &o)) return;
     enum { W = 320, H = 240 };
     ts_image img = { 0, 0, NULL, NULL };
     unsigned char *mine = malloc(W * H), *exact = malloc(W * H);
@@ -419,11 +416,7 @@ TEST(interior_silhouette)
     stexgen_opts o;
     two_spheres(&o);
     scene s;
-    CHECK(scene_open(&s, &o));
-    if (!s.hull.ntris) {
-        scene_close(&s);
-        return;
-    }
+    if (!scene_open(&s, &o)) return;
     enum { W = 320, H = 240 };
     double eye[3] = { 0.3, 0.2, 6 }, tgt[3] = { 0.6, 0.15, -0.8 };
     silk_camera cam = ts_camera(eye, tgt, 40, 2, 12, W, H);
@@ -470,11 +463,7 @@ TEST(bands_equal_frame)
     two_spheres(&o);
     o.eigen = 1;
     scene s;
-    CHECK(scene_open(&s, &o));
-    if (!s.hull.ntris) {
-        scene_close(&s);
-        return;
-    }
+    if (!scene_open(&s, &o)) return;
     for (int ortho = 0; ortho <= 1; ortho++) {
         const double dir[3] = { 0.47, 0.342, 0.814 };
         silk_view v;
@@ -514,11 +503,7 @@ TEST(refuses_wrong_input)
     stexgen_opts o;
     stexgen_defaults(&o);
     scene s;
-    CHECK(scene_open(&s, &o));
-    if (!s.hull.ntris) {
-        scene_close(&s);
-        return;
-    }
+    if (!scene_open(&s, &o)) return;
     silk_view v;
     const double dir[3] = { 0, 0, 1 };
     CHECK(tf_view_around_size(&s.hull, dir, 2.2, 0, 64, 48, &v));

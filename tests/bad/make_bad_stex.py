@@ -16,16 +16,12 @@ import sys
 from make_bad_smap import HERE, fix, sections
 
 
-def stex(b):
-    for i, t, off, size in sections(b):
-        if t == b"STEX":
-            return off, size
-    raise SystemExit("no STEX section in the base model")
-
-
 def main():
     base = bytearray(open(sys.argv[1], "rb").read())
-    off, size = stex(base)
+    found = [(off, size) for i, t, off, size in sections(base) if t == b"STEX"]
+    if not found:
+        raise SystemExit("no STEX section in the base model")
+    off, size = found[0]
     w, h, k, e, nverts, ntris = struct.unpack_from("<HHHHII", base, off + 8)
     frame = off + 32
     uv = frame + 12 * nverts
