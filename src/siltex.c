@@ -308,7 +308,7 @@ static void normal_at(const silk_siltex *st, const texels *tx, int64_t n[3])
     int64_t m[4][3], b[3];
     for (int k = 0; k < 4; k++) normal_of(st, tx->t[k], m[k]);
     for (int i = 0; i < 3; i++) {
-        int64_t p[4] = { m[0][i] << 16, m[1][i] << 16, m[2][i] << 16, m[3][i] << 16 };
+        int64_t p[4] = { m[0][i] * 65536, m[1][i] * 65536, m[2][i] * 65536, m[3][i] * 65536 };
         b[i] = blend4(tx, p);
     }
     if (!silk_unit64(b[0], b[1], b[2], n)) n[0] = n[1] = 0, n[2] = SILK_FX_ONE;
