@@ -9,7 +9,8 @@
  * looked up at every triangle corner's atlas point and a little outside
  * the atlas, along directions taken from the input, and every texel's
  * angles are reconstructed; then the hull is drawn through it in a 32 x 24
- * frame: the bands must give the whole frame's bytes.
+ * frame (with or without its lines): the bands must give the whole
+ * frame's bytes.
  */
 #include "fuzz.h"
 #include "silk/siltex.h"
@@ -78,6 +79,7 @@ static void siltex_draw(const silk_siltex *st, const uint8_t *b, size_t size)
     silk_render_opts_default(&ro);
     ro.mode = SILK_MODE_SILTEX;
     ro.siltex = st;
+    ro.lines = (silk_lines)(size % 3);   /* eq. 5's lines too */
     static uint8_t whole[32 * 24 * 3], bands[32 * 24 * 3];
     static uint32_t depth[32 * 24];
     silk_target t;

@@ -366,12 +366,17 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
             return silk_fail(err, SILK_ERR_ARG, NULL, 0,
                              "silk_render: the silhouette texture is for a hull of %lu triangles, the mesh has %lu",
                              (unsigned long)o->siltex->ntris, (unsigned long)m->ntris);
-        if (o->lines)
-            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: no lines in siltex mode (the outline is the texture's)");
         f->siltex = 1;
         f->siltex_stage.tex = o->siltex;
         f->siltex_stage.shade = h;
         f->siltex_stage.view = v;
+        /* lines (eq. 5) sized for an edge crossed a sixteenth of the hull's
+         * diagonal away from it */
+        f->siltex_stage.lines = (int)o->lines;
+        f->siltex_stage.line_rgb = o->line_rgb;
+        f->siltex_stage.bg_rgb = o->bg_rgb;
+        f->siltex_stage.line_q =
+            silk_siltex_line_width(v, silk_v3_length(silk_v3_sub(m->bbox_max, m->bbox_min)) / 16);
         silk_siltex_hal(&f->siltex_hal, &f->siltex_stage);
         return shares_prepare(f, a, m, v, &f->siltex_hal, o, stats, err);
 #endif
@@ -504,7 +509,7 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
     /* Lines alone: the surface is drawn into the depth buffer only, to hide them. */
-    const silk_hal *shade = o->lines == SILK_LINES_ONLY || pass < 0 ? NULL : f->hal;
+    const silk_hal *shade = (o->lines == SILK_LINES_ONLY && !f->siltex) || pass < 0 ? NULL : f->hal;   /* SILTEX: its stage draws its lines */
     for (uint32_t i = 0; i < g->ntri; i++) {
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];

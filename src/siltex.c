@@ -262,17 +262,27 @@ uint32_t silk_siltex_phi(const silk_siltex *st, silk_fx u, silk_fx v, uint32_t a
     return phi_at(st, &tx, az);
 }
 
+/* The lobe at the texels around a point along d: phi (q units, Q16) and
+ * d.C (Q2.30); 0 when the interpolated C is zero (nothing is seen). */
+static int lobe_at(const silk_siltex *st, const texels *tx, const silk_fx c[3], const silk_fx t[3],
+                   const int64_t d[3], uint32_t *phi, int64_t *dc)
+{
+    int64_t C[3], T[3], B[3];
+    if (!silk_siltex_frame(c, t, C, T, B)) return 0;
+    int64_t dt = (d[0] * T[0] + d[1] * T[1] + d[2] * T[2]) >> 16;
+    int64_t db = (d[0] * B[0] + d[1] * B[1] + d[2] * B[2]) >> 16;
+    *dc = (d[0] * C[0] + d[1] * C[1] + d[2] * C[2]) >> 2;   /* Q32 to Q30 */
+    *phi = phi_at(st, tx, silk_siltex_azimuth(dt, db));
+    return 1;
+}
+
 /* Eq. 4 at the texels around a point (silk_siltex_visible). */
 static int visible_at(const silk_siltex *st, const texels *tx, const silk_fx c[3], const silk_fx t[3],
                       const int64_t d[3])
 {
-    int64_t C[3], T[3], B[3];
-    if (!silk_siltex_frame(c, t, C, T, B)) return 0;
-    int64_t dc = d[0] * C[0] + d[1] * C[1] + d[2] * C[2];   /* Q32 */
-    int64_t dt = (d[0] * T[0] + d[1] * T[1] + d[2] * T[2]) >> 16;
-    int64_t db = (d[0] * B[0] + d[1] * B[1] + d[2] * B[2]) >> 16;
-    uint32_t phi = phi_at(st, tx, silk_siltex_azimuth(dt, db));
-    return (dc >> 2) >= silk_siltex_cos(phi);
+    uint32_t phi;
+    int64_t dc;
+    return lobe_at(st, tx, c, t, d, &phi, &dc) && dc >= silk_siltex_cos(phi);
 }
 
 int silk_siltex_visible(const silk_siltex *st, silk_fx u, silk_fx v, const silk_fx c[3], const silk_fx t[3],
@@ -370,7 +380,25 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
     silk_fx u = var[VAR_UV], v = var[VAR_UV + 1];
     texels tx;
     texels_at(st, u, v, &tx);
-    if (!visible_at(st, &tx, &var[VAR_C], &var[VAR_T], d)) return SILK_FRAGMENT_DISCARD;
+    uint32_t phi;
+    int64_t dc;
+    if (!lobe_at(st, &tx, &var[VAR_C], &var[VAR_T], d, &phi, &dc)) return SILK_FRAGMENT_DISCARD;
+    int seen = dc >= silk_siltex_cos(phi);
+    if (s->lines) {
+        /* eq. 5: a line where |acos(d.C) - phi| <= w, w growing with the
+         * eye depth (a pixel's width there) in perspective */
+        int64_t w = s->line_q;
+        if (!view->cam.ortho) {
+            silk_vec3 e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
+            w = (silk_v3_dot64(e, view->forward) >> 16) * w >> 16;
+        }
+        int64_t lo = (int64_t)phi - w, hi = (int64_t)phi + w, top = (int64_t)255 << 16;
+        lo = lo < 0 ? 0 : lo;
+        hi = hi > top ? top : hi;
+        if (dc <= silk_siltex_cos((uint32_t)lo) && dc >= silk_siltex_cos((uint32_t)hi)) return s->line_rgb;
+        if (seen && s->lines == 2) return s->bg_rgb;   /* lines alone: the surface only hides them */
+    }
+    if (!seen) return SILK_FRAGMENT_DISCARD;
     int64_t n[3];
     normal_at(st, &tx, n);
     silk_fx shade_var[SILK_MAX_VARYINGS + 2];
@@ -406,4 +434,15 @@ void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s)
     h->nvaryings = VAR_COUNT;
     h->uniforms = s;
     h->footprint_var = 0;
+}
+
+int64_t silk_siltex_line_width(const silk_view *view, silk_fx reach)
+{
+    /* w (radians) = 1 px / (pixels_per_unit / depth) / reach; in q units
+     * times 255 / pi (Q16: 5319493), per unit of eye depth in perspective;
+     * at most 2^31, so that times a depth below 2^31 it stays in 64 bits */
+    int64_t ppu = view->pixels_per_unit > 0 ? view->pixels_per_unit : 1;
+    int64_t r = reach > 64 ? reach : 64;
+    int64_t w = ((int64_t)5319493 << 16) / ppu * 65536 / r;
+    return w < ((int64_t)1 << 31) ? w : ((int64_t)1 << 31);
 }

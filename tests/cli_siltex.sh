@@ -3,8 +3,8 @@
 # spheres' model of tests/test_siltex.c (its silhouette texture is made
 # exactly, without ray casting): render, info (text and JSON), bench with a
 # --pair (the silhouette error against the detailed sphere), profile, the
-# viewer's key; and the errors: a mesh file, a model without a texture,
-# lines in siltex mode.
+# viewer's key, the silhouette lines; and the errors: a mesh file, a model
+# without a texture.
 . "$(dirname "$0")/shlib.sh"
 
 if ! "$build/tests/test_siltex" --write "$tmp/s.silk" >/dev/null 2>&1; then
@@ -17,6 +17,9 @@ run_silk render "$tmp/s.silk" --mode siltex --size 160x120 -o "$tmp/s.png"
 check "render --mode siltex" [ "$rc" -eq 0 ] && [ -s "$tmp/s.png" ]
 run_silk render "$tmp/s.silk" --mode siltex --size 160x120 --ortho auto --format rgb565 -o "$tmp/o.ppm"
 check "render --mode siltex, orthographic, rgb565" [ "$rc" -eq 0 ] && [ -s "$tmp/o.ppm" ]
+
+run_silk render "$tmp/s.silk" --mode siltex --size 160x120 --lines only -o "$tmp/l.png"
+check "render --mode siltex --lines only (eq. 5)" [ "$rc" -eq 0 ] && [ -s "$tmp/l.png" ]
 
 run_silk info "$tmp/s.silk" --mode siltex --size 160x120
 check "info: atlas, azimuths, bytes" grep -qE '^  atlas: +108x108 texels, 8 azimuths \(K\), 0 eigenfunctions' "$out"
@@ -40,8 +43,6 @@ check "view: key 6 is siltex" grep -q 'siltex' "$out"
 want='draws a prepared model' expect_input "siltex on a mesh file" render "$tmp/fine.obj" --mode siltex -o "$tmp/x.png"
 "$SILK" prepare "$tmp/fine.obj" -o "$tmp/noclip.silk" --triangles 100 --no-clip >/dev/null 2>&1
 want='no (HULL|STEX) section' expect_input "siltex on a model without a texture" render "$tmp/noclip.silk" --mode siltex \
-    -o "$tmp/x.png"
-want='no lines in siltex mode' expect_input "no lines in siltex mode" render "$tmp/s.silk" --mode siltex --lines over \
     -o "$tmp/x.png"
 check "no output left behind" [ ! -e "$tmp/x.png" ]
 

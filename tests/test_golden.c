@@ -398,6 +398,11 @@ static void golden_siltex(void)
         for (size_t iv = 0; iv < sizeof sv / sizeof sv[0]; iv++)
             golden_case(&f, "spheres", &sv[iv], &siltex, SILK_PIX_RGB888, 1, NULL, 0);
         golden_case(&f, "spheres", &sv[1], &siltex, SILK_PIX_RGB565, 0, NULL, 0);
+        /* the silhouettes from the texture (eq. 5), the near sphere's over the far one */
+        static const mode_case lines = { "siltex-lines-only", SILK_MODE_SILTEX, SILK_LINES_ONLY, 0, 0 };
+        static const mode_case over = { "siltex-lines-over", SILK_MODE_SILTEX, SILK_LINES_OVER, 0, 0 };
+        golden_case(&f, "spheres", &sv[1], &lines, SILK_PIX_RGB888, 1, NULL, 0);
+        golden_case(&f, "spheres", &sv[2], &over, SILK_PIX_RGB888, 0, NULL, 0);
     }
     mesh_siltex = NULL;
     tm_fixture_free(&f);

@@ -486,6 +486,8 @@ TEST(bands_equal_frame)
         for (size_t i = 0; i < bytes; i += 3) drawn += whole[i] != 0xFF || whole[i + 1] != 0xFF;
         CHECK(drawn > 2000);
         int rows[2] = { 16, 1 };
+        ro.lines = ortho ? SILK_LINES_OVER : SILK_LINES_NONE;   /* with the lines of eq. 5 too */
+        CHECKF(silk_render(&s.a, &s.hull, &v, &hal, &ro, &t, &fs, &err) == SILK_OK, "%s", err.msg);
         for (int k = 0; k < 2; k++) {
             tf_collect c = { band, 0, 0, 0, 0, 0 };
             CHECK(tf_render_bands(&s.a, &s.hull, &v, &hal, &ro, SILK_PIX_RGB888, rows[k], &c, NULL, &err) == SILK_OK);
@@ -495,6 +497,78 @@ TEST(bands_equal_frame)
         free(band);
         free(depth);
     }
+    scene_close(&s);
+}
+
+/* Silhouette lines (eq. 5) alone: every line pixel lies near the exact
+ * outline of one sphere or the other (the interior silhouette of the near
+ * one over the far one among them), and every point of the exact outline
+ * has a line pixel near it; the bands give the whole frame. */
+TEST(lines_follow_outlines)
+{
+    stexgen_opts o;
+    two_spheres(&o);
+    scene s;
+    if (!scene_open(&s, &o)) return;
+    enum { W = 320, H = 240 };
+    double eye[3] = { 0.3, 0.2, 6 }, tgt[3] = { 0.6, 0.15, -0.8 };
+    silk_camera cam = ts_camera(eye, tgt, 40, 2, 12, W, H);
+    ts_image img = { 0, 0, NULL, NULL };
+    silk_render_opts ro;
+    render_opts(&ro, &s.st);
+    ro.lines = SILK_LINES_ONLY;
+    ro.line_rgb = 0x000000;
+    ro.bg_rgb = 0xFFFFFF;
+    silk_error err;
+    CHECKF(ts_render(&s.a, &s.hull, &cam, &ro, &img, NULL, &err) == SILK_OK, "%s", err.msg);
+    es_camera ec;
+    es_camera_from_silk(&ec, &cam);
+    es_shape a = es_sphere(0, 0, 0, 1.0), b = es_sphere(1.2, 0.3, -1.6, 0.8);
+    unsigned char *ma = malloc(W * H), *mb = malloc(W * H), *vis = malloc(W * H);
+    es_mask(&ec, &a, ma);
+    es_mask(&ec, &b, mb);
+    /* the exact outlines as drawn: a's whole outline, b's where a does not hide it */
+    for (int p = 0; p < W * H; p++) vis[p] = (unsigned char)(ma[p] ? 2 : mb[p] ? 1 : 0);
+    long lines = 0, far = 0, edges = 0, missed = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            const uint8_t *c = &img.rgb[3 * (y * W + x)];
+            int line = c[0] == 0 && c[1] == 0 && c[2] == 0;
+            /* near an edge of vis: within 2 px of a pixel of another value */
+            int near = 0, edge = 0;
+            for (int dy = -2; dy <= 2; dy++)
+                for (int dx = -2; dx <= 2; dx++) {
+                    int xx = x + dx, yy = y + dy;
+                    if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
+                    if (vis[yy * W + xx] != vis[y * W + x]) {
+                        near = 1;
+                        if (dx * dx + dy * dy <= 1 && vis[y * W + x] > vis[yy * W + xx]) edge = 1;
+                    }
+                }
+            lines += line;
+            far += line && !near;
+            if (edge) {
+                int found = 0;
+                for (int dy = -2; dy <= 2 && !found; dy++)
+                    for (int dx = -2; dx <= 2 && !found; dx++) {
+                        int xx = x + dx, yy = y + dy;
+                        if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
+                        const uint8_t *q = &img.rgb[3 * (yy * W + xx)];
+                        found = q[0] == 0 && q[1] == 0 && q[2] == 0;
+                    }
+                edges++;
+                missed += !found;
+            }
+        }
+    CHECKF(lines > 300, "%ld line pixels", lines);
+    CHECKF(far * 50 <= lines, "%ld of %ld line pixels more than 2 px from an outline", far, lines);
+    CHECKF(missed * 50 <= edges, "%ld of %ld outline pixels without a line within 2 px", missed, edges);
+    printf("lines: %ld pixels, %ld away from the outlines; %ld of %ld outline pixels without a line near\n", lines,
+           far, missed, edges);
+    free(ma);
+    free(mb);
+    free(vis);
+    ts_image_free(&img);
     scene_close(&s);
 }
 
@@ -519,9 +593,6 @@ TEST(refuses_wrong_input)
     silk_target_init(&t, 64, 48, 0, 48, SILK_PIX_RGB888, color, depth);
     silk_error err;
     CHECK(silk_render(&s.a, &s.hull, &v, &hal, &ro, &t, NULL, &err) == SILK_ERR_ARG && strstr(err.msg, "texture"));
-    render_opts(&ro, &s.st);
-    ro.lines = SILK_LINES_OVER;
-    CHECK(silk_render(&s.a, &s.hull, &v, &hal, &ro, &t, NULL, &err) == SILK_ERR_ARG && strstr(err.msg, "lines"));
     /* a model without the section */
     silk_siltex st;
     CHECK(silk_model_siltex(s.file, 40, "x.silk", &st, &err) == SILK_ERR_PARSE);
@@ -558,6 +629,7 @@ int main(int argc, char **argv)
     RUN(outline_matches_sphere);
     RUN(interior_silhouette);
     RUN(bands_equal_frame);
+    RUN(lines_follow_outlines);
     RUN(refuses_wrong_input);
     return check_done();
 }

@@ -106,7 +106,20 @@ typedef struct silk_siltex_stage {
     const silk_siltex *tex;
     const silk_hal *shade;
     const silk_view *view;
+    /* Silhouette lines (paper section 4, eq. 5): 0 none, 1 over the
+     * shading, 2 alone (the surface drawn in bg_rgb, hiding lines behind
+     * it).  A pixel is a line pixel where |acos(d.C) - phi| <= w: w =
+     * line_q (q units, Q16) in an orthographic view, line_q times the eye
+     * depth (Q16.16 units) in perspective (silk_siltex_line_width). */
+    int lines;
+    uint32_t line_rgb, bg_rgb;
+    int64_t line_q;
 } silk_siltex_stage;
+
+/* line_q for lines about 2 px wide where the lobe's edge is crossed at a
+ * distance `reach` (model units) from the hull: half a line's width in
+ * pixels over the pixels a unit of distance takes, divided by reach. */
+int64_t silk_siltex_line_width(const silk_view *view, silk_fx reach);
 
 /* Stages that draw the hull (the mesh of the HULL section, CORNER records)
  * through the texture: varyings position (3), atlas point (2), C (3), T
