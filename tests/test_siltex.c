@@ -408,6 +408,31 @@ static void two_spheres(stexgen_opts *o)
     o->color = 1;
 }
 
+/* The two spheres seen with the near one in front of the far one,
+ * 320 x 240, rendered into img (lines as asked); the exact masks of both
+ * spheres into ma and mb (W * H bytes each).  0 when it failed. */
+enum { OW = 320, OH = 240 };
+static int render_overlap(const scene *s, silk_lines lines, ts_image *img, unsigned char *ma, unsigned char *mb)
+{
+    double eye[3] = { 0.3, 0.2, 6 }, tgt[3] = { 0.6, 0.15, -0.8 };
+    silk_camera cam = ts_camera(eye, tgt, 40, 2, 12, OW, OH);
+    silk_render_opts ro;
+    render_opts(&ro, &s->st);
+    ro.lines = lines;
+    ro.line_rgb = 0x000000;
+    ro.bg_rgb = 0xFFFFFF;
+    silk_error err;
+    silk_arena a = s->a;
+    silk_status st = ts_render(&a, &s->hull, &cam, &ro, img, NULL, &err);
+    CHECKF(st == SILK_OK, "%s", err.msg);
+    es_camera ec;
+    es_camera_from_silk(&ec, &cam);
+    es_shape sa = es_sphere(0, 0, 0, 1.0), sb = es_sphere(1.2, 0.3, -1.6, 0.8);
+    es_mask(&ec, &sa, ma);
+    es_mask(&ec, &sb, mb);
+    return st == SILK_OK;
+}
+
 /* One sphere in front of another: where the front hull's pixels are
  * killed, the hull behind shows, so the mask is the union of both
  * spheres' exact masks (the interior silhouette where they overlap). */
@@ -417,21 +442,11 @@ TEST(interior_silhouette)
     two_spheres(&o);
     scene s;
     if (!scene_open(&s, &o)) return;
-    enum { W = 320, H = 240 };
-    double eye[3] = { 0.3, 0.2, 6 }, tgt[3] = { 0.6, 0.15, -0.8 };
-    silk_camera cam = ts_camera(eye, tgt, 40, 2, 12, W, H);
+    enum { W = OW, H = OH };
     ts_image img = { 0, 0, NULL, NULL };
-    silk_render_opts ro;
-    render_opts(&ro, &s.st);
-    silk_error err;
-    CHECKF(ts_render(&s.a, &s.hull, &cam, &ro, &img, NULL, &err) == SILK_OK, "%s", err.msg);
-    es_camera ec;
-    es_camera_from_silk(&ec, &cam);
-    es_shape a = es_sphere(0, 0, 0, 1.0), b = es_sphere(1.2, 0.3, -1.6, 0.8);
     long off = 0, both = 0, behind_seen = 0;
     unsigned char *ma = malloc(W * H), *mb = malloc(W * H), *mine = malloc(W * H), *exact = malloc(W * H);
-    es_mask(&ec, &a, ma);
-    es_mask(&ec, &b, mb);
+    render_overlap(&s, SILK_LINES_NONE, &img, ma, mb);
     for (int p = 0; p < W * H; p++) {
         exact[p] = ma[p] | mb[p];
         mine[p] = ts_covered(&img, p % W, p / W) != 0;
@@ -510,23 +525,10 @@ TEST(lines_follow_outlines)
     two_spheres(&o);
     scene s;
     if (!scene_open(&s, &o)) return;
-    enum { W = 320, H = 240 };
-    double eye[3] = { 0.3, 0.2, 6 }, tgt[3] = { 0.6, 0.15, -0.8 };
-    silk_camera cam = ts_camera(eye, tgt, 40, 2, 12, W, H);
+    enum { W = OW, H = OH };
     ts_image img = { 0, 0, NULL, NULL };
-    silk_render_opts ro;
-    render_opts(&ro, &s.st);
-    ro.lines = SILK_LINES_ONLY;
-    ro.line_rgb = 0x000000;
-    ro.bg_rgb = 0xFFFFFF;
-    silk_error err;
-    CHECKF(ts_render(&s.a, &s.hull, &cam, &ro, &img, NULL, &err) == SILK_OK, "%s", err.msg);
-    es_camera ec;
-    es_camera_from_silk(&ec, &cam);
-    es_shape a = es_sphere(0, 0, 0, 1.0), b = es_sphere(1.2, 0.3, -1.6, 0.8);
     unsigned char *ma = malloc(W * H), *mb = malloc(W * H), *vis = malloc(W * H);
-    es_mask(&ec, &a, ma);
-    es_mask(&ec, &b, mb);
+    render_overlap(&s, SILK_LINES_ONLY, &img, ma, mb);
     /* the exact outlines as drawn: a's whole outline, b's where a does not hide it */
     for (int p = 0; p < W * H; p++) vis[p] = (unsigned char)(ma[p] ? 2 : mb[p] ? 1 : 0);
     long lines = 0, far = 0, edges = 0, missed = 0;

@@ -9,11 +9,10 @@ does for the map) from a small valid prepared model with a texture:
 Each case changes the STEX section and makes its checksums right again, so
 the reader's checks of the texture's contents are what fails.
 """
-import os
 import struct
 import sys
 
-from make_bad_smap import HERE, fix, sections
+from make_bad_smap import sections, write_cases
 
 
 def main():
@@ -54,12 +53,7 @@ def main():
          "triangle 1 corner 1's atlas point (%d/16, %d/16) lies outside the %dx%d atlas"
          % (16 * w + 1, struct.unpack_from("<H", base, uv + 4 * 4 + 2)[0], w, h))
 
-    for name, data, message in cases:
-        with open(os.path.join(HERE, name), "wb") as f:
-            f.write(fix(data))
-        with open(os.path.join(HERE, name + ".expected"), "w") as f:
-            f.write("silk: tests/bad/%s: %s\n" % (name, message))
-    print("%d cases written to %s" % (len(cases), HERE), file=sys.stderr)
+    write_cases(cases)
 
 
 if __name__ == "__main__":
