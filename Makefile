@@ -75,7 +75,7 @@ $(BUILD)/libsilk_platform.a: $(PLAT_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm -pthread
 
 # The manual page is the help text (tools/man.c).
 $(BUILD)/silk.1: $(BUILD)/silk

@@ -1,0 +1,274 @@
+/*
+ * stex_atlas.c - charts of paired hull triangles, shelf-packed
+ * (stex_atlas.h).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "closest.h"
+#include "stex_atlas.h"
+#include "vec3.h"
+
+typedef struct chart {
+    int ntris;
+    uint32_t tri[2];
+    double p[2][3][2];       /* each triangle's corners (hull order) in the plane, lengths */
+    double w, h;             /* bounding box, lengths; corners from (0, 0) */
+    int x, y, bw, bh;        /* the box in texels, gutter included */
+} chart;
+
+typedef struct edge_ref { uint32_t lo, hi, tri; int side; } edge_ref;
+
+static int by_edge(const void *a, const void *b)
+{
+    const edge_ref *x = a, *y = b;
+    if (x->lo != y->lo) return x->lo < y->lo ? -1 : 1;
+    if (x->hi != y->hi) return x->hi < y->hi ? -1 : 1;
+    return x->tri < y->tri ? -1 : x->tri > y->tri;
+}
+
+static double edge_len(const simp_mesh *m, uint32_t t, int side)
+{
+    double d[3];
+    sub3(&m->pos[3 * m->tri[3 * t + (side + 1) % 3]], &m->pos[3 * m->tri[3 * t + side]], d);
+    return len3(d);
+}
+
+/* Plane coordinates of c, with a at the origin and b on the +x axis. */
+static void flat(const double *a, const double *b, const double *c, double sign, double out[2])
+{
+    double e[3], f[3], n[3];
+    sub3(b, a, e);
+    sub3(c, a, f);
+    double l = len3(e);
+    cross3(e, f, n);
+    out[0] = dot3(f, e) / l;
+    out[1] = sign * len3(n) / l;
+}
+
+/* Lay triangle t out with its corner `side` and the next one on the x
+ * axis, the third at y >= 0 (sign 1) or <= 0 (sign -1). */
+static void lay(const simp_mesh *m, uint32_t t, int side, double sign, double p[3][2])
+{
+    const uint32_t *v = &m->tri[3 * t];
+    const double *a = &m->pos[3 * v[side]], *b = &m->pos[3 * v[(side + 1) % 3]], *c = &m->pos[3 * v[(side + 2) % 3]];
+    double e[3];
+    sub3(b, a, e);
+    p[side][0] = 0, p[side][1] = 0;
+    p[(side + 1) % 3][0] = len3(e), p[(side + 1) % 3][1] = 0;
+    flat(a, b, c, sign, p[(side + 2) % 3]);
+}
+
+/* Turn the chart so that its bounding box is smallest, one of its edges
+ * along x, and move it to the origin. */
+static void orient(chart *c)
+{
+    double best = INFINITY, bc = 1, bs = 0;
+    for (int i = 0; i < c->ntris; i++)
+        for (int k = 0; k < 3; k++) {
+            double dx = c->p[i][(k + 1) % 3][0] - c->p[i][k][0], dy = c->p[i][(k + 1) % 3][1] - c->p[i][k][1];
+            double l = hypot(dx, dy), co = dx / l, si = dy / l, lo[2] = { INFINITY, INFINITY }, hi[2] = { -INFINITY, -INFINITY };
+            for (int j = 0; j < c->ntris; j++)
+                for (int q = 0; q < 3; q++) {
+                    double x = co * c->p[j][q][0] + si * c->p[j][q][1], y = -si * c->p[j][q][0] + co * c->p[j][q][1];
+                    lo[0] = fmin(lo[0], x), hi[0] = fmax(hi[0], x), lo[1] = fmin(lo[1], y), hi[1] = fmax(hi[1], y);
+                }
+            if ((hi[0] - lo[0]) * (hi[1] - lo[1]) < best) best = (hi[0] - lo[0]) * (hi[1] - lo[1]), bc = co, bs = si;
+        }
+    double lo[2] = { INFINITY, INFINITY }, hi[2] = { -INFINITY, -INFINITY };
+    for (int j = 0; j < c->ntris; j++)
+        for (int q = 0; q < 3; q++) {
+            double x = bc * c->p[j][q][0] + bs * c->p[j][q][1], y = -bs * c->p[j][q][0] + bc * c->p[j][q][1];
+            c->p[j][q][0] = x, c->p[j][q][1] = y;
+            lo[0] = fmin(lo[0], x), hi[0] = fmax(hi[0], x), lo[1] = fmin(lo[1], y), hi[1] = fmax(hi[1], y);
+        }
+    for (int j = 0; j < c->ntris; j++)
+        for (int q = 0; q < 3; q++) c->p[j][q][0] -= lo[0], c->p[j][q][1] -= lo[1];
+    c->w = hi[0] - lo[0], c->h = hi[1] - lo[1];
+}
+
+/* Pair triangles across their longest free edges into charts.  Returns
+ * the number of charts, or -1 when out of memory. */
+static long make_charts(const simp_mesh *m, chart *ch)
+{
+    size_t ne = 3 * (size_t)m->ntris;
+    edge_ref *e = malloc((ne ? ne : 1) * sizeof *e);
+    uint32_t *nb = malloc((ne ? ne : 1) * sizeof *nb);
+    int32_t *mate = malloc((m->ntris ? m->ntris : 1) * sizeof *mate);
+    if (!e || !nb || !mate) {
+        free(e), free(nb), free(mate);
+        return -1;
+    }
+    for (uint32_t t = 0; t < m->ntris; t++)
+        for (int s = 0; s < 3; s++) {
+            uint32_t a = m->tri[3 * t + s], b = m->tri[3 * t + (s + 1) % 3];
+            e[3 * t + s] = (edge_ref){ a < b ? a : b, a < b ? b : a, t, s };
+            nb[3 * t + s] = UINT32_MAX;
+        }
+    qsort(e, ne, sizeof *e, by_edge);
+    for (size_t i = 0; i + 1 < ne; i++)
+        if (e[i].lo == e[i + 1].lo && e[i].hi == e[i + 1].hi) {
+            nb[3 * e[i].tri + e[i].side] = e[i + 1].tri;
+            nb[3 * e[i + 1].tri + e[i + 1].side] = e[i].tri;
+        }
+    for (uint32_t t = 0; t < m->ntris; t++) mate[t] = -1;
+    long n = 0;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        if (mate[t] >= 0) continue;
+        int side = -1;
+        for (int s = 0; s < 3; s++) {
+            uint32_t o = nb[3 * t + s];
+            if (o == UINT32_MAX || o == t || mate[o] >= 0) continue;
+            if (side < 0 || edge_len(m, t, s) > edge_len(m, t, side)) side = s;
+        }
+        chart *c = &ch[n];
+        memset(c, 0, sizeof *c);
+        c->tri[0] = t;
+        mate[t] = (int32_t)n;
+        if (side < 0) {
+            int longest = 0;
+            for (int s = 1; s < 3; s++)
+                if (edge_len(m, t, s) > edge_len(m, t, longest)) longest = s;
+            c->ntris = 1;
+            lay(m, t, longest, 1, c->p[0]);
+        } else {
+            uint32_t o = nb[3 * t + side];
+            c->ntris = 2;
+            c->tri[1] = o;
+            mate[o] = (int32_t)n;
+            lay(m, t, side, 1, c->p[0]);
+            /* the shared edge runs the other way round in o; its corners get t's places */
+            int os = 0;
+            while (os < 3 && m->tri[3 * o + os] != m->tri[3 * t + (side + 1) % 3]) os++;
+            const double *a = &m->pos[3 * m->tri[3 * t + side]], *b = &m->pos[3 * m->tri[3 * t + (side + 1) % 3]];
+            c->p[1][os][0] = c->p[0][(side + 1) % 3][0], c->p[1][os][1] = 0;
+            c->p[1][(os + 1) % 3][0] = 0, c->p[1][(os + 1) % 3][1] = 0;
+            flat(a, b, &m->pos[3 * m->tri[3 * o + (os + 2) % 3]], -1, c->p[1][(os + 2) % 3]);
+        }
+        orient(c);
+        n++;
+    }
+    free(e), free(nb), free(mate);
+    return n;
+}
+
+static int by_height(const void *a, const void *b)
+{
+    const chart *x = a, *y = b;
+    return x->h > y->h ? -1 : x->h < y->h;
+}
+
+/* Shelf packing at density s: 1 when every box fits in w x h. */
+static int pack(chart *ch, long n, double s, int w, int h)
+{
+    int x = 0, y = 0, row = 0;
+    for (long i = 0; i < n; i++) {
+        chart *c = &ch[i];
+        double bw = ceil(c->w * s) + 2, bh = ceil(c->h * s) + 2;
+        if (bw > w || bh > h) return 0;
+        c->bw = (int)bw, c->bh = (int)bh;
+        if (x + c->bw > w) x = 0, y += row, row = 0;
+        if (y + c->bh > h) return 0;
+        c->x = x, c->y = y;
+        x += c->bw;
+        if (c->bh > row) row = c->bh;
+    }
+    return 1;
+}
+
+/* Barycentric coordinates of (x, y) in the plane triangle p. */
+static void bary2(double p[3][2], double x, double y, double b[3])
+{
+    double d = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+    b[1] = ((x - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (y - p[0][1])) / d;
+    b[2] = ((p[1][0] - p[0][0]) * (y - p[0][1]) - (x - p[0][0]) * (p[1][1] - p[0][1])) / d;
+    b[0] = 1 - b[1] - b[2];
+}
+
+/* Every texel of c's box: the chart point nearest its centre. */
+static void fill(const chart *c, const uint16_t *uv, stex_atlas *a)
+{
+    for (int iy = c->y; iy < c->y + c->bh; iy++)
+        for (int ix = c->x; ix < c->x + c->bw; ix++) {
+            size_t t = (size_t)iy * a->w + ix;
+            double px = ix + 0.5, py = iy + 0.5, best = INFINITY;
+            for (int j = 0; j < c->ntris; j++) {
+                double p[3][2], p3[3][3], cen[3] = { px, py, 0 }, q[3], b[3];
+                for (int k = 0; k < 3; k++) {
+                    p[k][0] = uv[6 * c->tri[j] + 2 * k] / 16.0, p[k][1] = uv[6 * c->tri[j] + 2 * k + 1] / 16.0;
+                    p3[k][0] = p[k][0], p3[k][1] = p[k][1], p3[k][2] = 0;
+                }
+                bary2(p, px, py, b);
+                int in = b[0] >= 0 && b[1] >= 0 && b[2] >= 0;
+                double d2 = in ? 0 : point_tri_closest(cen, p3[0], p3[1], p3[2], q);
+                if (d2 >= best) continue;
+                best = d2;
+                if (!in) {
+                    bary2(p, q[0], q[1], b);
+                    double sum = 0;
+                    for (int k = 0; k < 3; k++) sum += (b[k] = fmax(0, b[k]));
+                    for (int k = 0; k < 3; k++) b[k] /= sum;
+                }
+                a->tri[t] = (int32_t)c->tri[j];
+                memcpy(&a->bary[3 * t], b, sizeof b);
+                a->inside[t] = (uint8_t)in;
+            }
+        }
+}
+
+int stex_atlas_build(const simp_mesh *hull, int w, int h, stex_atlas *a)
+{
+    memset(a, 0, sizeof *a);
+    a->w = w, a->h = h;
+    size_t nt = (size_t)w * h;
+    chart *ch = malloc((hull->ntris ? hull->ntris : 1) * sizeof *ch);
+    a->uv = calloc(6 * (size_t)hull->ntris + 1, sizeof *a->uv);
+    a->tri = malloc(nt * sizeof *a->tri);
+    a->bary = calloc(3 * nt, sizeof *a->bary);
+    a->inside = calloc(nt, 1);
+    long n = ch ? make_charts(hull, ch) : -1;
+    if (n < 0 || !a->uv || !a->tri || !a->bary || !a->inside) {
+        free(ch);
+        stex_atlas_free(a);
+        return -1;
+    }
+    qsort(ch, (size_t)n, sizeof *ch, by_height);
+    double area = 0;
+    for (long i = 0; i < n; i++) area += ch[i].w * ch[i].h;
+    double lo = 1e-9, hi = 2 * sqrt((double)w * h / (area > 0 ? area : 1));
+    if (!pack(ch, n, lo / 1e6, w, h)) {
+        free(ch);
+        stex_atlas_free(a);
+        return -2;
+    }
+    for (int it = 0; it < 50; it++) {
+        double mid = (lo + hi) / 2;
+        if (pack(ch, n, mid, w, h)) lo = mid;
+        else hi = mid;
+    }
+    pack(ch, n, lo, w, h);
+    a->density = lo;
+    a->ncharts = (uint32_t)n;
+    for (size_t t = 0; t < nt; t++) a->tri[t] = -1;
+    for (long i = 0; i < n; i++) {
+        const chart *c = &ch[i];
+        for (int j = 0; j < c->ntris; j++)
+            for (int k = 0; k < 3; k++) {
+                a->uv[6 * c->tri[j] + 2 * k] = (uint16_t)lround((c->x + 1 + c->p[j][k][0] * lo) * 16);
+                a->uv[6 * c->tri[j] + 2 * k + 1] = (uint16_t)lround((c->y + 1 + c->p[j][k][1] * lo) * 16);
+            }
+        fill(c, a->uv, a);
+    }
+    free(ch);
+    return 0;
+}
+
+void stex_atlas_free(stex_atlas *a)
+{
+    free(a->uv);
+    free(a->tri);
+    free(a->bary);
+    free(a->inside);
+    memset(a, 0, sizeof *a);
+}
