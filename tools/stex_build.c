@@ -35,7 +35,6 @@ typedef struct ctx {
     cp_tree fine_tree, hull_tree;
     double *fine_vn;         /* fine's vertex normals */
     double *hull_fn;         /* hull's unit face normals */
-    double *cp;              /* 3 per texel: the mean true direction, unnormalized */
     uint32_t *ntrue;         /* per texel: true samples */
     double eps;              /* hull hits nearer than this are p's own neighbourhood */
     int phase;
@@ -92,8 +91,7 @@ static void sample_normal(const ctx *c, const double p[3], int8_t out[2])
     out[0] = (int8_t)lround(ox * 127), out[1] = (int8_t)lround(oy * 127);
 }
 
-/* Phase 0 for texel t: the normal, VF at every sample direction, the mean
- * true direction. */
+/* Phase 0 for texel t: the normal, VF at every sample direction. */
 static void texel_sample(ctx *c, size_t t)
 {
     stex *s = c->s;
@@ -107,7 +105,6 @@ static void texel_sample(ctx *c, size_t t)
         if (!vf(c, p, f, d)) continue;
         bits[i / 8] |= (uint8_t)(1u << (i % 8));
         c->ntrue[t]++;
-        for (int k = 0; k < 3; k++) c->cp[3 * t + k] += d[k];
     }
 }
 
@@ -256,35 +253,35 @@ static void axis_tangent(const double C[3], double T[3])
     normalize3(T);
 }
 
-/* C and T at every hull vertex (section 3.3): C the mean of the C_p of
- * the chart texels around it, weighted by the vertex's barycentric weight
- * (inward along the vertex normal where none sees the detailed mesh); T
- * carried over the hull breadth first, each vertex taking its visited
+/* C and T at every hull vertex (section 3.3): C the mean true direction
+ * of VF at the vertex itself, among VERTEX_SAMPLES directions (no hull
+ * triangle is its own there: the triangles around it are met at distance 0
+ * only; inward along the vertex normal where none sees the detailed mesh);
+ * T carried over the hull breadth first, each vertex taking its visited
  * neighbours' T turned into its own tangent plane.  Stored rounded to
  * Q1.14. */
+#define VERTEX_SAMPLES 4096
 static int vertex_frames(ctx *c, const double *hull_vn)
 {
     const simp_mesh *h = c->hull;
     stex *s = c->s;
-    size_t nt = (size_t)s->atlas.w * s->atlas.h;
-    double *acc = calloc(3 * (size_t)h->nverts + 1, sizeof *acc), *Cv = calloc(3 * (size_t)h->nverts + 1, sizeof *Cv);
+    double *dirs = malloc(3 * VERTEX_SAMPLES * sizeof *dirs), *Cv = calloc(3 * (size_t)h->nverts + 1, sizeof *Cv);
     double *Tv = calloc(3 * (size_t)h->nverts + 1, sizeof *Tv);
     uint32_t *start = calloc((size_t)h->nverts + 2, sizeof *start), *adj = malloc(6 * (size_t)h->ntris * sizeof *adj + 1);
-    uint32_t *queue = malloc(((size_t)h->nverts + 1) * sizeof *queue);
+    uint32_t *queue = malloc(((size_t)h->nverts + 1) * sizeof *queue), *fillp = calloc((size_t)h->nverts + 1, sizeof *fillp);
     uint8_t *seen = calloc((size_t)h->nverts + 1, 1), *set = calloc((size_t)h->nverts + 1, 1);
     int rc = -1;
-    if (!acc || !Cv || !Tv || !start || !adj || !queue || !seen || !set) goto done;
-    for (size_t t = 0; t < nt; t++) {
-        if (s->atlas.tri[t] < 0 || !s->atlas.inside[t] || !c->ntrue[t]) continue;
-        double cp[3] = { c->cp[3 * t], c->cp[3 * t + 1], c->cp[3 * t + 2] };
-        normalize3(cp);
-        const uint32_t *v = &h->tri[3 * (size_t)s->atlas.tri[t]];
-        for (int i = 0; i < 3; i++)
-            for (int k = 0; k < 3; k++) acc[3 * v[i] + k] += s->atlas.bary[3 * t + i] * cp[k];
-    }
+    if (!dirs || !Cv || !Tv || !start || !adj || !queue || !fillp || !seen || !set) goto done;
+    sphere_samples(VERTEX_SAMPLES, dirs);
     for (uint32_t i = 0; i < h->nverts; i++) {
         double *C = &Cv[3 * (size_t)i];
-        memcpy(C, &acc[3 * (size_t)i], 3 * sizeof *C);
+        const double *p = &h->pos[3 * (size_t)i];
+        for (int j = 0; j < VERTEX_SAMPLES; j++) {
+            const double *d = &dirs[3 * j];
+            double dh = bvh_ray(&c->hull_tree, p, d, c->eps, INFINITY, BVH_NO_TRI, NULL);
+            if (bvh_ray(&c->fine_tree, p, d, 0, dh, BVH_NO_TRI, NULL) < dh)
+                for (int k = 0; k < 3; k++) C[k] += d[k];
+        }
         if (len3(C) < 1e-9)
             for (int k = 0; k < 3; k++) C[k] = -hull_vn[3 * (size_t)i + k];
         normalize3(C);
@@ -296,15 +293,12 @@ static int vertex_frames(ctx *c, const double *hull_vn)
     for (uint32_t f = 0; f < h->ntris; f++)
         for (int e = 0; e < 3; e++) start[h->tri[3 * (size_t)f + e] + 1] += 2;
     for (uint32_t i = 0; i < h->nverts; i++) start[i + 1] += start[i];
-    uint32_t *fillp = calloc((size_t)h->nverts + 1, sizeof *fillp);
-    if (!fillp) goto done;
     for (uint32_t f = 0; f < h->ntris; f++)
         for (int e = 0; e < 3; e++) {
             uint32_t a = h->tri[3 * (size_t)f + e], b = h->tri[3 * (size_t)f + (e + 1) % 3];
             adj[start[a] + fillp[a]++] = b;
             adj[start[b] + fillp[b]++] = a;
         }
-    free(fillp);
     for (uint32_t seed = 0; seed < h->nverts; seed++) {
         if (seen[seed]) continue;
         uint32_t head = 0, tail = 0;
@@ -334,7 +328,7 @@ static int vertex_frames(ctx *c, const double *hull_vn)
     }
     rc = 0;
 done:
-    free(acc), free(Cv), free(Tv), free(start), free(adj), free(queue), free(seen), free(set);
+    free(dirs), free(Cv), free(Tv), free(start), free(adj), free(queue), free(fillp), free(seen), free(set);
     return rc;
 }
 
@@ -429,11 +423,10 @@ int stex_build(const simp_mesh *fine, const simp_mesh *hull, const stex_opts *o,
     c.fine_vn = malloc(3 * (size_t)fine->nverts * sizeof *c.fine_vn + 1);
     c.hull_fn = malloc(3 * (size_t)hull->ntris * sizeof *c.hull_fn + 1);
     double *hull_vn = malloc(3 * (size_t)hull->nverts * sizeof *hull_vn + 1);
-    c.cp = calloc(3 * nt, sizeof *c.cp);
     c.ntrue = calloc(nt, sizeof *c.ntrue);
     rc = -1;
     if (!s->frame || !s->angles || !s->normal || !s->basis || !s->samples || !s->vf || !s->multi || !c.fine_vn ||
-        !c.hull_fn || !hull_vn || !c.cp || !c.ntrue)
+        !c.hull_fn || !hull_vn || !c.ntrue)
         goto done;
     if (cp_build(&c.fine_tree, fine->pos, fine->tri, fine->ntris)) goto done;
     if (cp_build(&c.hull_tree, hull->pos, hull->tri, hull->ntris)) goto done;
@@ -467,7 +460,7 @@ int stex_build(const simp_mesh *fine, const simp_mesh *hull, const stex_opts *o,
 done:
     cp_free(&c.fine_tree);
     cp_free(&c.hull_tree);
-    free(c.fine_vn), free(c.hull_fn), free(hull_vn), free(c.cp), free(c.ntrue);
+    free(c.fine_vn), free(c.hull_fn), free(hull_vn), free(c.ntrue);
     if (rc) stex_free(s);
     return rc;
 }

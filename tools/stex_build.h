@@ -13,14 +13,14 @@
  *    before any hull triangle but f (ray casting through tools/bvh.h); a
  *    direction out of f (d.n_f >= 0) leaves the hull at once, so it is false
  *    without a ray;
- *  - the single-lobe encoding (section 3.3): C_p, the mean of the true
- *    directions among samples spread evenly over the sphere, and at each hull vertex C the
- *    mean of the C_p of the texels around it (weighted by the vertex's
- *    barycentric weight), T perpendicular to it, carried from vertex to
- *    vertex over the hull so neighbours agree; each texel then stores, at K
- *    azimuths of the frame interpolated at p, the angle from C along the
- *    azimuth's great circle to the first false direction, found by steps of
- *    4 angle units (pi/255 each) and halving, in those units;
+ *  - the single-lobe encoding (section 3.3): at each hull vertex, C the
+ *    mean of the true directions of VF there (among directions spread
+ *    evenly over the sphere) and T perpendicular to it, carried from vertex
+ *    to vertex over the hull so that neighbours agree; each texel then
+ *    stores, at K azimuths of the frame interpolated at p (the renderer's
+ *    rule), the angle from C along the azimuth's great circle to the first
+ *    false direction, found by steps of 4 angle units (pi/255 each) and
+ *    halving, in those units;
  *  - eq. 3: the share of the sampled directions where the stored function
  *    (eq. 4, linear between azimuths) differs from VF_p, averaged over the
  *    texels inside charts, and the share of those texels not single-lobed
@@ -90,8 +90,8 @@ double stex_psnr(const stex *s, const uint8_t *angles);
 double stex_phi(const stex *s, const uint8_t *angles, size_t t, const double d[3]);
 
 /* The STEX section (malloc'd, *size bytes, padded to 4): angles whole, or
- * compressed by svd (not NULL).  err_ppm, multi_ppm: the header's
- * figures.  NULL when out of memory. */
+ * compressed by svd (not NULL); error is the eq. 3 figure for its header
+ * (that of the angles as stored).  NULL when out of memory. */
 uint8_t *stex_section(const stex *s, const stex_svd *svd, double error, size_t *size);
 /* Its size without making it. */
 size_t stex_section_bytes(const stex *s, int svd_e);
