@@ -178,7 +178,8 @@ static double map_distance(const simp_mesh *hull, double fine_radius)
 }
 
 /* HULL and SMAP sections for fine.  0, or an exit status after a one-line
- * error; 1 (with a note) when fine is not a closed manifold. */
+ * error; CLIP_NONE (with a note) when fine is not a closed manifold. */
+#define CLIP_NONE (-1)
 static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const simp_mesh *coarse, uint32_t target,
                     const clip_opts *co, clip_stats *cs)
 {
@@ -196,9 +197,10 @@ static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const 
     if (simp_topology_check(fine, &topo) != 0) return cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
     if (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges ||
         topo.degenerate_tris || !(hull_volume(fine) > 0)) {
-        fprintf(stderr, "silk: note: %s: not a closed, outward-facing manifold: no outer hull or silhouette map "
-                        "(clip mode) in the model\n", in);
-        return 1;
+        if (!co->siltex)   /* else the caller's error says it */
+            fprintf(stderr, "silk: note: %s: not a closed, outward-facing manifold: no outer hull or silhouette map "
+                            "(clip mode) in the model\n", in);
+        return CLIP_NONE;
     }
     hull_opts_default(&ho, target);
     if (simp_copy(fine, &h) || hull_run(&h, &ho, &hs, &hf)) {
@@ -286,7 +288,9 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
     if (rc == 0 && co->on) {
         rc = add_clip(&mo, in, &r.fine, &r.mesh, so->target_tris, co, &cs);
         clip = rc == 0;
-        if (rc == 1) rc = co->mesh ? 0 : cli_fail(CLI_EXIT_INPUT, "%s: --no-mesh leaves nothing to write", in);
+        if (rc == CLIP_NONE && co->siltex)
+            rc = cli_fail(CLI_EXIT_INPUT, "%s: --siltex needs the outer hull, so a closed manifold", in);
+        if (rc == CLIP_NONE) rc = co->mesh ? 0 : cli_fail(CLI_EXIT_INPUT, "%s: --no-mesh leaves nothing to write", in);
     }
     uint8_t *probe = NULL;
     if (rc == 0 && !(probe = model_bytes(&mo, &bytes))) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", out);
