@@ -145,7 +145,7 @@ TEST(sphere_in_a_hull_sphere)
     stex_opts_default(&o);
     o.atlas = 48, o.samples = 1024, o.quiet = 1;
     stex s;
-    CHECK(stex_build(&fine, &hull, &o, &s) == 0);
+    CHECK(stex_build(&fine, NULL, &hull, &o, &s) == 0);
     const double step = PI / 255;
     double worst = 0, worst_c = 1;
     size_t nt = (size_t)s.atlas.w * s.atlas.h, checked = 0;
@@ -233,7 +233,7 @@ TEST(interior_silhouettes)
     stex_opts_default(&o);
     o.atlas = 64, o.samples = 256, o.quiet = 1;
     stex s;
-    CHECK(stex_build(&fine, &hull, &o, &s) == 0);
+    CHECK(stex_build(&fine, NULL, &hull, &o, &s) == 0);
     size_t nt = (size_t)s.atlas.w * s.atlas.h, row = (size_t)(s.nsamples + 7) / 8;
     long wrong = 0, total = 0, behind = 0;
     for (size_t t = 0; t < nt; t++) {

@@ -95,12 +95,12 @@ typedef struct clip_stats {
 
 /* The STEX section for hull h of fine (stex_build.h).  0, or an exit
  * status after a one-line error. */
-static int add_siltex(model_out *mo, const char *in, const simp_mesh *fine, const simp_mesh *h, const clip_opts *co,
-                      clip_stats *cs)
+static int add_siltex(model_out *mo, const char *in, const simp_mesh *fine, const uint32_t *fine_color,
+                      const simp_mesh *h, const clip_opts *co, clip_stats *cs)
 {
     stex st;
     stex_svd svd;
-    int rc = stex_build(fine, h, &co->so, &st);
+    int rc = stex_build(fine, fine_color, h, &co->so, &st);
     if (rc == -2)
         return cli_fail(CLI_EXIT_INPUT, "%s: the hull's %u triangles do not fit a %d x %d atlas (raise --atlas)", in,
                         h->ntris, co->so.atlas, co->so.atlas);
@@ -180,8 +180,8 @@ static double map_distance(const simp_mesh *hull, double fine_radius)
 /* HULL and SMAP sections for fine.  0, or an exit status after a one-line
  * error; CLIP_NONE (with a note) when fine is not a closed manifold. */
 #define CLIP_NONE (-1)
-static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const simp_mesh *coarse, uint32_t target,
-                    const clip_opts *co, clip_stats *cs)
+static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const uint32_t *fine_color,
+                    const simp_mesh *coarse, uint32_t target, const clip_opts *co, clip_stats *cs)
 {
     simp_topology topo;
     simp_mesh h = { 0, 0, NULL, NULL, NULL };
@@ -245,7 +245,7 @@ static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const 
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
         goto done;
     }
-    if (co->siltex && (rc = add_siltex(mo, in, fine, &h, co, cs)) != 0) goto done;
+    if (co->siltex && (rc = add_siltex(mo, in, fine, fine_color, &h, co, cs)) != 0) goto done;
     cs->hull_tris = h.ntris;
     cs->hull_verts = h.nverts;
     cs->views = fx.map.nviews;
@@ -286,7 +286,7 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
                  r.normals.tri_normal))
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", out);
     if (rc == 0 && co->on) {
-        rc = add_clip(&mo, in, &r.fine, &r.mesh, so->target_tris, co, &cs);
+        rc = add_clip(&mo, in, &r.fine, r.fine_color, &r.mesh, so->target_tris, co, &cs);
         clip = rc == 0;
         if (rc == CLIP_NONE && co->siltex)
             rc = cli_fail(CLI_EXIT_INPUT, "%s: --siltex needs the outer hull, so a closed manifold", in);

@@ -31,6 +31,7 @@ void stex_opts_default(stex_opts *o)
 
 typedef struct ctx {
     const simp_mesh *fine, *hull;
+    const uint32_t *fine_color;  /* or NULL */
     stex *s;
     cp_tree fine_tree, hull_tree;
     double *fine_vn;         /* fine's vertex normals */
@@ -67,8 +68,9 @@ static int vf(const ctx *c, const double p[3], uint32_t f, const double d[3])
     return dm < dh;
 }
 
-/* The detailed surface's normal at the point nearest p, octahedral. */
-static void sample_normal(const ctx *c, const double p[3], int8_t out[2])
+/* The detailed surface's normal at the point nearest p, octahedral, and
+ * its colour there (rgb, when fine has colours). */
+static void sample_surface(const ctx *c, const double p[3], int8_t out[2], uint8_t *rgb)
 {
     uint32_t ft = 0;
     cp_nearest(&c->fine_tree, p, &ft);
@@ -83,6 +85,14 @@ static void sample_normal(const ctx *c, const double p[3], int8_t out[2])
     for (int i = 0; i < 3; i++)
         for (int k = 0; k < 3; k++) n[k] += w[i] * c->fine_vn[3 * v[i] + k];
     normalize3(n);
+    if (rgb) {
+        double sum = w[0] + w[1] + w[2];
+        for (int ch = 0; ch < 3; ch++) {
+            double x = 0;
+            for (int i = 0; i < 3; i++) x += w[i] * (double)((c->fine_color[v[i]] >> (16 - 8 * ch)) & 0xff);
+            rgb[ch] = (uint8_t)lround(sum > 0 ? x / sum : (c->fine_color[v[0]] >> (16 - 8 * ch)) & 0xff);
+        }
+    }
     double s = fabs(n[0]) + fabs(n[1]) + fabs(n[2]), ox = n[0] / s, oy = n[1] / s;
     if (n[2] < 0) {
         double tx = (1 - fabs(oy)) * (ox < 0 ? -1 : 1), ty = (1 - fabs(ox)) * (oy < 0 ? -1 : 1);
@@ -98,7 +108,7 @@ static void texel_sample(ctx *c, size_t t)
     double p[3];
     uint32_t f = (uint32_t)s->atlas.tri[t];
     texel_point(c, t, p);
-    sample_normal(c, p, &s->normal[2 * t]);
+    sample_surface(c, p, &s->normal[2 * t], s->colour ? &s->colour[3 * t] : NULL);
     uint8_t *bits = &s->vf[t * (size_t)((s->nsamples + 7) / 8)];
     for (int i = 0; i < s->nsamples; i++) {
         const double *d = &s->samples[3 * i];
@@ -403,12 +413,12 @@ double stex_psnr(const stex *s, const uint8_t *angles)
     return se > 0 ? 10 * log10(255.0 * 255.0 / (se / n)) : INFINITY;
 }
 
-int stex_build(const simp_mesh *fine, const simp_mesh *hull, const stex_opts *o, stex *s)
+int stex_build(const simp_mesh *fine, const uint32_t *fine_color, const simp_mesh *hull, const stex_opts *o, stex *s)
 {
     memset(s, 0, sizeof *s);
     ctx c;
     memset(&c, 0, sizeof c);
-    c.fine = fine, c.hull = hull, c.s = s;
+    c.fine = fine, c.fine_color = fine_color, c.hull = hull, c.s = s;
     int rc = stex_atlas_build(hull, o->atlas, o->atlas, &s->atlas);
     if (rc) return rc;
     size_t nt = (size_t)o->atlas * o->atlas, row = (size_t)(o->samples + 7) / 8;
@@ -420,12 +430,13 @@ int stex_build(const simp_mesh *fine, const simp_mesh *hull, const stex_opts *o,
     s->samples = malloc(3 * (size_t)o->samples * sizeof *s->samples);
     s->vf = calloc(nt * row, 1);
     s->multi = calloc(nt, 1);
+    s->colour = fine_color ? calloc(3 * nt, 1) : NULL;
     c.fine_vn = malloc(3 * (size_t)fine->nverts * sizeof *c.fine_vn + 1);
     c.hull_fn = malloc(3 * (size_t)hull->ntris * sizeof *c.hull_fn + 1);
     double *hull_vn = malloc(3 * (size_t)hull->nverts * sizeof *hull_vn + 1);
     c.ntrue = calloc(nt, sizeof *c.ntrue);
     rc = -1;
-    if (!s->frame || !s->angles || !s->normal || !s->basis || !s->samples || !s->vf || !s->multi || !c.fine_vn ||
+    if (!s->frame || !s->angles || !s->normal || !s->basis || !s->samples || !s->vf || !s->multi || (fine_color && !s->colour) || !c.fine_vn ||
         !c.hull_fn || !hull_vn || !c.ntrue)
         goto done;
     if (cp_build(&c.fine_tree, fine->pos, fine->tri, fine->ntris)) goto done;
@@ -468,7 +479,7 @@ done:
 void stex_free(stex *s)
 {
     stex_atlas_free(&s->atlas);
-    free(s->frame), free(s->angles), free(s->normal), free(s->basis), free(s->samples), free(s->vf), free(s->multi);
+    free(s->frame), free(s->angles), free(s->normal), free(s->basis), free(s->samples), free(s->vf), free(s->multi), free(s->colour);
     memset(s, 0, sizeof *s);
 }
 
@@ -490,6 +501,7 @@ size_t stex_section_bytes(const stex *s, int svd_e)
     if (svd_e) n += stex_svd_bytes(s->k, svd_e, (uint32_t)nt), n += n & 1;
     else n += nt * s->k;
     n += 2 * nt;
+    if (s->colour) n += 3 * nt;
     return (n + 3) & ~(size_t)3;
 }
 
@@ -500,7 +512,7 @@ uint8_t *stex_section(const stex *s, const stex_svd *svd, double error, size_t *
     uint8_t *b = calloc(*size, 1), *p = b;
     if (!b) return NULL;
     p = put32(p, STEX_VERSION);
-    p = put32(p, svd ? STEX_FLAG_SVD : 0);
+    p = put32(p, (svd ? STEX_FLAG_SVD : 0) | (s->colour ? STEX_FLAG_COLOUR : 0));
     p = put16(p, (uint32_t)s->atlas.w), p = put16(p, (uint32_t)s->atlas.h);
     p = put16(p, (uint32_t)s->k), p = put16(p, svd ? (uint32_t)svd->e : 0);
     p = put32(p, s->nverts), p = put32(p, s->ntris);
@@ -518,5 +530,6 @@ uint8_t *stex_section(const stex *s, const stex_svd *svd, double error, size_t *
         p += nt * s->k;
     }
     for (size_t i = 0; i < 2 * nt; i++) *p++ = (uint8_t)s->normal[i];
+    if (s->colour) memcpy(p, s->colour, 3 * nt);
     return b;
 }

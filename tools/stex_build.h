@@ -7,7 +7,8 @@
  * Over the atlas of tools/stex_atlas.h, each texel stands for a point p of
  * the hull, on hull triangle f.  For p:
  *  - the normal map holds the detailed surface's normal at q, the point of
- *    the detailed mesh closest to p (section 3.1: D_p = q - p);
+ *    the detailed mesh closest to p (section 3.1: D_p = q - p), and the
+ *    colour map its vertex colours interpolated there;
  *  - the visibility function (section 3.2, eq. 2): VF_p(d) is true when the
  *    ray from p along the viewing direction d meets the detailed mesh
  *    before any hull triangle but f (ray casting through tools/bvh.h); a
@@ -69,15 +70,17 @@ typedef struct stex {
     double *samples;         /* 3 per sphere direction */
     uint8_t *vf;             /* (nsamples + 7) / 8 per texel: VF_p at each direction */
     uint8_t *multi;          /* per texel: not single-lobed seen from C */
+    uint8_t *colour;         /* RGB per texel, or NULL: the detailed mesh has no colours */
     uint32_t texels_in;      /* texels inside charts */
     double error;            /* eq. 3, mean over the texels inside charts */
     double multi_share;      /* share of them not single-lobed */
 } stex;
 
 /* The silhouette texture of fine over its hull (both closed manifolds,
- * outward; the hull holds fine).  0; -1 when out of memory; -2 when the
- * atlas cannot frame the hull's triangles. */
-int stex_build(const simp_mesh *fine, const simp_mesh *hull, const stex_opts *o, stex *s);
+ * outward; the hull holds fine), with a colour map when fine_color (one
+ * 0xRRGGBB per vertex of fine) is not NULL.  0; -1 when out of memory; -2
+ * when the atlas cannot frame the hull's triangles. */
+int stex_build(const simp_mesh *fine, const uint32_t *fine_color, const simp_mesh *hull, const stex_opts *o, stex *s);
 void stex_free(stex *s);
 
 /* Eq. 3 averaged over the texels inside charts, for the given angles
