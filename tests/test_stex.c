@@ -192,6 +192,29 @@ TEST(sphere_in_a_hull_sphere)
     int16_t c0 = (int16_t)(b[32] | b[33] << 8);
     CHECK(c0 == s.frame[0]);
     free(b);
+
+    /* compressed: the angles the section's bytes give back by the formula are the expansion's */
+    uint8_t *used = malloc(nt), *back = malloc(nt * s.k), *again = malloc(nt * s.k);
+    stex_svd c;
+    for (size_t t = 0; t < nt; t++) used[t] = s.atlas.tri[t] >= 0;
+    CHECK(stex_svd_compress(s.angles, used, (uint32_t)nt, s.k, 4, &c) == 0);
+    stex_svd_expand(&c, back);
+    b = stex_section(&s, &c, 0, &size);
+    CHECK(size == stex_section_bytes(&s, 4) && b[4] == 1 && b[14] == 4);
+    const uint8_t *at = b + angles_at;
+    int16_t mean[16], v[4 * 16];
+    int32_t sc[4];
+    for (int k = 0; k < 16; k++, at += 2) mean[k] = (int16_t)(at[0] | at[1] << 8);
+    for (int e = 0; e < 4; e++, at += 4) sc[e] = (int32_t)(at[0] | at[1] << 8 | at[2] << 16 | (uint32_t)at[3] << 24);
+    for (int i = 0; i < 4 * 16; i++, at += 2) v[i] = (int16_t)(at[0] | at[1] << 8);
+    for (size_t t = 0; t < nt; t++)
+        for (int k = 0; k < 16; k++)
+            again[t * 16 + k] = stex_svd_angle(mean, sc, v, (const int8_t *)at + 4 * t, 16, 4, k);
+    CHECK(memcmp(back, again, nt * s.k) == 0);
+    CHECK(stex_psnr(&s, back) > 25);
+    printf("  4 eigenfunctions: eq. 3 error %.5f, PSNR %.1f dB\n", stex_error(&s, back), stex_psnr(&s, back));
+    stex_svd_free(&c);
+    free(b), free(used), free(back), free(again);
     stex_free(&s);
     free_mesh(&fine);
     free_mesh(&hull);
