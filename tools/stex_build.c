@@ -140,13 +140,12 @@ static void texel_encode(ctx *c, size_t t)
         for (int i = 0; i < 3; i++) u[i] = cos(th) * T[i] + sin(th) * B[i];
         /* unit j is tested at (j + 1/2) steps: the first false one is the boundary rounded */
         int lo = -1, hi = -1;        /* last true, first false */
-        for (int j = 0; j <= 255; j += MARCH) {
-            int jj = j > 255 ? 255 : j;
-            along(C, u, (jj + 0.5) * STEP, d);
-            if (vf(c, p, f, d)) lo = jj;
-            else { hi = jj; break; }
+        for (int j = 0; hi < 0 && lo < 254; j = j + MARCH < 254 ? j + MARCH : 254) {
+            along(C, u, (j + 0.5) * STEP, d);
+            if (vf(c, p, f, d)) lo = j;
+            else hi = j;
         }
-        if (hi < 0) {
+        if (hi < 0) {                /* true up to the last unit: all round */
             q[k] = 255;
             continue;
         }
