@@ -125,6 +125,21 @@ TEST(atlas_charts_and_gutters)
     stex_atlas_free(&a);
     CHECK(stex_atlas_build(&h, 8, 8, &a) == -2);
     free_mesh(&h);
+
+    /* a tetrahedron with a sliver face, flat once its corners are rounded to
+     * 1/16 texel: every texel still gets a point on the hull */
+    double pos[12] = { 0, 0, 0, 1, 0, 0, 0.5, 1e-6, 0, 0.5, 0.5, 1 };
+    uint32_t tri[12] = { 0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3 };
+    simp_mesh tet = { 4, 4, pos, tri, NULL };
+    CHECK(stex_atlas_build(&tet, 16, 16, &a) == 0);
+    int finite = 1;
+    for (size_t t = 0; t < 256; t++)
+        if (a.tri[t] >= 0) {
+            double sum = a.bary[3 * t] + a.bary[3 * t + 1] + a.bary[3 * t + 2];
+            finite &= fabs(sum - 1) < 1e-9 && a.bary[3 * t] >= 0 && a.bary[3 * t + 1] >= 0 && a.bary[3 * t + 2] >= 0;
+        }
+    CHECK(finite);
+    stex_atlas_free(&a);
 }
 
 /* The angle from C along the great circle towards u (unit, u . C = 0) at

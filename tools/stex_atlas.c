@@ -177,10 +177,27 @@ static int pack(chart *ch, long n, double s, int w, int h)
     return 1;
 }
 
-/* Barycentric coordinates of (x, y) in the plane triangle p. */
+/* Barycentric coordinates of (x, y) in the plane triangle p; for a
+ * triangle squashed flat (a sliver of the hull, rounded to 1/16 texel),
+ * those of the nearest point of its longest side. */
 static void bary2(double p[3][2], double x, double y, double b[3])
 {
     double d = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+    if (d == 0) {
+        int i = 0;
+        double best = -1;
+        for (int k = 0; k < 3; k++) {
+            double l = hypot(p[(k + 1) % 3][0] - p[k][0], p[(k + 1) % 3][1] - p[k][1]);
+            if (l > best) best = l, i = k;
+        }
+        int j = (i + 1) % 3;
+        double ex = p[j][0] - p[i][0], ey = p[j][1] - p[i][1], l2 = ex * ex + ey * ey;
+        double t = l2 > 0 ? ((x - p[i][0]) * ex + (y - p[i][1]) * ey) / l2 : 0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        b[0] = b[1] = b[2] = 0;
+        b[i] = 1 - t, b[j] = t;
+        return;
+    }
     b[1] = ((x - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (y - p[0][1])) / d;
     b[2] = ((p[1][0] - p[0][0]) * (y - p[0][1]) - (x - p[0][0]) * (p[1][1] - p[0][1])) / d;
     b[0] = 1 - b[1] - b[2];
@@ -199,8 +216,9 @@ static void fill(const chart *c, const uint16_t *uv, stex_atlas *a)
                     p[k][0] = uv[6 * c->tri[j] + 2 * k] / 16.0, p[k][1] = uv[6 * c->tri[j] + 2 * k + 1] / 16.0;
                     p3[k][0] = p[k][0], p3[k][1] = p[k][1], p3[k][2] = 0;
                 }
+                double area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
                 bary2(p, px, py, b);
-                int in = b[0] >= 0 && b[1] >= 0 && b[2] >= 0;
+                int in = area != 0 && b[0] >= 0 && b[1] >= 0 && b[2] >= 0;
                 double d2 = in ? 0 : point_tri_closest(cen, p3[0], p3[1], p3[2], q);
                 if (d2 >= best) continue;
                 best = d2;
