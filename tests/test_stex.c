@@ -117,11 +117,22 @@ TEST(atlas_charts_and_gutters)
                     if (xx >= 0 && yy >= 0 && xx < 64 && yy < 64) bare += a.tri[(size_t)yy * 64 + xx] < 0;
                 }
         }
+    /* charts keep their triangles' shapes: every side at the atlas's density */
+    double worst = 0;
+    for (uint32_t f = 0; f < h.ntris; f++)
+        for (int k = 0; k < 3; k++) {
+            int k1 = (k + 1) % 3;
+            double du = (a.uv[6 * f + 2 * k1] - a.uv[6 * f + 2 * k]) / 16.0;
+            double dv = (a.uv[6 * f + 2 * k1 + 1] - a.uv[6 * f + 2 * k + 1]) / 16.0, d[3];
+            sub3(&h.pos[3 * h.tri[3 * f + k1]], &h.pos[3 * h.tri[3 * f + k]], d);
+            worst = fmax(worst, fabs(hypot(du, dv) - a.density * len3(d)));
+        }
+    CHECKF(worst < 0.1, "a side is %.3f texels off", worst);
     CHECK(outside == 0);
     CHECKF(off_chart == 0, "%d texels off their chart", off_chart);
     CHECKF(bare == 0, "%d unfilled texels next to charts", bare);
     CHECKF(inside > 64 * 64 / 4, "only %d texels inside charts", inside);
-    CHECK(a.ncharts >= h.ntris / 2 && a.ncharts < h.ntris);
+    CHECK(a.ncharts > 0 && a.ncharts <= h.ntris / 2);   /* charts of several triangles */
     stex_atlas_free(&a);
     CHECK(stex_atlas_build(&h, 8, 8, &a) == -2);
     free_mesh(&h);

@@ -1,5 +1,5 @@
 /*
- * stex_atlas.c - charts of paired hull triangles, shelf-packed
+ * stex_atlas.c - charts of hull triangles unfolded flat, skyline-packed
  * (stex_atlas.h).
  */
 #include <math.h>
@@ -10,10 +10,13 @@
 #include "stex_atlas.h"
 #include "vec3.h"
 
+#define CHART_TRIS 16            /* triangles a chart grows to at most */
+#define CHART_FILL 0.7           /* least share of its convex hull a chart covers */
+
 typedef struct chart {
     int ntris;
-    uint32_t tri[2];
-    double p[2][3][2];       /* each triangle's corners (hull order) in the plane, lengths */
+    uint32_t tri[CHART_TRIS];
+    double p[CHART_TRIS][3][2];  /* each triangle's corners (hull order) in the plane, lengths */
     double w, h;             /* bounding box, lengths; corners from (0, 0) */
     int x, y, bw, bh;        /* the box in texels, gutter included */
 } chart;
@@ -88,8 +91,90 @@ static void orient(chart *c)
     c->w = hi[0] - lo[0], c->h = hi[1] - lo[1];
 }
 
-/* Pair triangles across their longest free edges into charts.  Returns
- * the number of charts, or -1 when out of memory. */
+static double area2(double p[3][2])
+{
+    return fabs((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1])) / 2;
+}
+
+/* Whether the plane triangles a and b overlap with more than their
+ * boundaries (separating axes: the sides' normals). */
+static int overlap(double a[3][2], double b[3][2], double eps)
+{
+    double (*t[2])[2] = { a, b };
+    for (int w = 0; w < 2; w++)
+        for (int k = 0; k < 3; k++) {
+            double nx = t[w][(k + 1) % 3][1] - t[w][k][1], ny = t[w][k][0] - t[w][(k + 1) % 3][0];
+            double lo[2] = { INFINITY, INFINITY }, hi[2] = { -INFINITY, -INFINITY };
+            for (int v = 0; v < 2; v++)
+                for (int i = 0; i < 3; i++) {
+                    double x = nx * t[v][i][0] + ny * t[v][i][1];
+                    lo[v] = fmin(lo[v], x), hi[v] = fmax(hi[v], x);
+                }
+            double l = hypot(nx, ny);
+            if (hi[0] <= lo[1] + eps * l || hi[1] <= lo[0] + eps * l) return 0;
+        }
+    return 1;
+}
+
+static double cross2(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+static int by_xy(const void *a, const void *b)
+{
+    const double *x = a, *y = b;
+    return x[0] != y[0] ? (x[0] < y[0] ? -1 : 1) : (x[1] < y[1] ? -1 : x[1] > y[1]);
+}
+
+/* The area of the convex hull of the chart's corners with extra (Andrew's
+ * monotone chain). */
+static double hull_area(const chart *c, double extra[3][2])
+{
+    double pt[3 * CHART_TRIS + 3][2], h[2 * (3 * CHART_TRIS + 3)][2];
+    int n = 0, k = 0;
+    for (int j = 0; j < c->ntris; j++)
+        for (int q = 0; q < 3; q++) pt[n][0] = c->p[j][q][0], pt[n][1] = c->p[j][q][1], n++;
+    for (int q = 0; q < 3; q++) pt[n][0] = extra[q][0], pt[n][1] = extra[q][1], n++;
+    qsort(pt, (size_t)n, sizeof pt[0], by_xy);
+    for (int i = 0; i < n; i++) {
+        while (k >= 2 && cross2(h[k - 2], h[k - 1], pt[i]) <= 0) k--;
+        h[k][0] = pt[i][0], h[k][1] = pt[i][1], k++;
+    }
+    for (int i = n - 2, lower = k + 1; i >= 0; i--) {
+        while (k >= lower && cross2(h[k - 2], h[k - 1], pt[i]) <= 0) k--;
+        h[k][0] = pt[i][0], h[k][1] = pt[i][1], k++;
+    }
+    double a = 0;
+    for (int i = 0; i + 1 < k; i++) a += h[i][0] * h[i + 1][1] - h[i + 1][0] * h[i][1];
+    return fabs(a) / 2;
+}
+
+/* Triangle o laid out across the side of chart triangle j whose first
+ * corner is side, on the other side of it from j. */
+static void unfold(const simp_mesh *m, const chart *c, int j, int side, uint32_t o, double out[3][2])
+{
+    uint32_t a = m->tri[3 * c->tri[j] + side], b = m->tri[3 * c->tri[j] + (side + 1) % 3];
+    const double *pa = c->p[j][side], *pb = c->p[j][(side + 1) % 3], *pc = c->p[j][(side + 2) % 3];
+    int oa = 0;
+    while (oa < 3 && m->tri[3 * o + oa] != a) oa++;
+    int ob = (oa + 2) % 3, oc = (oa + 1) % 3;   /* o runs the shared side the other way: b then a */
+    double f[2];
+    flat(&m->pos[3 * a], &m->pos[3 * b], &m->pos[3 * m->tri[3 * o + oc]], 1, f);
+    double ex = pb[0] - pa[0], ey = pb[1] - pa[1], l = hypot(ex, ey);
+    ex /= l, ey /= l;
+    double nx = -ey, ny = ex;
+    if ((pc[0] - pa[0]) * nx + (pc[1] - pa[1]) * ny > 0) nx = -nx, ny = -ny;
+    (void)b;
+    out[oa][0] = pa[0], out[oa][1] = pa[1];
+    out[ob][0] = pb[0], out[ob][1] = pb[1];
+    out[oc][0] = pa[0] + f[0] * ex + f[1] * nx, out[oc][1] = pa[1] + f[0] * ey + f[1] * ny;
+}
+
+/* Charts grown from seed triangles across shared sides, each new triangle
+ * unfolded flat about its side, while the chart overlaps nowhere, covers
+ * CHART_FILL of its convex hull and has at most CHART_TRIS triangles.
+ * Returns the number of charts, or -1 when out of memory. */
 static long make_charts(const simp_mesh *m, chart *ch)
 {
     size_t ne = 3 * (size_t)m->ntris;
@@ -116,35 +201,37 @@ static long make_charts(const simp_mesh *m, chart *ch)
     long n = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
         if (mate[t] >= 0) continue;
-        int side = -1;
-        for (int s = 0; s < 3; s++) {
-            uint32_t o = nb[3 * t + s];
-            if (o == UINT32_MAX || o == t || mate[o] >= 0) continue;
-            if (side < 0 || edge_len(m, t, s) > edge_len(m, t, side)) side = s;
-        }
         chart *c = &ch[n];
         memset(c, 0, sizeof *c);
+        int longest = 0;
+        for (int s = 1; s < 3; s++)
+            if (edge_len(m, t, s) > edge_len(m, t, longest)) longest = s;
+        c->ntris = 1;
         c->tri[0] = t;
         mate[t] = (int32_t)n;
-        if (side < 0) {
-            int longest = 0;
-            for (int s = 1; s < 3; s++)
-                if (edge_len(m, t, s) > edge_len(m, t, longest)) longest = s;
-            c->ntris = 1;
-            lay(m, t, longest, 1, c->p[0]);
-        } else {
-            uint32_t o = nb[3 * t + side];
-            c->ntris = 2;
-            c->tri[1] = o;
-            mate[o] = (int32_t)n;
-            lay(m, t, side, 1, c->p[0]);
-            /* the shared edge runs the other way round in o; its corners get t's places */
-            int os = 0;
-            while (os < 3 && m->tri[3 * o + os] != m->tri[3 * t + (side + 1) % 3]) os++;
-            const double *a = &m->pos[3 * m->tri[3 * t + side]], *b = &m->pos[3 * m->tri[3 * t + (side + 1) % 3]];
-            c->p[1][os][0] = c->p[0][(side + 1) % 3][0], c->p[1][os][1] = 0;
-            c->p[1][(os + 1) % 3][0] = 0, c->p[1][(os + 1) % 3][1] = 0;
-            flat(a, b, &m->pos[3 * m->tri[3 * o + (os + 2) % 3]], -1, c->p[1][(os + 2) % 3]);
+        lay(m, t, longest, 1, c->p[0]);
+        double area = area2(c->p[0]), eps = 1e-9 * edge_len(m, t, longest);
+        while (c->ntris < CHART_TRIS) {
+            /* the candidate that keeps the chart most compact */
+            double best = CHART_FILL, cand[3][2], keep[3][2];
+            uint32_t pick = UINT32_MAX;
+            for (int j = 0; j < c->ntris; j++)
+                for (int s = 0; s < 3; s++) {
+                    uint32_t o = nb[3 * c->tri[j] + s];
+                    if (o == UINT32_MAX || mate[o] >= 0) continue;
+                    unfold(m, c, j, s, o, cand);
+                    int bad = 0;
+                    for (int i = 0; i < c->ntris && !bad; i++) bad = overlap(cand, c->p[i], eps);
+                    if (bad) continue;
+                    double fill = (area + area2(cand)) / hull_area(c, cand);
+                    if (fill > best) best = fill, pick = o, memcpy(keep, cand, sizeof keep);
+                }
+            if (pick == UINT32_MAX) break;
+            c->tri[c->ntris] = pick;
+            memcpy(c->p[c->ntris], keep, sizeof keep);
+            c->ntris++;
+            mate[pick] = (int32_t)n;
+            area += area2(keep);
         }
         orient(c);
         n++;
@@ -159,20 +246,26 @@ static int by_height(const void *a, const void *b)
     return x->h > y->h ? -1 : x->h < y->h;
 }
 
-/* Shelf packing at density s: 1 when every box fits in w x h. */
-static int pack(chart *ch, long n, double s, int w, int h)
+/* Skyline packing at density s: each box, tallest first, where it lies
+ * lowest (leftmost among equals) on the boxes below.  1 when every box
+ * fits in w x h. */
+static int pack(chart *ch, long n, double s, int w, int h, int *sky)
 {
-    int x = 0, y = 0, row = 0;
+    for (int x = 0; x < w; x++) sky[x] = 0;
     for (long i = 0; i < n; i++) {
         chart *c = &ch[i];
         double bw = ceil(c->w * s) + 2, bh = ceil(c->h * s) + 2;
         if (bw > w || bh > h) return 0;
         c->bw = (int)bw, c->bh = (int)bh;
-        if (x + c->bw > w) x = 0, y += row, row = 0;
-        if (y + c->bh > h) return 0;
-        c->x = x, c->y = y;
-        x += c->bw;
-        if (c->bh > row) row = c->bh;
+        int best = -1, by = h;
+        for (int x = 0; x + c->bw <= w; x++) {
+            int y = 0;
+            for (int k = x; k < x + c->bw; k++) y = sky[k] > y ? sky[k] : y;
+            if (y < by) by = y, best = x;
+        }
+        if (best < 0 || by + c->bh > h) return 0;
+        c->x = best, c->y = by;
+        for (int k = best; k < best + c->bw; k++) sky[k] = by + c->bh;
     }
     return 1;
 }
@@ -255,17 +348,21 @@ int stex_atlas_build(const simp_mesh *hull, int w, int h, stex_atlas *a)
     double area = 0;
     for (long i = 0; i < n; i++) area += ch[i].w * ch[i].h;
     double lo = 1e-9, hi = 2 * sqrt((double)w * h / (area > 0 ? area : 1));
-    if (!pack(ch, n, lo / 1e6, w, h)) {
+    int *sky = malloc((size_t)w * sizeof *sky);
+    if (!sky || !pack(ch, n, lo / 1e6, w, h, sky)) {
+        int rc = sky ? -2 : -1;
+        free(sky);
         free(ch);
         stex_atlas_free(a);
-        return -2;
+        return rc;
     }
     for (int it = 0; it < 50; it++) {
         double mid = (lo + hi) / 2;
-        if (pack(ch, n, mid, w, h)) lo = mid;
+        if (pack(ch, n, mid, w, h, sky)) lo = mid;
         else hi = mid;
     }
-    pack(ch, n, lo, w, h);
+    pack(ch, n, lo, w, h, sky);
+    free(sky);
     a->density = lo;
     a->ncharts = (uint32_t)n;
     for (size_t t = 0; t < nt; t++) a->tri[t] = -1;

@@ -1,16 +1,18 @@
 /*
  * stex_atlas.h - a texture atlas over a hull for its silhouette texture
  * (Wu, Wei, Wang, Guo, "Silhouette Texture", section 3.3: "parameterize
- * the hull into a 2D texture atlas").  Charts are pairs of hull triangles
- * that share an edge (matched greedily across each triangle's longest free
- * edge; a triangle left over is a chart of its own), unfolded flat about
- * the shared edge, so every chart keeps its triangles' shapes and all
- * charts one texel density.  Each chart is turned so its bounding box is
- * smallest, framed by one texel of gutter on every side, and the boxes are
- * shelf-packed; the density is the largest for which they fit.  Every
- * texel of a box stands for the chart point nearest its centre: its own
- * point inside the chart, the nearest edge point in the gutter, so a
- * bilinear lookup from inside a chart only ever blends that chart's data.
+ * the hull into a 2D texture atlas").  Charts grow from a seed triangle
+ * across shared sides, each new triangle unfolded flat about its side, so
+ * every chart keeps its triangles' shapes and all charts one texel
+ * density; a chart takes the neighbour that keeps it most compact, as long
+ * as it overlaps itself nowhere, covers at least 70% of its convex hull
+ * and has at most 16 triangles.  Each chart is turned so its bounding box
+ * is smallest, framed by one texel of gutter on every side, and the boxes
+ * are skyline-packed (tallest first, each where it lies lowest); the
+ * density is the largest for which they fit.  Every texel of a box stands
+ * for the chart point nearest its centre: its own point inside the chart,
+ * the nearest edge point in the gutter, so a bilinear lookup from inside a
+ * chart only ever blends that chart's data.
  * Host-side, double precision.
  */
 #ifndef SILK_TOOLS_STEX_ATLAS_H
