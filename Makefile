@@ -76,7 +76,7 @@ $(BUILD)/libsilk_platform.a: $(PLAT_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm -pthread
 
 # The manual page is the help text (tools/man.c).
 $(BUILD)/silk.1: $(BUILD)/silk
@@ -99,6 +99,9 @@ $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
 CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,gen.o hull.o lp.o simplify.o closest.o silmap.o)
 $(BUILD)/tests/test_golden: $(CLIP_TOOL_OBJ)
 $(BUILD)/tests/test_golden: TEST_TOOL_OBJ = $(CLIP_TOOL_OBJ)
+STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o progress.o)
+$(BUILD)/tests/test_stex: $(STEX_TOOL_OBJ)
+$(BUILD)/tests/test_stex: TEST_TOOL_OBJ = $(STEX_TOOL_OBJ) -pthread
 $(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 $(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 
