@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "silk/siltex.h"
 #include "../tools/bvh.h"
 #include "../tools/gen.h"
 #include "../tools/stex_build.h"
@@ -307,6 +308,122 @@ TEST(interior_silhouettes)
     free_mesh(&hull);
 }
 
+/* Whether the ray o + t d (t > 0) meets the ellipsoid of semi-axes ax
+ * along the orthonormal rows of R, centred at c. */
+static int ray_ellipsoid(const double *o, const double *d, const double *c, const double R[9], const double ax[3])
+{
+    double oc[3], lo[3], ld[3];
+    sub3(o, c, oc);
+    for (int i = 0; i < 3; i++) lo[i] = dot3(&R[3 * i], oc) / ax[i], ld[i] = dot3(&R[3 * i], d) / ax[i];
+    double a = dot3(ld, ld), b = dot3(lo, ld), disc = b * b - a * (dot3(lo, lo) - 1);
+    return disc >= 0 && -b + sqrt(disc) > 0;
+}
+
+/* d turned by angle a towards the unit direction e of its own plane. */
+static void tilt(const double *d, double a, int i, double out[3])
+{
+    double axis[3] = { i == 0, i == 1, i == 2 }, e[3];
+    cross3(d, axis, e);
+    if (len3(e) < 1e-6) axis[0] = 1, axis[1] = axis[2] = 0, cross3(d, axis, e);
+    double l = len3(e);
+    for (int k = 0; k < 3; k++) e[k] /= l;
+    for (int k = 0; k < 3; k++) out[k] = cos(a) * d[k] + sin(a) * e[k];
+}
+
+TEST(runtime_lookup_agrees_with_the_encoding)
+{
+    /* An ellipsoid, turned and off centre, in a hull sphere: its visibility
+     * functions are lobes neither round nor centred on C, so any difference
+     * between the builder's conventions and the renderer's (azimuth
+     * direction, T/B handedness, atlas units, texel centres, the sign of
+     * d) shows.  At the centre of every texel inside a chart, the
+     * renderer's eq. 4 (silk_siltex_visible on the section's bytes, C and
+     * T interpolated as the vertex stage does) must agree with the
+     * builder's decision away from the stored boundary, and with the true
+     * visibility away from the true boundary. */
+    const double c[3] = { 0.12, -0.06, 0.09 }, ax[3] = { 0.72, 0.42, 0.3 };
+    const double ca = cos(0.6), sa = sin(0.6), cb = cos(0.4), sb = sin(0.4);
+    const double R[9] = { ca, sa, 0, -sa * cb, ca * cb, sb, sa * sb, -ca * sb, cb };
+    simp_mesh fine, hull;
+    CHECK(sphere(48, 32, 1, &fine) == 0);
+    for (uint32_t i = 0; i < fine.nverts; i++) {
+        double *q = &fine.pos[3 * i], l[3] = { q[0] * ax[0], q[1] * ax[1], q[2] * ax[2] };
+        for (int k = 0; k < 3; k++) q[k] = c[k] + R[k] * l[0] + R[3 + k] * l[1] + R[6 + k] * l[2];
+    }
+    CHECK(sphere(12, 8, 1, &hull) == 0);
+    stex_opts o;
+    stex_opts_default(&o);
+    o.atlas = 48, o.samples = 256, o.quiet = 1;
+    stex s;
+    CHECK(stex_build(&fine, NULL, &hull, &o, &s) == 0);
+    size_t size, nt = (size_t)s.atlas.w * s.atlas.h;
+    uint8_t *b = stex_section(&s, NULL, s.error, &size);
+    CHECK(b != NULL);
+    silk_siltex st;
+    memset(&st, 0, sizeof st);
+    st.w = (uint32_t)s.atlas.w, st.h = (uint32_t)s.atlas.h, st.k = (uint32_t)s.k;
+    st.nverts = hull.nverts, st.ntris = hull.ntris, st.bytes = (uint32_t)size;
+    st.frame = b + 32;
+    st.uv = st.frame + 12 * (size_t)hull.nverts;
+    st.angles = st.uv + 12 * (size_t)hull.ntris;
+    st.normal = st.angles + nt * s.k;
+    const double step = PI / 255, near = 1.5 * PI / 180;
+    long runtime_vs_host = 0, runtime_vs_true = 0, compared_host = 0, compared_true = 0, seen = 0;
+    unsigned seed = 11;
+    for (size_t t = 0; t < nt; t++) {
+        if (s.atlas.tri[t] < 0 || !s.atlas.inside[t]) continue;
+        double p[3];
+        point_of(&s, &hull, t, p);
+        const uint32_t *v = &hull.tri[3 * (size_t)s.atlas.tri[t]];
+        const double *w = &s.atlas.bary[3 * t];
+        silk_fx cf[3], tf[3];
+        for (int k = 0; k < 3; k++) {
+            double cs = 0, ts = 0;
+            for (int i = 0; i < 3; i++) cs += w[i] * s.frame[6 * v[i] + k] * 4, ts += w[i] * s.frame[6 * v[i] + 3 + k] * 4;
+            cf[k] = (silk_fx)lround(cs), tf[k] = (silk_fx)lround(ts);
+        }
+        silk_fx u = (silk_fx)((2 * (t % st.w) + 1) << 15), vv = (silk_fx)((2 * (t / st.w) + 1) << 15);
+        for (int i = 0; i < 64; i++) {
+            /* directions about C, most within the lobe's reach */
+            const double *C = &s.basis[9 * t];
+            double d[3], r[3] = { frand(&seed) - 0.5, frand(&seed) - 0.5, frand(&seed) - 0.5 };
+            double spread = 0.9 * frand(&seed);
+            for (int k = 0; k < 3; k++) d[k] = C[k] + spread * r[k] / (len3(r) + 1e-9);
+            double l = len3(d);
+            for (int k = 0; k < 3; k++) d[k] /= l;
+            int64_t d64[3] = { lround(d[0] * 65536), lround(d[1] * 65536), lround(d[2] * 65536) };
+            int got = silk_siltex_visible(&st, u, vv, cf, tf, d64);
+            seen += got;
+            double z = dot3(d, C), a = acos(z > 1 ? 1 : z), phi = stex_phi(&s, s.angles, t, d);
+            if (fabs(a - phi) > step) {
+                compared_host++;
+                runtime_vs_host += got != (a <= phi);
+            }
+            int want = ray_ellipsoid(p, d, c, R, ax), edge = 0;
+            for (int j = 0; j < 6 && !edge; j++) {
+                double e[3];
+                tilt(d, j < 3 ? near : -near, j % 3, e);
+                edge = ray_ellipsoid(p, e, c, R, ax) != want;
+            }
+            if (!edge) {
+                compared_true++;
+                runtime_vs_true += got != want;
+            }
+        }
+    }
+    printf("  ellipsoid: renderer vs builder %ld of %ld directions differ, vs the true visibility %ld of %ld (%ld seen)\n",
+           runtime_vs_host, compared_host, runtime_vs_true, compared_true, seen);
+    CHECK(seen > compared_true / 8);
+    CHECKF(runtime_vs_host <= compared_host / 2000, "renderer and builder differ at %ld of %ld directions",
+           runtime_vs_host, compared_host);
+    CHECKF(runtime_vs_true <= compared_true / 200, "renderer and the true visibility differ at %ld of %ld directions",
+           runtime_vs_true, compared_true);
+    free(b);
+    stex_free(&s);
+    free_mesh(&fine);
+    free_mesh(&hull);
+}
+
 TEST(jacobi_eigenvectors)
 {
     /* A = Q diag(5, 2, 1) Q^T for a rotation Q */
@@ -380,6 +497,7 @@ int main(void)
     RUN(atlas_charts_and_gutters);
     RUN(sphere_in_a_hull_sphere);
     RUN(interior_silhouettes);
+    RUN(runtime_lookup_agrees_with_the_encoding);
     RUN(jacobi_eigenvectors);
     RUN(svd_round_trip);
     return check_done();
