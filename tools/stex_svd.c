@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "silk/siltex.h"
 #include "stex_svd.h"
 
 void jacobi_eigen(double *a, int n, double *vals, double *vecs)
@@ -140,9 +141,40 @@ done:
     return rc;
 }
 
+/* The compressed angles as the STEX section lays them out, seen by st as
+ * the renderer sees them (the little-endian mean, scale and basis in buf,
+ * the weights where they are), so the host reconstructs with the
+ * renderer's code. */
+#define AS_SECTION_BYTES (2 * STEX_SVD_MAX_N + 4 * STEX_SVD_MAX_N + 2 * STEX_SVD_MAX_N * STEX_SVD_MAX_N)
+static void as_section(const int16_t *mean, const int32_t *s, const int16_t *v, const int8_t *w, int k, int e,
+                       uint8_t buf[AS_SECTION_BYTES], silk_siltex *st)
+{
+    memset(st, 0, sizeof *st);
+    st->flags = SILK_STEX_COMPRESSED, st->k = (uint32_t)k, st->e = (uint32_t)e;
+    uint8_t *p = buf;
+    st->mean = p;
+    for (int i = 0; i < k; i++, p += 2) p[0] = (uint8_t)mean[i], p[1] = (uint8_t)((uint16_t)mean[i] >> 8);
+    st->scale = p;
+    for (int j = 0; j < e; j++, p += 4)
+        for (int b = 0; b < 4; b++) p[b] = (uint8_t)((uint32_t)s[j] >> (8 * b));
+    st->basis = p;
+    for (int i = 0; i < e * k; i++, p += 2) p[0] = (uint8_t)v[i], p[1] = (uint8_t)((uint16_t)v[i] >> 8);
+    st->weights = (const uint8_t *)w;
+}
+
+uint8_t stex_svd_angle(const int16_t *mean, const int32_t *s, const int16_t *v, const int8_t *w, int k, int e, int i)
+{
+    uint8_t buf[AS_SECTION_BYTES];
+    silk_siltex st;
+    as_section(mean, s, v, w, k, e, buf, &st);
+    return (uint8_t)silk_siltex_q(&st, 0, (uint32_t)i);
+}
+
 void stex_svd_expand(const stex_svd *c, uint8_t *angles)
 {
+    uint8_t buf[AS_SECTION_BYTES];
+    silk_siltex st;
+    as_section(c->mean, c->s, c->v, c->w, c->k, c->e, buf, &st);
     for (uint32_t t = 0; t < c->ntexels; t++)
-        for (int i = 0; i < c->k; i++)
-            angles[(size_t)t * c->k + i] = stex_svd_angle(c->mean, c->s, c->v, &c->w[(size_t)t * c->e], c->k, c->e, i);
+        for (int i = 0; i < c->k; i++) angles[(size_t)t * c->k + i] = (uint8_t)silk_siltex_q(&st, t, (uint32_t)i);
 }

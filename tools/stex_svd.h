@@ -24,25 +24,17 @@ typedef struct stex_svd {
     int8_t *w;               /* ntexels * e */
 } stex_svd;
 
-/* Angle i (0..k-1) of a texel whose weights are w (e of them): the one
- * integer reconstruction the renderer uses too,
+/* Angle i (0..k-1) of a texel whose weights are w (e of them): the
+ * renderer's reconstruction, silk_siltex_q (silk/siltex.h),
  *   mean[i]/16 + sum_j w[j] s[j] v[j k + i] / 2^30,
  * rounded to nearest, clamped to 0..255. */
-static inline uint8_t stex_svd_angle(const int16_t *mean, const int32_t *s, const int16_t *v, const int8_t *w, int k,
-                                     int e, int i)
-{
-    int64_t acc = (int64_t)mean[i] * ((int64_t)1 << 26);
-    for (int j = 0; j < e; j++) acc += (int64_t)w[j] * s[j] * v[j * k + i];
-    if (acc <= 0) return 0;
-    acc = (acc + ((int64_t)1 << 29)) >> 30;
-    return (uint8_t)(acc > 255 ? 255 : acc);
-}
+uint8_t stex_svd_angle(const int16_t *mean, const int32_t *s, const int16_t *v, const int8_t *w, int k, int e, int i);
 
 /* Compress ntexels rows of k angles (row t at angles[t * k]); only rows
  * with used[t] set count towards the mean and covariance (the others get
  * zero weights).  1 <= e <= k.  0, or -1 when out of memory. */
 int stex_svd_compress(const uint8_t *angles, const uint8_t *used, uint32_t ntexels, int k, int e, stex_svd *out);
-/* The angles back (ntexels * k), by stex_svd_angle. */
+/* The angles back (ntexels * k), by silk_siltex_q. */
 void stex_svd_expand(const stex_svd *c, uint8_t *angles);
 /* Bytes of the compressed angles in the section, before padding. */
 size_t stex_svd_bytes(int k, int e, uint32_t ntexels);
