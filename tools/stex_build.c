@@ -138,10 +138,12 @@ static void texel_encode(ctx *c, size_t t)
     for (int k = 0; k < s->k; k++) {
         double th = 2 * PI * k / s->k, u[3], d[3];
         for (int i = 0; i < 3; i++) u[i] = cos(th) * T[i] + sin(th) * B[i];
-        /* unit j is tested at (j + 1/2) steps: the first false one is the boundary rounded */
+        /* unit j is tested at (j - 1/2) steps: the first false one is the
+         * boundary rounded, plus one unit, since the lookup's chords
+         * between azimuths and texels fall inside a rounded lobe */
         int lo = -1, hi = -1;        /* last true, first false */
         for (int j = 0; hi < 0 && lo < 254; j = j + MARCH < 254 ? j + MARCH : 254) {
-            along(C, u, (j + 0.5) * STEP, d);
+            along(C, u, (j - 0.5) * STEP, d);
             if (vf(c, p, f, d)) lo = j;
             else hi = j;
         }
@@ -151,18 +153,27 @@ static void texel_encode(ctx *c, size_t t)
         }
         while (hi - lo > 1) {
             int mid = (lo + hi) / 2;
-            along(C, u, (mid + 0.5) * STEP, d);
+            along(C, u, (mid - 0.5) * STEP, d);
             if (vf(c, p, f, d)) lo = mid;
             else hi = mid;
         }
-        q[k] = (uint8_t)hi;
         if (hi == 0) multi = 1;
-        /* single-lobed: false on to where the great circle leaves f's inward side */
-        for (int j = hi + MARCH; j <= 255 && !multi; j += MARCH) {
+        /* single-lobed: false on to where the great circle leaves f's
+         * inward side.  Else (C false, or true again further on) the lobe
+         * reaches as far as draws the most true and the least false
+         * directions along the circle (sin-weighted: their solid angle), so
+         * a lobe beside C is drawn rather than dropped. */
+        double score = 0, best = 0;
+        int reach = hi;
+        for (int j = hi + MARCH; j <= 255; j += MARCH) {
             along(C, u, (j + 0.5) * STEP, d);
             if (dot3(d, &c->hull_fn[3 * f]) >= 0) break;
-            if (vf(c, p, f, d)) multi = 1;
+            int seen = vf(c, p, f, d);
+            multi |= seen;
+            score += (seen ? 1 : -1) * sin((j + 0.5) * STEP);
+            if (score > best) best = score, reach = j + MARCH / 2 < 255 ? j + MARCH / 2 : 255;
         }
+        q[k] = (uint8_t)reach;
     }
     s->multi[t] = (uint8_t)multi;
 }
@@ -262,14 +273,39 @@ static void axis_tangent(const double C[3], double T[3])
     normalize3(T);
 }
 
-/* C and T at every hull vertex (section 3.3): C the mean true direction
- * of VF at the vertex itself, among VERTEX_SAMPLES directions (no hull
- * triangle is its own there: the triangles around it are met at distance 0
- * only; inward along the vertex normal where none sees the detailed mesh);
+/* C and T at every hull vertex (section 3.3): C the mean of the mean true
+ * directions of the texels around the vertex, each weighted by its
+ * barycentric weight there, so that C interpolated over a triangle follows
+ * its texels' lobes (where no texel around it sees the detailed mesh: the
+ * mean true direction of VF at the vertex itself among VERTEX_SAMPLES
+ * directions, no hull triangle its own there; else inward along the vertex
+ * normal), then turned into every triangle around the vertex (inward());
  * T carried over the hull breadth first, each vertex taking its visited
  * neighbours' T turned into its own tangent plane.  Stored rounded to
  * Q1.14. */
 #define VERTEX_SAMPLES 4096
+
+/* C of vertex v turned, where it can be, to point into every hull triangle
+ * around v (C.n below -INWARD for each), so that C interpolated anywhere
+ * on those triangles points into them too: a C out of a point's own
+ * triangle is false there, and the lobe about it holds nothing. */
+#define INWARD 0.25
+static void inward(const simp_mesh *h, const double *fn, uint32_t v, double C[3])
+{
+    for (int pass = 0; pass < 8; pass++) {
+        int moved = 0;
+        for (uint32_t f = 0; f < h->ntris; f++) {
+            const uint32_t *t = &h->tri[3 * (size_t)f];
+            if (t[0] != v && t[1] != v && t[2] != v) continue;
+            double a = dot3(C, &fn[3 * (size_t)f]) + INWARD;
+            if (a <= 0) continue;
+            for (int k = 0; k < 3; k++) C[k] -= a * fn[3 * (size_t)f + k];
+            normalize3(C);
+            moved = 1;
+        }
+        if (!moved) break;
+    }
+}
 static int vertex_frames(ctx *c, const double *hull_vn)
 {
     const simp_mesh *h = c->hull;
@@ -282,10 +318,23 @@ static int vertex_frames(ctx *c, const double *hull_vn)
     int rc = -1;
     if (!dirs || !Cv || !Tv || !start || !adj || !queue || !fillp || !seen || !set) goto done;
     sphere_samples(VERTEX_SAMPLES, dirs);
+    size_t nt = (size_t)s->atlas.w * s->atlas.h, row = (size_t)(s->nsamples + 7) / 8;
+    for (size_t t = 0; t < nt; t++) {
+        if (s->atlas.tri[t] < 0 || !s->atlas.inside[t] || c->ntrue[t] == 0) continue;
+        double m[3] = { 0, 0, 0 };
+        for (int i = 0; i < s->nsamples; i++)
+            if ((s->vf[t * row + i / 8] >> (i % 8)) & 1)
+                for (int k = 0; k < 3; k++) m[k] += s->samples[3 * i + k];
+        normalize3(m);
+        const uint32_t *v = &h->tri[3 * (size_t)s->atlas.tri[t]];
+        for (int i = 0; i < 3; i++)
+            for (int k = 0; k < 3; k++) Cv[3 * (size_t)v[i] + k] += s->atlas.bary[3 * t + i] * m[k];
+    }
     for (uint32_t i = 0; i < h->nverts; i++) {
         double *C = &Cv[3 * (size_t)i];
         const double *p = &h->pos[3 * (size_t)i];
-        for (int j = 0; j < VERTEX_SAMPLES; j++) {
+        int cast = len3(C) < 1e-9;   /* no texel near it sees the model */
+        for (int j = 0; cast && j < VERTEX_SAMPLES; j++) {
             const double *d = &dirs[3 * j];
             double dh = bvh_ray(&c->hull_tree, p, d, c->eps, INFINITY, BVH_NO_TRI, NULL);
             if (bvh_ray(&c->fine_tree, p, d, 0, dh, BVH_NO_TRI, NULL) < dh)
@@ -294,6 +343,7 @@ static int vertex_frames(ctx *c, const double *hull_vn)
         if (len3(C) < 1e-9)
             for (int k = 0; k < 3; k++) C[k] = -hull_vn[3 * (size_t)i + k];
         normalize3(C);
+        inward(h, c->hull_fn, i, C);
         for (int k = 0; k < 3; k++) s->frame[6 * (size_t)i + k] = q14(C[k]);
         for (int k = 0; k < 3; k++) C[k] = s->frame[6 * (size_t)i + k] / 16384.0;
         normalize3(C);
