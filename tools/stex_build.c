@@ -68,12 +68,10 @@ static int vf(const ctx *c, const double p[3], uint32_t f, const double d[3])
     return dm < dh;
 }
 
-/* The detailed surface's normal at the point nearest p, octahedral, and
- * its colour there (rgb, when fine has colours). */
-static void sample_surface(const ctx *c, const double p[3], int8_t out[2], uint8_t *rgb)
+/* The detailed surface's normal at the point of its triangle ft nearest p,
+ * octahedral, and its colour there (rgb, when fine has colours). */
+static void sample_surface(const ctx *c, const double p[3], uint32_t ft, int8_t out[2], uint8_t *rgb)
 {
-    uint32_t ft = 0;
-    cp_nearest(&c->fine_tree, p, &ft);
     const uint32_t *v = &c->fine->tri[3 * (size_t)ft];
     const double *a = &c->fine->pos[3 * v[0]], *b = &c->fine->pos[3 * v[1]], *cc = &c->fine->pos[3 * v[2]];
     double q[3], n[3] = { 0, 0, 0 }, w[3], e0[3], e1[3], e2[3], x[3];
@@ -108,7 +106,9 @@ static void texel_sample(ctx *c, size_t t)
     double p[3];
     uint32_t f = (uint32_t)s->atlas.tri[t];
     texel_point(c, t, p);
-    sample_surface(c, p, &s->normal[2 * t], s->colour ? &s->colour[3 * t] : NULL);
+    uint32_t ft = 0;
+    cp_nearest(&c->fine_tree, p, &ft);
+    sample_surface(c, p, ft, &s->normal[2 * t], s->colour ? &s->colour[3 * t] : NULL);
     uint8_t *bits = &s->vf[t * (size_t)((s->nsamples + 7) / 8)];
     for (int i = 0; i < s->nsamples; i++) {
         const double *d = &s->samples[3 * i];
@@ -134,6 +134,16 @@ static void texel_encode(ctx *c, size_t t)
     uint8_t *q = &s->angles[t * (size_t)s->k];
     texel_point(c, t, p);
     if (c->ntrue[t] == 0) return;    /* no true direction: 0 everywhere */
+    /* q where the detailed surface is seen along C, when it is: the point
+     * drawn at p from the middle of its lobe, which the nearest point is
+     * not where the hull spans a hollow (under an arm) */
+    uint32_t ft = BVH_NO_TRI;
+    double dh = bvh_ray(&c->hull_tree, p, C, c->eps, INFINITY, f, NULL);
+    double dm = bvh_ray(&c->fine_tree, p, C, 0, dh, BVH_NO_TRI, &ft);
+    if (dm < dh && dot3(C, &c->hull_fn[3 * f]) < 0) {
+        double q[3] = { p[0] + dm * C[0], p[1] + dm * C[1], p[2] + dm * C[2] };
+        sample_surface(c, q, ft, &s->normal[2 * t], s->colour ? &s->colour[3 * t] : NULL);
+    }
     int multi = 0;
     for (int k = 0; k < s->k; k++) {
         double th = 2 * PI * k / s->k, u[3], d[3];
