@@ -60,7 +60,7 @@ check "colours: flags bit 1" [ "$(stex_flags "$tmp/colour.silk")" = 2 ]
 check "colours: 3 bytes more per texel" \
     [ "$(section_size "$tmp/colour.silk" STEX)" = "$(pad4 $((32 + 12 * hv + 12 * ht + 32 * 32 * (8 + 2 + 3))))" ]
 
-run_silk prepare "$tmp/sphere.obj" -o "$tmp/cmp.silk" --triangles 80 --siltex --atlas 32 --siltex-compare
+run_silk prepare "$tmp/sphere.obj" -o "$tmp/cmp.silk" --triangles 80 --siltex --atlas 32 --angles 16 --siltex-compare
 check "--siltex-compare: E = 4, 8, 16 and whole" [ "$(grep -cE '^siltex svd=(4|8|16|0) siltex_bytes=[0-9]+ siltex_error=' "$out")" = 4 ]
 
 # errors

@@ -173,7 +173,7 @@ TEST(sphere_in_a_hull_sphere)
     CHECK(sphere(12, 8, R, &hull) == 0);
     stex_opts o;
     stex_opts_default(&o);
-    o.atlas = 48, o.samples = 1024, o.quiet = 1;
+    o.atlas = 48, o.angles = 16, o.samples = 1024, o.quiet = 1;
     stex s;
     CHECK(stex_build(&fine, NULL, &hull, &o, &s) == 0);
     const double step = PI / 255;

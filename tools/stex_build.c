@@ -21,8 +21,8 @@
 
 void stex_opts_default(stex_opts *o)
 {
-    o->atlas = 112;
-    o->angles = 16;
+    o->atlas = 128;
+    o->angles = 12;
     o->svd = 0;
     o->samples = 512;
     o->threads = 2;

@@ -49,8 +49,8 @@
 #define STEX_FLAG_COLOUR 2u
 
 typedef struct stex_opts {
-    int atlas;               /* atlas width and height, texels [112] */
-    int angles;              /* K azimuths [16] */
+    int atlas;               /* atlas width and height, texels [128] */
+    int angles;              /* K azimuths [12] */
     int svd;                 /* E eigenfunctions; 0: angles stored whole [0] */
     int samples;             /* sphere directions per texel for C_p and eq. 3 [512] */
     int threads;             /* [2] */
