@@ -6,8 +6,9 @@
  *
  * Over the atlas of tools/stex_atlas.h, each texel stands for a point p of
  * the hull, on hull triangle f.  For p:
- *  - the normal map holds the detailed surface's normal at q, the point of
- *    the detailed mesh closest to p (section 3.1: D_p = q - p), and the
+ *  - the normal map holds the detailed surface's normal at q (section
+ *    3.1: D_p = q - p), the point of the detailed mesh seen from p along
+ *    C (below), or where it is not seen, the point closest to p; the
  *    colour map its vertex colours interpolated there;
  *  - the visibility function (section 3.2, eq. 2): VF_p(d) is true when the
  *    ray from p along the viewing direction d meets the detailed mesh
@@ -15,13 +16,17 @@
  *    direction out of f (d.n_f >= 0) leaves the hull at once, so it is false
  *    without a ray;
  *  - the single-lobe encoding (section 3.3): at each hull vertex, C the
- *    mean of the true directions of VF there (among directions spread
- *    evenly over the sphere) and T perpendicular to it, carried from vertex
- *    to vertex over the hull so that neighbours agree; each texel then
- *    stores, at K azimuths of the frame interpolated at p (the renderer's
- *    rule), the angle from C along the azimuth's great circle to the first
- *    false direction, found by steps of 4 angle units (pi/255 each) and
- *    halving, in those units;
+ *    mean of the mean true directions of the texels around it (weighted
+ *    by their barycentric weights there), turned to point into every
+ *    triangle around the vertex, and T perpendicular to it, carried from
+ *    vertex to vertex over the hull so that neighbours agree; each texel
+ *    then stores, at K azimuths of the frame interpolated at p (the
+ *    renderer's rule), the angle from C along the azimuth's great circle
+ *    to the first false direction, found by steps of 4 angle units (pi/255
+ *    each) and halving, in those units, rounded and one unit out (the
+ *    renderer's linear lookups cut a rounded cap's edge inward); where the
+ *    circle turns true again (or C is false), the angle that draws the
+ *    most true and the fewest false directions along it;
  *  - eq. 3: the share of the sampled directions where the stored function
  *    (eq. 4, linear between azimuths) differs from VF_p, averaged over the
  *    texels inside charts, and the share of those texels not single-lobed
