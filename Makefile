@@ -45,7 +45,8 @@ PLAT_OBJ  := $(PLAT_SRC:%.c=$(BUILD)/obj/%.o)
 TOOL_OBJ  := $(TOOL_SRC:%.c=$(BUILD)/obj/%.o)
 TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%) $(BUILD)/tests/test_cxx
 TEST_SUPPORT := $(wildcard tests/support/*.c)
-TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o)
+# (stexgen.c writes prepared models with the tool's writer)
+TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tools/model_file.o
 
 .PHONY: all lib test test-fast check-nofloat demo install clean tests bench bench-peers fuzz fuzz-build
 all: $(BUILD)/libsilk.a $(BUILD)/silk $(BUILD)/silk.1
@@ -75,7 +76,7 @@ $(BUILD)/libsilk_platform.a: $(PLAT_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm -pthread
 
 # The manual page is the help text (tools/man.c).
 $(BUILD)/silk.1: $(BUILD)/silk
@@ -95,9 +96,12 @@ GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines $(BUILD)/tests
 $(GEN_TESTS): $(BUILD)/obj/tools/gen.o
 $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
 # clip mode's golden frames draw a model prepared as silk prepare makes one
-CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,gen.o hull.o lp.o simplify.o closest.o silmap.o model_file.o)
+CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,gen.o hull.o lp.o simplify.o closest.o silmap.o)
 $(BUILD)/tests/test_golden: $(CLIP_TOOL_OBJ)
 $(BUILD)/tests/test_golden: TEST_TOOL_OBJ = $(CLIP_TOOL_OBJ)
+STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o progress.o)
+$(BUILD)/tests/test_stex: $(STEX_TOOL_OBJ)
+$(BUILD)/tests/test_stex: TEST_TOOL_OBJ = $(STEX_TOOL_OBJ) -pthread
 $(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 $(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
 

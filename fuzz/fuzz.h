@@ -141,4 +141,31 @@ static inline void fuzz_reader(fuzz_reader_fn load, const char *name, const uint
     fuzz_load_checked(load, name, data, size, &o, roomy, sizeof roomy);
 }
 
+/* A prepared model's file size, section checksums and table checksum made
+ * right in place (the fuzz_model and fuzz_siltex harnesses), so that the
+ * checks behind the checksums are reached. */
+static inline uint32_t fuzz_rd32(const uint8_t *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+static inline void fuzz_wr32(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8), p[2] = (uint8_t)(v >> 16), p[3] = (uint8_t)(v >> 24);
+}
+static inline void fuzz_model_fix(uint8_t *b, size_t size)
+{
+    if (size < SILK_MODEL_HEADER_BYTES) return;
+    fuzz_wr32(b + 16, (uint32_t)size);
+    uint32_t n = fuzz_rd32(b + 20);
+    if (n >= 1 && n <= SILK_MODEL_MAX_SECTIONS &&
+        SILK_MODEL_HEADER_BYTES + (size_t)n * SILK_MODEL_ENTRY_BYTES <= size) {
+        for (uint32_t i = 0; i < n; i++) {
+            uint8_t *e = b + SILK_MODEL_HEADER_BYTES + (size_t)i * SILK_MODEL_ENTRY_BYTES;
+            uint32_t off = fuzz_rd32(e + 8), len = fuzz_rd32(e + 12);
+            if (off <= size && len <= size - off) fuzz_wr32(e + 16, silk_crc32(0, b + off, len));
+        }
+        fuzz_wr32(b + 24, silk_crc32(0, b + SILK_MODEL_HEADER_BYTES, (size_t)n * SILK_MODEL_ENTRY_BYTES));
+    }
+}
+
 #endif

@@ -19,15 +19,6 @@
 #include "fuzz.h"
 #include "../src/clip.h"
 
-static uint32_t model_rd32(const uint8_t *p)
-{
-    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-static void model_wr32(uint8_t *p, uint32_t v)
-{
-    p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8), p[2] = (uint8_t)(v >> 16), p[3] = (uint8_t)(v >> 24);
-}
-
 /* The map's outline for an eye on the first view's side, into a 32 x 24
  * stencil; every outcome is fine but a crash or a dirty error. */
 static void fuzz_clip(const uint8_t *b, size_t size)
@@ -79,17 +70,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     uint8_t *b = malloc(size);
     if (!b) return 0;
     memcpy(b, data, size);
-    model_wr32(b + 16, (uint32_t)size);
-    uint32_t n = model_rd32(b + 20);
-    if (n >= 1 && n <= SILK_MODEL_MAX_SECTIONS &&
-        SILK_MODEL_HEADER_BYTES + (size_t)n * SILK_MODEL_ENTRY_BYTES <= size) {
-        for (uint32_t i = 0; i < n; i++) {
-            uint8_t *e = b + SILK_MODEL_HEADER_BYTES + (size_t)i * SILK_MODEL_ENTRY_BYTES;
-            uint32_t off = model_rd32(e + 8), len = model_rd32(e + 12);
-            if (off <= size && len <= size - off) model_wr32(e + 16, silk_crc32(0, b + off, len));
-        }
-        model_wr32(b + 24, silk_crc32(0, b + SILK_MODEL_HEADER_BYTES, (size_t)n * SILK_MODEL_ENTRY_BYTES));
-    }
+    fuzz_model_fix(b, size);
     silk_load_opts o;
     silk_load_opts_default(&o);
     fuzz_load_checked(silk_load_model, "fuzz.silk", b, size, &o, NULL, 64 * size + 4096);

@@ -1,7 +1,7 @@
 #!/bin/sh
 # seeds.sh SILK MKSEED OUT - the seed corpora of the fuzz harnesses, written
 # into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_stl, OUT/fuzz_render,
-# OUT/fuzz_pack, OUT/fuzz_math, OUT/fuzz_ppm and OUT/fuzz_model from:
+# OUT/fuzz_pack, OUT/fuzz_math, OUT/fuzz_ppm, OUT/fuzz_model and OUT/fuzz_siltex from:
 #   - the malformed-input corpus tests/bad/ (each file one error path),
 #   - the regression inputs tests/regress/HARNESS/ (every finding so far),
 #   - small meshes from `silk gen` (every shape, few triangles) and a few
@@ -20,7 +20,7 @@ meshes=${SILK_MESHES:-../shared/meshes}
 
 rm -rf "$out"
 mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_stl" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" \
-    "$out/fuzz_ppm" "$out/fuzz_model" "$out/shapes"
+    "$out/fuzz_ppm" "$out/fuzz_model" "$out/fuzz_siltex" "$out/shapes"
 
 # small generated shapes
 "$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
@@ -61,7 +61,7 @@ for f in "$out/shapes/"*.obj; do
 done
 # fuzz_ppm: a small render as PPM, besides its regression inputs
 "$silk" render "$out/shapes/sphere.obj" -o "$out/fuzz_ppm/sphere.ppm" --size 8x6 >/dev/null
-for h in obj ply stl render pack math ppm model; do
+for h in obj ply stl render pack math ppm model siltex; do
     if [ -d "tests/regress/$h" ]; then
         for f in tests/regress/"$h"/*; do
             [ -f "$f" ] && [ "${f%.expected}" = "$f" ] && cp "$f" "$out/fuzz_$h/"
@@ -105,4 +105,6 @@ for b in sphere torus cylinder knot; do
     "$silk" prepare "$out/shapes/$b.obj" -o "$out/fuzz_model/$b.silk" --triangles 64 >/dev/null
 done
 cp tests/bad/*.silk "$out/fuzz_model/"
+# fuzz_siltex: its regression inputs (an analytic sphere's texture) and the malformed textures
+cp tests/bad/model-stex-*.silk "$out/fuzz_siltex/"
 rm -rf "$out/shapes"

@@ -10,7 +10,8 @@
 
 int silk_mode_parse(const char *name, silk_mode *mode, uint32_t *level)
 {
-    static const silk_mode all[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN, SILK_MODE_CLIP };
+    static const silk_mode all[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN, SILK_MODE_CLIP,
+                                     SILK_MODE_SILTEX };
     if (!name) return -1;
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
         if (strcmp(name, silk_mode_name(all[i])) == 0) {

@@ -14,6 +14,7 @@
 #include "load.h"
 #include "silk/model.h"
 #include "silmap_interp.h"
+#include "silk/siltex.h"
 
 #define BAD(...) silk_fail(err, SILK_ERR_PARSE, name, 0, __VA_ARGS__)
 #define UL(x) ((unsigned long)(x))
@@ -88,7 +89,8 @@ int silk_model_find(const silk_model *m, uint32_t type, silk_model_section *out)
 
 static int known_type(uint32_t type)
 {
-    return type == SILK_SECTION_MESH || type == SILK_SECTION_HULL || type == SILK_SECTION_SMAP;
+    return type == SILK_SECTION_MESH || type == SILK_SECTION_HULL || type == SILK_SECTION_SMAP ||
+           type == SILK_SECTION_STEX;
 }
 
 silk_status silk_model_open(const void *data, size_t len, const char *name, silk_model *out, silk_error *err)
@@ -210,6 +212,10 @@ static silk_status mesh_check(const silk_model_section *s, const char *sec, cons
 }
 
 static silk_status smap_check(const silk_model_section *sp, const char *name, silk_silmap *out, silk_error *err);
+#ifndef SILK_NO_SILTEX_MODE
+static silk_status stex_of(const silk_model *m, const silk_model_section *s, const char *name, silk_siltex *out,
+                           silk_error *err);
+#endif
 
 silk_status silk_load_model(const void *data, size_t len, const char *name, const silk_load_opts *opts,
                             silk_arena *a, silk_mesh *out, silk_error *err)
@@ -247,6 +253,10 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
     silk_model_section ms;
     silk_silmap map;
     if (silk_model_find(&m, SILK_SECTION_SMAP, &ms) && (st = smap_check(&ms, name, &map, err))) return st;
+#ifndef SILK_NO_SILTEX_MODE
+    silk_siltex tex;
+    if (silk_model_find(&m, SILK_SECTION_STEX, &ms) && (st = stex_of(&m, &ms, name, &tex, err))) return st;
+#endif
 
     int want_n = opts->normals != SILK_NORMALS_COMPUTE;
     size_t need = 0;
@@ -420,3 +430,132 @@ silk_status silk_model_silmap(const void *data, size_t len, const char *name, si
     *out = map;
     return SILK_OK;
 }
+
+/* ---- STEX: the silhouette texture ------------------------------------------------ */
+
+#ifndef SILK_NO_SILTEX_MODE
+/* |v|^2 of a Q1.14 vector within (1 +- 1/64)^2, in Q2.28. */
+static int unit14(const uint8_t *p)
+{
+    int64_t x = (int16_t)rd16(p), y = (int16_t)rd16(p + 2), z = (int16_t)rd16(p + 4);
+    int64_t n2 = x * x + y * y + z * z, one = (int64_t)1 << 28;
+    return n2 >= one - one / 32 + one / 4096 && n2 <= one + one / 32 + one / 4096;
+}
+
+static silk_status stex_check(const silk_model_section *sp, const mesh_layout *hull, const uint8_t *hull_tri,
+                              const char *name, silk_siltex *out, silk_error *err)
+{
+    const silk_model_section s = *sp;
+    const uint8_t *d = s.data;
+    if (s.size < SILK_STEX_HEAD_BYTES) return BAD("STEX section of %lu bytes is shorter than its counts", UL(s.size));
+    if (rd32(d) != SILK_STEX_VERSION)
+        return BAD("STEX section: texture version %lu; this silk reads version %u", UL(rd32(d)), SILK_STEX_VERSION);
+    uint32_t flags = rd32(d + 4), w = rd16(d + 8), h = rd16(d + 10), k = rd16(d + 12), e = rd16(d + 14);
+    uint32_t nverts = rd32(d + 16), ntris = rd32(d + 20);
+    if (flags & ~(SILK_STEX_COMPRESSED | SILK_STEX_COLOR)) return BAD("STEX section: unknown flags 0x%lx", UL(flags));
+    if (w < SILK_STEX_MIN_DIM || h < SILK_STEX_MIN_DIM || w > SILK_STEX_MAX_DIM || h > SILK_STEX_MAX_DIM)
+        return BAD("STEX section: atlas of %lux%lu texels (%d..%d on a side)", UL(w), UL(h), SILK_STEX_MIN_DIM,
+                   SILK_STEX_MAX_DIM);
+    if (k < SILK_STEX_MIN_K || k > SILK_STEX_MAX_K)
+        return BAD("STEX section: %lu azimuth samples (%d..%d)", UL(k), SILK_STEX_MIN_K, SILK_STEX_MAX_K);
+    int packed = (flags & SILK_STEX_COMPRESSED) != 0;
+    if (packed ? (e < 1 || e > k) : e != 0)
+        return BAD(packed ? "STEX section: %lu eigenfunctions for %lu azimuths (1..%lu)"
+                          : "STEX section: %lu eigenfunctions in uncompressed angles (%lu azimuths; 0 expected)",
+                   UL(e), UL(k), UL(k));
+    if (nverts != hull->nverts || ntris != hull->ntris)
+        return BAD("STEX section: %lu vertices and %lu triangles, the HULL section has %lu and %lu", UL(nverts),
+                   UL(ntris), UL(hull->nverts), UL(hull->ntris));
+    uint64_t texels = (uint64_t)w * h, off = SILK_STEX_HEAD_BYTES;
+    uint64_t frame = off, uv = frame + 12 * (uint64_t)nverts, angles = uv + 12 * (uint64_t)ntris;
+    uint64_t mean = angles, scale = mean + 2 * (uint64_t)k, basis = scale + 4 * (uint64_t)e;
+    uint64_t weights = basis + 2 * (uint64_t)e * k, normal;
+    if (packed) {
+        normal = weights + texels * e;
+        normal += normal & 1;   /* to 2 bytes */
+    } else {
+        normal = angles + texels * k;
+    }
+    uint64_t color = normal + 2 * texels, end = color + ((flags & SILK_STEX_COLOR) ? 3 * texels : 0);
+    end = (end + 3) & ~(uint64_t)3;
+    if (end != s.size)
+        return BAD("STEX section: a %lux%lu atlas with %lu azimuths%s takes %llu bytes, the section has %lu", UL(w),
+                   UL(h), UL(k), packed ? " (compressed)" : "", (unsigned long long)end, UL(s.size));
+    for (uint32_t v = 0; v < nverts; v++) {
+        const uint8_t *c = d + frame + 12 * (size_t)v, *t = c + 6;
+        if (!unit14(c)) return BAD("STEX section: vertex %lu's centre direction C is not of unit length", UL(v));
+        if (!unit14(t)) return BAD("STEX section: vertex %lu's tangent T is not of unit length", UL(v));
+        int64_t tc = 0;
+        for (int i = 0; i < 3; i++) tc += (int64_t)(int16_t)rd16(c + 2 * i) * (int16_t)rd16(t + 2 * i);
+        if (silk_abs64(tc) > ((int64_t)1 << 28) / 16)
+            return BAD("STEX section: vertex %lu's tangent T is not across C (|T.C| above 1/16)", UL(v));
+    }
+    for (uint32_t c = 0; c < 3 * ntris; c++) {
+        uint32_t u = rd16(d + uv + 4 * (size_t)c), v = rd16(d + uv + 4 * (size_t)c + 2);
+        if (u > 16 * w || v > 16 * h)
+            return BAD("STEX section: triangle %lu corner %lu's atlas point (%lu/16, %lu/16) lies outside the "
+                       "%lux%lu atlas", UL(c / 3), UL(c % 3), UL(u), UL(v), UL(w), UL(h));
+    }
+    memset(out, 0, sizeof *out);
+    out->flags = flags;
+    out->w = w;
+    out->h = h;
+    out->k = k;
+    out->e = e;
+    out->nverts = nverts;
+    out->ntris = ntris;
+    out->error_ppm = rd32(d + 24);
+    out->multi_lobe_ppm = rd32(d + 28);
+    out->bytes = s.size;
+    out->frame = d + frame;
+    out->uv = d + uv;
+    if (packed) {
+        out->mean = d + mean;
+        out->scale = d + scale;
+        out->basis = d + basis;
+        out->weights = d + weights;
+    } else {
+        out->angles = d + angles;
+    }
+    out->normal = d + normal;
+    out->color = (flags & SILK_STEX_COLOR) ? d + color : NULL;
+    out->hull_tri = hull_tri;
+    return SILK_OK;
+}
+
+/* The opened model's STEX section s, with the HULL it goes with. */
+static silk_status stex_of(const silk_model *m, const silk_model_section *s, const char *name, silk_siltex *out,
+                           silk_error *err)
+{
+    silk_model_section hs;
+    mesh_layout hull;
+    silk_status st;
+    if (!silk_model_find(m, SILK_SECTION_HULL, &hs)) return BAD("STEX section without the HULL section it goes with");
+    if ((st = mesh_layout_of(&hs, "HULL", name, &hull, err))) return st;
+    if ((st = mesh_check(&hs, "HULL", &hull, name, err))) return st;
+    return stex_check(s, &hull, hs.data + hull.tri, name, out, err);
+}
+
+silk_status silk_model_siltex(const void *data, size_t len, const char *name, silk_siltex *out, silk_error *err)
+{
+    if (!name) name = "model";
+    memset(out, 0, sizeof *out);
+    silk_model m;
+    silk_model_section s;
+    silk_status st = silk_model_open(data, len, name, &m, err);
+    if (st) return st;
+    if (!silk_model_find(&m, SILK_SECTION_STEX, &s))
+        return BAD("no STEX section (prepared without the silhouette texture siltex mode needs)");
+    if ((st = stex_of(&m, &s, name, out, err))) memset(out, 0, sizeof *out);
+    return st;
+}
+#else
+silk_status silk_model_siltex(const void *data, size_t len, const char *name, silk_siltex *out, silk_error *err)
+{
+    (void)data;
+    (void)len;
+    if (!name) name = "model";
+    memset(out, 0, sizeof *out);
+    return BAD("silhouette textures are not built in (SILK_NO_SILTEX_MODE)");
+}
+#endif

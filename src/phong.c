@@ -92,11 +92,12 @@ static uint32_t channel(const silk_material *m, silk_fx base, silk_fx spec, int6
  * few ulp of Q16.16, far below one level of an 8-bit channel
  * (tests/test_phong.c compares with a double-precision Phong).  R.V is
  * 2 (N.L)(N.V) - L.V, so the mirror direction R is never formed. */
+static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base);
+
 static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
 {
     const silk_phong *p = (const silk_phong *)h->uniforms;
     const silk_material *m = &p->mat;
-    int64_t v[3], n[3];
     /* the material colour times the texel and the vertex colour */
     int64_t base[3] = { m->color.x, m->color.y, m->color.z };
 #ifndef SILK_NO_TEXTURE   /* a build without textures draws textured models in their material colour */
@@ -111,7 +112,23 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
             int64_t c = var[VAR_RGB + k];
             base[k] = (base[k] * (c < 0 ? 0 : (c > SILK_FX_ONE ? SILK_FX_ONE : c))) >> 16;
         }
+    return shade(p, var, base);
+}
 
+uint32_t silk_hal_phong_tinted(const silk_hal *h, const silk_fx *var, uint32_t rgb)
+{
+    if (h->fragment != phong_fragment) return h->fragment(h, var);
+    const silk_phong *p = (const silk_phong *)h->uniforms;
+    int64_t base[3] = { p->mat.color.x, p->mat.color.y, p->mat.color.z };
+    for (int k = 0; k < 3; k++) base[k] = (base[k] * byte_to_fx(rgb >> (16 - 8 * k))) >> 16;
+    return shade(p, var, base);
+}
+
+/* Phong at position and normal var[0..5] with ambient and diffuse colour base. */
+static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base)
+{
+    const silk_material *m = &p->mat;
+    int64_t v[3], n[3];
     if (p->view && !p->view->cam.ortho) {
         silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
         if (!silk_unit64(d.x, d.y, d.z, v)) {

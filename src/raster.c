@@ -437,8 +437,7 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     for (int x = xl; x < xr; x++) {
         uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
         if ((!mrow || (mrow[x >> 3] >> (x & 7) & 1)) && (!zrow || z > zrow[x] - eq)) {
-            if (zrow) zrow[x] = z;
-            if (wrow) wrow[x]++;
+            uint32_t rgb = SILK_FRAGMENT_DISCARD;
             if (h && h->fragment) {
                 int64_t b1, b2;
                 bary(s, U, V, T, &b1, &b2);
@@ -451,8 +450,13 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
 #ifndef SILK_NO_TEXTURE
                 if (fp >= 0) footprint(s, fp, U, V, T, b1, b2, var);
 #endif
-                uint32_t rgb = h->fragment(h, var);
-                if (crow) store(t, crow + (size_t)x * bpp, rgb);
+                rgb = h->fragment(h, var);
+            }
+            /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
+            if (rgb != SILK_FRAGMENT_DISCARD || !h || !h->fragment) {
+                if (zrow) zrow[x] = z;
+                if (wrow) wrow[x]++;
+                if (crow && h && h->fragment) store(t, crow + (size_t)x * bpp, rgb);
             }
         }
         U += s->du;

@@ -41,6 +41,7 @@
 #endif
 #include "clip.h"
 #include "aa.h"
+#include "silk/siltex.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -60,6 +61,7 @@ void silk_render_opts_default(silk_render_opts *o)
     o->line_feature_rgb = 0x000000;
     o->silmap = NULL;
     o->silmap_hint = 0;
+    o->siltex = NULL;
     o->aa = 1;
     o->clock = NULL;
     o->vertex_cache_bytes = SIZE_MAX;
@@ -86,6 +88,7 @@ const char *silk_mode_name(silk_mode mode)
     case SILK_MODE_PN: return "pn";
     case SILK_MODE_BLEND: return "blend";
     case SILK_MODE_CLIP: return "clip";
+    case SILK_MODE_SILTEX: return "siltex";
     }
     return "?";
 }
@@ -121,6 +124,13 @@ typedef struct frame {
     uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
     uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
                                  frame is on a small board's stack) */
+    /* SILTEX: the hull drawn through the silhouette texture by these stages
+     * (siltex.c), which kill the pixels where the detailed model is not seen */
+    uint8_t siltex;
+#ifndef SILK_NO_SILTEX_MODE
+    silk_hal siltex_hal;
+    silk_siltex_stage siltex_stage;
+#endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
 
@@ -422,6 +432,32 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         return st;
 #endif
     }
+    if (o->mode == SILK_MODE_SILTEX) {
+#ifdef SILK_NO_SILTEX_MODE
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode is not built in (SILK_NO_SILTEX_MODE)");
+#else
+        /* the hull drawn as flat draws a mesh, each pixel through eq. 4 */
+        if (!o->siltex)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode needs the model's silhouette texture");
+        if (o->siltex->ntris != m->ntris || o->siltex->nverts != m->nverts)
+            return silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                             "silk_render: the silhouette texture is for a hull of %lu triangles, the mesh has %lu",
+                             (unsigned long)o->siltex->ntris, (unsigned long)m->ntris);
+        f->siltex = 1;
+        f->siltex_stage.tex = o->siltex;
+        f->siltex_stage.shade = h;
+        f->siltex_stage.view = v;
+        /* lines (eq. 5) sized for an edge crossed a sixteenth of the hull's
+         * diagonal away from it */
+        f->siltex_stage.lines = (int)o->lines;
+        f->siltex_stage.line_rgb = o->line_rgb;
+        f->siltex_stage.bg_rgb = o->bg_rgb;
+        f->siltex_stage.line_q =
+            silk_siltex_line_width(v, silk_v3_length(silk_v3_sub(m->bbox_max, m->bbox_min)) / 16);
+        silk_siltex_hal(&f->siltex_hal, &f->siltex_stage);
+        return shares_prepare(f, a, m, v, &f->siltex_hal, o, stats, err);
+#endif
+    }
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
 #ifdef STREAMED_ONLY
     if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
@@ -550,7 +586,7 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
     /* Lines alone: the surface is drawn into the depth buffer only, to hide them. */
-    const silk_hal *shade = o->lines == SILK_LINES_ONLY || pass < 0 ? NULL : f->hal;
+    const silk_hal *shade = (o->lines == SILK_LINES_ONLY && !f->siltex) || pass < 0 ? NULL : f->hal;   /* SILTEX: its stage draws its lines */
     for (uint32_t i = 0; i < g->ntri; i++) {
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];
@@ -588,7 +624,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
      * the pixel, as in a single pass.  It doubles the per-triangle work, so
      * only where triangles are large (16 pixels on average or more). */
     uint64_t ntri = f->part == share_part ? f->geom.mesh->ntris : g->ntri;
-    int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height;
+    /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
+    int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
+                      !f->siltex;
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
@@ -596,6 +634,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
             f->part(f, k);
             t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
+            /* SILTEX: a back face of the hull is seen from inside it, where
+             * no visibility function was made: hull behind shows instead */
+            t->cull_back |= pass <= 0 && f->siltex;
             t0 = silk_stage_start(f->clock);
             draw_tris(f, o, t, pass);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
@@ -645,7 +686,8 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 #else
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip;   /* clip.c does its own */
+    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip &&   /* clip.c does its own */
+                 !f->siltex;   /* the hull's edges are not siltex's outline */
     if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);

@@ -42,6 +42,7 @@
 #include "../tools/silmap.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"
+#include "support/stexgen.h"
 
 #define W 128
 #define H 96
@@ -51,6 +52,7 @@
 static int update;
 static int n_changed, n_new, n_same;
 static const silk_texture *mesh_texture;   /* the texture of the mesh being drawn, or NULL */
+static const silk_siltex *mesh_siltex;     /* the silhouette texture of the hull being drawn, or NULL */
 
 static const char *golden_dir(void)
 {
@@ -230,7 +232,7 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
     silk_phong ph;
     silk_hal hal;
     silk_phong_default(&ph, &v);
-    if (mesh_texture || f->m.color) ph.mat.color = silk_v3(SILK_FX_ONE, SILK_FX_ONE, SILK_FX_ONE);
+    if (mesh_texture || f->m.color || (mesh_siltex && mesh_siltex->color)) ph.mat.color = silk_v3(SILK_FX_ONE, SILK_FX_ONE, SILK_FX_ONE);
     ph.texture = mesh_texture;
     ph.vertex_colors = f->m.color != NULL;
     silk_hal_phong(&hal, &ph);
@@ -242,6 +244,7 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
     ro.wire = mc->wire;
     ro.bg_rgb = BG;
     ro.silmap = map;
+    ro.siltex = mesh_siltex;
     if (map) ro.aa = antialias;   /* clip frames: with and without; the others as by default */
 
     silk_arena_mark mk = silk_arena_top_mark(&f->a);
@@ -359,6 +362,53 @@ static void golden_clip(void)
     free(file);
 }
 
+/* Siltex frames of two spheres' hulls (tests/support/stexgen.c), one in
+ * front of the other from the first view, with a colour map; the angles
+ * stored and compressed draw the same (the compressed form is exact here). */
+static void golden_siltex(void)
+{
+    stexgen_opts o;
+    stexgen_defaults(&o);
+    o.nspheres = 2;
+    o.c[1][0] = 1.2;
+    o.c[1][1] = 0.3;
+    o.c[1][2] = -1.6;
+    o.r[1] = 0.8;
+    o.R[1] = 0.85;
+    o.color = 1;
+    size_t len = 0;
+    uint8_t *file = stexgen_model(&o, &len);
+    CHECKF(file != NULL, "spheres model: out of memory");
+    if (!file) return;
+    tm_fixture f;
+    tm_fixture_init(&f, ARENA_BYTES);
+    silk_siltex st;
+    f.opts.part = SILK_PART_HULL;
+    CHECKF(silk_load_model(file, len, "spheres.silk", &f.opts, &f.a, &f.m, &f.err) == SILK_OK, "%s", f.err.msg);
+    CHECKF(silk_model_siltex(file, len, "spheres.silk", &st, &f.err) == SILK_OK, "%s", f.err.msg);
+    static const mode_case siltex = { "siltex", SILK_MODE_SILTEX, SILK_LINES_NONE, 0, 0 };
+    mesh_siltex = &st;
+    /* from the front the far sphere shows through the near one's hull */
+    static const view_case sv[] = {
+        { "front", { 0.470, 0.342, 0.814 }, 2.2, 0 },
+        { "overlap", { 0.12, 0.05, 1 }, 2.0, 0 },
+        { "overlap-ortho", { 0.12, 0.05, 1 }, 3.0, 1 },
+    };
+    if (f.m.ntris) {
+        for (size_t iv = 0; iv < sizeof sv / sizeof sv[0]; iv++)
+            golden_case(&f, "spheres", &sv[iv], &siltex, SILK_PIX_RGB888, 1, NULL, 0);
+        golden_case(&f, "spheres", &sv[1], &siltex, SILK_PIX_RGB565, 0, NULL, 0);
+        /* the silhouettes from the texture (eq. 5), the near sphere's over the far one */
+        static const mode_case lines = { "siltex-lines-only", SILK_MODE_SILTEX, SILK_LINES_ONLY, 0, 0 };
+        static const mode_case over = { "siltex-lines-over", SILK_MODE_SILTEX, SILK_LINES_OVER, 0, 0 };
+        golden_case(&f, "spheres", &sv[1], &lines, SILK_PIX_RGB888, 1, NULL, 0);
+        golden_case(&f, "spheres", &sv[2], &over, SILK_PIX_RGB888, 0, NULL, 0);
+    }
+    mesh_siltex = NULL;
+    tm_fixture_free(&f);
+    free(file);
+}
+
 /* The surface modes from the front and grazing views, and smooth in RGB565. */
 static void golden_coloured(const char *mesh, const silk_texture *tex)
 {
@@ -396,6 +446,7 @@ TEST(golden_cone) { golden_mesh("cone"); }
 TEST(golden_knot) { golden_mesh("knot"); }
 TEST(golden_bunny) { golden_mesh("bunny"); }
 TEST(golden_knot_clip) { golden_clip(); }
+TEST(golden_spheres_siltex) { golden_siltex(); }
 
 int main(int argc, char **argv)
 {
@@ -405,6 +456,7 @@ int main(int argc, char **argv)
     RUN(golden_cone);
     RUN(golden_knot);
     RUN(golden_knot_clip);
+    RUN(golden_spheres_siltex);
     RUN(golden_bunny);
     RUN(golden_globe);
     RUN(golden_painted);

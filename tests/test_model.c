@@ -18,7 +18,7 @@
 #include "silk/validate.h"
 #include "support/scene.h"
 #include "support/testmesh.h"
-#include "../tools/model_file.c"
+#include "../tools/model_file.h"   /* linked with every test (tests/support/stexgen.c) */
 #include "../tools/simplify.c"
 #include "../tools/surface.c"
 #include "../tools/closest.c"

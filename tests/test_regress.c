@@ -39,6 +39,9 @@
 #define FUZZ_ENTRY fuzz_model_entry
 #include "../fuzz/fuzz_model.c"
 #undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_siltex_entry
+#include "../fuzz/fuzz_siltex.c"
+#undef FUZZ_ENTRY
 
 typedef int (*entry_fn)(const uint8_t *data, size_t size);
 
@@ -152,6 +155,14 @@ TEST(regress_model)
     printf("  %d regression inputs, %d malformed files\n", n, bad);
 }
 
+TEST(regress_siltex)
+{
+    int n = run_dir("tests/regress/siltex", "", fuzz_siltex_entry);
+    int bad = run_dir("tests/bad", ".silk", fuzz_siltex_entry);
+    CHECKF(n >= 1, "no inputs in tests/regress/siltex");
+    printf("  %d regression inputs, %d malformed files\n", n, bad);
+}
+
 int main(void)
 {
     RUN(regress_obj);
@@ -162,5 +173,6 @@ int main(void)
     RUN(regress_math);
     RUN(regress_ppm);
     RUN(regress_model);
+    RUN(regress_siltex);
     return check_done();
 }

@@ -247,7 +247,8 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
         p += len + 1;
         continue;
     bad:
-        return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn, pnL (L 1..%u) or clip separated "
+        return cli_fail(-1, "%s: \"%.*s\" is not a mode: list flat, smooth, blend, pn, pnL (L 1..%u), clip or siltex "
+                        "separated "
                         "by commas (MODE-noaa: without anti-aliasing)", opt, (int)len, p, SILK_PN_MAX_LEVEL);
     }
 }
@@ -385,7 +386,8 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "  --wire               draw the edges; triangles added by smoothing in red\n"
             "  --lines over|only    pen-and-ink outlines over the shading or alone: the\n"
             "                       smoothed silhouette and visible feature curves (smooth),\n"
-            "                       the mesh's silhouette and feature edges (flat)\n"
+            "                       the mesh's silhouette and feature edges (flat), the\n"
+            "                       texture's silhouettes, interior ones too (siltex)\n"
             "  --lines-polygonal    the coarse mesh's silhouette and feature edges in any\n"
             "                       mode (pn and blend draw lines only so; alone: --lines over)\n"
             "  --color RRGGBB       the object's colour (default %06x)\n"
@@ -568,7 +570,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         VALUE();
         uint32_t level;
         if (silk_mode_parse(v, &o->render.mode, &level) != 0)
-            return cli_fail(-1, "--mode must be flat, smooth, pn, pnL (L 1..%u), blend or clip (got \"%s\")",
+            return cli_fail(-1, "--mode must be flat, smooth, pn, pnL (L 1..%u), blend, clip or siltex (got \"%s\")",
                             SILK_PN_MAX_LEVEL, v);
         if (level) o->render.level = level;
     } else if (cli_is(arg, "--level")) {
@@ -943,13 +945,23 @@ int cli_silmap(const uint8_t *file, size_t len, const char *name, silk_silmap *o
     return 0;
 }
 
+int cli_siltex(const uint8_t *file, size_t len, const char *name, silk_siltex *out)
+{
+    silk_error err;
+    if (!silk_is_model(file, len))
+        return cli_fail(CLI_EXIT_INPUT, "%s: siltex mode draws a prepared model (silk prepare FINE -o MODEL.silk "
+                        "--siltex), not a mesh file", name);
+    if (silk_model_siltex(file, len, name, out, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    return 0;
+}
+
 int cli_scene_load(cli_scene *s, cli_scene_opts *o)
 {
     memset(s, 0, sizeof *s);
     cli_mesh lm;
     silk_load_opts lo = o->load;
-    int clip = o->render.mode == SILK_MODE_CLIP;
-    if (clip) lo.part = SILK_PART_HULL;
+    int clip = o->render.mode == SILK_MODE_CLIP, siltex = o->render.mode == SILK_MODE_SILTEX;
+    if (clip || siltex) lo.part = SILK_PART_HULL;
     int rc = cli_mesh_load(&lm, o->mesh_path, &lo, !o->vis_brute, o->arena_bytes, raster_bytes(o),
                            o->arena_doublings, o->quiet);
     /* the scene takes over the file and the arena */
@@ -961,6 +973,9 @@ int cli_scene_load(cli_scene *s, cli_scene_opts *o)
     if (!rc && clip) rc = cli_silmap(s->file, s->file_len, cli_input_name(o->mesh_path), &s->silmap);
     if (rc) return rc;
     if (clip) o->render.silmap = &s->silmap;
+    if (!rc && siltex) rc = cli_siltex(s->file, s->file_len, cli_input_name(o->mesh_path), &s->siltex);
+    if (rc) return rc;
+    if (siltex) o->render.siltex = &s->siltex;
     s->load_bytes = s->arena.bottom;
     if (o->orient_note) cli_orient_note(cli_input_name(o->mesh_path), &s->mesh);
 
@@ -1023,6 +1038,9 @@ void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_vie
 {
     cli_phong(o, view, p);
     cli_material_apply(&s->material, &s->mesh, o->look.have_color, o->look.have_specular, o->look.shininess != 0, p);
+    /* a silhouette texture's colour map, like a texture, is the colour (unless --color) */
+    if (o->render.mode == SILK_MODE_SILTEX && s->siltex.color && !o->look.have_color)
+        p->mat.color = silk_v3(SILK_FX_ONE, SILK_FX_ONE, SILK_FX_ONE);
 }
 
 cli_alpha cli_alpha_for(const cli_scene_opts *o)

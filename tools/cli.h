@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include "silk/silk.h"
 #include "../src/silmap_interp.h"
+#include "silk/siltex.h"
 #include "material.h"
 #include "../platform/platform.h"
 
@@ -205,6 +206,7 @@ typedef struct cli_scene {
     silk_hal hal;
     size_t load_bytes;         /* arena bottom after loading the mesh */
     silk_silmap silmap;        /* clip mode: the model's silhouette map, in file */
+    silk_siltex siltex;        /* siltex mode: the model's silhouette texture, in file */
     cli_material material;     /* the OBJ material, the texture */
 } cli_scene;
 
@@ -216,7 +218,8 @@ void cli_orient_note(const char *path, const silk_mesh *m);
  * is 0), allocate the arena, set up the camera, the target (colour and
  * depth from the arena, purpose RASTER) and the Phong stages.  In clip
  * mode the mesh is the model's hull and o->render.silmap points at the
- * scene's silhouette map.
+ * scene's silhouette map, in siltex mode o->render.siltex at its
+ * silhouette texture.
  * Returns 0, or an exit code after printing the error; cli_scene_free
  * releases everything either way. */
 int cli_scene_load(cli_scene *s, cli_scene_opts *o);
@@ -224,6 +227,8 @@ int cli_scene_load(cli_scene *s, cli_scene_opts *o);
 /* The silhouette map of the prepared model in file (clip mode); 0 or an
  * exit code after a one-line error. */
 int cli_silmap(const uint8_t *file, size_t len, const char *name, silk_silmap *out);
+/* The same for the silhouette texture (siltex mode). */
+int cli_siltex(const uint8_t *file, size_t len, const char *name, silk_siltex *out);
 /* cli_phong, then the scene's material, texture and vertex colours. */
 void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_view *view, silk_phong *p);
 void cli_scene_free(cli_scene *s);

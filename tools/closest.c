@@ -12,14 +12,20 @@
 
 double point_tri_d2(const double *p, const double *a, const double *b, const double *c)
 {
-    double ab[3], ac[3], ap[3], q[3];
+    double q[3];
+    return point_tri_closest(p, a, b, c, q);
+}
+
+double point_tri_closest(const double *p, const double *a, const double *b, const double *c, double *q)
+{
+    double ab[3], ac[3], ap[3];
     sub3(b, a, ab), sub3(c, a, ac), sub3(p, a, ap);
     double d1 = dot3(ab, ap), d2 = dot3(ac, ap), v, w;
-    if (d1 <= 0 && d2 <= 0) { memcpy(q, a, sizeof q); goto out; }
+    if (d1 <= 0 && d2 <= 0) { memcpy(q, a, 3 * sizeof *q); goto out; }
     double bp[3];
     sub3(p, b, bp);
     double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
-    if (d3 >= 0 && d4 <= d3) { memcpy(q, b, sizeof q); goto out; }
+    if (d3 >= 0 && d4 <= d3) { memcpy(q, b, 3 * sizeof *q); goto out; }
     double vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0) {
         v = d1 / (d1 - d3);
@@ -29,7 +35,7 @@ double point_tri_d2(const double *p, const double *a, const double *b, const dou
     double cp[3];
     sub3(p, c, cp);
     double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
-    if (d6 >= 0 && d5 <= d6) { memcpy(q, c, sizeof q); goto out; }
+    if (d6 >= 0 && d5 <= d6) { memcpy(q, c, 3 * sizeof *q); goto out; }
     double vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) {
         w = d2 / (d2 - d6);

@@ -13,6 +13,8 @@
 /* Squared distance from p to triangle abc (closest point by regions,
  * Ericson, Real-Time Collision Detection 5.1.5). */
 double point_tri_d2(const double *p, const double *a, const double *b, const double *c);
+/* The same, and the closest point itself in q. */
+double point_tri_closest(const double *p, const double *a, const double *b, const double *c, double *q);
 
 typedef struct cp_node {
     double lo[3], hi[3];

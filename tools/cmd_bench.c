@@ -83,7 +83,8 @@ typedef struct loaded {
     uint8_t *file;             /* the hull of a prepared model: the file, which holds its map */
     size_t file_len;
     silk_silmap silmap;
-    struct loaded *hull;       /* clip mode's mesh and map, when a mode is clip */
+    silk_siltex siltex;
+    struct loaded *hull;       /* clip and siltex mode's mesh, map and texture, when a mode needs them */
 } loaded;
 
 static void help(FILE *f)
@@ -105,7 +106,7 @@ static void help(FILE *f)
             "                      COARSE:FINE=MODES draws that pair in those of --modes only\n"
             "  --views N           views per projection along the camera path [12]\n"
             "  --size WxH          image size [640x480]\n"
-            "  --modes LIST        comma-separated: flat, smooth, blend, clip, pnL (PN triangles\n"
+            "  --modes LIST        comma-separated: flat, smooth, blend, clip, siltex, pnL (PN triangles\n"
             "                      at level L = 1..%u) [flat,smooth,blend,pn2,pn3]\n"
             "  --projection ortho|perspective|both   [both]\n"
             "  --reps N            timed renders per view, the fastest kept [3]\n"
@@ -201,8 +202,10 @@ static void mesh_name(const char *path, char *out, size_t n)
 }
 
 /* Load with room for the per-frame scratch on top: 8 MiB times 2^grow
- * besides the mesh (cli_mesh_load doubles it while the mesh does not fit). */
-static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_part part)
+ * besides the mesh (cli_mesh_load doubles it while the mesh does not fit).
+ * The hull comes with the silhouette map (clip) and texture (siltex) the
+ * modes want. */
+static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_part part, int clip, int siltex)
 {
     memset(l, 0, sizeof *l);
     l->path = path;
@@ -219,7 +222,8 @@ static int load_mesh(loaded *l, const char *path, int vis, int grow, silk_model_
     if (part == SILK_PART_HULL) {
         l->file = lm.file;
         l->file_len = lm.file_len;
-        if (!rc) rc = cli_silmap(lm.file, lm.file_len, lm.name, &l->silmap);
+        if (!rc && clip) rc = cli_silmap(lm.file, lm.file_len, lm.name, &l->silmap);
+        if (!rc && siltex) rc = cli_siltex(lm.file, lm.file_len, lm.name, &l->siltex);
     } else {
         free(lm.file);
     }
@@ -345,8 +349,9 @@ static void add_error(acc *a, const mask_stats *ms)
 /* What a device keeps in flash to draw the model in a mode: the mesh the
  * mode draws, its arrays as `silk pack` writes them (without tri_edge and
  * edge_feature, which the renderer derives; indices as wide as this build's
- * silk_index; the optional visibility hierarchy left out) and, for clip
- * mode, the silhouette map's section of the prepared file.
+ * silk_index; the optional visibility hierarchy left out) and the prepared
+ * file's silhouette data: the map (SMAP) for clip mode, the texture (STEX)
+ * for siltex mode.
  * docs/measurements.md, "bytes". */
 static size_t model_bytes(const loaded *l, silk_mode mode)
 {
@@ -359,8 +364,9 @@ static size_t model_bytes(const loaded *l, silk_mode mode)
     silk_model m;
     silk_model_section sec;
     silk_error err;
-    if (mode == SILK_MODE_CLIP && l->file && silk_model_open(l->file, l->file_len, l->name, &m, &err) == SILK_OK &&
-        silk_model_find(&m, SILK_SECTION_SMAP, &sec))
+    uint32_t type = mode == SILK_MODE_CLIP ? SILK_SECTION_SMAP : mode == SILK_MODE_SILTEX ? SILK_SECTION_STEX : 0;
+    if (type && l->file && silk_model_open(l->file, l->file_len, l->name, &m, &err) == SILK_OK &&
+        silk_model_find(&m, type, &sec))
         n += sec.size;
     return n;
 }
@@ -442,9 +448,10 @@ static int bench_proj(ctx *x, loaded *coarse, loaded *fine, uint32_t modes, int 
             ro.aa = !c->mode[m].aa_off;
             if (c->mode[m].level) ro.level = c->mode[m].level;
             loaded *drawn = coarse;
-            if (ro.mode == SILK_MODE_CLIP) {
+            if (ro.mode == SILK_MODE_CLIP || ro.mode == SILK_MODE_SILTEX) {
                 drawn = coarse->hull;
                 ro.silmap = &drawn->silmap;
+                ro.siltex = &drawn->siltex;
             }
             if (measure(x, drawn, &view, &ro, a, k) != 0) {
                 rc = CLI_EXIT_INPUT;   /* reported; the other modes go on */
@@ -470,19 +477,22 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ui
         loaded coarse, fine;
         memset(&fine, 0, sizeof fine);
         rc = 0;
-        if ((rc = load_mesh(&coarse, coarse_path, 1, grow, SILK_PART_COARSE)) != 0) {
+        if ((rc = load_mesh(&coarse, coarse_path, 1, grow, SILK_PART_COARSE, 0, 0)) != 0) {
             unload(&coarse);
             return rc;
         }
-        int clip = 0;
-        for (int m = 0; m < c->nmodes; m++) clip |= (modes >> m & 1) && c->mode[m].mode == SILK_MODE_CLIP;
-        if (clip && (!(coarse.hull = malloc(sizeof *coarse.hull)) ||
-                     (rc = load_mesh(coarse.hull, coarse_path, 0, grow, SILK_PART_HULL)) != 0)) {
+        int clip = 0, siltex = 0;
+        for (int m = 0; m < c->nmodes; m++) {
+            clip |= (modes >> m & 1) && c->mode[m].mode == SILK_MODE_CLIP;
+            siltex |= (modes >> m & 1) && c->mode[m].mode == SILK_MODE_SILTEX;
+        }
+        if ((clip || siltex) && (!(coarse.hull = malloc(sizeof *coarse.hull)) ||
+                                 (rc = load_mesh(coarse.hull, coarse_path, 0, grow, SILK_PART_HULL, clip, siltex)) != 0)) {
             if (!coarse.hull) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
             unload(&coarse);
             return rc;
         }
-        if (fine_path && (rc = load_mesh(&fine, fine_path, 0, 0, SILK_PART_COARSE)) != 0) {
+        if (fine_path && (rc = load_mesh(&fine, fine_path, 0, 0, SILK_PART_COARSE, 0, 0)) != 0) {
             unload(&coarse);
             unload(&fine);
             return rc;
@@ -507,8 +517,8 @@ static int bench_mesh(ctx *x, const char *coarse_path, const char *fine_path, ui
             for (int m = 0; m < c->nmodes; m++) {
                 if (!(modes >> m & 1) || mode_acc[m].failed || mode_acc[m].views < c->views) continue;
                 fell_back |= mode_acc[m].fell_back;
-                int clip = c->mode[m].mode == SILK_MODE_CLIP;
-                size_t bytes = model_bytes(clip ? coarse.hull : &coarse, c->mode[m].mode);
+                int hull = c->mode[m].mode == SILK_MODE_CLIP || c->mode[m].mode == SILK_MODE_SILTEX;
+                size_t bytes = model_bytes(hull ? coarse.hull : &coarse, c->mode[m].mode);
                 if (push_row(rows, &coarse, c->mode[m].name, c->mode[m].level, proj, fine_path != NULL, &mode_acc[m],
                              bytes))
                     rc = CLI_EXIT_INPUT;
@@ -717,7 +727,7 @@ static int write_md(const char *path, const row_list *L, const bench_cfg *c)
             "Pairs are orthographic / perspective.  Arena = high-water mark of the mesh, its\n"
             "visibility hierarchy and the frame's scratch (the frame buffer is not in it).\n"
             "Flash = the model's data a device keeps in flash for the mode: the mesh it draws\n"
-            "and, for clip mode, the silhouette map.\n"
+            "and, for clip and siltex modes, the silhouette map or texture.\n"
             "Outside = the share of the differing pixels that the mode covers and the fine mesh\n"
             "does not (the rest is fine mesh the mode misses).\n"
             "Mode `fine` is the reference mesh itself, drawn flat.\n\n"

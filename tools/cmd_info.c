@@ -133,6 +133,14 @@ static void print_frame(const cli_scene *s, const cli_scene_opts *o, const silk_
         line("  polygon vertices", "%u", st->clip_points);
         line("  stencil spans", "%u", st->clip_spans);
     }
+    if (o->render.mode == SILK_MODE_SILTEX) {
+        const silk_siltex *t = &s->siltex;
+        line("  atlas", "%ux%u texels, %u azimuths (K), %u eigenfunctions (E)%s", t->w, t->h, t->k, t->e,
+             t->color ? ", colour map" : "");
+        line("  texture bytes", "%u", silk_siltex_bytes(t));
+        line("  eq. 3 error", "%.4f (mean over the hull's texels; not single-lobed: %.2f%%)", t->error_ppm / 1e6,
+             t->multi_lobe_ppm / 1e4);
+    }
 }
 
 /* ---- JSON ------------------------------------------------------------------------------ */
@@ -192,6 +200,11 @@ static void print_json(const cli_scene *s, const cli_scene_opts *o, const silk_f
         printf(",\n    \"map_views\": %u, \"map_bytes\": %u, \"map_triangle\": %u, \"polygon_vertices\": %u, "
                "\"stencil_spans\": %u", s->silmap.nviews, silk_silmap_bytes(&s->silmap), st->clip_tri, st->clip_points,
                st->clip_spans);
+    if (o->render.mode == SILK_MODE_SILTEX)
+        printf(",\n    \"atlas_width\": %u, \"atlas_height\": %u, \"azimuths\": %u, \"eigenfunctions\": %u, "
+               "\"colour_map\": %s, \"texture_bytes\": %u, \"error_ppm\": %u, \"multi_lobe_ppm\": %u",
+               s->siltex.w, s->siltex.h, s->siltex.k, s->siltex.e, s->siltex.color ? "true" : "false",
+               silk_siltex_bytes(&s->siltex), s->siltex.error_ppm, s->siltex.multi_lobe_ppm);
     printf("}\n}\n");
 }
 

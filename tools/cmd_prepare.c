@@ -6,7 +6,9 @@
  * normals there, split along feature edges (tools/surface.c) - and what
  * clip mode draws: the outer hull (tools/hull.c, paper section 7) and the
  * silhouette map (tools/silmap.c, sections 4 and 6), in fixed point, in
- * one checked binary file (tools/model_file.c).
+ * one checked binary file (tools/model_file.c).  With --siltex, what
+ * siltex mode draws too: the hull's silhouette texture (tools/stex_build.c,
+ * Wu et al., "Silhouette Texture", section 3).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -22,6 +24,7 @@
 #include "commands.h"
 #include "model_file.h"
 #include "simplify.h"
+#include "stex_build.h"
 #include "surface.h"
 #include "../platform/platform.h"
 
@@ -40,6 +43,9 @@ static void help(FILE *f)
             "Written atomically.  Prints:\n"
             "  prepare FINE MODEL triangles=N vertices=N normals=N hull_triangles=N\n"
             "          map_views=N map_bytes=N bytes=N\n"
+            "and with --siltex: siltex_bytes=N siltex_error=E siltex_multi=S (the share\n"
+            "of view directions the texture gets wrong, averaged over the hull; the\n"
+            "share of texels whose visibility is not one lobe).\n"
             "\n"
             "options:\n"
             "  -o, --output FILE   the prepared model (.silk)\n"
@@ -50,6 +56,13 @@ static void help(FILE *f)
             "  --map-resolution R  each map view's image, R x R pixels [256]\n"
             "  --map-error PX      simplify the map while a dropped view's outline is\n"
             "                      predicted within PX pixels [0: keep every view]\n"
+            "  --siltex            the hull's silhouette texture too (siltex mode)\n"
+            "  --atlas N           its atlas, N x N texels, 8..4096 [128]\n"
+            "  --angles K          its azimuths per texel, 4..64 [12]\n"
+            "  --siltex-svd E      store the angles compressed to E eigenfunctions,\n"
+            "                      1..K [0: whole]\n"
+            "  --siltex-compare    also print the error and size for E = 4, 8 and 16\n"
+            "                      (those up to K) and whole\n"
             "  --no-clip           no outer hull and silhouette map (clip mode)\n"
             "  --no-mesh           only the hull and map (flat mode then draws the hull)\n"
             "  --fit               move each normal (up to 30 degrees) so that the curves\n"
@@ -69,11 +82,73 @@ typedef struct clip_opts {
     int level;               /* icosahedron subdivisions: 10 * 4^level + 2 views */
     int res;                 /* --map-resolution */
     double map_error;        /* --map-error: 0 keeps every view */
+    int siltex;              /* --siltex: the silhouette texture too */
+    int siltex_compare;      /* --siltex-compare */
+    stex_opts so;
 } clip_opts;
 
 typedef struct clip_stats {
     uint32_t hull_tris, hull_verts, views, views_before, map_bytes, map_bytes_before;
+    int siltex;              /* written */
+    size_t stex_bytes;
+    double stex_error, stex_multi;
 } clip_stats;
+
+/* The STEX section for hull h of fine (stex_build.h).  0, or an exit
+ * status after a one-line error. */
+static int add_siltex(model_out *mo, const char *in, const simp_mesh *fine, const uint32_t *fine_color,
+                      const simp_mesh *h, const clip_opts *co, clip_stats *cs)
+{
+    stex st;
+    stex_svd svd;
+    int rc = stex_build(fine, fine_color, h, &co->so, &st);
+    if (rc == -2)
+        return cli_fail(CLI_EXIT_INPUT, "%s: the hull's %u triangles do not fit a %d x %d atlas (raise --atlas)", in,
+                        h->ntris, co->so.atlas, co->so.atlas);
+    if (rc) return cli_fail(CLI_EXIT_INPUT, "%s: out of memory while making the silhouette texture", in);
+    size_t nt = (size_t)st.atlas.w * st.atlas.h;
+    uint8_t *used = malloc(nt), *back = malloc(nt * st.k + 1), *sec = NULL;
+    rc = 0;
+    if (!used || !back) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    for (size_t t = 0; !rc && t < nt; t++) used[t] = st.atlas.tri[t] >= 0;
+    if (!rc && co->siltex_compare) {
+        static const int es[] = { 4, 8, 16 };
+        for (int i = 0; i < 3 && !rc; i++) {
+            if (es[i] > st.k) continue;
+            if (stex_svd_compress(st.angles, used, (uint32_t)nt, st.k, es[i], &svd)) {
+                rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+                break;
+            }
+            stex_svd_expand(&svd, back);
+            printf("siltex svd=%d siltex_bytes=%zu siltex_error=%.5f psnr=%.2f\n", es[i], stex_section_bytes(&st, es[i]),
+                   stex_error(&st, back), stex_psnr(&st, back));
+            stex_svd_free(&svd);
+        }
+        if (!rc)
+            printf("siltex svd=0 siltex_bytes=%zu siltex_error=%.5f\n", stex_section_bytes(&st, 0), st.error);
+    }
+    int compress = co->so.svd > 0;
+    double error = st.error;
+    if (!rc && compress) {
+        if (stex_svd_compress(st.angles, used, (uint32_t)nt, st.k, co->so.svd, &svd)) {
+            rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+            compress = 0;
+        } else {
+            stex_svd_expand(&svd, back);
+            error = stex_error(&st, back);
+        }
+    }
+    if (!rc && (!(sec = stex_section(&st, compress ? &svd : NULL, error, &cs->stex_bytes)) ||
+                model_add(mo, SILK_SECTION_STEX, 0, sec, cs->stex_bytes)))
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
+    cs->siltex = rc == 0;
+    cs->stex_error = error;
+    cs->stex_multi = st.multi_share;
+    if (compress) stex_svd_free(&svd);
+    free(sec), free(used), free(back);
+    stex_free(&st);
+    return rc;
+}
 
 /* A mesh of doubles as a section (model_add_mesh_doubles). */
 static int add_mesh(model_out *mo, uint32_t type, uint32_t flags, const simp_mesh *m, const double *normal,
@@ -104,9 +179,10 @@ static double map_distance(const simp_mesh *hull, double fine_radius)
 }
 
 /* HULL and SMAP sections for fine.  0, or an exit status after a one-line
- * error; 1 (with a note) when fine is not a closed manifold. */
-static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const simp_mesh *coarse, uint32_t target,
-                    const clip_opts *co, clip_stats *cs)
+ * error; CLIP_NONE (with a note) when fine is not a closed manifold. */
+#define CLIP_NONE (-1)
+static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const uint32_t *fine_color,
+                    const simp_mesh *coarse, uint32_t target, const clip_opts *co, clip_stats *cs)
 {
     simp_topology topo;
     simp_mesh h = { 0, 0, NULL, NULL, NULL };
@@ -122,9 +198,10 @@ static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const 
     if (simp_topology_check(fine, &topo) != 0) return cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
     if (topo.boundary_edges || topo.nonmanifold_edges || topo.nonmanifold_verts || topo.misoriented_edges ||
         topo.degenerate_tris || !(hull_volume(fine) > 0)) {
-        fprintf(stderr, "silk: note: %s: not a closed, outward-facing manifold: no outer hull or silhouette map "
-                        "(clip mode) in the model\n", in);
-        return 1;
+        if (!co->siltex)   /* else the caller's error says it */
+            fprintf(stderr, "silk: note: %s: not a closed, outward-facing manifold: no outer hull or silhouette map "
+                            "(clip mode) in the model\n", in);
+        return CLIP_NONE;
     }
     hull_opts_default(&ho, target);
     if (simp_copy(fine, &h) || hull_run(&h, &ho, &hs, &hf)) {
@@ -169,6 +246,7 @@ static int add_clip(model_out *mo, const char *in, const simp_mesh *fine, const 
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", in);
         goto done;
     }
+    if (co->siltex && (rc = add_siltex(mo, in, fine, fine_color, &h, co, cs)) != 0) goto done;
     cs->hull_tris = h.ntris;
     cs->hull_verts = h.nverts;
     cs->views = fx.map.nviews;
@@ -209,9 +287,11 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
                  r.normals.tri_normal))
         rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", out);
     if (rc == 0 && co->on) {
-        rc = add_clip(&mo, in, &r.fine, &r.mesh, so->target_tris, co, &cs);
+        rc = add_clip(&mo, in, &r.fine, r.fine_color, &r.mesh, so->target_tris, co, &cs);
         clip = rc == 0;
-        if (rc == 1) rc = co->mesh ? 0 : cli_fail(CLI_EXIT_INPUT, "%s: --no-mesh leaves nothing to write", in);
+        if (rc == CLIP_NONE && co->siltex)
+            rc = cli_fail(CLI_EXIT_INPUT, "%s: --siltex needs the outer hull, so a closed manifold", in);
+        if (rc == CLIP_NONE) rc = co->mesh ? 0 : cli_fail(CLI_EXIT_INPUT, "%s: --no-mesh leaves nothing to write", in);
     }
     uint8_t *probe = NULL;
     if (rc == 0 && !(probe = model_bytes(&mo, &bytes))) rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", out);
@@ -225,6 +305,8 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
             printf(" hull_triangles=%u map_views=%u map_bytes=%u", cs.hull_tris, cs.views, cs.map_bytes);
         if (clip && co->map_error > 0)
             printf(" map_views_before=%u map_bytes_before=%u", cs.views_before, cs.map_bytes_before);
+        if (cs.siltex)
+            printf(" siltex_bytes=%zu siltex_error=%.5f siltex_multi=%.5f", cs.stex_bytes, cs.stex_error, cs.stex_multi);
         printf(" bytes=%zu", bytes);
         if (fit) printf(" fitted=%u fit_rms_before=%.3g fit_rms_after=%.3g", fs.moved, sqrt(fs.before), sqrt(fs.after));
         printf("\n");
@@ -243,7 +325,10 @@ int cmd_prepare(int argc, char **argv)
     simp_opts_default(&so, 0);
     so.subset = 1;
     int rc = 0, fit = 0, k;
-    clip_opts co = { 1, 1, 2, 256, 0 };
+    clip_opts co = { 1, 1, 2, 256, 0, 0, 0, { 0, 0, 0, 0, 0, 0 } };
+    stex_opts_default(&co.so);
+    long lv;
+    const char *siltex_opt = NULL;   /* a --siltex option given */
     for (int i = 1; i < argc && !rc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -257,6 +342,20 @@ int cmd_prepare(int argc, char **argv)
             co.on = 0;
         } else if (strcmp(a, "--no-mesh") == 0) {
             co.mesh = 0;
+        } else if (strcmp(a, "--siltex") == 0) {
+            co.siltex = 1;
+        } else if (strcmp(a, "--siltex-compare") == 0) {
+            co.siltex_compare = 1;
+            siltex_opt = a;
+        } else if (cli_is(a, "--atlas") || cli_is(a, "--angles") || cli_is(a, "--siltex-svd")) {
+            const char *v = cli_value(argc, argv, &i);
+            int atlas = cli_is(a, "--atlas"), angles = cli_is(a, "--angles");
+            const char *name = atlas ? "--atlas" : angles ? "--angles" : "--siltex-svd";
+            siltex_opt = name;
+            if (!v || cli_parse_long(name, v, atlas ? 8 : angles ? 4 : 0, atlas ? 4096 : 64, &lv) != 0)
+                rc = CLI_EXIT_USAGE;
+            else
+                *(atlas ? &co.so.atlas : angles ? &co.so.angles : &co.so.svd) = (int)lv;
         } else if (strcmp(a, "--views") == 0 || strcmp(a, "--map-resolution") == 0 || strcmp(a, "--map-error") == 0) {
             double v;
             if (i + 1 >= argc) rc = cli_fail(CLI_EXIT_USAGE, "prepare: %s needs a value", a);
@@ -289,10 +388,17 @@ int cmd_prepare(int argc, char **argv)
     if (!rc && !args.out) rc = cli_fail(CLI_EXIT_USAGE, "prepare: -o MODEL.silk is needed");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --triangles N is needed");
     if (!rc && !co.on && !co.mesh) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --no-clip and --no-mesh leave nothing to write");
+    if (!rc && co.siltex && !co.on)
+        rc = cli_fail(CLI_EXIT_USAGE, "prepare: --siltex draws over the outer hull, which --no-clip leaves out");
+    if (!rc && co.so.svd > co.so.angles)
+        rc = cli_fail(CLI_EXIT_USAGE, "prepare: --siltex-svd %d is more eigenfunctions than --angles %d", co.so.svd,
+                      co.so.angles);
+    if (!rc && !co.siltex && siltex_opt) rc = cli_fail(CLI_EXIT_USAGE, "prepare: %s goes with --siltex", siltex_opt);
     if (rc) return rc;
     so.target_tris = (uint32_t)args.target;
     if (silk_file_same(in, args.out))
         return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
     /* A failed run leaves OUT as it was (written atomically), as every command. */
+    co.so.quiet = args.quiet;
     return prepare(in, args.out, &so, args.scale, args.quiet, fit, &co);
 }

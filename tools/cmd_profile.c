@@ -105,10 +105,10 @@ static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, fram
         if (silk_view_init(&view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         silk_phong_default(&s->phong, &view);
         silk_hal_phong(&s->hal, &s->phong);
-        int clip = o->render.mode == SILK_MODE_CLIP;
+        int clip = o->render.mode == SILK_MODE_CLIP, siltex = o->render.mode == SILK_MODE_SILTEX;
         for (int mode = 0; mode < 2 && !rc; mode++) {
             silk_render_opts ro = o->render;
-            ro.mode = clip ? SILK_MODE_CLIP : mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+            ro.mode = clip || siltex ? o->render.mode : mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
             if (clip && mode) ro.aa = 0;   /* both kinds of stencil */
             silk_frame_stats fs;
             if (silk_render_bands(&s->arena, &s->mesh, &view, &s->hal, &ro, band, &sink, &fs, &err) != SILK_OK)
@@ -130,9 +130,10 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
         return cli_fail(CLI_EXIT_INPUT, "profile: %s: %s", csv_path, strerror(errno));
     if (r.csv) fprintf(r.csv, "area,item,bytes\n");
     printf("silk profile: %s on %s (measured in this process)\n", mesh, SILK_BOARD_NAME);
-    int clip = o->render.mode == SILK_MODE_CLIP;
+    int clip = o->render.mode == SILK_MODE_CLIP, siltex = o->render.mode == SILK_MODE_SILTEX;
     printf("frame %dx%d, bands of %d rows; %d frames rendered (%s from %d views)\n", o->width, o->height, rows,
-           2 * SILK_BOARD_VIEWS, clip ? "clip, anti-aliased and not," : "flat and smooth", SILK_BOARD_VIEWS);
+           2 * SILK_BOARD_VIEWS, clip ? "clip, anti-aliased and not," : siltex ? "siltex, twice each" : "flat and smooth",
+           SILK_BOARD_VIEWS);
 
     heading("MESH (bytes; loaded into the arena: a host has no flash)");
     silk_mesh_bytes mb;
@@ -152,6 +153,10 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     if (clip) {
         heading("FLASH (bytes; read in place from the model file)");
         row(&r, "flash", "silhouette map", silk_silmap_bytes(&s->silmap), "views, polytope, outlines");
+    }
+    if (siltex) {
+        heading("FLASH (bytes; read in place from the model file)");
+        row(&r, "flash", "silhouette texture", silk_siltex_bytes(&s->siltex), "C and T, atlas points, angles, maps");
     }
 
     heading("RAM (bytes; arena high-water marks by purpose)");
@@ -187,12 +192,12 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     return 0;
 }
 
-static int profile(const char *mesh, const char *csv_path, int check, int clip)
+static int profile(const char *mesh, const char *csv_path, int check, int hull_mode)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);   /* the board's frame size and format */
     o.mesh_path = mesh;
-    if (clip) o.render.mode = SILK_MODE_CLIP;
+    if (hull_mode) o.render.mode = (silk_mode)hull_mode;
     int rows = SILK_BOARD_BAND_ROWS < 1 || SILK_BOARD_BAND_ROWS > o.height ? o.height : SILK_BOARD_BAND_ROWS;
 
     cli_scene s;
@@ -231,7 +236,7 @@ static int profile(const char *mesh, const char *csv_path, int check, int clip)
 static void help(FILE *f)
 {
     fprintf(f,
-            "usage: silk profile MESH [--board " SILK_BOARD_NAME "] [--csv FILE] [--check] [--mode clip]\n"
+            "usage: silk profile MESH [--board " SILK_BOARD_NAME "] [--csv FILE] [--check] [--mode clip|siltex]\n"
             "\n"
             "Where every byte of RAM goes when this board (" SILK_BOARD_NAME ", the board this silk was\n"
             "built for: %dx%d, bands of %d rows) renders MESH: the mesh in the arena by\n"
@@ -245,8 +250,10 @@ static void help(FILE *f)
             "  --board NAME         the board; only " SILK_BOARD_NAME " (the one built for)\n"
             "  --csv FILE           the table as CSV (area,item,bytes) too\n"
             "  --check              exit 1 when a frame fell back (the arena ran out)\n"
-            "  --mode clip          profile clip mode instead (a prepared model's hull and\n"
-            "                       map): the map's flash bytes, the stencil's RAM\n"
+            "  --mode clip|siltex   profile clip mode instead (a prepared model's hull and\n"
+            "                       map: the map's flash bytes, the stencil's RAM), or\n"
+            "                       siltex mode (its hull and silhouette texture: the\n"
+            "                       texture's flash bytes)\n"
             "\n"
             "examples:\n"
             "  silk profile ../shared/meshes/bunny-500.obj\n"
@@ -257,7 +264,7 @@ static void help(FILE *f)
 int cmd_profile(int argc, char **argv)
 {
     const char *mesh = NULL, *csv = NULL;
-    int check = 0, clip = 0;
+    int check = 0, hull_mode = 0;   /* 0, or SILK_MODE_CLIP or SILK_MODE_SILTEX */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v;
         if (cli_help(a, help)) return 0;
@@ -272,13 +279,14 @@ int cmd_profile(int argc, char **argv)
             check = 1;
         } else if (cli_is(a, "--mode")) {
             if (!(v = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
-            if (strcmp(v, "clip") != 0)
-                return cli_fail(CLI_EXIT_USAGE, "profile: --mode takes clip (flat and smooth are profiled without it)");
-            clip = 1;
+            if (strcmp(v, "clip") != 0 && strcmp(v, "siltex") != 0)
+                return cli_fail(CLI_EXIT_USAGE,
+                                "profile: --mode takes clip or siltex (flat and smooth are profiled without it)");
+            hull_mode = strcmp(v, "clip") == 0 ? SILK_MODE_CLIP : SILK_MODE_SILTEX;
         } else if (cli_mesh_arg("profile", a, &mesh)) {
             return CLI_EXIT_USAGE;
         }
     }
     if (!mesh) return cli_fail(CLI_EXIT_USAGE, "profile: no mesh given (silk profile MESH)");
-    return profile(mesh, csv, check, clip);
+    return profile(mesh, csv, check, hull_mode);
 }

@@ -53,7 +53,14 @@ static void help(FILE *f)
 /* The mesh as silk loads it, positions widened to double (simplify.h). */
 int simp_load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold)
 {
+    return simp_load_colors(path, scale, quiet, out, closed_manifold, NULL);
+}
+
+int simp_load_colors(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold,
+                     uint32_t **color)
+{
     memset(out, 0, sizeof *out);
+    if (color) *color = NULL;
     silk_load_opts lo;
     silk_load_opts_default(&lo);
     lo.scale = scale;
@@ -74,6 +81,8 @@ int simp_load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, i
                 out->pos[3 * i + 2] = cli_fx_to_double(m->pos[i].z);
             }
             for (size_t i = 0; i < 3 * (size_t)m->ntris; i++) out->tri[i] = (uint32_t)m->tri[i];
+            if (color && m->color && (*color = malloc((m->nverts ? m->nverts : 1) * sizeof **color)) != NULL)
+                memcpy(*color, m->color, m->nverts * sizeof **color);
             *closed_manifold = m->nboundary_edges == 0 && m->nnonmanifold_edges == 0;
         }
     }
@@ -179,7 +188,8 @@ int simplify_pipeline(const char *in, const simp_opts *so_in, silk_decimal scale
     int closed = 0, rc;
     simp_topology topo;
     const char *name = cli_input_name(in);
-    if ((rc = simp_load(in, scale, quiet, &r->mesh, &closed)) != 0) return rc;
+    if ((rc = simp_load_colors(in, scale, quiet, &r->mesh, &closed, so_in->subset ? &r->fine_color : NULL)) != 0)
+        return rc;
     if (so_in->subset && simp_copy(&r->mesh, &r->fine) != 0) return cli_fail(CLI_EXIT_INPUT, "%s: out of memory", name);
     simp_opts so = *so_in;
     progress pr;
@@ -213,6 +223,7 @@ void simp_result_free(simp_result *r)
     simp_free(&r->mesh);
     simp_free(&r->fine);
     surf_normals_free(&r->normals);
+    free(r->fine_color);
 }
 
 int simplify_option(int argc, char **argv, int *i, simp_opts *so)

@@ -53,17 +53,24 @@ static int load_scene(viewer *v)
     o.width = o.height = 1;
     o.arena_doublings = v->doublings;
     int rc = cli_scene_load(&v->s, &o);
-    /* clip mode draws the model's hull through its map (cli_scene_load) */
+    /* clip and siltex mode draw the model's hull through its map or
+     * texture (cli_scene_load) */
     v->ro.silmap = o.render.mode == SILK_MODE_CLIP ? &v->s.silmap : NULL;
+    v->ro.siltex = o.render.mode == SILK_MODE_SILTEX ? &v->s.siltex : NULL;
     return rc;
 }
 
-/* Into clip mode or out of it: the scene's mesh is then the hull, or the
- * coarse mesh.  A model without a hull and map says so and stays. */
+/* What the scene holds for a mode: the coarse mesh (0), the hull and map
+ * (clip, 1) or the hull and texture (siltex, 2). */
+static int scene_kind(silk_mode m) { return m == SILK_MODE_CLIP ? 1 : m == SILK_MODE_SILTEX ? 2 : 0; }
+
+/* Into clip or siltex mode or out of it: the scene's mesh is then the
+ * hull, or the coarse mesh.  A model without a hull and map or texture
+ * says so and stays. */
 static int switch_scene(viewer *v)
 {
     silk_mode was = v->o.render.mode;
-    if ((v->ro.mode == SILK_MODE_CLIP) == (was == SILK_MODE_CLIP)) return 0;
+    if (scene_kind(v->ro.mode) == scene_kind(was)) return 0;
     v->o.render.mode = v->ro.mode;
     if (load_scene(v) == 0) return 0;
     v->ro.mode = v->o.render.mode = was;
@@ -230,17 +237,17 @@ void viewer_zoom(viewer *v, double notches)
 int viewer_key(viewer *v, int key)
 {
     static const silk_mode cycle[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN,
-                                       SILK_MODE_CLIP };
+                                       SILK_MODE_CLIP, SILK_MODE_SILTEX };
     int was_dirty = v->dirty;
     v->dirty = 1;
     switch (key) {
-    case '1': case '2': case '3': case '4': case '5':
+    case '1': case '2': case '3': case '4': case '5': case '6':
         v->ro.mode = cycle[key - '1'];
         break;
     case 'm':
-        for (int i = 0; i < 5; i++)
+        for (int i = 0; i < 6; i++)
             if (cycle[i] == v->ro.mode) {
-                v->ro.mode = cycle[(i + 1) % 5];
+                v->ro.mode = cycle[(i + 1) % 6];
                 break;
             }
         break;
@@ -282,7 +289,7 @@ int viewer_key(viewer *v, int key)
 static void mode_text(const silk_render_opts *ro, char *buf, size_t n)
 {
     if (ro->mode == SILK_MODE_PN) snprintf(buf, n, "pn level %u", (unsigned)ro->level);
-    else if (ro->mode == SILK_MODE_FLAT || ro->mode == SILK_MODE_CLIP) snprintf(buf, n, "%s", silk_mode_name(ro->mode));
+    else if (ro->mode == SILK_MODE_FLAT || ro->mode == SILK_MODE_CLIP || ro->mode == SILK_MODE_SILTEX) snprintf(buf, n, "%s", silk_mode_name(ro->mode));
     else snprintf(buf, n, "%s tol %g", silk_mode_name(ro->mode), cli_fx_to_double(ro->tolerance_px));
 }
 
@@ -467,7 +474,7 @@ static int run_events(viewer *v, const char *script)
         char extra;
         for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
             if (strcmp(word, named[i].name) == 0) key = named[i].key;
-        if (key < 0 && len == 1 && strchr("12345mwlchor+-=[]sq", word[0])) key = word[0];
+        if (key < 0 && len == 1 && strchr("123456mwlchor+-=[]sq", word[0])) key = word[0];
         if (key >= 0) rc = viewer_key(v, key);
         else if (sscanf(word, "drag:%lf,%lf%c", &a, &b, &extra) == 2) viewer_orbit(v, a, b);
         else if (sscanf(word, "pan:%lf,%lf%c", &a, &b, &extra) == 2) viewer_pan(v, a, b);
@@ -503,7 +510,7 @@ static void help(FILE *f)
             "  right or middle drag pan\n"
             "  wheel                zoom\n"
             "keys:\n"
-            "  1 2 3 4 5            mode: flat, smooth, blend, pn, clip  m  next mode\n"
+            "  1 2 3 4 5 6          mode: flat, smooth, blend, pn, clip, siltex  m  next mode\n"
             "  w                    wireframe; triangles added by re-meshing in red\n"
             "  l                    lines: silhouette (blue) and feature curves (green) over\n"
             "                       the surface, then alone, then off\n"

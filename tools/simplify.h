@@ -86,6 +86,10 @@ void simp_free(simp_mesh *m);
  * vertices" and the normals as "vn" lines (faces "f a//a ..."); atomically,
  * "-" for stdout; 0 or an exit code after printing the error. */
 int simp_load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold);
+/* The same, and the vertex colours (0xRRGGBB each, malloc'd) in *color, or
+ * NULL when the file has none. */
+int simp_load_colors(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold,
+                     uint32_t **color);
 int simp_write_mesh(const simp_mesh *m, const double *normals, const char *path, const char *comment);
 /* OBJ with nnormals normals and the normal of each corner named by
  * tri_normal (3 per triangle): faces "f a//n ..." (PLY has one normal per

@@ -42,6 +42,7 @@ typedef struct simp_result {
     simp_mesh mesh;          /* the simplified mesh */
     simp_mesh fine;          /* with subset placement: the input (mesh.origin indexes it) */
     surf_normals normals;    /* with subset placement: the detailed surface's normals */
+    uint32_t *fine_color;    /* with subset placement: fine's vertex colours 0xRRGGBB, or NULL */
     simp_stats stats;
 } simp_result;
 

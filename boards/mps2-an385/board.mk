@@ -37,12 +37,13 @@ BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # The firmware draws flat and smooth only; the reference methods (PN,
 # blend) stay in the host library, where they are measured against, and so
 # do the pen-and-ink lines and --wire, clip mode (11 KiB of code; its
-# per-frame outline does not fit the board's RAM yet), anti-aliased
+# per-frame outline does not fit the board's RAM yet), siltex mode (its
+# texture is far larger than the flash), anti-aliased
 # outlines (2.4 KiB of code and about 12 KiB of scratch a band) and
 # textures (3 KiB): boards/mps2-an385-full is the same part with 64 KiB of
 # RAM and those two.  The vertex cache's code goes too: the firmware gives
 # it no arena (FW_VERTEX_CACHE_BYTES), so it would never run.
-BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE -DSILK_NO_AA -DSILK_NO_TEXTURE \
+BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE -DSILK_NO_SILTEX_MODE -DSILK_NO_AA -DSILK_NO_TEXTURE \
                   -DSILK_NO_VERTEX_CACHE
 BOARD_OPT   := -Os
 # The core's code budget (`make profile` checks it)

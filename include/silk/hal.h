@@ -102,9 +102,13 @@ silk_vec3 silk_hermite_point(const silk_curve *c, silk_fx t);
  * malformed point gives zeros. */
 void silk_patch_eval(const silk_patch *p, uint32_t point, silk_vertex_attr *out);
 
+/* What a fragment stage returns to leave the pixel as it was: no colour,
+ * no depth written (a discarded fragment lets what lies behind show). */
+#define SILK_FRAGMENT_DISCARD 0xFFFFFFFFu
+
 typedef struct silk_hal {
     void (*vertex)(const struct silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
-    /* var: the interpolated varyings; returns 0xRRGGBB */
+    /* var: the interpolated varyings; returns 0xRRGGBB, or SILK_FRAGMENT_DISCARD */
     uint32_t (*fragment)(const struct silk_hal *h, const silk_fx *var);
     int nvaryings;
     const void *uniforms;
@@ -153,6 +157,10 @@ typedef struct silk_phong {
  * Call silk_hal_phong after setting texture and vertex_colors. */
 void silk_phong_default(silk_phong *p, const silk_view *view); /* a key light and a fill light */
 void silk_hal_phong(silk_hal *h, const silk_phong *p);
+/* The fragment stage of h (silk_hal_phong's) at varyings position and
+ * normal alone, with rgb (0xRRGGBB) in place of the texture and vertex
+ * colour; a stage of the caller's own is called as it is. */
+uint32_t silk_hal_phong_tinted(const silk_hal *h, const silk_fx *var, uint32_t rgb);
 
 #ifdef __cplusplus
 }

@@ -38,6 +38,9 @@
 /* The silhouette map of the detailed model that goes with the hull. */
 #define SILK_SECTION_SMAP SILK_SECTION_TYPE('S', 'M', 'A', 'P')
 #define SILK_SMAP_VERSION 1        /* a reader refuses another map layout */
+/* The silhouette texture of the detailed model that goes with the hull
+ * (siltex mode, silk/siltex.h). */
+#define SILK_SECTION_STEX SILK_SECTION_TYPE('S', 'T', 'E', 'X')
 
 #define SILK_SECTION_REQUIRED 1u   /* flags bit 0: a reader that does not know the type must refuse the file */
 
@@ -81,6 +84,17 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
  * or SILK_ERR_PARSE with the reason (also when there is no map). */
 struct silk_silmap;
 silk_status silk_model_silmap(const void *data, size_t len, const char *name, struct silk_silmap *out,
+                              silk_error *err);
+
+/* The model's silhouette texture (docs/formats.md "STEX") as a silk_siltex
+ * (silk/siltex.h) pointing into the caller's bytes (any alignment), so a
+ * model in flash keeps its texture there.  Checked: the version, flags and
+ * counts, that the HULL section it goes with has its numbers of vertices
+ * and triangles, the section's size to the byte, every C and T of unit
+ * length with T across C, every atlas point inside the atlas.  SILK_OK, or
+ * SILK_ERR_PARSE with the reason (also when there is no texture). */
+struct silk_siltex;
+silk_status silk_model_siltex(const void *data, size_t len, const char *name, struct silk_siltex *out,
                               silk_error *err);
 
 /* CRC-32 (IEEE 802.3, as zlib and PNG): crc of the bytes, continuing from

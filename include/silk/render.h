@@ -36,7 +36,8 @@ typedef enum silk_mode {
     SILK_MODE_SMOOTH = 1,    /* silhouette smoothing (paper section III) */
     SILK_MODE_PN = 2,        /* PN triangles (Vlachos et al. 2001), uniformly tessellated */
     SILK_MODE_BLEND = 3,     /* silhouetteness blending (Dyken & Reimers), docs/methods.md */
-    SILK_MODE_CLIP = 4       /* the outer hull clipped to the detailed model's silhouette (docs/clipping.md) */
+    SILK_MODE_CLIP = 4,      /* the outer hull clipped to the detailed model's silhouette (docs/clipping.md) */
+    SILK_MODE_SILTEX = 5     /* the outer hull drawn through a silhouette texture (docs/siltex.md) */
 } silk_mode;
 
 /* The normal patch of PN mode: Vlachos' quadratic one, or the corner
@@ -124,10 +125,13 @@ typedef struct silk_render_opts {
     const struct silk_silmap *silmap;
     uint32_t silmap_hint;
     int aa;                  /* anti-aliased outlines (default 1; FLAT, SMOOTH and CLIP frames without lines) */
+    /* SILTEX: the model's silhouette texture (silk_model_siltex); the mesh
+     * drawn is the model's hull, the HAL's stages shade it */
+    const struct silk_siltex *siltex;
 } silk_render_opts;
 
 void silk_render_opts_default(silk_render_opts *o);
-/* "flat", "smooth", "pn", "blend", "clip"; "?" for anything else. */
+/* "flat", "smooth", "pn", "blend", "clip", "siltex"; "?" for anything else. */
 const char *silk_mode_name(silk_mode mode);
 /* The inverse (src/mode.c): a name silk_mode_name returns, or "pnL" for PN
  * triangles at level L (1..SILK_PN_MAX_LEVEL, no leading zero).  Sets *mode

@@ -36,6 +36,16 @@ def fix(b):
     return bytes(b)
 
 
+def write_cases(cases):
+    """Each (name, bytes, message) with its checksums made right, and its .expected line."""
+    for name, data, message in cases:
+        with open(os.path.join(HERE, name), "wb") as f:
+            f.write(fix(data))
+        with open(os.path.join(HERE, name + ".expected"), "w") as f:
+            f.write("silk: tests/bad/%s: %s\n" % (name, message))
+    print("%d cases written to %s" % (len(cases), HERE), file=sys.stderr)
+
+
 def smap(b):
     for i, t, off, size in sections(b):
         if t == b"SMAP":
@@ -74,12 +84,7 @@ def main():
     struct.pack_into("<I", b, start + 4, 1)
     cases.append(("model-smap-loop.silk", b, "SMAP section: loop 0 has fewer than 3 points"))
 
-    for name, data, message in cases:
-        with open(os.path.join(HERE, name), "wb") as f:
-            f.write(fix(data))
-        with open(os.path.join(HERE, name + ".expected"), "w") as f:
-            f.write("silk: tests/bad/%s: %s\n" % (name, message))
-    print("%d cases written to %s" % (len(cases), HERE), file=sys.stderr)
+    write_cases(cases)
 
 
 if __name__ == "__main__":
