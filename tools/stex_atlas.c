@@ -165,7 +165,6 @@ static void unfold(const simp_mesh *m, const chart *c, int j, int side, uint32_t
     ex /= l, ey /= l;
     double nx = -ey, ny = ex;
     if ((pc[0] - pa[0]) * nx + (pc[1] - pa[1]) * ny > 0) nx = -nx, ny = -ny;
-    (void)b;
     out[oa][0] = pa[0], out[oa][1] = pa[1];
     out[ob][0] = pb[0], out[ob][1] = pb[1];
     out[oc][0] = pa[0] + f[0] * ex + f[1] * nx, out[oc][1] = pa[1] + f[0] * ey + f[1] * ny;
