@@ -48,7 +48,7 @@ for m in bunny armadillo spot; do
   done
   if [ "$siltex" = 1 ]; then
     for a in 64 96 128; do
-      "$silk" prepare "$f" -o "$work/$m-500-atlas$a.silk" --triangles 500 --no-clip --siltex --atlas "$a" >/dev/null
+      "$silk" prepare "$f" -o "$work/$m-500-atlas$a.silk" --triangles 500 --siltex --atlas "$a" >/dev/null
       pairs="$pairs --pair $work/$m-500-atlas$a.silk:$f=siltex"
     done
   fi
