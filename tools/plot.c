@@ -54,6 +54,28 @@ static void format_value(double v, char *buf, size_t n)
     else snprintf(buf, n, "%.3g", v);
 }
 
+/* The title and the note under it from the top-left margin; the row the
+ * legend goes on. */
+static int draw_title(silk_target *t, const char *title, const char *note)
+{
+    int y = MARGIN;
+    font_draw(t, MARGIN, y, title ? title : "", RGB_TEXT, SCALE);
+    y += FONT_LINE * SCALE;
+    if (note) {
+        font_draw(t, MARGIN, y + 2, note, RGB_AXIS, 1);
+        y += FONT_LINE + 4;
+    }
+    return y + 8;
+}
+
+/* A legend entry (a swatch and the name) at x; where the next one goes. */
+static int legend_item(silk_target *t, int x, int y, const char *name, uint32_t rgb)
+{
+    fill(t, x, y, x + 14, y + 14, rgb);
+    font_draw(t, x + 20, y, name, RGB_TEXT, SCALE);
+    return x + 14 + 6 + font_text_width(name, SCALE) + 20;
+}
+
 typedef struct layout {
     int left, group_w, width, height;
     int header_h, panel_h;
@@ -141,20 +163,8 @@ int plot_render(const plot_chart *c, silk_target *t)
     silk_target_init(t, L.width, L.height, 0, L.height, SILK_PIX_RGB888, rgb, NULL);
     fill(t, 0, 0, L.width, L.height, RGB_BG);
 
-    int y = MARGIN;
-    font_draw(t, MARGIN, y, c->title ? c->title : "", RGB_TEXT, SCALE);
-    y += FONT_LINE * SCALE;
-    if (c->note) {
-        font_draw(t, MARGIN, y + 2, c->note, RGB_AXIS, 1);
-        y += FONT_LINE + 4;
-    }
-    y += 8;
-    int x = MARGIN;
-    for (int s = 0; s < c->nseries; s++) {
-        fill(t, x, y, x + 14, y + 14, c->series_rgb[s]);
-        font_draw(t, x + 20, y, c->series[s], RGB_TEXT, SCALE);
-        x += 14 + 6 + font_text_width(c->series[s], SCALE) + 20;
-    }
+    int y = draw_title(t, c->title, c->note), x = MARGIN;
+    for (int s = 0; s < c->nseries; s++) x = legend_item(t, x, y, c->series[s], c->series_rgb[s]);
     for (int p = 0; p < c->npanels; p++) draw_panel(t, c, &c->panel[p], &L, L.header_h + p * L.panel_h);
     return 0;
 }
@@ -228,20 +238,8 @@ int plot_xy_render(const plot_xy *c, silk_target *t)
     silk_target_init(t, width, height, 0, height, SILK_PIX_RGB888, rgb, NULL);
     fill(t, 0, 0, width, height, RGB_BG);
 
-    int y = MARGIN;
-    font_draw(t, MARGIN, y, c->title ? c->title : "", RGB_TEXT, SCALE);
-    y += FONT_LINE * SCALE;
-    if (c->note) {
-        font_draw(t, MARGIN, y + 2, c->note, RGB_AXIS, 1);
-        y += FONT_LINE + 4;
-    }
-    y += 8;
-    int x = MARGIN;
-    for (int s = 0; s < c->nseries; s++) {
-        fill(t, x, y, x + 14, y + 14, c->series[s].rgb);
-        font_draw(t, x + 20, y, c->series[s].name, RGB_TEXT, SCALE);
-        x += 14 + 6 + font_text_width(c->series[s].name, SCALE) + 20;
-    }
+    int y = draw_title(t, c->title, c->note), x = MARGIN;
+    for (int s = 0; s < c->nseries; s++) x = legend_item(t, x, y, c->series[s].name, c->series[s].rgb);
 
     int x0 = left, x1 = left + XY_W, y0 = header, y1 = header + XY_H;
 #define XPIX(v) (x0 + (int)lround((log10(v) - R.lx0) / (R.lx1 - R.lx0) * XY_W))
