@@ -371,8 +371,9 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
     const silk_siltex *st = s->tex;
     int64_t d[3];
     const silk_view *view = s->view;
+    silk_vec3 e = { 0, 0, 0 };   /* eye to point, in perspective: the view direction and the line width's depth */
     if (!view->cam.ortho) {
-        silk_vec3 e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
+        e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
         if (!silk_unit64(e.x, e.y, e.z, d)) return SILK_FRAGMENT_DISCARD;
     } else {
         d[0] = view->forward.x, d[1] = view->forward.y, d[2] = view->forward.z;
@@ -388,10 +389,7 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
         /* eq. 5: a line where |acos(d.C) - phi| <= w, w growing with the
          * eye depth (a pixel's width there) in perspective */
         int64_t w = s->line_q;
-        if (!view->cam.ortho) {
-            silk_vec3 e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
-            w = (silk_v3_dot64(e, view->forward) >> 16) * w >> 16;
-        }
+        if (!view->cam.ortho) w = (silk_v3_dot64(e, view->forward) >> 16) * w >> 16;
         int64_t lo = (int64_t)phi - w, hi = (int64_t)phi + w, top = (int64_t)255 << 16;
         lo = lo < 0 ? 0 : lo;
         hi = hi > top ? top : hi;
@@ -409,19 +407,9 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
     }
     uint32_t rgb = 0xFFFFFF;
 #ifndef SILK_NO_TEXTURE
-    if (st->color) {
-        silk_texture cm;
-        memset(&cm, 0, sizeof cm);
-        cm.pixels = st->color;
-        cm.width = (uint16_t)st->w;
-        cm.height = (uint16_t)st->h;
-        cm.format = SILK_TEX_RGB888;
-        cm.levels = 1;
-        cm.filter = SILK_TEX_BILINEAR;
-        cm.wrap = SILK_TEX_CLAMP;
-        /* the texture's v runs upwards, the atlas's downwards */
-        rgb = silk_texture_sample(&cm, (silk_fx)(u / (int32_t)st->w), (silk_fx)(SILK_FX_ONE - v / (int32_t)st->h), 0, 0);
-    }
+    if (st->color)   /* the texture's v runs upwards, the atlas's downwards */
+        rgb = silk_texture_sample(&s->color_map, (silk_fx)(u / (int32_t)st->w),
+                                  (silk_fx)(SILK_FX_ONE - v / (int32_t)st->h), 0, 0);
 #endif
     return silk_hal_phong_tinted(s->shade, shade_var, rgb);
 }
@@ -434,6 +422,20 @@ void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s)
     h->nvaryings = VAR_COUNT;
     h->uniforms = s;
     h->footprint_var = 0;
+#ifndef SILK_NO_TEXTURE
+    /* the colour map as a texture, described once here rather than per pixel */
+    const silk_siltex *st = s->tex;
+    memset(&s->color_map, 0, sizeof s->color_map);
+    if (st && st->color) {
+        s->color_map.pixels = st->color;
+        s->color_map.width = (uint16_t)st->w;
+        s->color_map.height = (uint16_t)st->h;
+        s->color_map.format = SILK_TEX_RGB888;
+        s->color_map.levels = 1;
+        s->color_map.filter = SILK_TEX_BILINEAR;
+        s->color_map.wrap = SILK_TEX_CLAMP;
+    }
+#endif
 }
 
 int64_t silk_siltex_line_width(const silk_view *view, silk_fx reach)

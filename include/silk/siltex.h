@@ -20,6 +20,7 @@
 #include <stdint.h>
 #include "fixed.h"
 #include "hal.h"
+#include "texture.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -114,6 +115,9 @@ typedef struct silk_siltex_stage {
     int lines;
     uint32_t line_rgb, bg_rgb;
     int64_t line_q;
+    /* Filled by silk_siltex_hal from tex: the colour map as a bilinear,
+     * clamped RGB888 texture (unused when tex has none). */
+    silk_texture color_map;
 } silk_siltex_stage;
 
 /* line_q for lines about 2 px wide where the lobe's edge is crossed at a
@@ -126,7 +130,8 @@ int64_t silk_siltex_line_width(const silk_view *view, silk_fx reach);
  * (3); the fragment stage returns SILK_FRAGMENT_DISCARD where eq. 4 says
  * the detailed model is not seen, else shades with the normal map's normal
  * and the colour map's colour (silk_hal_phong_tinted).  silk_render does
- * this itself in SILK_MODE_SILTEX. */
+ * this itself in SILK_MODE_SILTEX.  It fills s->color_map from s->tex, so
+ * set s->tex first. */
 void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s);
 
 /* Bytes the section takes in the model (what flash holds for it). */
