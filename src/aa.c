@@ -100,6 +100,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     /* a side's scratch from the arena, not the stack: the walk is the deepest call of a frame */
     aa->walk = silk_arena_array_top(a, SILK_AA_WALK, sizeof *aa->walk, SILK_MEM_FRAME);
     aa->out = silk_arena_array_top(a, 1, sizeof *aa->out, SILK_MEM_FRAME);
+    aa->curve = silk_arena_array_top(a, 1, sizeof *aa->curve, SILK_MEM_FRAME);
     /* An outline crosses a band about once per row or column it spans:
      * room for three times the band's width and height (a knot at 640x480
      * needs 2.4 times), within half of what is left (the rest is left
@@ -107,7 +108,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
-    return aa->pt && aa->walk && aa->out && aa->px;
+    return aa->pt && aa->walk && aa->out && aa->curve && aa->px;
 }
 
 /* Pixel (x, y) of the band or its aprons: colour and depth; 0 if neither has it. */
@@ -122,22 +123,14 @@ static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)
     return 1;
 }
 
-/* Pixel r of column c (rows across the walk; steep: the roles of x and y
- * swapped) becomes cov / FRAC of the inside pixel ri and the rest of the
- * outside pixel ro, both of its column; a pixel of them nearer than lim
- * hides the side there. */
-static void crossing(silk_aa *aa, int steep, int c, int r, int ri, int ro, uint32_t cov, uint32_t lim)
+/* Pixel (x, y) becomes cov / FRAC of colour ci over co, ai and ao saying
+ * whether each holds anything (alpha plane only: an empty pixel has no
+ * colour and weighs nothing). */
+static void blend(silk_aa *aa, int x, int y, uint32_t cov, uint32_t ci, uint32_t co, uint32_t ai, uint32_t ao)
 {
     const silk_target *t = aa->t;
-    int x = steep ? r : c, y = steep ? c : r;
-    if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
-    uint32_t ci, co, di, dout;
-    if (!fetch(aa, steep ? ri : c, steep ? c : ri, &ci, &di) || !fetch(aa, steep ? ro : c, steep ? c : ro, &co, &dout))
-        return;
-    if (di > lim || dout > lim) return;   /* hidden here */
     uint32_t c8 = (cov * 255 + FRAC / 2) / FRAC;
-    /* weights: the coverage, and whether a pixel holds anything (alpha plane only) */
-    uint32_t ai = !t->alpha || di ? 255 : 0, ao = !t->alpha || dout ? 255 : 0;
+    if (!t->alpha) ai = ao = 255;
     uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = 2 * cov > FRAC ? ci : co;
     if (sum) {
         rgb = 0;
@@ -154,6 +147,36 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int ri, int ro, uint3
     p->argb = ((sum + 127) / 255) << 24 | rgb;
 }
 
+/* Pixel r of column c (rows across the walk; steep: the roles of x and y
+ * swapped), which the outline covers by cov / FRAC, its inside towards r +
+ * dir.  What a pixel holds, by its depth against the outline's, ds: the
+ * surface (within tol of it), something behind it or nothing (further),
+ * or something in front (nearer than ds + tol: the outline is hidden
+ * there and the pixel left alone).  The pixel is the surface's colour
+ * over what lies behind, the two taken from it and its neighbour across
+ * the outline: a pixel holding the surface is the inside, the one beyond
+ * it (r - dir) the outside; a pixel holding what is behind is the
+ * outside, the one within (r + dir) the inside.  Only neighbours, so the
+ * rows a band reads are its own and its aprons; where the neighbour is
+ * not what is needed (the surface two pixels past the outline, or not
+ * within it) the pixel is left as drawn. */
+static void crossing(silk_aa *aa, int steep, int c, int r, int dir, uint32_t cov, int64_t ds, int64_t tol, int cut)
+{
+    const silk_target *t = aa->t;
+    int x = steep ? r : c, y = steep ? c : r;
+    if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
+    uint32_t cr, dr, cn, dn;
+    if (!fetch(aa, x, y, &cr, &dr)) return;
+    int sr = (int64_t)dr > ds + tol ? 2 : (int64_t)dr + tol >= ds;   /* 2: in front, 1: the surface, 0: behind */
+    if (sr == 2 || cov == (sr ? FRAC : 0) || (sr && !cut)) return;   /* hidden, as drawn, or kept */
+    int n = sr ? r - dir : r + dir;
+    if (!fetch(aa, steep ? n : c, steep ? c : n, &cn, &dn)) return;
+    int sn = (int64_t)dn > ds + tol ? 2 : (int64_t)dn + tol >= ds;
+    if (sn == 2 || sn == sr) return;
+    if (sr) blend(aa, x, y, cov, cr, cn, 255, dn ? 255 : 0);
+    else blend(aa, x, y, cov, cn, cr, 255, dr ? 255 : 0);
+}
+
 /* Where a through b crosses u = uc, in 1/FRAC pixels across (a.x <= uc < b.x). */
 static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
 {
@@ -167,7 +190,8 @@ static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
  * the outline is the curve through them, and the pixels between the two
  * get the curve's coverage too, their colours from the drawn pixels next
  * to the chord. */
-static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid)
+static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid,
+                 int curve)
 {
     int64_t cross = area2(&p, &q, in);
     if (!cross) return;
@@ -216,18 +240,18 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
             vk = cross_at(&k[j], &k[j + 1], uc);
         }
         int64_t rk = floor_div(vk, FRAC), fk = vk - rk * FRAC;
-        int64_t lim = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du) + tol;
-        uint32_t l32 = lim > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)lim;
-        /* The two pixels next to the chord: a pixel further out or in would
-         * take a colour from two rows away, past a band's apron, so where the
-         * curve crosses one it is left as drawn (bands equal the frame). */
-        for (int64_t r = ri < ro ? ri : ro, r1 = r + 1; r <= r1; r++) {
+        int64_t ds = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du);
+        /* every pixel from the chord's two to the curve's, whose coverage
+         * may differ from what was drawn */
+        int64_t r0 = ri < ro ? ri : ro, r1 = r0 + 1;
+        if (rk < r0 && curve) r0 = rk;
+        if (rk > r1 && curve) r1 = rk;
+        for (int64_t r = r0; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
             /* within SNAP of empty or full: below what 1/16-pixel records place */
             cov = cov < SNAP ? 0 : cov > FRAC - SNAP ? FRAC : cov;
-            if (cov == ((r - ri) * dir >= 0 ? FRAC : 0)) continue;   /* as drawn */
-            crossing(aa, steep, (int)c, (int)r, (int)ri, (int)ro, cov, l32);
+            crossing(aa, steep, (int)c, (int)r, dir, cov, ds, tol, curve || r == ri);
         }
     }
 }
@@ -249,7 +273,7 @@ static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa
 /* Side a-b of a triangle a b c (walked when all three are placed). */
 static void tri_side(silk_aa *aa, const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c, const silk_aa_pt *mid)
 {
-    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c), mid);
+    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c), mid, 0);
 }
 
 /* silk_sil_tri_front, through aa->facing when there is one: the outline
@@ -323,6 +347,60 @@ static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, ui
     return 1;
 }
 
+/* Silhouette triangle t's share: its segment walked chord by chord, each
+ * with the curve's coverage, whether or not its two parts fold there on
+ * screen (where they face the same way the outline drawn is a side next
+ * to the chord, not the curve), and no other side of the share (those
+ * that fold lie inside the curve or on it).  The inside is away from
+ * where the curve's normal points on screen: the surface lies behind its
+ * outline (a visible outline's surface is convex along the view).  The
+ * depth tolerance is the whole share's range (the pixels next to the
+ * outline hold any of its triangles).  0 when the normal gives no
+ * direction (then the share's folds are walked instead). */
+static int seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uint32_t t)
+{
+    const silk_curve *c = &aa->geom->curves[s->curve];
+    silk_vrec r = { SILK_VREC_CURVE, s->curve, 0, SILK_FX_HALF };
+    aa->hal->vertex(aa->hal, aa->geom, &r, aa->out);
+    silk_aa_pt m = point(aa->t, aa->out);
+    /* the middle moved out along the normal by an eighth of the segment */
+    silk_curve *o = aa->curve;
+    silk_fx len = silk_v3_length(silk_v3_sub(c->p1, c->p0));
+    *o = *c;
+    o->p0 = o->p1 = silk_v3_add(silk_hermite_point(c, SILK_FX_HALF), silk_v3_scale(silk_v3_add(c->n0, c->n1), len / 16));
+    o->t0 = o->t1 = silk_v3(0, 0, 0);
+    silk_geom og = *aa->geom;
+    og.curves = o;
+    r.a = 0;
+    aa->hal->vertex(aa->hal, &og, &r, aa->out);
+    silk_aa_pt n = point(aa->t, aa->out);
+    int32_t ox = n.x - m.x, oy = n.y - m.y;
+    if (!m.ok || !n.ok || (!ox && !oy)) return 0;
+    uint32_t lo = UINT32_MAX, hi = 0;
+    for (uint32_t i = 0; i < g->nvrec; i++) {
+        if (!aa->pt[i].ok) continue;
+        if (aa->pt[i].d < lo) lo = aa->pt[i].d;
+        if (aa->pt[i].d > hi) hi = aa->pt[i].d;
+    }
+    int64_t tol = lo > hi ? 0 : (int64_t)(hi - lo) + hi / 64;
+    /* the samples: A, the records on the curve after the boundary, B */
+    uint32_t rec[3];
+    silk_remesh_seg_recs(aa->sil, t, 0, rec);
+    uint32_t a = s->a, b = rec[2];
+    silk_aa_pt *mid = aa->walk + SUBDIV + 1;
+    for (;;) {
+        int last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
+        if (last) b = s->b;
+        const silk_aa_pt *p = &aa->pt[a], *q = &aa->pt[b];
+        if (p->ok && q->ok) {
+            silk_aa_pt in = { (int32_t)(((int64_t)p->x + q->x) / 2 - ox), (int32_t)(((int64_t)p->y + q->y) / 2 - oy), 0, 1 };
+            side(aa, *p, *q, &in, tol, seg_points(aa, s, g, a, b, mid) ? mid : NULL, 1);
+        }
+        if (last) return 1;
+        a = b++;
+    }
+}
+
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
                    const silk_vertex_out *out, uint32_t t)
 {
@@ -343,6 +421,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         at.a = ends[0];
         at.b = ends[1];
         seg = &at;
+        if (seg_walk(aa, g, seg, t)) return;
     }
     /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
     for (uint32_t i = 0; i < g->ntri; i++) {

@@ -36,6 +36,7 @@ typedef struct silk_aa {
     silk_aa_pt *pt;   uint32_t npt;   /* per record of one share */
     silk_aa_pt *walk;             /* scratch for one side: the points of the curve walked (SILK_AA_WALK) */
     silk_vertex_out *out;         /* scratch: one point of a curve through the vertex stage */
+    silk_curve *curve;            /* scratch: a point off a silhouette segment (its normal on screen) */
     /* SMOOTH frames (set by the caller after silk_aa_begin; sil NULL otherwise): the
      * plan, which says where a share's silhouette segment is, and the vertex stage
      * h with the frame's geom, which projects points of its curve */

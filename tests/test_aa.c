@@ -115,6 +115,29 @@ static void compare(const uint16_t *cov, const uint8_t *alpha, aa_stats *s)
     }
 }
 
+/* SILK_AA_DUMP=dir: every smooth anti-aliased view as dir/NAME-V.ppm (red:
+ * alpha, green: exact coverage), and its pixels off by more than MAX_BOUND. */
+static void dump(const char *name, int view, const uint16_t *cov, const uint8_t *alpha)
+{
+    const char *dir = getenv("SILK_AA_DUMP");
+    if (!dir) return;
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s-%d.ppm", dir, name, view);
+    FILE *fp = fopen(path, "wb");
+    if (!fp) return;
+    fprintf(fp, "P6 %d %d 255\n", W, H);
+    for (int i = 0; i < W * H; i++) {
+        int c = cov[i] * 255 / (SUBS * SUBS);
+        fputc(alpha[i], fp), fputc(c > 255 ? 255 : c, fp), fputc(0, fp);
+        double e = fabs(alpha[i] / 255.0 - cov[i] / (double)(SUBS * SUBS));
+        int whole = cov[i] == 0 || cov[i] == SUBS * SUBS;
+        if (e > MAX_BOUND || (whole && alpha[i] != (cov[i] ? 255 : 0)))
+            printf("%s view %d: (%d, %d) alpha %.3f exact %.3f%s\n", name, view, i % W, i / W, alpha[i] / 255.0,
+                   cov[i] / (double)(SUBS * SUBS), whole ? " whole" : "");
+    }
+    fclose(fp);
+}
+
 static void report(const char *what, const aa_stats *s)
 {
     printf("  %-26s edge pixels %5ld: mean error %.4f (signed %+.4f), max %.3f, %ld off by > %.1f; whole pixels: "
@@ -159,6 +182,7 @@ TEST(alpha_is_coverage)
                     for (int aa = 0; aa < 2; aa++) {
                         CHECK(draw_alpha(&f, &v, mode, aa, 0, alpha));
                         compare(cov, alpha, &an[smooth][aa]);
+                        if (smooth && aa) dump(name, (int)(2 * d) + ortho, cov, alpha);
                     }
                 }
             }
