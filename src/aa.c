@@ -55,7 +55,7 @@
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
-#define SNAP  (FRAC / 32)          /* coverage this close to 0 or 1 is 0 or 1 */
+#define SNAP  (FRAC / 10)          /* coverage this close to 0 or 1 is 0 or 1 */
 #define SUBDIV SILK_AA_SUBDIV
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
@@ -172,7 +172,9 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int dir, uint32_t cov
     int n = sr ? r - dir : r + dir;
     if (!fetch(aa, steep ? n : c, steep ? c : n, &cn, &dn)) return;
     int sn = (int64_t)dn > ds + tol ? 2 : (int64_t)dn + tol >= ds;
-    if (sn == 2 || sn == sr) return;
+    /* an empty pixel shows the outline is not hidden there: something in
+     * front of the surface next to it (where two outlines meet) lends its colour */
+    if ((sn == 2 && (sr || dr)) || sn == sr) return;
     if (sr) blend(aa, x, y, cov, cr, cn, 255, dn ? 255 : 0);
     else blend(aa, x, y, cov, cn, cr, 255, dr ? 255 : 0);
 }
@@ -295,6 +297,8 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
     const silk_edge *ed = &m->edge[e];
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
     if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
+    /* SMOOTH: an edge of a silhouette triangle lies within its segment's curve, which is walked instead */
+    if (aa->sil && aa->sil->tri_state && (aa->sil->tri_state[nb] & SILK_TS_SIL)) return 0;
     return front && !tri_front(aa, m, v, nb);
 }
 
