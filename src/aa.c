@@ -312,11 +312,6 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
 }
 
 
-static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
-{
-    return memcmp(&a->clip, &b->clip, sizeof a->clip) == 0;
-}
-
 /* Where a share's silhouette segment is: its curve among the share's
  * curves, and the records of its ends A and B (the samples between are
  * records on the curve itself). */
@@ -351,57 +346,50 @@ static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, ui
     return 1;
 }
 
-/* Silhouette triangle t's share: its segment walked chord by chord, each
- * with the curve's coverage, whether or not its two parts fold there on
- * screen (where they face the same way the outline drawn is a side next
- * to the chord, not the curve), and no other side of the share (those
- * that fold lie inside the curve or on it).  The inside is away from
- * where the curve's normal points on screen: the surface lies behind its
- * outline (a visible outline's surface is convex along the view).  The
- * depth tolerance is the whole share's range (the pixels next to the
- * outline hold any of its triangles).  0 when the normal gives no
- * direction (then the share's folds are walked instead). */
-static int seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uint32_t t)
+/* Silhouette triangle t's share: its segment walked chord by chord with
+ * the curve's coverage, whether or not the share's two parts fold there on
+ * screen (where they face the same way, the outline drawn is a side next
+ * to the chord rather than the chord), and no other side of the share
+ * (those lie within the curve).  The inside is away from where the
+ * normal at A points on screen (it is perpendicular to the view there,
+ * and the surface lies behind a visible outline).  The depth tolerance is
+ * the whole share's range: the pixels next to the outline hold any of its
+ * triangles. */
+static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uint32_t t)
 {
+    /* A moved out along its normal by a sixteenth of the segment, projected */
     const silk_curve *c = &aa->geom->curves[s->curve];
-    silk_vrec r = { SILK_VREC_CURVE, s->curve, 0, SILK_FX_HALF };
-    aa->hal->vertex(aa->hal, aa->geom, &r, aa->out);
-    silk_aa_pt m = point(aa->t, aa->out);
-    /* the middle moved out along the normal by an eighth of the segment */
     silk_curve *o = aa->curve;
-    silk_fx len = silk_v3_length(silk_v3_sub(c->p1, c->p0));
     *o = *c;
-    o->p0 = o->p1 = silk_v3_add(silk_hermite_point(c, SILK_FX_HALF), silk_v3_scale(silk_v3_add(c->n0, c->n1), len / 16));
+    o->p1 = o->p0 = silk_v3_add(c->p0, silk_v3_scale(c->n0, silk_v3_length(silk_v3_sub(c->p1, c->p0)) / 16));
     o->t0 = o->t1 = silk_v3(0, 0, 0);
     silk_geom og = *aa->geom;
     og.curves = o;
-    r.a = 0;
+    silk_vrec r = { SILK_VREC_CURVE, 0, 0, 0 };
     aa->hal->vertex(aa->hal, &og, &r, aa->out);
     silk_aa_pt n = point(aa->t, aa->out);
-    int32_t ox = n.x - m.x, oy = n.y - m.y;
-    if (!m.ok || !n.ok || (!ox && !oy)) return 0;
+    const silk_aa_pt *m = &aa->pt[s->a];
+    int32_t ox = n.x - m->x, oy = n.y - m->y;
+    if (!m->ok || !n.ok || (!ox && !oy)) return;
     uint32_t lo = UINT32_MAX, hi = 0;
     for (uint32_t i = 0; i < g->nvrec; i++) {
         if (!aa->pt[i].ok) continue;
         if (aa->pt[i].d < lo) lo = aa->pt[i].d;
         if (aa->pt[i].d > hi) hi = aa->pt[i].d;
     }
-    int64_t tol = lo > hi ? 0 : (int64_t)(hi - lo) + hi / 64;
-    /* the samples: A, the records on the curve after the boundary, B */
+    int64_t tol = (int64_t)(hi - lo) + hi / 64;   /* A is placed: lo <= hi */
+    /* the samples: A, the records on the curve after the share's boundary, B */
     uint32_t rec[3];
     silk_remesh_seg_recs(aa->sil, t, 0, rec);
     uint32_t a = s->a, b = rec[2];
     silk_aa_pt *mid = aa->walk + SUBDIV + 1;
-    for (;;) {
-        int last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
+    for (int last = 0; !last; a = b++) {
+        last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
         if (last) b = s->b;
         const silk_aa_pt *p = &aa->pt[a], *q = &aa->pt[b];
-        if (p->ok && q->ok) {
-            silk_aa_pt in = { (int32_t)(((int64_t)p->x + q->x) / 2 - ox), (int32_t)(((int64_t)p->y + q->y) / 2 - oy), 0, 1 };
-            side(aa, *p, *q, &in, tol, seg_points(aa, s, g, a, b, mid) ? mid : NULL, 1);
-        }
-        if (last) return 1;
-        a = b++;
+        if (!p->ok || !q->ok) continue;
+        silk_aa_pt in = { (int32_t)(((int64_t)p->x + q->x) / 2 - ox), (int32_t)(((int64_t)p->y + q->y) / 2 - oy), 0, 1 };
+        side(aa, *p, *q, &in, tol, seg_points(aa, s, g, a, b, mid) ? mid : NULL, 1);
     }
 }
 
@@ -419,35 +407,12 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                 tri_side(aa, &aa->pt[tri[k]], &aa->pt[tri[(k + 1) % 3]], &aa->pt[tri[(k + 2) % 3]], NULL);
         return;
     }
-    seg_at at, *seg = NULL;
+    seg_at at;
     uint32_t ends[2];
     if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, ends, &at.curve)) {
         at.a = ends[0];
         at.b = ends[1];
-        seg = &at;
-        if (seg_walk(aa, g, seg, t)) return;
-    }
-    /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
-    for (uint32_t i = 0; i < g->ntri; i++) {
-        const uint32_t *ti = &tri[3 * i];
-        const silk_aa_pt *p0 = &aa->pt[ti[0]], *p1 = &aa->pt[ti[1]], *p2 = &aa->pt[ti[2]];
-        if (!p0->ok || !p1->ok || !p2->ok || area2(p0, p1, p2) <= 0) continue;
-        for (int k = 0; k < 3; k++) {
-            const silk_vertex_out *a = &out[ti[k]], *b = &out[ti[(k + 1) % 3]];
-            int fold = 0;
-            for (uint32_t j = 0; j < g->ntri && !fold; j++) {
-                const uint32_t *tj = &tri[3 * j];
-                for (int l = 0; l < 3 && !fold; l++) {
-                    const silk_vertex_out *c = &out[tj[l]], *d = &out[tj[(l + 1) % 3]];
-                    if (!((same_clip(a, d) && same_clip(b, c)) || (same_clip(a, c) && same_clip(b, d)))) continue;
-                    fold = j != i && area2(&aa->pt[tj[0]], &aa->pt[tj[1]], &aa->pt[tj[2]]) < 0;
-                }
-            }
-            if (!fold) continue;
-            silk_aa_pt *mid = aa->walk + SUBDIV + 1;
-            tri_side(aa, &aa->pt[ti[k]], &aa->pt[ti[(k + 1) % 3]], &aa->pt[ti[(k + 2) % 3]],
-                     seg_points(aa, seg, g, ti[k], ti[(k + 1) % 3], mid) ? mid : NULL);
-        }
+        seg_walk(aa, g, &at, t);
     }
 }
 
