@@ -55,7 +55,8 @@
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
-#define SNAP  (FRAC / 10)          /* coverage this close to 0 or 1 is 0 or 1 */
+#define SNAP  (FRAC / 32)          /* coverage this close to 0 or 1 is 0 or 1: below what 1/16-pixel records place */
+#define SNAP_CURVE (FRAC / 10)     /* the same from a silhouette segment: below how close it follows the surface */
 #define SUBDIV SILK_AA_SUBDIV
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
@@ -243,6 +244,7 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         }
         int64_t rk = floor_div(vk, FRAC), fk = vk - rk * FRAC;
         int64_t ds = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du);
+        uint32_t snap = curve ? SNAP_CURVE : SNAP;
         /* every pixel from the chord's two to the curve's, whose coverage
          * may differ from what was drawn */
         int64_t r0 = ri < ro ? ri : ro, r1 = r0 + 1;
@@ -251,8 +253,7 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         for (int64_t r = r0; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
-            /* within SNAP of empty or full: below what 1/16-pixel records place */
-            cov = cov < SNAP ? 0 : cov > FRAC - SNAP ? FRAC : cov;
+            cov = cov < snap ? 0 : cov > FRAC - snap ? FRAC : cov;
             crossing(aa, steep, (int)c, (int)r, dir, cov, ds, tol, curve || r == ri);
         }
     }
