@@ -6,42 +6,50 @@
  * The outline is geometry silk already has, not something found in the
  * image: in SMOOTH mode the silhouette segment of every silhouette
  * triangle (the Hermite curve of eq. 5, drawn as chords between its
- * samples of eq. 8) is made of sides that two of the re-meshed triangles
- * share while facing opposite ways on screen (remesh.c builds both parts,
- * folded along it); in FLAT mode it is every mesh edge between a front-
- * and a back-facing triangle (the face-based silhouette), and every edge
- * against nothing.  Interior pixels are never visited: the cost is a walk
- * along the outline.
+ * samples of eq. 8); in FLAT mode (and for the triangles SMOOTH leaves as
+ * they are, unless next to a silhouette triangle) every mesh edge between
+ * a front- and a back-facing triangle (the face-based silhouette), and
+ * every edge against nothing.  Interior pixels are never visited: the
+ * cost is a walk along the outline.
  *
  * Coverage.  Along a side whose x extent is the larger, each pixel column
  * whose centre the side spans is crossed at height y_e; the pixel the
  * crossing falls in is covered by the side's inside over the part of it
  * on that side, 1 - frac(y_e) or frac(y_e) (the area of the pixel column
  * cut by a straight outline, exact unless it crosses a pixel corner within
- * the column, where it is off by at most 1/8).  Sides steeper than 45
- * degrees walk rows the same way.  The rasterizer draws a silhouette
- * segment as chords between its samples, which lie inside the curve by up
- * to the sampling tolerance (eq. 8); so along a chord the crossing is
+ * the column, where it is off by at most 1/8); the pixels further in are
+ * covered, those further out not.  Sides steeper than 45 degrees walk rows
+ * the same way.  The rasterizer draws a silhouette segment as chords
+ * between its samples, which lie inside the curve by up to the sampling
+ * tolerance (eq. 8), and where the re-meshed triangle's two parts do not
+ * fold along the segment on screen (they face the same way) the drawn
+ * outline is a side next to the chord; so along a chord the crossing is
  * taken from the curve itself, eq. 5 evaluated at SUBDIV - 1 parameters
  * between the chord's samples and projected by the vertex stage (a
- * polyline within 1/16 of the chord's distance from the curve), and the
- * two pixels next to the chord get the curve's coverage.  Other
- * sides (flat mode's silhouette edges) are the outline as it is.  Positions
- * are the rasterizer's own subpixel ones (silk_raster_point), 1/16 pixel,
- * so a coverage within 1/32 of empty or full is taken as empty or full.
+ * polyline within 1/16 of the chord's distance from the curve), and every
+ * pixel from the chord's two to the one the curve crosses gets the
+ * curve's coverage, whatever was drawn there.  Straight sides are the
+ * outline as it is.  Positions are the rasterizer's own subpixel ones
+ * (silk_raster_point), 1/16 pixel, so a coverage within 1/32 of empty or
+ * full is taken as empty or full; from a curve, within 1/10 (the Hermite
+ * curve follows the surface's true outline to about a tenth of a pixel).
  *
- * Blending.  The rasterizer decided each pixel by its centre against the
- * chord, so of the two pixels next to the chord in the column one holds the
- * surface and the other what is behind (a post-process blend as in
- * geometric post-process anti-aliasing, Persson 2011).  A pixel the
- * outline crosses becomes coverage x inside + (1 - coverage) x outside
- * (only those two: the curve is seldom a whole pixel off the chord, and a
- * pixel past them would take a colour from beyond a band's apron).  With an alpha
- * plane (a PNG with --bg none) an empty pixel has alpha 0 and weighs
- * nothing in the colour, so alpha is the coverage and the colour the
- * surface's.  Where the inside or the outside pixel is nearer than the
- * side (something in front of the outline) by more than its triangle's
- * depth range and 1/64, the side is hidden there and the pixel left alone.
+ * Blending.  A pixel the outline covers otherwise than drawn becomes
+ * coverage x inside + (1 - coverage) x outside, read from the pixel and its
+ * neighbour across the outline (a post-process blend as in geometric
+ * post-process anti-aliasing, Persson 2011): a pixel holding the surface
+ * (its depth within a tolerance of the outline's) is the inside and the
+ * one beyond it the outside; a pixel holding what lies behind (or
+ * nothing) is the outside and the one within it the inside.  Where the
+ * neighbour is not what is needed (the surface two pixels past the curve,
+ * or nothing within it) the pixel is left as drawn.  With an alpha plane
+ * (a PNG with --bg none) an empty pixel has alpha 0 and weighs nothing in
+ * the colour, so alpha is the coverage and the colour the surface's.  A
+ * pixel nearer than the outline by more than the tolerance (the depth
+ * range of the side's triangle, or of a silhouette triangle's whole share,
+ * and 1/64) is something in front of it: the outline is hidden there and
+ * the pixel left alone; an empty pixel next to such a one takes its colour
+ * (two outlines meet there).
  *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
