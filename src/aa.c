@@ -6,42 +6,50 @@
  * The outline is geometry silk already has, not something found in the
  * image: in SMOOTH mode the silhouette segment of every silhouette
  * triangle (the Hermite curve of eq. 5, drawn as chords between its
- * samples of eq. 8) is made of sides that two of the re-meshed triangles
- * share while facing opposite ways on screen (remesh.c builds both parts,
- * folded along it); in FLAT mode it is every mesh edge between a front-
- * and a back-facing triangle (the face-based silhouette), and every edge
- * against nothing.  Interior pixels are never visited: the cost is a walk
- * along the outline.
+ * samples of eq. 8); in FLAT mode (and for the triangles SMOOTH leaves as
+ * they are, unless next to a silhouette triangle) every mesh edge between
+ * a front- and a back-facing triangle (the face-based silhouette), and
+ * every edge against nothing.  Interior pixels are never visited: the
+ * cost is a walk along the outline.
  *
  * Coverage.  Along a side whose x extent is the larger, each pixel column
  * whose centre the side spans is crossed at height y_e; the pixel the
  * crossing falls in is covered by the side's inside over the part of it
  * on that side, 1 - frac(y_e) or frac(y_e) (the area of the pixel column
  * cut by a straight outline, exact unless it crosses a pixel corner within
- * the column, where it is off by at most 1/8).  Sides steeper than 45
- * degrees walk rows the same way.  The rasterizer draws a silhouette
- * segment as chords between its samples, which lie inside the curve by up
- * to the sampling tolerance (eq. 8); so along a chord the crossing is
+ * the column, where it is off by at most 1/8); the pixels further in are
+ * covered, those further out not.  Sides steeper than 45 degrees walk rows
+ * the same way.  The rasterizer draws a silhouette segment as chords
+ * between its samples, which lie inside the curve by up to the sampling
+ * tolerance (eq. 8), and where the re-meshed triangle's two parts do not
+ * fold along the segment on screen (they face the same way) the drawn
+ * outline is a side next to the chord; so along a chord the crossing is
  * taken from the curve itself, eq. 5 evaluated at SUBDIV - 1 parameters
  * between the chord's samples and projected by the vertex stage (a
- * polyline within 1/16 of the chord's distance from the curve), and the
- * two pixels next to the chord get the curve's coverage.  Other
- * sides (flat mode's silhouette edges) are the outline as it is.  Positions
- * are the rasterizer's own subpixel ones (silk_raster_point), 1/16 pixel,
- * so a coverage within 1/32 of empty or full is taken as empty or full.
+ * polyline within 1/16 of the chord's distance from the curve), and every
+ * pixel from the chord's two to the one the curve crosses gets the
+ * curve's coverage, whatever was drawn there.  Straight sides are the
+ * outline as it is.  Positions are the rasterizer's own subpixel ones
+ * (silk_raster_point), 1/16 pixel, so a coverage within 1/32 of empty or
+ * full is taken as empty or full; from a curve, within 1/10 (the Hermite
+ * curve follows the surface's true outline to about a tenth of a pixel).
  *
- * Blending.  The rasterizer decided each pixel by its centre against the
- * chord, so of the two pixels next to the chord in the column one holds the
- * surface and the other what is behind (a post-process blend as in
- * geometric post-process anti-aliasing, Persson 2011).  A pixel the
- * outline crosses becomes coverage x inside + (1 - coverage) x outside
- * (only those two: the curve is seldom a whole pixel off the chord, and a
- * pixel past them would take a colour from beyond a band's apron).  With an alpha
- * plane (a PNG with --bg none) an empty pixel has alpha 0 and weighs
- * nothing in the colour, so alpha is the coverage and the colour the
- * surface's.  Where the inside or the outside pixel is nearer than the
- * side (something in front of the outline) by more than its triangle's
- * depth range and 1/64, the side is hidden there and the pixel left alone.
+ * Blending.  A pixel the outline covers otherwise than drawn becomes
+ * coverage x inside + (1 - coverage) x outside, read from the pixel and its
+ * neighbour across the outline (a post-process blend as in geometric
+ * post-process anti-aliasing, Persson 2011): a pixel holding the surface
+ * (its depth within a tolerance of the outline's) is the inside and the
+ * one beyond it the outside; a pixel holding what lies behind (or
+ * nothing) is the outside and the one within it the inside.  Where the
+ * neighbour is not what is needed (the surface two pixels past the curve,
+ * or nothing within it) the pixel is left as drawn.  With an alpha plane
+ * (a PNG with --bg none) an empty pixel has alpha 0 and weighs nothing in
+ * the colour, so alpha is the coverage and the colour the surface's.  A
+ * pixel nearer than the outline by more than the tolerance (the depth
+ * range of the side's triangle, or of a silhouette triangle's whole share,
+ * and 1/64) is something in front of it: the outline is hidden there and
+ * the pixel left alone; an empty pixel next to such a one takes its colour
+ * (two outlines meet there).
  *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
@@ -55,7 +63,8 @@
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
-#define SNAP  (FRAC / 32)          /* coverage this close to 0 or 1 is 0 or 1 */
+#define SNAP  (FRAC / 32)          /* coverage this close to 0 or 1 is 0 or 1: below what 1/16-pixel records place */
+#define SNAP_CURVE (FRAC / 10)     /* the same from a silhouette segment: below how close it follows the surface */
 #define SUBDIV SILK_AA_SUBDIV
 
 static int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }  /* d > 0 */
@@ -100,6 +109,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     /* a side's scratch from the arena, not the stack: the walk is the deepest call of a frame */
     aa->walk = silk_arena_array_top(a, SILK_AA_WALK, sizeof *aa->walk, SILK_MEM_FRAME);
     aa->out = silk_arena_array_top(a, 1, sizeof *aa->out, SILK_MEM_FRAME);
+    aa->curve = silk_arena_array_top(a, 1, sizeof *aa->curve, SILK_MEM_FRAME);
     /* An outline crosses a band about once per row or column it spans:
      * room for three times the band's width and height (a knot at 640x480
      * needs 2.4 times), within half of what is left (the rest is left
@@ -107,7 +117,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
-    return aa->pt && aa->walk && aa->out && aa->px;
+    return aa->pt && aa->walk && aa->out && aa->curve && aa->px;
 }
 
 /* Pixel (x, y) of the band or its aprons: colour and depth; 0 if neither has it. */
@@ -122,22 +132,14 @@ static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)
     return 1;
 }
 
-/* Pixel r of column c (rows across the walk; steep: the roles of x and y
- * swapped) becomes cov / FRAC of the inside pixel ri and the rest of the
- * outside pixel ro, both of its column; a pixel of them nearer than lim
- * hides the side there. */
-static void crossing(silk_aa *aa, int steep, int c, int r, int ri, int ro, uint32_t cov, uint32_t lim)
+/* Pixel (x, y) becomes cov / FRAC of colour ci over co, ai and ao saying
+ * whether each holds anything (alpha plane only: an empty pixel has no
+ * colour and weighs nothing). */
+static void blend(silk_aa *aa, int x, int y, uint32_t cov, uint32_t ci, uint32_t co, uint32_t ai, uint32_t ao)
 {
     const silk_target *t = aa->t;
-    int x = steep ? r : c, y = steep ? c : r;
-    if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
-    uint32_t ci, co, di, dout;
-    if (!fetch(aa, steep ? ri : c, steep ? c : ri, &ci, &di) || !fetch(aa, steep ? ro : c, steep ? c : ro, &co, &dout))
-        return;
-    if (di > lim || dout > lim) return;   /* hidden here */
     uint32_t c8 = (cov * 255 + FRAC / 2) / FRAC;
-    /* weights: the coverage, and whether a pixel holds anything (alpha plane only) */
-    uint32_t ai = !t->alpha || di ? 255 : 0, ao = !t->alpha || dout ? 255 : 0;
+    if (!t->alpha) ai = ao = 255;
     uint32_t wi = c8 * ai, wo = (255 - c8) * ao, sum = wi + wo, rgb = 2 * cov > FRAC ? ci : co;
     if (sum) {
         rgb = 0;
@@ -154,6 +156,38 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int ri, int ro, uint3
     p->argb = ((sum + 127) / 255) << 24 | rgb;
 }
 
+/* Pixel r of column c (rows across the walk; steep: the roles of x and y
+ * swapped), which the outline covers by cov / FRAC, its inside towards r +
+ * dir.  What a pixel holds, by its depth against the outline's, ds: the
+ * surface (within tol of it), something behind it or nothing (further),
+ * or something in front (nearer than ds + tol: the outline is hidden
+ * there and the pixel left alone).  The pixel is the surface's colour
+ * over what lies behind, the two taken from it and its neighbour across
+ * the outline: a pixel holding the surface is the inside, the one beyond
+ * it (r - dir) the outside; a pixel holding what is behind is the
+ * outside, the one within (r + dir) the inside.  Only neighbours, so the
+ * rows a band reads are its own and its aprons; where the neighbour is
+ * not what is needed (the surface two pixels past the outline, or not
+ * within it) the pixel is left as drawn. */
+static void crossing(silk_aa *aa, int steep, int c, int r, int dir, uint32_t cov, int64_t ds, int64_t tol, int cut)
+{
+    const silk_target *t = aa->t;
+    int x = steep ? r : c, y = steep ? c : r;
+    if (y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width) return;
+    uint32_t cr, dr, cn, dn;
+    if (!fetch(aa, x, y, &cr, &dr)) return;
+    int sr = (int64_t)dr > ds + tol ? 2 : (int64_t)dr + tol >= ds;   /* 2: in front, 1: the surface, 0: behind */
+    if (sr == 2 || cov == (sr ? FRAC : 0) || (sr && !cut)) return;   /* hidden, as drawn, or kept */
+    int n = sr ? r - dir : r + dir;
+    if (!fetch(aa, steep ? n : c, steep ? c : n, &cn, &dn)) return;
+    int sn = (int64_t)dn > ds + tol ? 2 : (int64_t)dn + tol >= ds;
+    /* an empty pixel shows the outline is not hidden there: something in
+     * front of the surface next to it (where two outlines meet) lends its colour */
+    if ((sn == 2 && (sr || dr)) || sn == sr) return;
+    if (sr) blend(aa, x, y, cov, cr, cn, 255, dn ? 255 : 0);
+    else blend(aa, x, y, cov, cn, cr, 255, dr ? 255 : 0);
+}
+
 /* Where a through b crosses u = uc, in 1/FRAC pixels across (a.x <= uc < b.x). */
 static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
 {
@@ -167,7 +201,8 @@ static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
  * the outline is the curve through them, and the pixels between the two
  * get the curve's coverage too, their colours from the drawn pixels next
  * to the chord. */
-static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid)
+static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid,
+                 int curve)
 {
     int64_t cross = area2(&p, &q, in);
     if (!cross) return;
@@ -216,18 +251,18 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
             vk = cross_at(&k[j], &k[j + 1], uc);
         }
         int64_t rk = floor_div(vk, FRAC), fk = vk - rk * FRAC;
-        int64_t lim = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du) + tol;
-        uint32_t l32 = lim > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)lim;
-        /* The two pixels next to the chord: a pixel further out or in would
-         * take a colour from two rows away, past a band's apron, so where the
-         * curve crosses one it is left as drawn (bands equal the frame). */
-        for (int64_t r = ri < ro ? ri : ro, r1 = r + 1; r <= r1; r++) {
+        int64_t ds = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du);
+        uint32_t snap = curve ? SNAP_CURVE : SNAP;
+        /* every pixel from the chord's two to the curve's, whose coverage
+         * may differ from what was drawn */
+        int64_t r0 = ri < ro ? ri : ro, r1 = r0 + 1;
+        if (rk < r0 && curve) r0 = rk;
+        if (rk > r1 && curve) r1 = rk;
+        for (int64_t r = r0; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
-            /* within SNAP of empty or full: below what 1/16-pixel records place */
-            cov = cov < SNAP ? 0 : cov > FRAC - SNAP ? FRAC : cov;
-            if (cov == ((r - ri) * dir >= 0 ? FRAC : 0)) continue;   /* as drawn */
-            crossing(aa, steep, (int)c, (int)r, (int)ri, (int)ro, cov, l32);
+            cov = cov < snap ? 0 : cov > FRAC - snap ? FRAC : cov;
+            crossing(aa, steep, (int)c, (int)r, dir, cov, ds, tol, curve || r == ri);
         }
     }
 }
@@ -249,7 +284,7 @@ static int64_t tolerance(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa
 /* Side a-b of a triangle a b c (walked when all three are placed). */
 static void tri_side(silk_aa *aa, const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c, const silk_aa_pt *mid)
 {
-    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c), mid);
+    if (a->ok && b->ok && c->ok) side(aa, *a, *b, c, tolerance(a, b, c), mid, 0);
 }
 
 /* silk_sil_tri_front, through aa->facing when there is one: the outline
@@ -271,6 +306,8 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
     const silk_edge *ed = &m->edge[e];
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
     if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
+    /* SMOOTH: an edge of a silhouette triangle lies within its segment's curve, which is walked instead */
+    if (aa->sil && aa->sil->tri_state && (aa->sil->tri_state[nb] & SILK_TS_SIL)) return 0;
     return front && !tri_front(aa, m, v, nb);
 }
 
@@ -283,11 +320,6 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
     return 0;
 }
 
-
-static int same_clip(const silk_vertex_out *a, const silk_vertex_out *b)
-{
-    return memcmp(&a->clip, &b->clip, sizeof a->clip) == 0;
-}
 
 /* Where a share's silhouette segment is: its curve among the share's
  * curves, and the records of its ends A and B (the samples between are
@@ -323,6 +355,53 @@ static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, ui
     return 1;
 }
 
+/* Silhouette triangle t's share: its segment walked chord by chord with
+ * the curve's coverage, whether or not the share's two parts fold there on
+ * screen (where they face the same way, the outline drawn is a side next
+ * to the chord rather than the chord), and no other side of the share
+ * (those lie within the curve).  The inside is away from where the
+ * normal at A points on screen (it is perpendicular to the view there,
+ * and the surface lies behind a visible outline).  The depth tolerance is
+ * the whole share's range: the pixels next to the outline hold any of its
+ * triangles. */
+static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uint32_t t)
+{
+    /* A moved out along its normal by a sixteenth of the segment, projected */
+    const silk_curve *c = &aa->geom->curves[s->curve];
+    silk_curve *o = aa->curve;
+    *o = *c;
+    o->p1 = o->p0 = silk_v3_add(c->p0, silk_v3_scale(c->n0, silk_v3_length(silk_v3_sub(c->p1, c->p0)) / 16));
+    o->t0 = o->t1 = silk_v3(0, 0, 0);
+    silk_geom og = *aa->geom;
+    og.curves = o;
+    silk_vrec r = { SILK_VREC_CURVE, 0, 0, 0 };
+    aa->hal->vertex(aa->hal, &og, &r, aa->out);
+    silk_aa_pt n = point(aa->t, aa->out);
+    const silk_aa_pt *m = &aa->pt[s->a];
+    int32_t ox = n.x - m->x, oy = n.y - m->y;
+    if (!m->ok || !n.ok || (!ox && !oy)) return;
+    uint32_t lo = UINT32_MAX, hi = 0;
+    for (uint32_t i = 0; i < g->nvrec; i++) {
+        if (!aa->pt[i].ok) continue;
+        if (aa->pt[i].d < lo) lo = aa->pt[i].d;
+        if (aa->pt[i].d > hi) hi = aa->pt[i].d;
+    }
+    int64_t tol = (int64_t)(hi - lo) + hi / 64;   /* A is placed: lo <= hi */
+    /* the samples: A, the records on the curve after the share's boundary, B */
+    uint32_t rec[3];
+    silk_remesh_seg_recs(aa->sil, t, 0, rec);
+    uint32_t a = s->a, b = rec[2];
+    silk_aa_pt *mid = aa->walk + SUBDIV + 1;
+    for (int last = 0; !last; a = b++) {
+        last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
+        if (last) b = s->b;
+        const silk_aa_pt *p = &aa->pt[a], *q = &aa->pt[b];
+        if (!p->ok || !q->ok) continue;
+        silk_aa_pt in = { (int32_t)(((int64_t)p->x + q->x) / 2 - ox), (int32_t)(((int64_t)p->y + q->y) / 2 - oy), 0, 1 };
+        side(aa, *p, *q, &in, tol, seg_points(aa, s, g, a, b, mid) ? mid : NULL, 1);
+    }
+}
+
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
                    const silk_vertex_out *out, uint32_t t)
 {
@@ -337,34 +416,12 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                 tri_side(aa, &aa->pt[tri[k]], &aa->pt[tri[(k + 1) % 3]], &aa->pt[tri[(k + 2) % 3]], NULL);
         return;
     }
-    seg_at at, *seg = NULL;
+    seg_at at;
     uint32_t ends[2];
     if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, ends, &at.curve)) {
         at.a = ends[0];
         at.b = ends[1];
-        seg = &at;
-    }
-    /* a fold: side a-b of triangle i (facing +) is side b-a or a-b of a triangle j facing - */
-    for (uint32_t i = 0; i < g->ntri; i++) {
-        const uint32_t *ti = &tri[3 * i];
-        const silk_aa_pt *p0 = &aa->pt[ti[0]], *p1 = &aa->pt[ti[1]], *p2 = &aa->pt[ti[2]];
-        if (!p0->ok || !p1->ok || !p2->ok || area2(p0, p1, p2) <= 0) continue;
-        for (int k = 0; k < 3; k++) {
-            const silk_vertex_out *a = &out[ti[k]], *b = &out[ti[(k + 1) % 3]];
-            int fold = 0;
-            for (uint32_t j = 0; j < g->ntri && !fold; j++) {
-                const uint32_t *tj = &tri[3 * j];
-                for (int l = 0; l < 3 && !fold; l++) {
-                    const silk_vertex_out *c = &out[tj[l]], *d = &out[tj[(l + 1) % 3]];
-                    if (!((same_clip(a, d) && same_clip(b, c)) || (same_clip(a, c) && same_clip(b, d)))) continue;
-                    fold = j != i && area2(&aa->pt[tj[0]], &aa->pt[tj[1]], &aa->pt[tj[2]]) < 0;
-                }
-            }
-            if (!fold) continue;
-            silk_aa_pt *mid = aa->walk + SUBDIV + 1;
-            tri_side(aa, &aa->pt[ti[k]], &aa->pt[ti[(k + 1) % 3]], &aa->pt[ti[(k + 2) % 3]],
-                     seg_points(aa, seg, g, ti[k], ti[(k + 1) % 3], mid) ? mid : NULL);
-        }
+        seg_walk(aa, g, &at, t);
     }
 }
 

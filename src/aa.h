@@ -1,9 +1,9 @@
 /*
  * aa.h - internal: anti-aliased outlines (aa.c).  Not installed.
  *
- * After a band is drawn, each outline side of the frame's triangles (where
- * the drawn surface ends on screen) re-weights the pixels it crosses by the
- * surface's coverage of them.  render.c drives it: silk_aa_begin for the
+ * After a band is drawn, each outline of the frame (silhouette segments,
+ * and the coarse mesh's silhouette edges) re-weights the pixels it crosses
+ * by the surface's coverage of them.  render.c drives it: silk_aa_begin for the
  * band, silk_aa_share for every input triangle's share that can hold an
  * outline (silk_aa_candidate), silk_aa_finish to write the pixels.
  */
@@ -36,6 +36,7 @@ typedef struct silk_aa {
     silk_aa_pt *pt;   uint32_t npt;   /* per record of one share */
     silk_aa_pt *walk;             /* scratch for one side: the points of the curve walked (SILK_AA_WALK) */
     silk_vertex_out *out;         /* scratch: one point of a curve through the vertex stage */
+    silk_curve *curve;            /* scratch: a point off a silhouette segment (its normal on screen) */
     /* SMOOTH frames (set by the caller after silk_aa_begin; sil NULL otherwise): the
      * plan, which says where a share's silhouette segment is, and the vertex stage
      * h with the frame's geom, which projects points of its curve */
@@ -58,16 +59,15 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
 
 /* Whether input triangle t's share can hold an outline side: a side of t
  * against nothing or between a front- and a back-facing triangle, or (with
- * a SMOOTH plan f) a silhouette triangle, whose share folds along its
- * silhouette segment. */
+ * a SMOOTH plan f) a silhouette triangle, whose segment is an outline. */
 int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t);
 
 /* The outline sides of input triangle t's share g (out: its vertex-stage
  * output per record), walked over the band: a share that is t as it is
- * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate; a
- * re-meshed share along every side its triangles share facing opposite
- * ways on screen, its coverage from the silhouette segment's curve (eq. 5)
- * where the side is a chord of it. */
+ * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate (in
+ * SMOOTH not the sides against a silhouette triangle); a silhouette
+ * triangle's share along its silhouette segment, every chord, with the
+ * coverage of the segment's curve (eq. 5). */
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
                    const silk_vertex_out *out, uint32_t t);
 

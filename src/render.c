@@ -667,7 +667,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 }
 
 /* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
- * leaves them out: about 2.4 KiB of Cortex-M3 code and a band's worth of
+ * leaves them out: about 3.0 KiB of Cortex-M3 code and a band's worth of
  * scratch): the frames drawn
  * share by share (FLAT and SMOOTH without lines; CLIP's outline is the
  * map's, anti-aliased by clip.c), not under --wire's edges.  The shares that can
