@@ -151,6 +151,16 @@ typedef struct silk_sil_frame {
     const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
     silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
     uint32_t tan_next;
+#ifndef SILK_NO_VERTEX_CACHE
+    /* Segments kept (silk_remesh_keep): seg_kept[i] is the segment of
+     * silhouette triangle seg_tri[i], ascending, as silk_remesh_plan made
+     * it; kept_bytes the arena they and the tangents kept with them take,
+     * kept_peak the arena's high-water before (0: nothing kept). */
+    silk_sil_seg *seg_kept;
+    uint32_t *seg_tri;
+    uint32_t nseg_kept;
+    size_t kept_bytes, kept_peak;
+#endif
 } silk_sil_frame;
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs

@@ -170,8 +170,49 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     }
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* Triangle t's kept segment (silk_remesh_keep), or NULL. */
+static const silk_sil_seg *seg_kept(const silk_sil_frame *f, uint32_t t)
+{
+    uint32_t lo = 0, hi = f->nseg_kept;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
+    }
+    return lo < f->nseg_kept && f->seg_tri[lo] == t ? &f->seg_kept[lo] : NULL;
+}
+
+size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
+{
+    silk_arena *a = f->a;
+    size_t free0 = silk_arena_free_bytes(a),
+           want = 2 * (size_t)f->nedges * sizeof(silk_vec3) + (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri) +
+                  3 * SILK_ARENA_ALIGN;
+    /* half of what is left at most: the rest of the plan and the frame come after */
+    if (!f->nsil || f->kept_bytes || want > room || want > free0 / 2) return 0;
+    size_t peak = a->top_peak;
+    f->seg_kept = silk_arena_array_top(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);
+    f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
+    if (!f->seg_kept || !f->seg_tri || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
+        f->seg_kept = NULL;
+        f->seg_tri = NULL;
+    }
+    f->nseg_kept = 0;
+    f->kept_peak = peak;
+    f->kept_bytes = free0 - silk_arena_free_bytes(a);
+    return f->kept_bytes;
+}
+#endif
+
 int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
 {
+#ifndef SILK_NO_VERTEX_CACHE
+    const silk_sil_seg *kept = seg_kept(f, t);
+    if (kept) {
+        *s = *kept;
+        return 1;
+    }
+#endif
     const silk_mesh *m = f->m;
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE, kb = (lone + 2) % 3;
     const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, kb);
@@ -225,6 +266,12 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &tmp)) {
             s = &tmp;
             f->nsegs++;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (f->seg_kept && f->nseg_kept < f->nsil) {   /* ascending: t is past every kept one */
+                f->seg_tri[f->nseg_kept] = t;
+                f->seg_kept[f->nseg_kept++] = tmp;
+            }
+#endif
         }
         tri_count tc;
         tri_cost(f, t, s, &tc);
