@@ -43,7 +43,8 @@ enum {
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
     SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
     SILK_TS_CONCAVE = 16,   /* its silhouette segment is concave (III-E; set by remesh.c) */
-    SILK_TS_CARRY0 = 32     /* << k: side k lies on a carrying edge (whole triangles only) */
+    SILK_TS_CARRY0 = 32,    /* << k: side k lies on a carrying edge (whole triangles only) */
+    SILK_TS_CARRY = 7 * SILK_TS_CARRY0   /* mask: any side; without it and SIL a triangle is drawn as it is */
 };
 
 /* A silhouette point (eqs. 6-7): one normal pair on one edge.  Its place
