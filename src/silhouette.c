@@ -46,6 +46,8 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
 #ifndef SILK_NO_AA
 static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 
+static int32_t abs32(int32_t v) { return v < 0 ? -v : v; }   /* |v| < 2^31 here */
+
 /* The smallest s with v >> s below 2^14. */
 static int cut14(uint64_t v)
 {
@@ -72,24 +74,26 @@ static int cut14(uint64_t v)
  * 0.4 KiB of Cortex-M3 code the shortcut takes. */
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
-    for (int k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] >= m->nverts) return 0;
-    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+    const silk_index *tv = &m->tri[3 * t];
+    if (tv[0] >= m->nverts || tv[1] >= m->nverts || tv[2] >= m->nverts) return 0;
+    silk_vec3 p0 = m->pos[tv[0]];
 #ifndef SILK_NO_AA
-    const int64_t ev[3] = { e.x, e.y, e.z };
-    int64_t c[3];
-    silk_tri_cross64(m, t, c);
-    uint64_t bc = mag(c[0]) | mag(c[1]) | mag(c[2]), be = mag(ev[0]) | mag(ev[1]) | mag(ev[2]);
-    int sc = cut14(bc), se = cut14(be);
-    int32_t d = 0;                  /* |c_i|, |e_i| < 2^14: d below 2^30 */
-    uint32_t n1 = 0, e1 = 0;        /* |c| |e| <= n1 e1 < 2^32 */
-    for (int i = 0; i < 3; i++) {
-        int32_t ci = (int32_t)(c[i] >> sc), ei = (int32_t)(ev[i] >> se);
-        d += ci * ei;
-        n1 += (uint32_t)(ci < 0 ? -ci : ci);
-        e1 += (uint32_t)(ei < 0 ? -ei : ei);
-    }
-    if ((uint32_t)(d < 0 ? -d : d) > (n1 * e1 >> 8)) return d > 0;
+    /* silk_view_to_eye and silk_tri_cross64, inline: asked of every triangle every frame */
+    silk_vec3 e = v->cam.ortho ? silk_v3_neg(v->forward) : silk_v3_sub(v->cam.eye, p0);
+    silk_vec3 p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
+    int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
+    int64_t bx = (int64_t)p2.x - p0.x, by = (int64_t)p2.y - p0.y, bz = (int64_t)p2.z - p0.z;
+    int64_t c0 = ay * bz - az * by, c1 = az * bx - ax * bz, c2 = ax * by - ay * bx;
+    int sc = cut14(mag(c0) | mag(c1) | mag(c2)), se = cut14(mag(e.x) | mag(e.y) | mag(e.z));
+    /* |c_i|, |e_i| < 2^14: d below 2^30; |c| |e| <= n1 e1 < 2^32 */
+    int32_t x0 = (int32_t)(c0 >> sc), x1 = (int32_t)(c1 >> sc), x2 = (int32_t)(c2 >> sc);
+    int32_t y0 = e.x >> se, y1 = e.y >> se, y2 = e.z >> se;
+    int32_t d = x0 * y0 + x1 * y1 + x2 * y2;
+    uint32_t n1 = (uint32_t)abs32(x0) + (uint32_t)abs32(x1) + (uint32_t)abs32(x2),
+             e1 = (uint32_t)abs32(y0) + (uint32_t)abs32(y1) + (uint32_t)abs32(y2);
+    if ((uint32_t)abs32(d) > (n1 * e1 >> 8)) return d > 0;
+#else
+    silk_vec3 e = silk_view_to_eye(v, p0);
 #endif
     silk_vec3 fn = silk_mesh_face_normal(m, t);
     return silk_v3_dot64(fn, e) > 0;
