@@ -243,17 +243,18 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
 static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
 {
     const silk_mesh *m = f->geom.mesh;
-    uint32_t a = r->a;
-    if (a / 3 < m->ntris && m->tri_normal[a] < m->nnormals) {
-        uint32_t n = m->tri_normal[a], v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
+    uint32_t a = r->a, n;
+    if (a / 3 < m->ntris && (n = m->tri_normal[a]) < m->nnormals) {
+        uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
         uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
+        silk_vertex_out *slot = &f->vc[s];
         if (tag[0] != n || tag[1] != v || tag[2] != uv) {
-            f->hal->vertex(f->hal, &f->geom, r, &f->vc[s]);
+            f->hal->vertex(f->hal, &f->geom, r, slot);
             tag[0] = n;
             tag[1] = v;
             tag[2] = uv;
         }
-        *out = f->vc[s];
+        *out = *slot;
         return;
     }
     f->hal->vertex(f->hal, &f->geom, r, out);
@@ -275,12 +276,18 @@ static void share_part(frame *f, uint32_t t)
     else silk_frame_flat_emit_tri(g, t);
     silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
     t0 = silk_stage_start(f->clock);
-    f->plain = g->ntri == 1;
-    for (uint32_t i = 0; i < g->nvrec; i++) {
-        f->plain &= g->vrec[i].kind == SILK_VREC_CORNER;
-        if (VERTEX_CACHED(f) && g->vrec[i].kind == SILK_VREC_CORNER) corner_cached(f, &g->vrec[i], &f->cache[i]);
-        else f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
+    /* in locals: the stores into the cache could alias f's and g's fields */
+    const silk_vrec *r = g->vrec;
+    silk_vertex_out *out = f->cache;
+    uint32_t n = g->nvrec;
+    int plain = g->ntri == 1;
+    for (uint32_t i = 0; i < n; i++) {
+        int corner = r[i].kind == SILK_VREC_CORNER;
+        plain &= corner;
+        if (VERTEX_CACHED(f) && corner) corner_cached(f, &r[i], &out[i]);
+        else f->hal->vertex(f->hal, &f->geom, &r[i], &out[i]);
     }
+    f->plain = (uint8_t)plain;
     silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
 }
 
