@@ -156,11 +156,12 @@ typedef struct silk_sil_frame {
     /* Segments kept (silk_remesh_keep): seg_kept[i] is the segment of
      * silhouette triangle seg_tri[i], ascending, as silk_remesh_plan made
      * it; kept_bytes the arena they and the tangents kept with them take,
-     * kept_peak the arena's high-water before (0: nothing kept). */
+     * kept_peak the arena's high-water before (0: nothing kept);
+     * keep_room the most they may take, set by the caller of the plan. */
     silk_sil_seg *seg_kept;
     uint32_t *seg_tri;
     uint32_t nseg_kept;
-    size_t kept_bytes, kept_peak;
+    size_t kept_bytes, kept_peak, keep_room;
 #endif
 } silk_sil_frame;
 

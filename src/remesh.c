@@ -262,10 +262,12 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     f->seg_samples = 0;
     f->out_tris = m->ntris;
     for (uint32_t t = 0; t < m->ntris; t++) {
+#ifndef SILK_NO_VERTEX_CACHE   /* (a host's shortcut: a small part keeps the code bytes) */
         if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {   /* most: as it is (tri_cost's three corners) */
             f->store_recs += 3;
             continue;
         }
+#endif
         silk_sil_seg tmp, *s = NULL;
         if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &tmp)) {
             s = &tmp;
@@ -525,7 +527,10 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         return;
     }
     uint32_t nchained = 0;
-    for (uint32_t k = 0; k < 3 && (f->tri_state[t] & SILK_TS_CARRY); k++) nchained += side_points(f, t, k) > 0;
+#ifndef SILK_NO_VERTEX_CACHE   /* (the same shortcut) */
+    if (f->tri_state[t] & SILK_TS_CARRY)
+#endif
+        for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
     if (nchained == 0) {                            /* as it is: what walk_boundary gives, directly */
         uint32_t c0 = put_corner(f, g, 3 * t), c1 = put_corner(f, g, 3 * t + 1);
         put_tri(g, c0, c1, put_corner(f, g, 3 * t + 2), 0);

@@ -176,17 +176,7 @@ static int by_shares(const silk_render_opts *o)
 
 static void share_part(frame *f, uint32_t t);
 
-/* The bytes the SMOOTH plan kept for speed (silk_remesh_keep), and the
- * arena's high-water before them. */
-static size_t plan_kept(const frame *f)
-{
-#ifndef SILK_NO_VERTEX_CACHE
-    return f->sil.kept_bytes;
-#else
-    (void)f;
-    return 0;
-#endif
-}
+
 
 static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                   const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
@@ -202,15 +192,23 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         silk_arena_mark mark = silk_arena_top_mark(a);
         /* the plan's time without the visibility test's, which is inside it */
         uint32_t vis0 = f->clock ? f->clock->ticks[SILK_STAGE_VISIBILITY] : 0, t0 = silk_stage_start(f->clock);
-        size_t keep = o->vertex_cache_bytes, peak0 = a->top_peak;
+#ifndef SILK_NO_VERTEX_CACHE
+        size_t peak0 = a->top_peak;
+        f->sil.keep_room = o->vertex_cache_bytes;   /* silk_remesh_keep's budget: the vertex cache's */
+#endif
         for (;;) {
-            f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, f->clock, keep, &f->sil, &f->g) &&
+            f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, f->clock, &f->sil, &f->g) &&
                         (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
-            if (f->smooth || !plan_kept(f)) break;
-            /* what the plan kept for speed took room the frame needs: again without */
-            silk_arena_top_release(a, &mark);
-            a->top_peak = peak0;
-            keep = 0;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (!f->smooth && f->sil.kept_bytes) {
+                /* what the plan kept for speed took room the frame needs: again without */
+                silk_arena_top_release(a, &mark);
+                a->top_peak = peak0;
+                f->sil.keep_room = 0;
+                continue;
+            }
+#endif
+            break;
         }
         silk_stage_stop(f->clock, SILK_STAGE_PLAN, t0);
         if (f->clock) f->clock->ticks[SILK_STAGE_PLAN] -= f->clock->ticks[SILK_STAGE_VISIBILITY] - vis0;
@@ -762,7 +760,7 @@ static size_t frame_need(const frame *f, const silk_arena *a, const silk_arena_m
     size_t need = after > f->peak_before ? after : f->peak_before;
 #ifndef SILK_NO_VERTEX_CACHE
     /* what the plan kept lies under everything taken after it (silk_remesh_keep) */
-    if (plan_kept(f)) {
+    if (f->sil.kept_bytes) {
         need -= f->sil.kept_bytes;
         if (need < f->sil.kept_peak) need = f->sil.kept_peak;
     }

@@ -74,13 +74,13 @@ static int cut14(uint64_t v)
  * 0.4 KiB of Cortex-M3 code the shortcut takes. */
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
-    const silk_index *tv = &m->tri[3 * t];
-    if (tv[0] >= m->nverts || tv[1] >= m->nverts || tv[2] >= m->nverts) return 0;
-    silk_vec3 p0 = m->pos[tv[0]];
+    for (int k = 0; k < 3; k++)
+        if (m->tri[3 * t + k] >= m->nverts) return 0;
 #ifndef SILK_NO_AA
     /* silk_view_to_eye and silk_tri_cross64, inline: asked of every triangle every frame */
+    const silk_index *tv = &m->tri[3 * t];
+    silk_vec3 p0 = m->pos[tv[0]], p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
     silk_vec3 e = v->cam.ortho ? silk_v3_neg(v->forward) : silk_v3_sub(v->cam.eye, p0);
-    silk_vec3 p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
     int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
     int64_t bx = (int64_t)p2.x - p0.x, by = (int64_t)p2.y - p0.y, bz = (int64_t)p2.z - p0.z;
     int64_t c0 = ay * bz - az * by, c1 = az * bx - ax * bz, c2 = ax * by - ay * bx;
@@ -93,7 +93,7 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
              e1 = (uint32_t)abs32(y0) + (uint32_t)abs32(y1) + (uint32_t)abs32(y2);
     if ((uint32_t)abs32(d) > (n1 * e1 >> 8)) return d > 0;
 #else
-    silk_vec3 e = silk_view_to_eye(v, p0);
+    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
 #endif
     silk_vec3 fn = silk_mesh_face_normal(m, t);
     return silk_v3_dot64(fn, e) > 0;

@@ -29,8 +29,11 @@ silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view
 /* The plan of a frame (silhouette.c, remesh.c, perturb.c) into f, from the
  * top of the arena, and the perturbation; 0 when it does not fit. */
 static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
-                     silk_fx tolerance_px, silk_vis_method vis, silk_stage_clock *clock, size_t keep_room)
+                     silk_fx tolerance_px, silk_vis_method vis, silk_stage_clock *clock)
 {
+#ifndef SILK_NO_VERTEX_CACHE
+    size_t keep_room = f->keep_room;   /* the caller's, the one field it sets */
+#endif
     memset(f, 0, sizeof *f);
     f->clock = clock;
     f->a = a;
@@ -41,8 +44,6 @@ static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const
     if (silk_sil_find(f) != SILK_OK) return 0;
 #ifndef SILK_NO_VERTEX_CACHE
     silk_remesh_keep(f, keep_room);
-#else
-    (void)keep_room;
 #endif
     return silk_remesh_plan(f) == SILK_OK && silk_perturb_alloc(f) && silk_perturb(f);
 }
@@ -60,7 +61,10 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_sil_frame f;
-    if (!make_plan(&f, a, m, v, tolerance_px, vis, NULL, 0) || !silk_remesh_store(&f, g)) {
+#ifndef SILK_NO_VERTEX_CACHE
+    f.keep_room = 0;   /* a stored frame keeps nothing for speed */
+#endif
+    if (!make_plan(&f, a, m, v, tolerance_px, vis, NULL) || !silk_remesh_store(&f, g)) {
         silk_status st = silk_frame_fall_back(a, m, &mark, g, stats, err);
         if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) silk_frame_fell_short(stats);
         return st;
@@ -71,11 +75,11 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 }
 
 int silk_frame_smooth_plan(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                           silk_vis_method vis, silk_stage_clock *clock, size_t keep_room, silk_sil_frame *f,
+                           silk_vis_method vis, silk_stage_clock *clock, silk_sil_frame *f,
                            silk_frame_geom *local)
 {
     silk_arena_mark mark = silk_arena_top_mark(a);
-    if (make_plan(f, a, m, v, tolerance_px, vis, clock, keep_room) && silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves))
+    if (make_plan(f, a, m, v, tolerance_px, vis, clock) && silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves))
         return 1;
     silk_arena_top_release(a, &mark);
     return 0;
