@@ -162,6 +162,7 @@ typedef struct silk_sil_frame {
     uint32_t *seg_tri;
     uint32_t nseg_kept;
     size_t kept_bytes, kept_peak, keep_room;
+    uint64_t kept_recs, kept_tris, kept_curves;   /* what the kept segments' shares hold in all */
 #endif
 } silk_sil_frame;
 

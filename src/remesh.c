@@ -171,15 +171,21 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* Triangle t's kept segment (silk_remesh_keep), or NULL. */
-static const silk_sil_seg *seg_kept(const silk_sil_frame *f, uint32_t t)
+uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 {
     uint32_t lo = 0, hi = f->nseg_kept;
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;
         if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
     }
-    return lo < f->nseg_kept && f->seg_tri[lo] == t ? &f->seg_kept[lo] : NULL;
+    return lo < f->nseg_kept && f->seg_tri[lo] == t ? lo : SILK_SIL_NONE;
+}
+
+/* Triangle t's kept segment (silk_remesh_keep), or NULL. */
+static const silk_sil_seg *seg_kept(const silk_sil_frame *f, uint32_t t)
+{
+    uint32_t i = silk_remesh_kept_index(f, t);
+    return i == SILK_SIL_NONE ? NULL : &f->seg_kept[i];
 }
 
 size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
@@ -281,6 +287,13 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         }
         tri_count tc;
         tri_cost(f, t, s, &tc);
+#ifndef SILK_NO_VERTEX_CACHE
+        if (s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t) {
+            f->kept_recs += tc.recs;
+            f->kept_tris += tc.tris;
+            f->kept_curves += tc.curves;
+        }
+#endif
         f->store_recs += tc.recs;
         f->store_curves += tc.curves;
         f->out_tris += tc.tris - 1;

@@ -17,6 +17,8 @@ silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments counted, costs 
  * f->kept_bytes).  Not in a build with -DSILK_NO_VERTEX_CACHE. */
 #ifndef SILK_NO_VERTEX_CACHE
 size_t silk_remesh_keep(silk_sil_frame *f, size_t room);
+/* Where silhouette triangle t's segment is kept (seg_tri), or SILK_SIL_NONE. */
+uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t);
 #endif
 /* The silhouette segment of silhouette triangle t; 0 when a silhouette
  * point is missing (silhouette.c gives every silhouette triangle both). */
