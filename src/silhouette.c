@@ -60,6 +60,27 @@ static int cut14(uint64_t v)
     return s;
 #endif
 }
+
+/* silk_view_to_eye and silk_tri_cross64 for triangle t.  A host build has
+ * them inline (the outline asks every triangle every frame); a board's
+ * (-DSILK_NO_VERTEX_CACHE) calls them and keeps the code bytes. */
+static silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t, int64_t c[3])
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    const silk_index *tv = &m->tri[3 * t];
+    silk_vec3 p0 = m->pos[tv[0]], p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
+    int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
+    int64_t bx = (int64_t)p2.x - p0.x, by = (int64_t)p2.y - p0.y, bz = (int64_t)p2.z - p0.z;
+    c[0] = ay * bz - az * by;
+    c[1] = az * bx - ax * bz;
+    c[2] = ax * by - ay * bx;
+    return v->cam.ortho ? silk_v3_neg(v->forward) : silk_v3_sub(v->cam.eye, p0);
+#else
+    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+    silk_tri_cross64(m, t, c);
+    return e;
+#endif
+}
 #endif
 
 /* The face normal is normalised (a square root) before the dot product
@@ -77,16 +98,11 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
     for (int k = 0; k < 3; k++)
         if (m->tri[3 * t + k] >= m->nverts) return 0;
 #ifndef SILK_NO_AA
-    /* silk_view_to_eye and silk_tri_cross64, inline: asked of every triangle every frame */
-    const silk_index *tv = &m->tri[3 * t];
-    silk_vec3 p0 = m->pos[tv[0]], p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
-    silk_vec3 e = v->cam.ortho ? silk_v3_neg(v->forward) : silk_v3_sub(v->cam.eye, p0);
-    int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
-    int64_t bx = (int64_t)p2.x - p0.x, by = (int64_t)p2.y - p0.y, bz = (int64_t)p2.z - p0.z;
-    int64_t c0 = ay * bz - az * by, c1 = az * bx - ax * bz, c2 = ax * by - ay * bx;
-    int sc = cut14(mag(c0) | mag(c1) | mag(c2)), se = cut14(mag(e.x) | mag(e.y) | mag(e.z));
-    /* |c_i|, |e_i| < 2^14: d below 2^30; |c| |e| <= n1 e1 < 2^32 */
-    int32_t x0 = (int32_t)(c0 >> sc), x1 = (int32_t)(c1 >> sc), x2 = (int32_t)(c2 >> sc);
+    int64_t c[3];
+    silk_vec3 e = front_inputs(m, v, t, c);
+    int sc = cut14(mag(c[0]) | mag(c[1]) | mag(c[2])), se = cut14(mag(e.x) | mag(e.y) | mag(e.z));
+    /* |c_i|, |e_i| < 2^14: d below 2^30; |c| |e| <= n1 e1 < 2^32 (written out: every triangle, every frame) */
+    int32_t x0 = (int32_t)(c[0] >> sc), x1 = (int32_t)(c[1] >> sc), x2 = (int32_t)(c[2] >> sc);
     int32_t y0 = e.x >> se, y1 = e.y >> se, y2 = e.z >> se;
     int32_t d = x0 * y0 + x1 * y1 + x2 * y2;
     uint32_t n1 = (uint32_t)abs32(x0) + (uint32_t)abs32(x1) + (uint32_t)abs32(x2),
