@@ -194,8 +194,7 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
     size_t free0 = silk_arena_free_bytes(a),
            want = 2 * (size_t)f->nedges * sizeof(silk_vec3) + (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri) +
                   3 * SILK_ARENA_ALIGN;
-    /* half of what is left at most: the rest of the plan and the frame come after */
-    if (!f->nsil || f->kept_bytes || want > room || want > free0 / 2) return 0;
+    if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
     f->seg_kept = silk_arena_array_top(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);
     f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
@@ -204,9 +203,8 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
         f->seg_tri = NULL;
     }
     f->nseg_kept = 0;
-    f->kept_peak = peak;
-    f->kept_bytes = free0 - silk_arena_free_bytes(a);
-    return f->kept_bytes;
+    silk_sil_kept(f, free0, peak);
+    return free0 - silk_arena_free_bytes(a);
 }
 #endif
 

@@ -13,8 +13,8 @@ silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments counted, costs 
  * allow: every carrying edge's tangents kept (silk_sil_keep_tangents) and
  * room for every silhouette triangle's segment, which silk_remesh_plan
  * keeps as it makes them and silk_remesh_seg then reads instead of
- * rebuilding (the same bits).  Returns the bytes taken (0: none; also
- * f->kept_bytes).  Not in a build with -DSILK_NO_VERTEX_CACHE. */
+ * rebuilding (the same bits).  Returns the bytes taken (0: none; counted
+ * in f->kept_bytes).  Not in a build with -DSILK_NO_VERTEX_CACHE. */
 #ifndef SILK_NO_VERTEX_CACHE
 size_t silk_remesh_keep(silk_sil_frame *f, size_t room);
 /* Where silhouette triangle t's segment is kept (seg_tri), or SILK_SIL_NONE. */

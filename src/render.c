@@ -882,7 +882,7 @@ static size_t frame_need(const frame *f, const silk_arena *a, const silk_arena_m
     /* what the plan kept lies under everything taken after it (silk_remesh_keep) */
     if (f->sil.kept_bytes) {
         need -= f->sil.kept_bytes;
-        if (need < f->sil.kept_peak) need = f->sil.kept_peak;
+        if (need < f->sil.kept_need) need = f->sil.kept_need;
     }
 #endif
     return need - mark->top;

@@ -328,8 +328,30 @@ static silk_status find_triangles(silk_sil_frame *f)
     f->nedges = nwork;
     silk_arena_top_release(a, &mark);
     f->visible = NULL;
+#ifndef SILK_NO_VERTEX_CACHE
+    /* the carrying edges ranked, where there is room (silk_sil_slot) */
+    size_t free0 = silk_arena_free_bytes(a), peak = a->top_peak;
+    size_t want = bits * sizeof *f->carry_rank + SILK_ARENA_ALIGN;
+    if (want <= f->keep_room && silk_sil_keep_fits(want, free0) &&
+        (f->carry_rank = silk_arena_array_top(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
+        for (size_t i = 0, r = 0; i < bits; i++) {
+            f->carry_rank[i] = (uint32_t)r;
+            for (unsigned b = f->carrying[i]; b; b &= b - 1) r++;
+        }
+        silk_sil_kept(f, free0, peak);
+    }
+#endif
     return SILK_OK;
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak)
+{
+    size_t need = peak - f->kept_bytes;   /* the high-water so far without what was kept before */
+    if (need > f->kept_need) f->kept_need = need;
+    f->kept_bytes += free0 - silk_arena_free_bytes(f->a);
+}
+#endif
 
 /* Whether silhouette side k of triangle t, on mesh edge e, gives the same
  * silhouette point as a silhouette side of the edge's other triangle, met

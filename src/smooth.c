@@ -41,9 +41,12 @@ static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const
     f->v = v;
     f->tol = tolerance_px;
     f->vis = vis;
+#ifndef SILK_NO_VERTEX_CACHE
+    f->keep_room = keep_room;
+#endif
     if (silk_sil_find(f) != SILK_OK) return 0;
 #ifndef SILK_NO_VERTEX_CACHE
-    silk_remesh_keep(f, keep_room);
+    silk_remesh_keep(f, keep_room > f->kept_bytes ? keep_room - f->kept_bytes : 0);
 #endif
     return silk_remesh_plan(f) == SILK_OK && silk_perturb_alloc(f) && silk_perturb(f);
 }

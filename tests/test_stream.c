@@ -322,9 +322,9 @@ static int lit_view(const silk_mesh *m, double yaw, double pitch, int w, int h, 
  * keep_tangents): none, some or all of them, the same pixels and the same
  * need.  The arena's free space is cut to the frame's need plus a margin
  * by a block taken from the top before the frame.  Then the same with the
- * vertex cache's budget, under which the plan keeps its segments and
- * tangents (silk_remesh_keep) where they leave room, and is made again
- * without them where they do not (margins around the need). */
+ * vertex cache's budget, under which the plan also keeps its edge ranks,
+ * segments and tangents where the arena is roomy (silk_remesh_keep: the
+ * whole arena) and none where it is cut. */
 TEST(kept_tangents_change_no_pixel)
 {
     enum { W = 320, H = 240, ROWS = 4 };
