@@ -224,7 +224,8 @@ uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos
 
 /* The slot of mesh edge `edge` in edges[], or SILK_SIL_NONE: a bit, then a
  * binary search of the carrying edges (a bit per mesh edge instead of a
- * slot index: the plan's RAM). */
+ * slot index: the plan's RAM), or the count of carrying edges before it
+ * where their rank is kept (carry_rank). */
 static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 {
     if (!(f->carrying[edge >> 3] & (1u << (edge & 7)))) return SILK_SIL_NONE;

@@ -28,7 +28,11 @@
  * draws flat and smooth frames without them.  -DSILK_NO_VERTEX_CACHE leaves
  * out the vertex cache's code (a board whose arena has no bytes to spare
  * for it sets silk_render_opts.vertex_cache_bytes to 0 and draws the same
- * pixels without it).
+ * pixels without it), and with it the other shortcuts that only a roomy
+ * arena or a host's code size affords: what the SMOOTH plan keeps
+ * (silk_remesh_keep, the carrying edges' rank), the kept shares
+ * (keep_shares), the emitter's skip of triangles with nothing on their
+ * sides.
  */
 #include <string.h>
 #include "smooth.h"
