@@ -43,7 +43,8 @@ enum {
     SILK_TS_SIL = 4,        /* silhouette triangle: its corner normals disagree */
     SILK_TS_FRONT = 8,      /* front-facing (computed only for triangles with a feature side) */
     SILK_TS_CONCAVE = 16,   /* its silhouette segment is concave (III-E; set by remesh.c) */
-    SILK_TS_CARRY0 = 32     /* << k: side k lies on a carrying edge (whole triangles only) */
+    SILK_TS_CARRY0 = 32,    /* << k: side k lies on a carrying edge (whole triangles only) */
+    SILK_TS_CARRY = 7 * SILK_TS_CARRY0   /* mask: any side; without it and SIL a triangle is drawn as it is */
 };
 
 /* A silhouette point (eqs. 6-7): one normal pair on one edge.  Its place
@@ -151,7 +152,39 @@ typedef struct silk_sil_frame {
     const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
     silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
     uint32_t tan_next;
+#ifndef SILK_NO_VERTEX_CACHE
+    /* What the plan keeps for speed where the arena has room, none of it
+     * part of the frame's need (silk_sil_kept): carry_rank, per byte of
+     * carrying the carrying edges before it (silk_sil_slot without a
+     * search); the segments (silk_remesh_keep), seg_kept[i] that of
+     * silhouette triangle seg_tri[i], ascending, as silk_remesh_plan made
+     * it.  kept_bytes is the arena they take, kept_need what the frame
+     * needed before them (0: nothing kept); keep_room the most they may
+     * take, set by the caller of the plan. */
+    uint32_t *carry_rank;
+    silk_sil_seg *seg_kept;
+    uint32_t *seg_tri;
+    uint32_t nseg_kept;
+    size_t kept_bytes, kept_need, keep_room;
+    uint64_t kept_recs, kept_tris, kept_curves;   /* what the kept segments' shares hold in all */
+#endif
 } silk_sil_frame;
+
+#ifndef SILK_NO_VERTEX_CACHE
+/* Counts what the plan took from the arena since it had free0 bytes free
+ * and the high-water peak as kept for speed (kept_bytes, kept_need). */
+void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak);
+
+/* Whether the plan may keep want more bytes for speed with free0 free: a
+ * sixteenth at most, and a mebibyte left, so that what the frame still
+ * takes after the plan (a band's rows, the outline's scratch) finds the
+ * room it finds without them.  A plan that then does not fit is made
+ * again without (render.c). */
+static inline int silk_sil_keep_fits(size_t want, size_t free0)
+{
+    return want <= free0 / 16 && free0 - want >= ((size_t)1 << 20);
+}
+#endif
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs
  * out. */
@@ -191,10 +224,23 @@ uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos
 
 /* The slot of mesh edge `edge` in edges[], or SILK_SIL_NONE: a bit, then a
  * binary search of the carrying edges (a bit per mesh edge instead of a
- * slot index: the plan's RAM). */
+ * slot index: the plan's RAM), or the count of carrying edges before it
+ * where their rank is kept (carry_rank). */
 static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 {
     if (!(f->carrying[edge >> 3] & (1u << (edge & 7)))) return SILK_SIL_NONE;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (f->carry_rank) {
+        unsigned below = f->carrying[edge >> 3] & ((1u << (edge & 7)) - 1);
+#if defined(__GNUC__)
+        return f->carry_rank[edge >> 3] + (uint32_t)__builtin_popcount(below);
+#else
+        uint32_t r = f->carry_rank[edge >> 3];
+        for (; below; below &= below - 1) r++;
+        return r;
+#endif
+    }
+#endif
     uint32_t lo = 0, hi = f->nedges;
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;

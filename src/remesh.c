@@ -170,8 +170,53 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     }
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
+{
+    uint32_t lo = 0, hi = f->nseg_kept;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
+    }
+    return lo < f->nseg_kept && f->seg_tri[lo] == t ? lo : SILK_SIL_NONE;
+}
+
+/* Triangle t's kept segment (silk_remesh_keep), or NULL. */
+static const silk_sil_seg *seg_kept(const silk_sil_frame *f, uint32_t t)
+{
+    uint32_t i = silk_remesh_kept_index(f, t);
+    return i == SILK_SIL_NONE ? NULL : &f->seg_kept[i];
+}
+
+size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
+{
+    silk_arena *a = f->a;
+    size_t free0 = silk_arena_free_bytes(a),
+           want = 2 * (size_t)f->nedges * sizeof(silk_vec3) + (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri) +
+                  3 * SILK_ARENA_ALIGN;
+    if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
+    size_t peak = a->top_peak;
+    f->seg_kept = silk_arena_array_top(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);
+    f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
+    if (!f->seg_kept || !f->seg_tri || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
+        f->seg_kept = NULL;
+        f->seg_tri = NULL;
+    }
+    f->nseg_kept = 0;
+    silk_sil_kept(f, free0, peak);
+    return free0 - silk_arena_free_bytes(a);
+}
+#endif
+
 int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
 {
+#ifndef SILK_NO_VERTEX_CACHE
+    const silk_sil_seg *kept = seg_kept(f, t);
+    if (kept) {
+        *s = *kept;
+        return 1;
+    }
+#endif
     const silk_mesh *m = f->m;
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE, kb = (lone + 2) % 3;
     const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, kb);
@@ -221,13 +266,32 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     f->seg_samples = 0;
     f->out_tris = m->ntris;
     for (uint32_t t = 0; t < m->ntris; t++) {
+#ifndef SILK_NO_VERTEX_CACHE   /* (a host's shortcut: a small part keeps the code bytes) */
+        if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {   /* most: as it is (tri_cost's three corners) */
+            f->store_recs += 3;
+            continue;
+        }
+#endif
         silk_sil_seg tmp, *s = NULL;
         if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &tmp)) {
             s = &tmp;
             f->nsegs++;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (f->seg_kept && f->nseg_kept < f->nsil) {   /* ascending: t is past every kept one */
+                f->seg_tri[f->nseg_kept] = t;
+                f->seg_kept[f->nseg_kept++] = tmp;
+            }
+#endif
         }
         tri_count tc;
         tri_cost(f, t, s, &tc);
+#ifndef SILK_NO_VERTEX_CACHE
+        if (s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t) {
+            f->kept_recs += tc.recs;
+            f->kept_tris += tc.tris;
+            f->kept_curves += tc.curves;
+        }
+#endif
         f->store_recs += tc.recs;
         f->store_curves += tc.curves;
         f->out_tris += tc.tris - 1;
@@ -474,7 +538,10 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         return;
     }
     uint32_t nchained = 0;
-    for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
+#ifndef SILK_NO_VERTEX_CACHE   /* (the same shortcut) */
+    if (f->tri_state[t] & SILK_TS_CARRY)
+#endif
+        for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
     if (nchained == 0) {                            /* as it is: what walk_boundary gives, directly */
         uint32_t c0 = put_corner(f, g, 3 * t), c1 = put_corner(f, g, 3 * t + 1);
         put_tri(g, c0, c1, put_corner(f, g, 3 * t + 2), 0);

@@ -28,7 +28,11 @@
  * draws flat and smooth frames without them.  -DSILK_NO_VERTEX_CACHE leaves
  * out the vertex cache's code (a board whose arena has no bytes to spare
  * for it sets silk_render_opts.vertex_cache_bytes to 0 and draws the same
- * pixels without it).
+ * pixels without it), and with it the other shortcuts that only a roomy
+ * arena or a host's code size affords: what the SMOOTH plan keeps
+ * (silk_remesh_keep, the carrying edges' rank), the kept shares
+ * (keep_shares), the emitter's skip of triangles with nothing on their
+ * sides.
  */
 #include <string.h>
 #include "smooth.h"
@@ -131,6 +135,14 @@ typedef struct frame {
     silk_hal siltex_hal;
     silk_siltex_stage siltex_stage;
 #endif
+#ifndef SILK_NO_VERTEX_CACHE
+    /* SMOOTH: the shares of silhouette triangles as first built (keep_shares):
+     * share k of the plan's kept segments (sil.seg_tri) at ks + ks_at[k] - 1,
+     * ks_at[k] 0 until it is built */
+    uint8_t *ks;
+    uint32_t *ks_at;
+    size_t ks_cap, ks_used;
+#endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
 
@@ -176,6 +188,8 @@ static int by_shares(const silk_render_opts *o)
 
 static void share_part(frame *f, uint32_t t);
 
+
+
 static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                   const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
                                   silk_error *err)
@@ -190,8 +204,24 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         silk_arena_mark mark = silk_arena_top_mark(a);
         /* the plan's time without the visibility test's, which is inside it */
         uint32_t vis0 = f->clock ? f->clock->ticks[SILK_STAGE_VISIBILITY] : 0, t0 = silk_stage_start(f->clock);
-        f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, f->clock, &f->sil, &f->g) &&
-                    (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
+#ifndef SILK_NO_VERTEX_CACHE
+        size_t peak0 = a->top_peak;
+        f->sil.keep_room = o->vertex_cache_bytes;   /* silk_remesh_keep's budget: the vertex cache's */
+#endif
+        for (;;) {
+            f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, f->clock, &f->sil, &f->g) &&
+                        (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
+#ifndef SILK_NO_VERTEX_CACHE
+            if (!f->smooth && f->sil.kept_bytes) {
+                /* what the plan kept for speed took room the frame needs: again without */
+                silk_arena_top_release(a, &mark);
+                a->top_peak = peak0;
+                f->sil.keep_room = 0;
+                continue;
+            }
+#endif
+            break;
+        }
         silk_stage_stop(f->clock, SILK_STAGE_PLAN, t0);
         if (f->clock) f->clock->ticks[SILK_STAGE_PLAN] -= f->clock->ticks[SILK_STAGE_VISIBILITY] - vis0;
         if (f->smooth) {
@@ -223,17 +253,18 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
 static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
 {
     const silk_mesh *m = f->geom.mesh;
-    uint32_t a = r->a;
-    if (a / 3 < m->ntris && m->tri_normal[a] < m->nnormals) {
-        uint32_t n = m->tri_normal[a], v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
+    uint32_t a = r->a, n;
+    if (a / 3 < m->ntris && (n = m->tri_normal[a]) < m->nnormals) {
+        uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
         uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
+        silk_vertex_out *slot = &f->vc[s];
         if (tag[0] != n || tag[1] != v || tag[2] != uv) {
-            f->hal->vertex(f->hal, &f->geom, r, &f->vc[s]);
+            f->hal->vertex(f->hal, &f->geom, r, slot);
             tag[0] = n;
             tag[1] = v;
             tag[2] = uv;
         }
-        *out = f->vc[s];
+        *out = *slot;
         return;
     }
     f->hal->vertex(f->hal, &f->geom, r, out);
@@ -245,23 +276,92 @@ static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *o
 #define VERTEX_CACHED(f) ((f)->vc != NULL)
 #endif
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* A kept share: its counts, then its records, curves, vertex-stage output,
+ * triangles and their flags, each a multiple of 4 bytes. */
+static size_t share_bytes(uint32_t nvrec, uint32_t ntri, uint32_t ncurve)
+{
+    return 4 * sizeof(uint32_t) + (size_t)nvrec * (sizeof(silk_vrec) + sizeof(silk_vertex_out)) +
+           (size_t)ncurve * sizeof(silk_curve) + (size_t)ntri * 3 * sizeof(uint32_t) + (((size_t)ntri + 3) & ~(size_t)3);
+}
+
+/* Copy a share between the frame's (g, cache) and kept memory p: into p
+ * when out, else back. */
+static void share_copy(frame *f, uint8_t *p, int out)
+{
+    silk_frame_geom *g = &f->g;
+    uint32_t *n = (uint32_t *)(void *)p;
+    if (out) {
+        n[0] = g->nvrec;
+        n[1] = g->ntri;
+        n[2] = g->ncurve;
+        n[3] = f->plain;
+    } else {
+        g->nvrec = n[0];
+        g->ntri = n[1];
+        g->ncurve = n[2];
+        f->plain = (uint8_t)n[3];
+        g->offset = f->sil.offset;
+        g->noffset = f->sil.noffset;
+    }
+    struct { void *at; size_t bytes; } part[5] = {
+        { g->vrec, g->nvrec * sizeof *g->vrec }, { g->curve, g->ncurve * sizeof *g->curve },
+        { f->cache, g->nvrec * sizeof *f->cache }, { g->tri, 3 * (size_t)g->ntri * sizeof *g->tri },
+        { g->tri_added, g->ntri } };
+    p += 4 * sizeof(uint32_t);
+    for (int i = 0; i < 5; i++) {
+        if (out) memcpy(p, part[i].at, part[i].bytes);
+        else memcpy(part[i].at, p, part[i].bytes);
+        p += (part[i].bytes + 3) & ~(size_t)3;
+    }
+}
+
+/* Which of the kept shares input triangle t's is (SILK_SIL_NONE: none). */
+static uint32_t share_kept(const frame *f, uint32_t t)
+{
+    return f->ks && (f->sil.tri_state[t] & SILK_TS_SIL) ? silk_remesh_kept_index(&f->sil, t) : SILK_SIL_NONE;
+}
+#endif
+
 /* Input triangle t's share into g, through the vertex stage into cache. */
 static void share_part(frame *f, uint32_t t)
 {
     silk_frame_geom *g = &f->g;
     uint32_t t0 = silk_stage_start(f->clock);
+#ifndef SILK_NO_VERTEX_CACHE
+    uint32_t k = share_kept(f, t);
+    if (k != SILK_SIL_NONE && f->ks_at[k]) {   /* built before: the same records, the same output */
+        share_copy(f, f->ks + f->ks_at[k] - 1, 0);
+        silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
+        return;
+    }
+#endif
     g->nvrec = g->ntri = g->ncurve = 0;
     if (f->smooth) silk_remesh_emit_tri(&f->sil, g, t);
     else silk_frame_flat_emit_tri(g, t);
     silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
     t0 = silk_stage_start(f->clock);
-    f->plain = g->ntri == 1;
-    for (uint32_t i = 0; i < g->nvrec; i++) {
-        f->plain &= g->vrec[i].kind == SILK_VREC_CORNER;
-        if (VERTEX_CACHED(f) && g->vrec[i].kind == SILK_VREC_CORNER) corner_cached(f, &g->vrec[i], &f->cache[i]);
-        else f->hal->vertex(f->hal, &f->geom, &g->vrec[i], &f->cache[i]);
+    /* in locals: the stores into the cache could alias f's and g's fields */
+    const silk_vrec *r = g->vrec;
+    silk_vertex_out *out = f->cache;
+    uint32_t n = g->nvrec;
+    int plain = g->ntri == 1;
+    for (uint32_t i = 0; i < n; i++) {
+        int corner = r[i].kind == SILK_VREC_CORNER;
+        plain &= corner;
+        if (VERTEX_CACHED(f) && corner) corner_cached(f, &r[i], &out[i]);
+        else f->hal->vertex(f->hal, &f->geom, &r[i], &out[i]);
     }
+    f->plain = (uint8_t)plain;
     silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
+#ifndef SILK_NO_VERTEX_CACHE
+    size_t bytes = share_bytes(g->nvrec, g->ntri, g->ncurve);
+    if (k != SILK_SIL_NONE && f->ks_cap - f->ks_used >= bytes) {
+        share_copy(f, f->ks + f->ks_used, 1);
+        f->ks_at[k] = (uint32_t)f->ks_used + 1;
+        f->ks_used += bytes;
+    }
+#endif
 }
 
 /* The vertex cache (corner_cached), from at most half of the arena left
@@ -335,6 +435,53 @@ static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
     (void)o;
 #endif
     if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
+}
+
+/* SMOOTH: room for the shares of the silhouette triangles as they are
+ * first built (share_part), which a frame builds again for the depth pass
+ * and for the anti-aliased outline: under the vertex cache's budget, from
+ * half of what the arena has left beyond what the outline of a band of t
+ * takes (silk_aa_begin: its room is unchanged), as many as fit.  Not part
+ * of the frame's need either. */
+static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    uint32_t n = f->smooth ? f->sil.nseg_kept : 0;
+    if (!n || n >= UINT32_MAX / 4) return;
+    size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN;
+#ifndef SILK_NO_AA
+    reserve += 2 * (3 * ((size_t)t->width + (size_t)t->rows) * sizeof(silk_aa_px)) +
+               2 * (size_t)t->width * (silk_pixfmt_bytes(t->fmt) + sizeof(uint32_t)) +
+               ((size_t)f->sil.max_recs + SILK_AA_WALK) * sizeof(silk_aa_pt) + sizeof(silk_vertex_out);
+#else
+    (void)t;
+#endif
+    size_t budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
+    size_t room = free0 > reserve ? (free0 - reserve) / 2 : 0, per = share_bytes(f->sil.max_recs, f->sil.max_tris,
+                                                                                  f->sil.max_curves);
+    if (room > budget) room = budget;
+    if (room < (size_t)n * sizeof *f->ks_at + per + 2 * SILK_ARENA_ALIGN) return;
+    room -= (size_t)n * sizeof *f->ks_at + 2 * SILK_ARENA_ALIGN;
+    /* all of them (the plan counted what they hold; each adds its counts and padding), or what fits */
+    uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out)) * f->sil.kept_recs +
+                   (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris + 20 * (uint64_t)n;
+    size_t cap = all < room ? (size_t)all : room;
+    f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);
+    f->ks = silk_arena_alloc_top(a, cap, SILK_MEM_FRAME);
+    if (!f->ks_at || !f->ks) {
+        f->ks = NULL;
+        return;
+    }
+    memset(f->ks_at, 0, (size_t)n * sizeof *f->ks_at);
+    f->ks_cap = cap;
+    f->ks_used = 0;
+    f->vc_bytes += free0 - silk_arena_free_bytes(a);
+#else
+    (void)f;
+    (void)a;
+    (void)o;
+    (void)t;
+#endif
 }
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
@@ -715,13 +862,15 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 /* What a prepared frame may add for speed: back faces culled where they
  * cannot show, then the vertex cache and the kept tangents from what the
  * arena has left (the frame's need is its high-water before them). */
-static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
+static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o,
+                         const silk_target *t)
 {
     f->cull = back_faces_hidden(f, m, h, o);
     f->peak_before = a->top_peak;
     vertex_cache(f, a, o);
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
+    keep_shares(f, a, o, t);
 }
 
 /* The top of the arena the frame needed since mark: its high-water, the
@@ -732,7 +881,15 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
 static size_t frame_need(const frame *f, const silk_arena *a, const silk_arena_mark *mark)
 {
     size_t after = a->top_peak - f->vc_bytes - f->tan_bytes;   /* >= mark->top */
-    return (after > f->peak_before ? after : f->peak_before) - mark->top;
+    size_t need = after > f->peak_before ? after : f->peak_before;
+#ifndef SILK_NO_VERTEX_CACHE
+    /* what the plan kept lies under everything taken after it (silk_remesh_keep) */
+    if (f->sil.kept_bytes) {
+        need -= f->sil.kept_bytes;
+        if (need < f->sil.kept_need) need = f->sil.kept_need;
+    }
+#endif
+    return need - mark->top;
 }
 
 /* The rasterizer draws nothing into a frame larger than SILK_MAX_DIM (its
@@ -761,7 +918,7 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     frame f;
     silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
     if (st == SILK_OK) {
-        frame_extras(&f, a, m, h, o);
+        frame_extras(&f, a, m, h, o, t);
         frame_draw(&f, o, t);
         frame_aa(&f, a, v, o, t, stats);
         if (f.clip) stats->clip_spans = f.clip->spans;
@@ -790,7 +947,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     if (st == SILK_OK && f.nparts > 1 && rows < band->height)
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
     if (st == SILK_OK) {
-        frame_extras(&f, a, m, h, o);
+        frame_extras(&f, a, m, h, o, band);
         share_rows(&f, band->height);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {

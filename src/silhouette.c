@@ -46,6 +46,8 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
 #ifndef SILK_NO_AA
 static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 
+static int32_t abs32(int32_t v) { return v < 0 ? -v : v; }   /* |v| < 2^31 here */
+
 /* The smallest s with v >> s below 2^14. */
 static int cut14(uint64_t v)
 {
@@ -56,6 +58,27 @@ static int cut14(uint64_t v)
     int s = 0;
     while ((v >> s) >= (1u << 14)) s++;
     return s;
+#endif
+}
+
+/* silk_view_to_eye and silk_tri_cross64 for triangle t.  A host build has
+ * them inline (the outline asks every triangle every frame); a board's
+ * (-DSILK_NO_VERTEX_CACHE) calls them and keeps the code bytes. */
+static silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t, int64_t c[3])
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    const silk_index *tv = &m->tri[3 * t];
+    silk_vec3 p0 = m->pos[tv[0]], p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
+    int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
+    int64_t bx = (int64_t)p2.x - p0.x, by = (int64_t)p2.y - p0.y, bz = (int64_t)p2.z - p0.z;
+    c[0] = ay * bz - az * by;
+    c[1] = az * bx - ax * bz;
+    c[2] = ax * by - ay * bx;
+    return v->cam.ortho ? silk_v3_neg(v->forward) : silk_v3_sub(v->cam.eye, p0);
+#else
+    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+    silk_tri_cross64(m, t, c);
+    return e;
 #endif
 }
 #endif
@@ -74,22 +97,19 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
     for (int k = 0; k < 3; k++)
         if (m->tri[3 * t + k] >= m->nverts) return 0;
-    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
 #ifndef SILK_NO_AA
-    const int64_t ev[3] = { e.x, e.y, e.z };
     int64_t c[3];
-    silk_tri_cross64(m, t, c);
-    uint64_t bc = mag(c[0]) | mag(c[1]) | mag(c[2]), be = mag(ev[0]) | mag(ev[1]) | mag(ev[2]);
-    int sc = cut14(bc), se = cut14(be);
-    int32_t d = 0;                  /* |c_i|, |e_i| < 2^14: d below 2^30 */
-    uint32_t n1 = 0, e1 = 0;        /* |c| |e| <= n1 e1 < 2^32 */
-    for (int i = 0; i < 3; i++) {
-        int32_t ci = (int32_t)(c[i] >> sc), ei = (int32_t)(ev[i] >> se);
-        d += ci * ei;
-        n1 += (uint32_t)(ci < 0 ? -ci : ci);
-        e1 += (uint32_t)(ei < 0 ? -ei : ei);
-    }
-    if ((uint32_t)(d < 0 ? -d : d) > (n1 * e1 >> 8)) return d > 0;
+    silk_vec3 e = front_inputs(m, v, t, c);
+    int sc = cut14(mag(c[0]) | mag(c[1]) | mag(c[2])), se = cut14(mag(e.x) | mag(e.y) | mag(e.z));
+    /* |c_i|, |e_i| < 2^14: d below 2^30; |c| |e| <= n1 e1 < 2^32 (written out: every triangle, every frame) */
+    int32_t x0 = (int32_t)(c[0] >> sc), x1 = (int32_t)(c[1] >> sc), x2 = (int32_t)(c[2] >> sc);
+    int32_t y0 = e.x >> se, y1 = e.y >> se, y2 = e.z >> se;
+    int32_t d = x0 * y0 + x1 * y1 + x2 * y2;
+    uint32_t n1 = (uint32_t)abs32(x0) + (uint32_t)abs32(x1) + (uint32_t)abs32(x2),
+             e1 = (uint32_t)abs32(y0) + (uint32_t)abs32(y1) + (uint32_t)abs32(y2);
+    if ((uint32_t)abs32(d) > (n1 * e1 >> 8)) return d > 0;
+#else
+    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
 #endif
     silk_vec3 fn = silk_mesh_face_normal(m, t);
     return silk_v3_dot64(fn, e) > 0;
@@ -308,8 +328,30 @@ static silk_status find_triangles(silk_sil_frame *f)
     f->nedges = nwork;
     silk_arena_top_release(a, &mark);
     f->visible = NULL;
+#ifndef SILK_NO_VERTEX_CACHE
+    /* the carrying edges ranked, where there is room (silk_sil_slot) */
+    size_t free0 = silk_arena_free_bytes(a), peak = a->top_peak;
+    size_t want = bits * sizeof *f->carry_rank + SILK_ARENA_ALIGN;
+    if (want <= f->keep_room && silk_sil_keep_fits(want, free0) &&
+        (f->carry_rank = silk_arena_array_top(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
+        for (size_t i = 0, r = 0; i < bits; i++) {
+            f->carry_rank[i] = (uint32_t)r;
+            for (unsigned b = f->carrying[i]; b; b &= b - 1) r++;
+        }
+        silk_sil_kept(f, free0, peak);
+    }
+#endif
     return SILK_OK;
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak)
+{
+    size_t need = peak - f->kept_bytes;   /* the high-water so far without what was kept before */
+    if (need > f->kept_need) f->kept_need = need;
+    f->kept_bytes += free0 - silk_arena_free_bytes(f->a);
+}
+#endif
 
 /* Whether silhouette side k of triangle t, on mesh edge e, gives the same
  * silhouette point as a silhouette side of the edge's other triangle, met

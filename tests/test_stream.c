@@ -139,6 +139,7 @@ static void compare_shares(silk_arena *a, const silk_mesh *m, const silk_view *v
         return;
     }
     silk_sil_frame f;
+    f.keep_room = SIZE_MAX;   /* segments and tangents kept: the same shares */
     if (!silk_frame_smooth_plan(a, m, v, tol, SILK_VIS_AUTO, NULL, &f, &part)) {
         CHECKF(0, "the stream plan does not fit %u bytes", ARENA_BYTES);
         silk_arena_top_release(a, &mk);
@@ -320,7 +321,10 @@ static int lit_view(const silk_mesh *m, double yaw, double pitch, int w, int h, 
 /* The edge tangents a frame keeps where the arena has room (render.c,
  * keep_tangents): none, some or all of them, the same pixels and the same
  * need.  The arena's free space is cut to the frame's need plus a margin
- * by a block taken from the top before the frame. */
+ * by a block taken from the top before the frame.  Then the same with the
+ * vertex cache's budget, under which the plan also keeps its edge ranks,
+ * segments and tangents where the arena is roomy (silk_remesh_keep: the
+ * whole arena) and none where it is cut. */
 TEST(kept_tangents_change_no_pixel)
 {
     enum { W = 320, H = 240, ROWS = 4 };
@@ -341,23 +345,25 @@ TEST(kept_tangents_change_no_pixel)
     silk_target_init(&band, W, H, 0, ROWS, SILK_PIX_RGB565, band_rgb, band_depth);
     /* SIZE_MAX: the whole arena (every tangent kept); 8: none (the room
      * one allocation's alignment takes); 40: one; 1000: some 40 */
-    const size_t margin[] = { SIZE_MAX, 8, 40, 1000 };
+    const size_t margin[] = { SIZE_MAX, 8, 40, 1000, 2, 4, 8, 16, 32 };   /* from 2 on: eighths of the need */
     size_t need = 0;
     uint32_t differ = 0, lost = 0;
-    for (size_t i = 0; i < sizeof margin / sizeof margin[0]; i++) {
+    for (size_t j = 0; j < 2 * sizeof margin / sizeof margin[0]; j++) {
+        size_t i = j % (sizeof margin / sizeof margin[0]), cut = i < 4 ? margin[i] : need * margin[i] / 8;
+        o.vertex_cache_bytes = j == i ? 0 : SIZE_MAX;
         silk_arena_mark mk = silk_arena_top_mark(&a);
         size_t free0 = silk_arena_free_bytes(&a);
-        if (margin[i] != SIZE_MAX && !silk_arena_alloc_top(&a, free0 - need - margin[i], SILK_MEM_LOAD)) {
+        if (cut != SIZE_MAX && !silk_arena_alloc_top(&a, free0 - need - cut, SILK_MEM_LOAD)) {
             CHECK(0);
             continue;
         }
-        band_copy bc = { i ? img : ref, (size_t)W * 2 };
+        band_copy bc = { j ? img : ref, (size_t)W * 2 };
         silk_sink sink = { take_band, &bc };
         silk_frame_stats fs;
         silk_error err;
         if (silk_render_bands(&a, &m, &v, &hal, &o, &band, &sink, &fs, &err) != SILK_OK || fs.fell_back) lost++;
         silk_arena_top_release(&a, &mk);
-        if (i == 0) {   /* the whole arena first: the need, then the cut ones */
+        if (j == 0) {   /* the whole arena first: the need, then the cut ones */
             need = fs.frame_bytes;
             continue;
         }
