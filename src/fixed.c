@@ -58,6 +58,31 @@ static silk_fx div_round_sat(int64_t n, int64_t d)
     return ((n < 0) != (d < 0)) ? -(silk_fx)q : (silk_fx)q;
 }
 
+/* Knuth's algorithm D for two digits of 16 bits (Hacker's Delight, divlu):
+ * d is normalised so its top bit is set, then each quotient digit is
+ * estimated from the top digit of d and corrected at most twice. */
+uint32_t silk_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
+{
+    int s = clz32(d);
+    d <<= s;
+    uint64_t ns = n << s;                        /* n < d 2^32: nothing leaves the top */
+    uint32_t hi = (uint32_t)(ns >> 32), lo = (uint32_t)ns;
+    uint32_t dh = d >> 16, dl = d & 0xFFFF, q[2];
+    for (int i = 0; i < 2; i++) {
+        uint32_t digit = i ? lo & 0xFFFF : lo >> 16;
+        uint32_t qd = hi / dh, rh = hi - qd * dh;
+        while (qd > 0xFFFF || qd * dl > (rh << 16 | digit)) {
+            qd--;
+            rh += dh;
+            if (rh > 0xFFFF) break;
+        }
+        q[i] = qd;
+        hi = (hi << 16 | digit) - qd * d;        /* the partial remainder, < d */
+    }
+    if (rem) *rem = hi >> s;
+    return q[0] << 16 | q[1];
+}
+
 silk_fx silk_fx_div(silk_fx a, silk_fx b) { return div_round_sat((int64_t)a * 65536, b); }
 
 silk_fx silk_fx_muldiv(silk_fx a, silk_fx b, silk_fx c) { return div_round_sat((int64_t)a * b, c); }

@@ -55,18 +55,29 @@ static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec 
 }
 
 /* x^n for x in [0, 1] (Q16.16) by repeated squaring: at most 2 log2(n)
- * products, each rounded; x <= 1 keeps every product below 2^32. */
+ * products, each rounded; x <= 1 keeps every product within 32 bits by 32
+ * bits. */
 static int64_t pow_unit(int64_t x, int n)
 {
     /* x^n <= 2^-n rounds to zero for x <= 1/2 and n > 16: most pixels */
     if (x <= SILK_FX_HALF && n > 16) return 0;
-    int64_t r = SILK_FX_ONE;
+    uint32_t r = SILK_FX_ONE, ux = (uint32_t)x;
     while (n > 0) {
-        if (n & 1) r = (r * x + SILK_FX_HALF) >> 16;
+        if (n & 1) r = (uint32_t)(((uint64_t)r * ux + SILK_FX_HALF) >> 16);
         n >>= 1;
-        if (n) x = (x * x + SILK_FX_HALF) >> 16;
+        if (n) ux = (uint32_t)(((uint64_t)ux * ux + SILK_FX_HALF) >> 16);
     }
     return r;
+}
+
+/* a b for factors within 32 bits (as every one of the fragment stage's is,
+ * by the ranges stated where they are formed): one multiply instruction on
+ * a 32-bit processor, the same product as the 64-bit one. */
+static inline int64_t mul32(int64_t a, int64_t b) { return (int64_t)(int32_t)a * (int32_t)b; }
+
+static inline int64_t dot32(const int32_t *a, const int32_t *b)
+{
+    return mul32(a[0], b[0]) + mul32(a[1], b[1]) + mul32(a[2], b[2]);
 }
 
 /* Q16.16 channel in [0, 1] (clamped) to 0..255, rounded. */
@@ -128,10 +139,10 @@ uint32_t silk_hal_phong_tinted(const silk_hal *h, const silk_fx *var, uint32_t r
 static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base)
 {
     const silk_material *m = &p->mat;
-    int64_t v[3], n[3];
+    int32_t v[3], n[3];                  /* unit vectors: components within +-2^16 (and a little) */
     if (p->view && !p->view->cam.ortho) {
         silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-        if (!silk_unit64(d.x, d.y, d.z, v)) {
+        if (!silk_unit_fx(d.x, d.y, d.z, v)) {
             v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
         }
     } else if (p->view) {
@@ -140,7 +151,7 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
         v[0] = 0, v[1] = 0, v[2] = SILK_FX_ONE;
     }
     /* A zero normal (opposite normals interpolated) faces the viewer. */
-    if (!silk_unit64(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
+    if (!silk_unit_fx(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
         n[0] = v[0], n[1] = v[1], n[2] = v[2];
     /* Two-sided: a normal facing away from the eye is mirrored in the plane
      * perpendicular to V (its component along V changes sign).  Not plain
@@ -149,11 +160,9 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
      * from one pixel to the next; the mirror is continuous at N.V = 0 and
      * is -N for a surface seen squarely from behind.  A reflection keeps N
      * a unit vector. */
-    int64_t ndv = (n[0] * v[0] + n[1] * v[1] + n[2] * v[2] + SILK_FX_HALF) >> 16;
+    int64_t ndv = (dot32(n, v) + SILK_FX_HALF) >> 16;
     if (p->two_sided && ndv < 0) {
-        n[0] -= (2 * ndv * v[0]) >> 16;
-        n[1] -= (2 * ndv * v[1]) >> 16;
-        n[2] -= (2 * ndv * v[2]) >> 16;
+        for (int k = 0; k < 3; k++) n[k] = (int32_t)(n[k] - (mul32(2 * ndv, v[k]) >> 16));
         ndv = -ndv;
     }
 
@@ -162,41 +171,40 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
     int nl = p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights);
     for (int i = 0; i < nl; i++) {
         const silk_light *li = &p->lights[i];
-        int64_t l[3] = { li->vec.x, li->vec.y, li->vec.z };
+        int32_t l[3] = { li->vec.x, li->vec.y, li->vec.z };
         if (li->kind == SILK_LIGHT_POINT) {
             silk_vec3 d = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-            if (!silk_unit64(d.x, d.y, d.z, l)) continue;
+            if (!silk_unit_fx(d.x, d.y, d.z, l)) continue;
         }
-        int64_t ndl = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2] + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
+        int64_t ndl = (dot32(n, l) + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
         if (ndl <= 0) continue;
         if (ndl > SILK_FX_MAX) ndl = SILK_FX_MAX;
-        int64_t rdv = ((2 * ndl * ndv) >> 16) - ((l[0] * v[0] + l[1] * v[1] + l[2] * v[2]) >> 16);
+        int64_t rdv = ((2 * mul32(ndl, ndv)) >> 16) - (dot32(l, v) >> 16);
         int64_t s = rdv > 0 ? pow_unit(rdv < SILK_FX_ONE ? rdv : SILK_FX_ONE, m->shininess) : 0;
-        dr += (ndl * li->color.x) >> 16;
-        dg += (ndl * li->color.y) >> 16;
-        db += (ndl * li->color.z) >> 16;
-        sr += (s * li->color.x) >> 16;
-        sg += (s * li->color.y) >> 16;
-        sb += (s * li->color.z) >> 16;
+        dr += mul32(ndl, li->color.x) >> 16;
+        dg += mul32(ndl, li->color.y) >> 16;
+        db += mul32(ndl, li->color.z) >> 16;
+        sr += mul32(s, li->color.x) >> 16;
+        sg += mul32(s, li->color.y) >> 16;
+        sb += mul32(s, li->color.z) >> 16;
     }
 
     int64_t spec = m->specular;
     /* Usual case, one test: every light sum and material term in [0, 16):
-     * then no product nears 2^63 and no sum can leave the range, and only
-     * the final clamp to 1 remains. */
+     * then every product has factors below 2^21, no sum can leave the
+     * range, and only the final clamp to 1 remains. */
     uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | base[0] |
                               base[1] | base[2] | m->specular_color.x | m->specular_color.y |
                               m->specular_color.z);
     if (all < ((uint64_t)1 << 20)) {
         int64_t amb = m->ambient, dif = m->diffuse;
-        int64_t cr = ((base[0] * (amb + ((dif * dr) >> 16))) >> 16) + ((((spec * m->specular_color.x) >> 16) * sr) >> 16);
-        int64_t cg = ((base[1] * (amb + ((dif * dg) >> 16))) >> 16) + ((((spec * m->specular_color.y) >> 16) * sg) >> 16);
-        int64_t cb = ((base[2] * (amb + ((dif * db) >> 16))) >> 16) + ((((spec * m->specular_color.z) >> 16) * sb) >> 16);
-        cr = cr < SILK_FX_ONE ? cr : SILK_FX_ONE;
-        cg = cg < SILK_FX_ONE ? cg : SILK_FX_ONE;
-        cb = cb < SILK_FX_ONE ? cb : SILK_FX_ONE;
-        return (uint32_t)((cr * 255 + SILK_FX_HALF) >> 16) << 16 | (uint32_t)((cg * 255 + SILK_FX_HALF) >> 16) << 8 |
-               (uint32_t)((cb * 255 + SILK_FX_HALF) >> 16);
+        int64_t cr = (mul32(base[0], amb + (mul32(dif, dr) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.x) >> 16, sr) >> 16);
+        int64_t cg = (mul32(base[1], amb + (mul32(dif, dg) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.y) >> 16, sg) >> 16);
+        int64_t cb = (mul32(base[2], amb + (mul32(dif, db) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.z) >> 16, sb) >> 16);
+        uint32_t c[3] = { (uint32_t)(cr < SILK_FX_ONE ? cr : SILK_FX_ONE), (uint32_t)(cg < SILK_FX_ONE ? cg : SILK_FX_ONE),
+                          (uint32_t)(cb < SILK_FX_ONE ? cb : SILK_FX_ONE) };
+        return ((c[0] * 255 + SILK_FX_HALF) >> 16) << 16 | ((c[1] * 255 + SILK_FX_HALF) >> 16) << 8 |
+               ((c[2] * 255 + SILK_FX_HALF) >> 16);
     }
     return channel(m, (silk_fx)base[0], silk_fx_mul(m->specular, m->specular_color.x), dr, sr) << 16 |
            channel(m, (silk_fx)base[1], silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |

@@ -33,19 +33,47 @@ _Static_assert(SUB == SILK_RASTER_SUB, "frame.h names the subpixel grid");
 
 /* ---- small integer helpers -------------------------------------------------- */
 
+/* floor(n / d) for n < d 2^32 (a 32-bit quotient).  Where the processor
+ * has no 64-bit divide (a 32-bit target: Cortex-M), silk_udiv64_32's two
+ * 32-bit divisions instead of libgcc's 64-bit routine, a few hundred
+ * instructions; on a 64-bit host the divide instruction. */
+static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
+{
+#if UINTPTR_MAX > UINT32_MAX
+    *rem = (uint32_t)(n % d);
+    return (uint32_t)(n / d);
+#else
+    return silk_udiv64_32(n, d, rem);
+#endif
+}
+
 /* floor(n / d), d > 0.  Most operands here fit in 32 bits (subpixel
  * coordinates, areas of small triangles): those take a 32-bit division, a
  * single instruction on a Cortex-M3 and a short library routine on a
  * Cortex-M0, where libgcc's 64-bit one costs several hundred instructions.
- * The quotient is the same either way. */
+ * Most of the rest (depths, edges of large triangles) have a 32-bit divisor
+ * and quotient: udiv_q32.  The quotient is the same either way. */
 static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
 {
     if (d <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
         int32_t n32 = (int32_t)n, d32 = (int32_t)d, q32 = n32 / d32;
         return (n32 % d32 != 0 && n32 < 0) ? q32 - 1 : q32;
     }
+    uint64_t un = silk_abs64(n);
+    if (d <= (int64_t)UINT32_MAX && un >> 32 < (uint64_t)d) {
+        uint32_t r, q = udiv_q32(un, (uint32_t)d, &r);
+        return n < 0 ? -(int64_t)q - (r != 0) : (int64_t)q;
+    }
     int64_t q = n / d;
     return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+/* floor(2^61 / tt), tt > 0: the reciprocal of the perspective weights. */
+static int64_t recip61(int64_t tt)
+{
+    uint32_t r;
+    if (tt >= ((int64_t)1 << 29) && tt <= (int64_t)UINT32_MAX) return udiv_q32((uint64_t)1 << 61, (uint32_t)tt, &r);
+    return ((int64_t)1 << 61) / tt;
 }
 
 static int64_t ceil_div(int64_t n, int64_t d)     /* d > 0 */
@@ -294,8 +322,9 @@ static void project_depth(const silk_vertex_out *v, svert *s)
     if (num <= 0) {
         s->d = 0;
     } else {
-        int64_t q = num / c->w, r = num % c->w;
-        int64_t d = q * ((int64_t)1 << 31) + (r << 31) / c->w;
+        /* num < 2^32 and 0 < w < 2^31: 32-bit divisions */
+        uint32_t w = (uint32_t)c->w, q = (uint32_t)num / w, r = (uint32_t)num % w, r2;
+        int64_t d = (int64_t)q * ((int64_t)1 << 31) + udiv_q32((uint64_t)r << 31, w, &r2);
         s->d = d > (int64_t)DEPTH_MAX ? (int64_t)DEPTH_MAX : d;
     }
 }
@@ -316,7 +345,7 @@ static void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
     if (tt <= 0) { *b1 = *b2 = 0; return; }       /* only outside the triangle */
     int s = bitlen64((uint64_t)tt) - 31;
     if (s > 0) { u >>= s; v >>= s; tt >>= s; }
-    int64_t inv = ((int64_t)1 << 61) / tt;       /* tt in [1, 2^31): inv in (2^30, 2^61] */
+    int64_t inv = recip61(tt);                   /* tt in [1, 2^31): inv in (2^30, 2^61] */
     *b1 = (u * inv) >> 31;                       /* u <= tt: product <= 2^61 */
     *b2 = (v * inv) >> 31;
 }
@@ -552,7 +581,8 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     silk_fx wmin = s.v[0]->w;
     for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;
     for (int i = 0; i < 3; i++) {
-        s.qn[i] = ((int64_t)wmin << QN_BITS) / s.v[i]->w;
+        uint32_t r;   /* 0 < wmin <= w < 2^31: the quotient is at most 2^QN_BITS */
+        s.qn[i] = udiv_q32((uint64_t)wmin << QN_BITS, (uint32_t)s.v[i]->w, &r);
         if (s.qn[i] < 1) s.qn[i] = 1;
     }
     s.du = s.qn[1] * s.ea[1] * SUB;
@@ -568,7 +598,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
         int64_t tt = s.qn[0] * s.area;
         s.aff_shift = bitlen64((uint64_t)tt) - 31;
         if (s.aff_shift < 0) s.aff_shift = 0;
-        s.aff_inv = ((int64_t)1 << 61) / (tt >> s.aff_shift);
+        s.aff_inv = recip61(tt >> s.aff_shift);
     }
 
     int64_t dd1 = s.v[1]->d - s.v[0]->d, dd2 = s.v[2]->d - s.v[0]->d;
