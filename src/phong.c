@@ -97,9 +97,10 @@ static uint32_t channel(const silk_material *m, silk_fx base, silk_fx spec, int6
     return to_byte(((base * lit) >> 16) + ((spec * sat31(s)) >> 16));
 }
 
-/* The per-pixel work runs on plain 64-bit integers: N and V are unit
- * vectors (silk_unit64), so every product below is bounded where it is
- * formed and needs no saturation; only the dot products round.  The error is a
+/* The per-pixel work runs on plain integers: N and V are unit vectors
+ * (silk_unit_fx), so every product below is bounded where it is formed and
+ * needs no saturation, and has factors within 32 bits (mul32: one multiply
+ * instruction on a 32-bit processor); only the dot products round.  The error is a
  * few ulp of Q16.16, far below one level of an 8-bit channel
  * (tests/test_phong.c compares with a double-precision Phong).  R.V is
  * 2 (N.L)(N.V) - L.V, so the mirror direction R is never formed. */

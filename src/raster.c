@@ -33,6 +33,12 @@ _Static_assert(SUB == SILK_RASTER_SUB, "frame.h names the subpixel grid");
 
 /* ---- small integer helpers -------------------------------------------------- */
 
+/* A 32-bit processor (Cortex-M): a 64-bit product takes three multiply
+ * instructions and a 64-bit division a library call, so the hot paths below
+ * take 32-bit paths where the operands allow, with the same results.  A
+ * 64-bit host has single instructions for both and skips the tests. */
+#define NARROW_CPU (UINTPTR_MAX <= UINT32_MAX)
+
 /* floor(n / d) for n < d 2^32 (a 32-bit quotient).  Where the processor
  * has no 64-bit divide (a 32-bit target: Cortex-M), silk_udiv64_32's two
  * 32-bit divisions instead of libgcc's 64-bit routine, a few hundred
@@ -224,12 +230,14 @@ static int64_t plane_dist(int i, const silk_vec4 *c)
     }
 }
 
+/* The planes c is outside of, plane i as bit i: plane_dist's tests,
+ * written out (every triangle of every band asks for three). */
 static unsigned outcode(const silk_vec4 *c)
 {
-    unsigned o = 0;
-    for (int i = 0; i < NPLANES; i++)
-        if (plane_dist(i, c) < 0) o |= 1u << i;
-    return o;
+    int64_t x = c->x, y = c->y, z = c->z, w = c->w, gw = GUARD * w;
+    return (unsigned)(z + w < 0) | (unsigned)(w - z < 0) << 1 | (unsigned)(gw + x < 0) << 2 |
+           (unsigned)(gw - x < 0) << 3 | (unsigned)(gw + y < 0) << 4 | (unsigned)(gw - y < 0) << 5 |
+           (unsigned)(w < W_MIN) << 6;
 }
 
 static silk_fx lerp30(silk_fx a, silk_fx b, int64_t t30)
@@ -337,6 +345,16 @@ static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
 
 /* ---- triangles ---------------------------------------------------------------- */
 
+/* (a b) >> 31 for a product within 64 bits; one multiply instruction on a
+ * 32-bit processor when both factors are within 32 bits, unsigned (inside
+ * the triangle, the usual case). */
+static int64_t mul_shr31(int64_t a, int64_t b)
+{
+    if (NARROW_CPU && ((uint64_t)a | (uint64_t)b) <= UINT32_MAX)
+        return (int64_t)(((uint64_t)(uint32_t)a * (uint32_t)b) >> 31);
+    return (a * b) >> 31;
+}
+
 /* Perspective-correct barycentric weights b1, b2 in Q0.30 from the planes
  * U = e1 q1, V = e2 q2, T = e0 q0 + U + V (e_i edge functions, q_i ~ 1/w_i):
  * b_i = U/T, V/T.  One division. */
@@ -346,8 +364,8 @@ static void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
     int s = bitlen64((uint64_t)tt) - 31;
     if (s > 0) { u >>= s; v >>= s; tt >>= s; }
     int64_t inv = recip61(tt);                   /* tt in [1, 2^31): inv in (2^30, 2^61] */
-    *b1 = (u * inv) >> 31;                       /* u <= tt: product <= 2^61 */
-    *b2 = (v * inv) >> 31;
+    *b1 = mul_shr31(u, inv);                     /* u <= tt: product <= 2^61 */
+    *b2 = mul_shr31(v, inv);
 }
 
 typedef struct tri_setup {
@@ -367,6 +385,7 @@ typedef struct tri_setup {
      * two products instead of three; |a_i - a0| < 2^32 and b1 + b2 <= 2^30
      * keep the sum below 2^63.  vbase holds a0 in Q30 plus the rounding half. */
     int64_t vbase[SILK_MAX_VARYINGS], vd1[SILK_MAX_VARYINGS], vd2[SILK_MAX_VARYINGS];
+    int vnarrow;           /* a 32-bit processor and every vd1, vd2 within 32 bits */
 } tri_setup;
 
 /* Depth at subpixel point (X, Y): D0 + (e1 dD1 + e2 dD2) / area, floored,
@@ -388,8 +407,8 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
 static void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
 {
     if (s->affine) {
-        *b1 = ((U >> s->aff_shift) * s->aff_inv) >> 31;
-        *b2 = ((V >> s->aff_shift) * s->aff_inv) >> 31;
+        *b1 = mul_shr31(U >> s->aff_shift, s->aff_inv);
+        *b2 = mul_shr31(V >> s->aff_shift, s->aff_inv);
     } else {
         weights(U, V, T, b1, b2);
     }
@@ -436,6 +455,68 @@ static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T
 }
 #endif
 
+/* What a span's fragments share: the triangle, the row's buffers, and the
+ * planes U, V, T at the span's first pixel, xl.  At pixel x they are these
+ * plus (x - xl) steps, formed only where a fragment is shaded: most pixels
+ * a triangle visits fail the depth test. */
+typedef struct span_ctx {
+    silk_target *t;
+    const silk_hal *h;
+    const tri_setup *s;
+    int xl;
+    int64_t U0, V0, T0;
+    uint16_t *wrow;
+    uint8_t *crow;
+} span_ctx;
+
+/* var_k = a0 + (a1 - a0) b1 + (a2 - a0) b2 in Q30, rounded (tri_setup). */
+static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
+{
+    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
+    int k = 0;
+    if (s->vnarrow && b1 == (int32_t)b1 && b2 == (int32_t)b2) {
+        /* every factor within 32 bits: two multiply-accumulates */
+        int32_t w1 = (int32_t)b1, w2 = (int32_t)b2;
+        for (; k < s->nvar; k++)
+            var[k] = (silk_fx)((base[k] + (int64_t)(int32_t)d1[k] * w1 + (int64_t)(int32_t)d2[k] * w2) >> 30);
+    }
+    for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
+        var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+        var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
+    }
+    if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+}
+
+/* The pixel x of a span that passed the depth test at depth z: its
+ * fragment, then its depth, write count and colour.  Out of line on a
+ * 32-bit processor, so the span's loop keeps its few values in registers. */
+#if NARROW_CPU && defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
+{
+    const silk_hal *h = c->h;
+    uint32_t rgb = SILK_FRAGMENT_DISCARD;
+    if (h && h->fragment) {
+        const tri_setup *s = c->s;
+        int64_t n = x - c->xl, U = c->U0 + n * s->du, V = c->V0 + n * s->dv, T = c->T0 + n * s->dt;
+        silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
+        int64_t b1, b2;
+        bary(s, U, V, T, &b1, &b2);
+        varyings(s, b1, b2, var);
+#ifndef SILK_NO_TEXTURE
+        if (h->footprint_var > 0 && h->footprint_var < s->nvar)
+            footprint(s, h->footprint_var - 1, U, V, T, b1, b2, var);
+#endif
+        rgb = h->fragment(h, var);
+        /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
+        if (rgb == SILK_FRAGMENT_DISCARD) return;
+    }
+    if (zrow) zrow[x] = z;
+    if (c->wrow) c->wrow[x]++;
+    if (c->crow && h && h->fragment) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
+}
+
 static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr)
 {
     int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
@@ -444,20 +525,25 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     int64_t e1 = s->ea[1] * dx + s->eb[1] * dy;     /* edges through v0 */
     int64_t e2 = s->ea[2] * dx + s->eb[2] * dy;
     int64_t e0 = s->area - e1 - e2;
-    int64_t U = s->qn[1] * e1, V = s->qn[2] * e2, T = s->qn[0] * e0 + U + V;
+    span_ctx c;
+    c.t = t;
+    c.h = h;
+    c.s = s;
+    c.xl = xl;
+    c.U0 = s->qn[1] * e1;
+    c.V0 = s->qn[2] * e2;
+    c.T0 = s->qn[0] * e0 + c.U0 + c.V0;
+    size_t r = (size_t)(row - t->y0);
+    c.wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
+    c.crow = t->color ? t->color + r * t->stride : NULL;
+    uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
     rstep D = s->dstep;
     depth_at(s, X, Y, &D);
-
-    size_t r = (size_t)(row - t->y0);
-    uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
-    uint16_t *wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
-    size_t bpp = silk_pixfmt_bytes(t->fmt);
-    uint8_t *crow = t->color ? t->color + r * t->stride : NULL;
-    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
-    silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
-#ifndef SILK_NO_TEXTURE
-    int fp = h && h->footprint_var > 0 && h->footprint_var < s->nvar ? h->footprint_var - 1 : -1;
-#endif
+    /* the depth's remainder in 32 bits where the triangle's area allows:
+     * all but clipped triangles spanning most of the guard band */
+    const int dnarrow = NARROW_CPU && D.den <= ((int64_t)1 << 31);
+    uint32_t dr = (uint32_t)D.r;
+    const uint32_t dsr = (uint32_t)D.sr, dden = (uint32_t)D.den;
 
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
@@ -465,33 +551,14 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
     for (int x = xl; x < xr; x++) {
         uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
-        if ((!mrow || (mrow[x >> 3] >> (x & 7) & 1)) && (!zrow || z > zrow[x] - eq)) {
-            uint32_t rgb = SILK_FRAGMENT_DISCARD;
-            if (h && h->fragment) {
-                int64_t b1, b2;
-                bary(s, U, V, T, &b1, &b2);
-                int k = 0;
-                for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
-                    var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
-                    var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
-                }
-                if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
-#ifndef SILK_NO_TEXTURE
-                if (fp >= 0) footprint(s, fp, U, V, T, b1, b2, var);
-#endif
-                rgb = h->fragment(h, var);
-            }
-            /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
-            if (rgb != SILK_FRAGMENT_DISCARD || !h || !h->fragment) {
-                if (zrow) zrow[x] = z;
-                if (wrow) wrow[x]++;
-                if (crow && h && h->fragment) store(t, crow + (size_t)x * bpp, rgb);
-            }
+        if ((!mrow || (mrow[x >> 3] >> (x & 7) & 1)) && (!zrow || z > zrow[x] - eq)) fragment_at(&c, x, z, zrow);
+        if (dnarrow) {                  /* rstep_next with the 32-bit remainder */
+            D.q += D.sq;
+            dr += dsr;
+            if (dr >= dden) { dr -= dden; D.q++; }
+        } else {
+            rstep_next(&D);
         }
-        U += s->du;
-        V += s->dv;
-        T += s->dt;
-        rstep_next(&D);
     }
 }
 
@@ -572,11 +639,13 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
         s.ea[i] = a->y - b->y;
         s.eb[i] = b->x - a->x;
     }
+    s.vnarrow = NARROW_CPU;
     for (int k = 0; h && h->fragment && k < nvar; k++) {
         const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
         s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
         s.vd1[k] = (int64_t)a1[k] - a0[k];
         s.vd2[k] = (int64_t)a2[k] - a0[k];
+        if (s.vd1[k] != (int32_t)s.vd1[k] || s.vd2[k] != (int32_t)s.vd2[k]) s.vnarrow = 0;
     }
     silk_fx wmin = s.v[0]->w;
     for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;

@@ -205,10 +205,9 @@ static inline uint32_t silk_rsqrt_ss(uint64_t ss, int *rs)
 }
 
 /* Unit vector of (x, y, z), |components| < 2^31, in Q16.16 (the work of
- * silk_v3_normalize, which calls it): silk_rsqrt_ss of the sum of squares,
- * one product and rounding shift per component.  Inline: the default
- * fragment stage calls it twice per shaded pixel.  Returns 0 (and a zero
- * vector) for the zero vector. */
+ * silk_v3_normalize): silk_rsqrt_ss of the sum of squares, one product and
+ * rounding shift per component.  Inline: fragment stages call it per
+ * pixel.  Returns 0 (and a zero vector) for the zero vector. */
 static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
 {
     uint64_t ux = (uint64_t)(x < 0 ? -x : x), uy = (uint64_t)(y < 0 ? -y : y), uz = (uint64_t)(z < 0 ? -z : z);
@@ -227,23 +226,8 @@ static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
 
 /* silk_unit64 of a silk_fx vector, the same bits from 32-by-32-bit
  * products: a 32-bit processor's single multiply instruction each, where
- * silk_unit64's 64-bit ones take three. */
-static inline int silk_unit_fx(silk_fx x, silk_fx y, silk_fx z, int32_t out[3])
-{
-    uint32_t ux = x < 0 ? 0u - (uint32_t)x : (uint32_t)x, uy = y < 0 ? 0u - (uint32_t)y : (uint32_t)y,
-             uz = z < 0 ? 0u - (uint32_t)z : (uint32_t)z;
-    uint64_t ss = (uint64_t)ux * ux + (uint64_t)uy * uy + (uint64_t)uz * uz;
-    if (ss == 0) { out[0] = out[1] = out[2] = 0; return 0; }
-    int rs;
-    uint32_t r = silk_rsqrt_ss(ss, &rs);
-    uint64_t half = (uint64_t)1 << (rs - 1);
-    int32_t nx = (int32_t)(((uint64_t)ux * r + half) >> rs), ny = (int32_t)(((uint64_t)uy * r + half) >> rs),
-            nz = (int32_t)(((uint64_t)uz * r + half) >> rs);
-    out[0] = x < 0 ? -nx : nx;
-    out[1] = y < 0 ? -ny : ny;
-    out[2] = z < 0 ? -nz : nz;
-    return 1;
-}
+ * silk_unit64's 64-bit ones take three.  The default fragment stage's. */
+int silk_unit_fx(silk_fx x, silk_fx y, silk_fx z, int32_t out[3]);
 
 /* a + (b-a)*t */
 silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t);
