@@ -378,7 +378,7 @@ typedef struct tri_setup {
     int64_t gxq, gxr, gyq, gyr;   /* depth plane per subpixel: quotient and remainder */
     rstep dstep;                  /* depth per pixel in x */
     int64_t du, dv, dt;           /* U, V, T per pixel in x */
-    int64_t duy, dvy, dty;        /* and in y, for the texture footprint */
+    int64_t duy, dvy, dty;        /* and in y: row to row, and the texture footprint */
     int nvar;
     /* var_k = a0_k + (a1_k - a0_k) b1 + (a2_k - a0_k) b2 is a0 b0 + a1 b1 + a2 b2
      * exactly (b0 = 1 - b1 - b2 is never negative inside the triangle), with
@@ -456,18 +456,30 @@ static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T
 #endif
 
 /* What a span's fragments share: the triangle, the row's buffers, and the
- * planes U, V, T at the span's first pixel, xl.  At pixel x they are these
- * plus (x - xl) steps, formed only where a fragment is shaded: most pixels
- * a triangle visits fail the depth test. */
+ * planes U, V, T at the row's pixel 0.  At pixel x they are these plus x
+ * steps, formed only where a fragment is shaded: most pixels a triangle
+ * visits fail the depth test. */
 typedef struct span_ctx {
     silk_target *t;
     const silk_hal *h;
     const tri_setup *s;
-    int xl;
-    int64_t U0, V0, T0;
+    const int64_t *uvt;
     uint16_t *wrow;
     uint8_t *crow;
 } span_ctx;
+
+/* varyings() where every factor is within 32 bits: two multiply-accumulates
+ * each.  Out of line, and the weights as 32-bit arguments: inlined, the
+ * compiler sees through the narrowing and multiplies in 64 bits again. */
+#if NARROW_CPU && defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
+{
+    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
+    for (int k = 0; k < s->nvar; k++)
+        var[k] = (silk_fx)((base[k] + (int64_t)(int32_t)d1[k] * b1 + (int64_t)(int32_t)d2[k] * b2) >> 30);
+}
 
 /* var_k = a0 + (a1 - a0) b1 + (a2 - a0) b2 in Q30, rounded (tri_setup). */
 static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
@@ -475,10 +487,8 @@ static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
     const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
     int k = 0;
     if (s->vnarrow && b1 == (int32_t)b1 && b2 == (int32_t)b2) {
-        /* every factor within 32 bits: two multiply-accumulates */
-        int32_t w1 = (int32_t)b1, w2 = (int32_t)b2;
-        for (; k < s->nvar; k++)
-            var[k] = (silk_fx)((base[k] + (int64_t)(int32_t)d1[k] * w1 + (int64_t)(int32_t)d2[k] * w2) >> 30);
+        varyings32(s, (int32_t)b1, (int32_t)b2, var);
+        return;
     }
     for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
         var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
@@ -499,7 +509,7 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
     uint32_t rgb = SILK_FRAGMENT_DISCARD;
     if (h && h->fragment) {
         const tri_setup *s = c->s;
-        int64_t n = x - c->xl, U = c->U0 + n * s->du, V = c->V0 + n * s->dv, T = c->T0 + n * s->dt;
+        int64_t U = c->uvt[0] + x * s->du, V = c->uvt[1] + x * s->dv, T = c->uvt[2] + x * s->dt;
         silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
         int64_t b1, b2;
         bary(s, U, V, T, &b1, &b2);
@@ -517,22 +527,14 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
     if (c->crow && h && h->fragment) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
 }
 
-static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr)
+static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
 {
     int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
-    const svert *v0 = s->v[0];
-    int64_t dx = X - v0->x, dy = Y - v0->y;
-    int64_t e1 = s->ea[1] * dx + s->eb[1] * dy;     /* edges through v0 */
-    int64_t e2 = s->ea[2] * dx + s->eb[2] * dy;
-    int64_t e0 = s->area - e1 - e2;
     span_ctx c;
     c.t = t;
     c.h = h;
     c.s = s;
-    c.xl = xl;
-    c.U0 = s->qn[1] * e1;
-    c.V0 = s->qn[2] * e2;
-    c.T0 = s->qn[0] * e0 + c.U0 + c.V0;
+    c.uvt = uvt;
     size_t r = (size_t)(row - t->y0);
     c.wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
     c.crow = t->color ? t->color + r * t->stride : NULL;
@@ -681,6 +683,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     /* Is the middle vertex right of the long edge o0 -> o2? */
     int64_t cross = (o[1]->x - o[0]->x) * (o[2]->y - o[0]->y) - (o[2]->x - o[0]->x) * (o[1]->y - o[0]->y);
     int mid_right = cross > 0;
+    /* the planes U, V, T at pixel 0 of row ys, then stepped row by row:
+     * the exact values, from additions only */
+    int64_t dx = SUB / 2 - s.v[0]->x, dy = (int64_t)ys * SUB + SUB / 2 - s.v[0]->y;
+    int64_t e1 = s.ea[1] * dx + s.eb[1] * dy, e2 = s.ea[2] * dx + s.eb[2] * dy;
+    int64_t uvt[3] = { s.qn[1] * e1, s.qn[2] * e2, 0 };
+    uvt[2] = s.qn[0] * (s.area - e1 - e2) + uvt[0] + uvt[1];
     rstep lng, sht;
     edge_init(&lng, o[0], o[2], ys);
     for (int part = 0; part < 2; part++) {
@@ -693,9 +701,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             int xl = edge_x(mid_right ? &lng : &sht), xr = edge_x(mid_right ? &sht : &lng);
             if (xl < 0) xl = 0;
             if (xr > t->width) xr = t->width;
-            if (xl < xr) span(t, h, &s, y, xl, xr);
+            if (xl < xr) span(t, h, &s, y, xl, xr, uvt);
             rstep_next(&lng);
             rstep_next(&sht);
+            uvt[0] += s.duy;
+            uvt[1] += s.dvy;
+            uvt[2] += s.dty;
         }
     }
 }
