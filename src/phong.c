@@ -194,10 +194,10 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
     /* Usual case, one test: every light sum and material term in [0, 16):
      * then every product has factors below 2^21, no sum can leave the
      * range, and only the final clamp to 1 remains. */
-    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | base[0] |
-                              base[1] | base[2] | m->specular_color.x | m->specular_color.y |
-                              m->specular_color.z);
-    if (all < ((uint64_t)1 << 20)) {
+    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | base[0] | base[1] | base[2]);
+    uint32_t mat = (uint32_t)(m->specular | m->ambient | m->diffuse | m->specular_color.x | m->specular_color.y |
+                              m->specular_color.z);   /* silk_fx: a negative one is far above 2^20 too */
+    if (all < ((uint64_t)1 << 20) && mat < (1u << 20)) {
         int64_t amb = m->ambient, dif = m->diffuse;
         int64_t cr = (mul32(base[0], amb + (mul32(dif, dr) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.x) >> 16, sr) >> 16);
         int64_t cg = (mul32(base[1], amb + (mul32(dif, dg) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.y) >> 16, sg) >> 16);

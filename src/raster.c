@@ -541,26 +541,32 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
     rstep D = s->dstep;
     depth_at(s, X, Y, &D);
-    /* the depth's remainder in 32 bits where the triangle's area allows:
-     * all but clipped triangles spanning most of the guard band */
-    const int dnarrow = NARROW_CPU && D.den <= ((int64_t)1 << 31);
-    uint32_t dr = (uint32_t)D.r;
-    const uint32_t dsr = (uint32_t)D.sr, dden = (uint32_t)D.den;
-
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
+    if (NARROW_CPU && zrow && !mrow && D.den <= ((int64_t)1 << 31)) {
+        /* The usual case on a 32-bit processor, where most of a span's
+         * pixels fail the depth test: the loop's values in registers and
+         * the depth's remainder in 32 bits (the area allows it for all but
+         * clipped triangles spanning most of the guard band). */
+        uint64_t q = (uint64_t)D.q;
+        const uint64_t sq = (uint64_t)D.sq;
+        uint32_t dr = (uint32_t)D.r;
+        const uint32_t dsr = (uint32_t)D.sr, dden = (uint32_t)D.den;
+        for (int x = xl; x < xr; x++) {
+            uint32_t z = q >> 32 == 0 ? (uint32_t)q : ((int64_t)q < 0 ? 0 : DEPTH_MAX);
+            if (z > zrow[x] - eq) fragment_at(&c, x, z, zrow);
+            q += sq;                    /* rstep_next */
+            dr += dsr;
+            if (dr >= dden) { dr -= dden; q++; }
+        }
+        return;
+    }
     for (int x = xl; x < xr; x++) {
         uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
         if ((!mrow || (mrow[x >> 3] >> (x & 7) & 1)) && (!zrow || z > zrow[x] - eq)) fragment_at(&c, x, z, zrow);
-        if (dnarrow) {                  /* rstep_next with the 32-bit remainder */
-            D.q += D.sq;
-            dr += dsr;
-            if (dr >= dden) { dr -= dden; D.q++; }
-        } else {
-            rstep_next(&D);
-        }
+        rstep_next(&D);
     }
 }
 
