@@ -554,9 +554,13 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
         const uint64_t sq = (uint64_t)D.sq;
         uint32_t dr = (uint32_t)D.r;
         const uint32_t dsr = (uint32_t)D.sr, dden = (uint32_t)D.den;
+        const int call = (h && h->fragment) || c.wrow;   /* else a depth pass: the depth alone */
         for (int x = xl; x < xr; x++) {
             uint32_t z = q >> 32 == 0 ? (uint32_t)q : ((int64_t)q < 0 ? 0 : DEPTH_MAX);
-            if (z > zrow[x] - eq) fragment_at(&c, x, z, zrow);
+            if (z > zrow[x] - eq) {
+                if (call) fragment_at(&c, x, z, zrow);
+                else zrow[x] = z;
+            }
             q += sq;                    /* rstep_next */
             dr += dsr;
             if (dr >= dden) { dr -= dden; q++; }
@@ -647,35 +651,43 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
         s.ea[i] = a->y - b->y;
         s.eb[i] = b->x - a->x;
     }
-    s.vnarrow = NARROW_CPU;
-    for (int k = 0; h && h->fragment && k < nvar; k++) {
-        const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
-        s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
-        s.vd1[k] = (int64_t)a1[k] - a0[k];
-        s.vd2[k] = (int64_t)a2[k] - a0[k];
-        if (s.vd1[k] != (int32_t)s.vd1[k] || s.vd2[k] != (int32_t)s.vd2[k]) s.vnarrow = 0;
-    }
-    silk_fx wmin = s.v[0]->w;
-    for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;
-    for (int i = 0; i < 3; i++) {
-        uint32_t r;   /* 0 < wmin <= w < 2^31: the quotient is at most 2^QN_BITS */
-        s.qn[i] = udiv_q32((uint64_t)wmin << QN_BITS, (uint32_t)s.v[i]->w, &r);
-        if (s.qn[i] < 1) s.qn[i] = 1;
-    }
-    s.du = s.qn[1] * s.ea[1] * SUB;
-    s.dv = s.qn[2] * s.ea[2] * SUB;
-    s.dt = (s.qn[0] * s.ea[0] + s.qn[1] * s.ea[1] + s.qn[2] * s.ea[2]) * SUB;
-    s.duy = s.qn[1] * s.eb[1] * SUB;
-    s.dvy = s.qn[2] * s.eb[2] * SUB;
-    s.dty = (s.qn[0] * s.eb[0] + s.qn[1] * s.eb[1] + s.qn[2] * s.eb[2]) * SUB;
-    s.affine = s.qn[0] == s.qn[1] && s.qn[1] == s.qn[2];
-    s.aff_inv = 0;
-    s.aff_shift = 0;
-    if (s.affine) {
-        int64_t tt = s.qn[0] * s.area;
-        s.aff_shift = bitlen64((uint64_t)tt) - 31;
-        if (s.aff_shift < 0) s.aff_shift = 0;
-        s.aff_inv = recip61(tt >> s.aff_shift);
+    /* The weights and varyings only where fragments are shaded: a depth
+     * pass needs the depth alone. */
+    const int shading = h && h->fragment;
+    s.qn[0] = s.qn[1] = s.qn[2] = 0;
+    s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
+    s.affine = 0;
+    if (shading) {
+        s.vnarrow = NARROW_CPU;
+        for (int k = 0; k < nvar; k++) {
+            const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
+            s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
+            s.vd1[k] = (int64_t)a1[k] - a0[k];
+            s.vd2[k] = (int64_t)a2[k] - a0[k];
+            if (s.vd1[k] != (int32_t)s.vd1[k] || s.vd2[k] != (int32_t)s.vd2[k]) s.vnarrow = 0;
+        }
+        silk_fx wmin = s.v[0]->w;
+        for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;
+        for (int i = 0; i < 3; i++) {
+            uint32_t r;   /* 0 < wmin <= w < 2^31: the quotient is at most 2^QN_BITS */
+            s.qn[i] = udiv_q32((uint64_t)wmin << QN_BITS, (uint32_t)s.v[i]->w, &r);
+            if (s.qn[i] < 1) s.qn[i] = 1;
+        }
+        s.du = s.qn[1] * s.ea[1] * SUB;
+        s.dv = s.qn[2] * s.ea[2] * SUB;
+        s.dt = (s.qn[0] * s.ea[0] + s.qn[1] * s.ea[1] + s.qn[2] * s.ea[2]) * SUB;
+        s.duy = s.qn[1] * s.eb[1] * SUB;
+        s.dvy = s.qn[2] * s.eb[2] * SUB;
+        s.dty = (s.qn[0] * s.eb[0] + s.qn[1] * s.eb[1] + s.qn[2] * s.eb[2]) * SUB;
+        s.affine = s.qn[0] == s.qn[1] && s.qn[1] == s.qn[2];
+        s.aff_inv = 0;
+        s.aff_shift = 0;
+        if (s.affine) {
+            int64_t tt = s.qn[0] * s.area;
+            s.aff_shift = bitlen64((uint64_t)tt) - 31;
+            if (s.aff_shift < 0) s.aff_shift = 0;
+            s.aff_inv = recip61(tt >> s.aff_shift);
+        }
     }
 
     int64_t dd1 = s.v[1]->d - s.v[0]->d, dd2 = s.v[2]->d - s.v[0]->d;
