@@ -70,10 +70,21 @@ static int64_t pow_unit(int64_t x, int n)
     return r;
 }
 
+/* v, with the compiler's knowledge of its range forgotten: knowing that a
+ * 64-bit value fits 32 bits, gcc drops the narrowing and multiplies in 64
+ * bits again (three instructions on a 32-bit processor instead of one). */
+static inline int32_t opaque32(int32_t v)
+{
+#if defined(__GNUC__)
+    __asm__("" : "+r"(v));
+#endif
+    return v;
+}
+
 /* a b for factors within 32 bits (as every one of the fragment stage's is,
  * by the ranges stated where they are formed): one multiply instruction on
  * a 32-bit processor, the same product as the 64-bit one. */
-static inline int64_t mul32(int64_t a, int64_t b) { return (int64_t)(int32_t)a * (int32_t)b; }
+static inline int64_t mul32(int64_t a, int64_t b) { return (int64_t)opaque32((int32_t)a) * opaque32((int32_t)b); }
 
 static inline int64_t dot32(const int32_t *a, const int32_t *b)
 {
