@@ -86,6 +86,9 @@ static inline int32_t opaque32(int32_t v)
  * a 32-bit processor, the same product as the 64-bit one. */
 static inline int64_t mul32(int64_t a, int64_t b) { return (int64_t)opaque32((int32_t)a) * opaque32((int32_t)b); }
 
+#if defined(__GNUC__)
+__attribute__((always_inline))   /* three per shaded pixel and light: a call would cost as much */
+#endif
 static inline int64_t dot32(const int32_t *a, const int32_t *b)
 {
     return mul32(a[0], b[0]) + mul32(a[1], b[1]) + mul32(a[2], b[2]);
