@@ -61,13 +61,17 @@ static int64_t pow_unit(int64_t x, int n)
 {
     /* x^n <= 2^-n rounds to zero for x <= 1/2 and n > 16: most pixels */
     if (x <= SILK_FX_HALF && n > 16) return 0;
-    uint32_t r = SILK_FX_ONE, ux = (uint32_t)x;
+#if SILK_CPU32
+    uint32_t r = SILK_FX_ONE, ux = (uint32_t)x;   /* one multiply instruction a product */
+#else
+    uint64_t r = SILK_FX_ONE, ux = (uint64_t)x;   /* no widening */
+#endif
     while (n > 0) {
-        if (n & 1) r = (uint32_t)(((uint64_t)r * ux + SILK_FX_HALF) >> 16);
+        if (n & 1) r = ((uint64_t)r * ux + SILK_FX_HALF) >> 16;
         n >>= 1;
-        if (n) ux = (uint32_t)(((uint64_t)ux * ux + SILK_FX_HALF) >> 16);
+        if (n) ux = ((uint64_t)ux * ux + SILK_FX_HALF) >> 16;
     }
-    return r;
+    return (int64_t)r;
 }
 
 /* v, with the compiler's knowledge of its range forgotten: knowing that a
@@ -83,13 +87,33 @@ static inline int32_t opaque32(int32_t v)
 
 /* a b for factors within 32 bits (as every one of the fragment stage's is,
  * by the ranges stated where they are formed): one multiply instruction on
- * a 32-bit processor, the same product as the 64-bit one. */
-static inline int64_t mul32(int64_t a, int64_t b) { return (int64_t)opaque32((int32_t)a) * opaque32((int32_t)b); }
+ * a 32-bit processor, the same product as the 64-bit one, which is a
+ * single instruction on a 64-bit host. */
+static inline int64_t mul32(int64_t a, int64_t b)
+{
+#if SILK_CPU32
+    return (int64_t)opaque32((int32_t)a) * opaque32((int32_t)b);
+#else
+    return a * b;
+#endif
+}
+
+/* A unit vector's components: 32 bits on a 32-bit processor, where
+ * silk_unit_fx makes them (out of line: the code it takes counts there);
+ * 64 bits on a 64-bit host, where silk_unit64 makes the same bits inline
+ * and nothing needs widening. */
+#if SILK_CPU32
+typedef int32_t ucomp;
+#define unit_fx silk_unit_fx
+#else
+typedef int64_t ucomp;
+#define unit_fx silk_unit64
+#endif
 
 #if defined(__GNUC__)
 __attribute__((always_inline))   /* three per shaded pixel and light: a call would cost as much */
 #endif
-static inline int64_t dot32(const int32_t *a, const int32_t *b)
+static inline int64_t dot32(const ucomp *a, const ucomp *b)
 {
     return mul32(a[0], b[0]) + mul32(a[1], b[1]) + mul32(a[2], b[2]);
 }
@@ -154,10 +178,10 @@ uint32_t silk_hal_phong_tinted(const silk_hal *h, const silk_fx *var, uint32_t r
 static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base)
 {
     const silk_material *m = &p->mat;
-    int32_t v[3], n[3];                  /* unit vectors: components within +-2^16 (and a little) */
+    ucomp v[3], n[3];                    /* unit vectors: components within +-2^16 (and a little) */
     if (p->view && !p->view->cam.ortho) {
         silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-        if (!silk_unit_fx(d.x, d.y, d.z, v)) {
+        if (!unit_fx(d.x, d.y, d.z, v)) {
             v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
         }
     } else if (p->view) {
@@ -166,7 +190,7 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
         v[0] = 0, v[1] = 0, v[2] = SILK_FX_ONE;
     }
     /* A zero normal (opposite normals interpolated) faces the viewer. */
-    if (!silk_unit_fx(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
+    if (!unit_fx(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
         n[0] = v[0], n[1] = v[1], n[2] = v[2];
     /* Two-sided: a normal facing away from the eye is mirrored in the plane
      * perpendicular to V (its component along V changes sign).  Not plain
@@ -177,7 +201,7 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
      * a unit vector. */
     int64_t ndv = (dot32(n, v) + SILK_FX_HALF) >> 16;
     if (p->two_sided && ndv < 0) {
-        for (int k = 0; k < 3; k++) n[k] = (int32_t)(n[k] - (mul32(2 * ndv, v[k]) >> 16));
+        for (int k = 0; k < 3; k++) n[k] = (ucomp)(n[k] - (mul32(2 * ndv, v[k]) >> 16));
         ndv = -ndv;
     }
 
@@ -186,10 +210,10 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
     int nl = p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights);
     for (int i = 0; i < nl; i++) {
         const silk_light *li = &p->lights[i];
-        int32_t l[3] = { li->vec.x, li->vec.y, li->vec.z };
+        ucomp l[3] = { li->vec.x, li->vec.y, li->vec.z };
         if (li->kind == SILK_LIGHT_POINT) {
             silk_vec3 d = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-            if (!silk_unit_fx(d.x, d.y, d.z, l)) continue;
+            if (!unit_fx(d.x, d.y, d.z, l)) continue;
         }
         int64_t ndl = (dot32(n, l) + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
         if (ndl <= 0) continue;
@@ -208,10 +232,10 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
     /* Usual case, one test: every light sum and material term in [0, 16):
      * then every product has factors below 2^21, no sum can leave the
      * range, and only the final clamp to 1 remains. */
-    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | base[0] | base[1] | base[2]);
-    uint32_t mat = (uint32_t)(m->specular | m->ambient | m->diffuse | m->specular_color.x | m->specular_color.y |
-                              m->specular_color.z);   /* silk_fx: a negative one is far above 2^20 too */
-    if (all < ((uint64_t)1 << 20) && mat < (1u << 20)) {
+    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | base[0] |
+                              base[1] | base[2] | m->specular_color.x | m->specular_color.y |
+                              m->specular_color.z);
+    if (all < ((uint64_t)1 << 20)) {
         int64_t amb = m->ambient, dif = m->diffuse;
         int64_t cr = (mul32(base[0], amb + (mul32(dif, dr) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.x) >> 16, sr) >> 16);
         int64_t cg = (mul32(base[1], amb + (mul32(dif, dg) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.y) >> 16, sg) >> 16);

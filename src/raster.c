@@ -33,11 +33,6 @@ _Static_assert(SUB == SILK_RASTER_SUB, "frame.h names the subpixel grid");
 
 /* ---- small integer helpers -------------------------------------------------- */
 
-/* A 32-bit processor (Cortex-M): a 64-bit product takes three multiply
- * instructions and a 64-bit division a library call, so the hot paths below
- * take 32-bit paths where the operands allow, with the same results.  A
- * 64-bit host has single instructions for both and skips the tests. */
-#define NARROW_CPU (UINTPTR_MAX <= UINT32_MAX)
 
 /* floor(n / d) for n < d 2^32 (a 32-bit quotient).  Where the processor
  * has no 64-bit divide (a 32-bit target: Cortex-M), silk_udiv64_32's two
@@ -45,7 +40,7 @@ _Static_assert(SUB == SILK_RASTER_SUB, "frame.h names the subpixel grid");
  * instructions; on a 64-bit host the divide instruction. */
 static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
 {
-#if UINTPTR_MAX > UINT32_MAX
+#if !SILK_CPU32
     *rem = (uint32_t)(n % d);
     return (uint32_t)(n / d);
 #else
@@ -58,7 +53,8 @@ static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
  * single instruction on a Cortex-M3 and a short library routine on a
  * Cortex-M0, where libgcc's 64-bit one costs several hundred instructions.
  * Most of the rest (depths, edges of large triangles) have a 32-bit divisor
- * and quotient: udiv_q32.  The quotient is the same either way. */
+ * and quotient: udiv_q32, on a 32-bit processor (a 64-bit host divides as
+ * fast).  The quotient is the same either way. */
 static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
 {
     if (d <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
@@ -66,7 +62,7 @@ static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
         return (n32 % d32 != 0 && n32 < 0) ? q32 - 1 : q32;
     }
     uint64_t un = silk_abs64(n);
-    if (d <= (int64_t)UINT32_MAX && un >> 32 < (uint64_t)d) {
+    if (SILK_CPU32 && d <= (int64_t)UINT32_MAX && un >> 32 < (uint64_t)d) {
         uint32_t r, q = udiv_q32(un, (uint32_t)d, &r);
         return n < 0 ? -(int64_t)q - (r != 0) : (int64_t)q;
     }
@@ -350,7 +346,7 @@ static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
  * the triangle, the usual case). */
 static int64_t mul_shr31(int64_t a, int64_t b)
 {
-    if (NARROW_CPU && ((uint64_t)a | (uint64_t)b) <= UINT32_MAX)
+    if (SILK_CPU32 && ((uint64_t)a | (uint64_t)b) <= UINT32_MAX)
         return (int64_t)(((uint64_t)(uint32_t)a * (uint32_t)b) >> 31);
     return (a * b) >> 31;
 }
@@ -358,7 +354,7 @@ static int64_t mul_shr31(int64_t a, int64_t b)
 /* Perspective-correct barycentric weights b1, b2 in Q0.30 from the planes
  * U = e1 q1, V = e2 q2, T = e0 q0 + U + V (e_i edge functions, q_i ~ 1/w_i):
  * b_i = U/T, V/T.  One division. */
-static void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
+static inline void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
 {
     if (tt <= 0) { *b1 = *b2 = 0; return; }       /* only outside the triangle */
     int s = bitlen64((uint64_t)tt) - 31;
@@ -471,7 +467,7 @@ typedef struct span_ctx {
 /* varyings() where every factor is within 32 bits: two multiply-accumulates
  * each.  Out of line, and the weights as 32-bit arguments: inlined, the
  * compiler sees through the narrowing and multiplies in 64 bits again. */
-#if NARROW_CPU && defined(__GNUC__)
+#if SILK_CPU32 && defined(__GNUC__)
 __attribute__((noinline))
 #endif
 static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
@@ -500,7 +496,7 @@ static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
 /* The pixel x of a span that passed the depth test at depth z: its
  * fragment, then its depth, write count and colour.  Out of line on a
  * 32-bit processor, so the span's loop keeps its few values in registers. */
-#if NARROW_CPU && defined(__GNUC__)
+#if SILK_CPU32 && defined(__GNUC__)
 __attribute__((noinline))
 #endif
 static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
@@ -545,7 +541,7 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
-    if (NARROW_CPU && zrow && !mrow && D.den <= ((int64_t)1 << 31)) {
+    if (SILK_CPU32 && zrow && !mrow && D.den <= ((int64_t)1 << 31)) {
         /* The usual case on a 32-bit processor, where most of a span's
          * pixels fail the depth test: the loop's values in registers and
          * the depth's remainder in 32 bits (the area allows it for all but
@@ -658,7 +654,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
     s.affine = 0;
     if (shading) {
-        s.vnarrow = NARROW_CPU;
+        s.vnarrow = SILK_CPU32;
         for (int k = 0; k < nvar; k++) {
             const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
             s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
