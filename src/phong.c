@@ -74,6 +74,7 @@ static int64_t pow_unit(int64_t x, int n)
     return (int64_t)r;
 }
 
+#if SILK_CPU32
 /* v, with the compiler's knowledge of its range forgotten: knowing that a
  * 64-bit value fits 32 bits, gcc drops the narrowing and multiplies in 64
  * bits again (three instructions on a 32-bit processor instead of one). */
@@ -84,6 +85,7 @@ static inline int32_t opaque32(int32_t v)
 #endif
     return v;
 }
+#endif
 
 /* a b for factors within 32 bits (as every one of the fragment stage's is,
  * by the ranges stated where they are formed): one multiply instruction on
