@@ -58,6 +58,31 @@ static silk_fx div_round_sat(int64_t n, int64_t d)
     return ((n < 0) != (d < 0)) ? -(silk_fx)q : (silk_fx)q;
 }
 
+/* Knuth's algorithm D for two digits of 16 bits (Hacker's Delight, divlu):
+ * d is normalised so its top bit is set, then each quotient digit is
+ * estimated from the top digit of d and corrected at most twice. */
+uint32_t silk_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
+{
+    int s = clz32(d);
+    d <<= s;
+    uint64_t ns = n << s;                        /* n < d 2^32: nothing leaves the top */
+    uint32_t hi = (uint32_t)(ns >> 32), lo = (uint32_t)ns;
+    uint32_t dh = d >> 16, dl = d & 0xFFFF, q[2];
+    for (int i = 0; i < 2; i++) {
+        uint32_t digit = i ? lo & 0xFFFF : lo >> 16;
+        uint32_t qd = hi / dh, rh = hi - qd * dh;
+        while (qd > 0xFFFF || qd * dl > (rh << 16 | digit)) {
+            qd--;
+            rh += dh;
+            if (rh > 0xFFFF) break;
+        }
+        q[i] = qd;
+        hi = (hi << 16 | digit) - qd * d;        /* the partial remainder, < d */
+    }
+    if (rem) *rem = hi >> s;
+    return q[0] << 16 | q[1];
+}
+
 silk_fx silk_fx_div(silk_fx a, silk_fx b) { return div_round_sat((int64_t)a * 65536, b); }
 
 silk_fx silk_fx_muldiv(silk_fx a, silk_fx b, silk_fx c) { return div_round_sat((int64_t)a * b, c); }
@@ -498,16 +523,33 @@ silk_fx silk_v3_length(silk_vec3 a)
     return r > (uint32_t)SILK_FX_MAX ? SILK_FX_MAX : (silk_fx)r;
 }
 
+int silk_unit_fx(silk_fx x, silk_fx y, silk_fx z, int32_t out[3])
+{
+    uint32_t ux = x < 0 ? 0u - (uint32_t)x : (uint32_t)x, uy = y < 0 ? 0u - (uint32_t)y : (uint32_t)y,
+             uz = z < 0 ? 0u - (uint32_t)z : (uint32_t)z;
+    uint64_t ss = (uint64_t)ux * ux + (uint64_t)uy * uy + (uint64_t)uz * uz;
+    if (ss == 0) { out[0] = out[1] = out[2] = 0; return 0; }
+    int rs;
+    uint32_t r = silk_rsqrt_ss(ss, &rs);
+    uint64_t half = (uint64_t)1 << (rs - 1);
+    int32_t nx = (int32_t)(((uint64_t)ux * r + half) >> rs), ny = (int32_t)(((uint64_t)uy * r + half) >> rs),
+            nz = (int32_t)(((uint64_t)uz * r + half) >> rs);
+    out[0] = x < 0 ? -nx : nx;
+    out[1] = y < 0 ? -ny : ny;
+    out[2] = z < 0 ? -nz : nz;
+    return 1;
+}
+
 int silk_v3_normalize(silk_vec3 a, silk_vec3 *out)
 {
-    /* silk_unit64 (silk/fixed.h): rescaling shifts ss left by an even e to
-     * [2^62, 2^64), which scales the vector by 2^(e/2), so a vector of 1-ulp
-     * components keeps as many bits as a huge one; then 1/sqrt(ss) from the
-     * top 32 bits with relative error below 3e-9: 2e-4 ulp on a unit
-     * component. */
-    int64_t u[3];
-    int ok = silk_unit64(fx_clean(a.x), fx_clean(a.y), fx_clean(a.z), u);
-    *out = silk_v3((silk_fx)u[0], (silk_fx)u[1], (silk_fx)u[2]);
+    /* silk_unit64's work (silk/fixed.h): rescaling shifts ss left by an
+     * even e to [2^62, 2^64), which scales the vector by 2^(e/2), so a
+     * vector of 1-ulp components keeps as many bits as a huge one; then
+     * 1/sqrt(ss) from the top 32 bits with relative error below 3e-9: 2e-4
+     * ulp on a unit component. */
+    int32_t u[3];
+    int ok = silk_unit_fx(fx_clean(a.x), fx_clean(a.y), fx_clean(a.z), u);
+    *out = silk_v3(u[0], u[1], u[2]);
     return ok;
 }
 

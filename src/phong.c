@@ -55,18 +55,69 @@ static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec 
 }
 
 /* x^n for x in [0, 1] (Q16.16) by repeated squaring: at most 2 log2(n)
- * products, each rounded; x <= 1 keeps every product below 2^32. */
+ * products, each rounded; x <= 1 keeps every product within 32 bits by 32
+ * bits. */
 static int64_t pow_unit(int64_t x, int n)
 {
     /* x^n <= 2^-n rounds to zero for x <= 1/2 and n > 16: most pixels */
     if (x <= SILK_FX_HALF && n > 16) return 0;
-    int64_t r = SILK_FX_ONE;
+#if SILK_CPU32
+    uint32_t r = SILK_FX_ONE, ux = (uint32_t)x;   /* one multiply instruction a product */
+#else
+    uint64_t r = SILK_FX_ONE, ux = (uint64_t)x;   /* no widening */
+#endif
     while (n > 0) {
-        if (n & 1) r = (r * x + SILK_FX_HALF) >> 16;
+        if (n & 1) r = ((uint64_t)r * ux + SILK_FX_HALF) >> 16;
         n >>= 1;
-        if (n) x = (x * x + SILK_FX_HALF) >> 16;
+        if (n) ux = ((uint64_t)ux * ux + SILK_FX_HALF) >> 16;
     }
-    return r;
+    return (int64_t)r;
+}
+
+#if SILK_CPU32
+/* v, with the compiler's knowledge of its range forgotten: knowing that a
+ * 64-bit value fits 32 bits, gcc drops the narrowing and multiplies in 64
+ * bits again (three instructions on a 32-bit processor instead of one). */
+static inline int32_t opaque32(int32_t v)
+{
+#if defined(__GNUC__)
+    __asm__("" : "+r"(v));
+#endif
+    return v;
+}
+#endif
+
+/* a b for factors within 32 bits (as every one of the fragment stage's is,
+ * by the ranges stated where they are formed): one multiply instruction on
+ * a 32-bit processor, the same product as the 64-bit one, which is a
+ * single instruction on a 64-bit host. */
+static inline int64_t mul32(int64_t a, int64_t b)
+{
+#if SILK_CPU32
+    return (int64_t)opaque32((int32_t)a) * opaque32((int32_t)b);
+#else
+    return a * b;
+#endif
+}
+
+/* A unit vector's components: 32 bits on a 32-bit processor, where
+ * silk_unit_fx makes them (out of line: the code it takes counts there);
+ * 64 bits on a 64-bit host, where silk_unit64 makes the same bits inline
+ * and nothing needs widening. */
+#if SILK_CPU32
+typedef int32_t ucomp;
+#define unit_fx silk_unit_fx
+#else
+typedef int64_t ucomp;
+#define unit_fx silk_unit64
+#endif
+
+#if defined(__GNUC__)
+__attribute__((always_inline))   /* three per shaded pixel and light: a call would cost as much */
+#endif
+static inline int64_t dot32(const ucomp *a, const ucomp *b)
+{
+    return mul32(a[0], b[0]) + mul32(a[1], b[1]) + mul32(a[2], b[2]);
 }
 
 /* Q16.16 channel in [0, 1] (clamped) to 0..255, rounded. */
@@ -86,9 +137,10 @@ static uint32_t channel(const silk_material *m, silk_fx base, silk_fx spec, int6
     return to_byte(((base * lit) >> 16) + ((spec * sat31(s)) >> 16));
 }
 
-/* The per-pixel work runs on plain 64-bit integers: N and V are unit
- * vectors (silk_unit64), so every product below is bounded where it is
- * formed and needs no saturation; only the dot products round.  The error is a
+/* The per-pixel work runs on plain integers: N and V are unit vectors
+ * (silk_unit_fx), so every product below is bounded where it is formed and
+ * needs no saturation, and has factors within 32 bits (mul32: one multiply
+ * instruction on a 32-bit processor); only the dot products round.  The error is a
  * few ulp of Q16.16, far below one level of an 8-bit channel
  * (tests/test_phong.c compares with a double-precision Phong).  R.V is
  * 2 (N.L)(N.V) - L.V, so the mirror direction R is never formed. */
@@ -128,10 +180,10 @@ uint32_t silk_hal_phong_tinted(const silk_hal *h, const silk_fx *var, uint32_t r
 static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base)
 {
     const silk_material *m = &p->mat;
-    int64_t v[3], n[3];
+    ucomp v[3], n[3];                    /* unit vectors: components within +-2^16 (and a little) */
     if (p->view && !p->view->cam.ortho) {
         silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-        if (!silk_unit64(d.x, d.y, d.z, v)) {
+        if (!unit_fx(d.x, d.y, d.z, v)) {
             v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
         }
     } else if (p->view) {
@@ -140,7 +192,7 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
         v[0] = 0, v[1] = 0, v[2] = SILK_FX_ONE;
     }
     /* A zero normal (opposite normals interpolated) faces the viewer. */
-    if (!silk_unit64(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
+    if (!unit_fx(var[VAR_NORMAL], var[VAR_NORMAL + 1], var[VAR_NORMAL + 2], n))
         n[0] = v[0], n[1] = v[1], n[2] = v[2];
     /* Two-sided: a normal facing away from the eye is mirrored in the plane
      * perpendicular to V (its component along V changes sign).  Not plain
@@ -149,11 +201,9 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
      * from one pixel to the next; the mirror is continuous at N.V = 0 and
      * is -N for a surface seen squarely from behind.  A reflection keeps N
      * a unit vector. */
-    int64_t ndv = (n[0] * v[0] + n[1] * v[1] + n[2] * v[2] + SILK_FX_HALF) >> 16;
+    int64_t ndv = (dot32(n, v) + SILK_FX_HALF) >> 16;
     if (p->two_sided && ndv < 0) {
-        n[0] -= (2 * ndv * v[0]) >> 16;
-        n[1] -= (2 * ndv * v[1]) >> 16;
-        n[2] -= (2 * ndv * v[2]) >> 16;
+        for (int k = 0; k < 3; k++) n[k] = (ucomp)(n[k] - (mul32(2 * ndv, v[k]) >> 16));
         ndv = -ndv;
     }
 
@@ -162,41 +212,40 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
     int nl = p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights);
     for (int i = 0; i < nl; i++) {
         const silk_light *li = &p->lights[i];
-        int64_t l[3] = { li->vec.x, li->vec.y, li->vec.z };
+        ucomp l[3] = { li->vec.x, li->vec.y, li->vec.z };
         if (li->kind == SILK_LIGHT_POINT) {
             silk_vec3 d = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-            if (!silk_unit64(d.x, d.y, d.z, l)) continue;
+            if (!unit_fx(d.x, d.y, d.z, l)) continue;
         }
-        int64_t ndl = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2] + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
+        int64_t ndl = (dot32(n, l) + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
         if (ndl <= 0) continue;
         if (ndl > SILK_FX_MAX) ndl = SILK_FX_MAX;
-        int64_t rdv = ((2 * ndl * ndv) >> 16) - ((l[0] * v[0] + l[1] * v[1] + l[2] * v[2]) >> 16);
+        int64_t rdv = ((2 * mul32(ndl, ndv)) >> 16) - (dot32(l, v) >> 16);
         int64_t s = rdv > 0 ? pow_unit(rdv < SILK_FX_ONE ? rdv : SILK_FX_ONE, m->shininess) : 0;
-        dr += (ndl * li->color.x) >> 16;
-        dg += (ndl * li->color.y) >> 16;
-        db += (ndl * li->color.z) >> 16;
-        sr += (s * li->color.x) >> 16;
-        sg += (s * li->color.y) >> 16;
-        sb += (s * li->color.z) >> 16;
+        dr += mul32(ndl, li->color.x) >> 16;
+        dg += mul32(ndl, li->color.y) >> 16;
+        db += mul32(ndl, li->color.z) >> 16;
+        sr += mul32(s, li->color.x) >> 16;
+        sg += mul32(s, li->color.y) >> 16;
+        sb += mul32(s, li->color.z) >> 16;
     }
 
     int64_t spec = m->specular;
     /* Usual case, one test: every light sum and material term in [0, 16):
-     * then no product nears 2^63 and no sum can leave the range, and only
-     * the final clamp to 1 remains. */
+     * then every product has factors below 2^21, no sum can leave the
+     * range, and only the final clamp to 1 remains. */
     uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | base[0] |
                               base[1] | base[2] | m->specular_color.x | m->specular_color.y |
                               m->specular_color.z);
     if (all < ((uint64_t)1 << 20)) {
         int64_t amb = m->ambient, dif = m->diffuse;
-        int64_t cr = ((base[0] * (amb + ((dif * dr) >> 16))) >> 16) + ((((spec * m->specular_color.x) >> 16) * sr) >> 16);
-        int64_t cg = ((base[1] * (amb + ((dif * dg) >> 16))) >> 16) + ((((spec * m->specular_color.y) >> 16) * sg) >> 16);
-        int64_t cb = ((base[2] * (amb + ((dif * db) >> 16))) >> 16) + ((((spec * m->specular_color.z) >> 16) * sb) >> 16);
-        cr = cr < SILK_FX_ONE ? cr : SILK_FX_ONE;
-        cg = cg < SILK_FX_ONE ? cg : SILK_FX_ONE;
-        cb = cb < SILK_FX_ONE ? cb : SILK_FX_ONE;
-        return (uint32_t)((cr * 255 + SILK_FX_HALF) >> 16) << 16 | (uint32_t)((cg * 255 + SILK_FX_HALF) >> 16) << 8 |
-               (uint32_t)((cb * 255 + SILK_FX_HALF) >> 16);
+        int64_t cr = (mul32(base[0], amb + (mul32(dif, dr) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.x) >> 16, sr) >> 16);
+        int64_t cg = (mul32(base[1], amb + (mul32(dif, dg) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.y) >> 16, sg) >> 16);
+        int64_t cb = (mul32(base[2], amb + (mul32(dif, db) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.z) >> 16, sb) >> 16);
+        uint32_t c[3] = { (uint32_t)(cr < SILK_FX_ONE ? cr : SILK_FX_ONE), (uint32_t)(cg < SILK_FX_ONE ? cg : SILK_FX_ONE),
+                          (uint32_t)(cb < SILK_FX_ONE ? cb : SILK_FX_ONE) };
+        return ((c[0] * 255 + SILK_FX_HALF) >> 16) << 16 | ((c[1] * 255 + SILK_FX_HALF) >> 16) << 8 |
+               ((c[2] * 255 + SILK_FX_HALF) >> 16);
     }
     return channel(m, (silk_fx)base[0], silk_fx_mul(m->specular, m->specular_color.x), dr, sr) << 16 |
            channel(m, (silk_fx)base[1], silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |

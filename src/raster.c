@@ -33,19 +33,49 @@ _Static_assert(SUB == SILK_RASTER_SUB, "frame.h names the subpixel grid");
 
 /* ---- small integer helpers -------------------------------------------------- */
 
+
+/* floor(n / d) for n < d 2^32 (a 32-bit quotient).  Where the processor
+ * has no 64-bit divide (a 32-bit target: Cortex-M), silk_udiv64_32's two
+ * 32-bit divisions instead of libgcc's 64-bit routine, a few hundred
+ * instructions; on a 64-bit host the divide instruction. */
+static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
+{
+#if !SILK_CPU32
+    *rem = (uint32_t)(n % d);
+    return (uint32_t)(n / d);
+#else
+    return silk_udiv64_32(n, d, rem);
+#endif
+}
+
 /* floor(n / d), d > 0.  Most operands here fit in 32 bits (subpixel
  * coordinates, areas of small triangles): those take a 32-bit division, a
  * single instruction on a Cortex-M3 and a short library routine on a
  * Cortex-M0, where libgcc's 64-bit one costs several hundred instructions.
- * The quotient is the same either way. */
+ * Most of the rest (depths, edges of large triangles) have a 32-bit divisor
+ * and quotient: udiv_q32, on a 32-bit processor (a 64-bit host divides as
+ * fast).  The quotient is the same either way. */
 static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
 {
     if (d <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
         int32_t n32 = (int32_t)n, d32 = (int32_t)d, q32 = n32 / d32;
         return (n32 % d32 != 0 && n32 < 0) ? q32 - 1 : q32;
     }
+    uint64_t un = silk_abs64(n);
+    if (SILK_CPU32 && d <= (int64_t)UINT32_MAX && un >> 32 < (uint64_t)d) {
+        uint32_t r, q = udiv_q32(un, (uint32_t)d, &r);
+        return n < 0 ? -(int64_t)q - (r != 0) : (int64_t)q;
+    }
     int64_t q = n / d;
     return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+/* floor(2^61 / tt), tt > 0: the reciprocal of the perspective weights. */
+static int64_t recip61(int64_t tt)
+{
+    uint32_t r;
+    if (tt >= ((int64_t)1 << 29) && tt <= (int64_t)UINT32_MAX) return udiv_q32((uint64_t)1 << 61, (uint32_t)tt, &r);
+    return ((int64_t)1 << 61) / tt;
 }
 
 static int64_t ceil_div(int64_t n, int64_t d)     /* d > 0 */
@@ -196,12 +226,14 @@ static int64_t plane_dist(int i, const silk_vec4 *c)
     }
 }
 
+/* The planes c is outside of, plane i as bit i: plane_dist's tests,
+ * written out (every triangle of every band asks for three). */
 static unsigned outcode(const silk_vec4 *c)
 {
-    unsigned o = 0;
-    for (int i = 0; i < NPLANES; i++)
-        if (plane_dist(i, c) < 0) o |= 1u << i;
-    return o;
+    int64_t x = c->x, y = c->y, z = c->z, w = c->w, gw = GUARD * w;
+    return (unsigned)(z + w < 0) | (unsigned)(w - z < 0) << 1 | (unsigned)(gw + x < 0) << 2 |
+           (unsigned)(gw - x < 0) << 3 | (unsigned)(gw + y < 0) << 4 | (unsigned)(gw - y < 0) << 5 |
+           (unsigned)(w < W_MIN) << 6;
 }
 
 static silk_fx lerp30(silk_fx a, silk_fx b, int64_t t30)
@@ -294,8 +326,9 @@ static void project_depth(const silk_vertex_out *v, svert *s)
     if (num <= 0) {
         s->d = 0;
     } else {
-        int64_t q = num / c->w, r = num % c->w;
-        int64_t d = q * ((int64_t)1 << 31) + (r << 31) / c->w;
+        /* num < 2^32 and 0 < w < 2^31: 32-bit divisions */
+        uint32_t w = (uint32_t)c->w, q = (uint32_t)num / w, r = (uint32_t)num % w, r2;
+        int64_t d = (int64_t)q * ((int64_t)1 << 31) + udiv_q32((uint64_t)r << 31, w, &r2);
         s->d = d > (int64_t)DEPTH_MAX ? (int64_t)DEPTH_MAX : d;
     }
 }
@@ -308,17 +341,27 @@ static void project(const silk_target *t, const silk_vertex_out *v, svert *s)
 
 /* ---- triangles ---------------------------------------------------------------- */
 
+/* (a b) >> 31 for a product within 64 bits; one multiply instruction on a
+ * 32-bit processor when both factors are within 32 bits, unsigned (inside
+ * the triangle, the usual case). */
+static int64_t mul_shr31(int64_t a, int64_t b)
+{
+    if (SILK_CPU32 && ((uint64_t)a | (uint64_t)b) <= UINT32_MAX)
+        return (int64_t)(((uint64_t)(uint32_t)a * (uint32_t)b) >> 31);
+    return (a * b) >> 31;
+}
+
 /* Perspective-correct barycentric weights b1, b2 in Q0.30 from the planes
  * U = e1 q1, V = e2 q2, T = e0 q0 + U + V (e_i edge functions, q_i ~ 1/w_i):
  * b_i = U/T, V/T.  One division. */
-static void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
+static inline void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
 {
     if (tt <= 0) { *b1 = *b2 = 0; return; }       /* only outside the triangle */
     int s = bitlen64((uint64_t)tt) - 31;
     if (s > 0) { u >>= s; v >>= s; tt >>= s; }
-    int64_t inv = ((int64_t)1 << 61) / tt;       /* tt in [1, 2^31): inv in (2^30, 2^61] */
-    *b1 = (u * inv) >> 31;                       /* u <= tt: product <= 2^61 */
-    *b2 = (v * inv) >> 31;
+    int64_t inv = recip61(tt);                   /* tt in [1, 2^31): inv in (2^30, 2^61] */
+    *b1 = mul_shr31(u, inv);                     /* u <= tt: product <= 2^61 */
+    *b2 = mul_shr31(v, inv);
 }
 
 typedef struct tri_setup {
@@ -331,13 +374,14 @@ typedef struct tri_setup {
     int64_t gxq, gxr, gyq, gyr;   /* depth plane per subpixel: quotient and remainder */
     rstep dstep;                  /* depth per pixel in x */
     int64_t du, dv, dt;           /* U, V, T per pixel in x */
-    int64_t duy, dvy, dty;        /* and in y, for the texture footprint */
+    int64_t duy, dvy, dty;        /* and in y: row to row, and the texture footprint */
     int nvar;
     /* var_k = a0_k + (a1_k - a0_k) b1 + (a2_k - a0_k) b2 is a0 b0 + a1 b1 + a2 b2
      * exactly (b0 = 1 - b1 - b2 is never negative inside the triangle), with
      * two products instead of three; |a_i - a0| < 2^32 and b1 + b2 <= 2^30
      * keep the sum below 2^63.  vbase holds a0 in Q30 plus the rounding half. */
     int64_t vbase[SILK_MAX_VARYINGS], vd1[SILK_MAX_VARYINGS], vd2[SILK_MAX_VARYINGS];
+    int vnarrow;           /* a 32-bit processor and every vd1, vd2 within 32 bits */
 } tri_setup;
 
 /* Depth at subpixel point (X, Y): D0 + (e1 dD1 + e2 dD2) / area, floored,
@@ -359,8 +403,8 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
 static void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
 {
     if (s->affine) {
-        *b1 = ((U >> s->aff_shift) * s->aff_inv) >> 31;
-        *b2 = ((V >> s->aff_shift) * s->aff_inv) >> 31;
+        *b1 = mul_shr31(U >> s->aff_shift, s->aff_inv);
+        *b2 = mul_shr31(V >> s->aff_shift, s->aff_inv);
     } else {
         weights(U, V, T, b1, b2);
     }
@@ -407,61 +451,121 @@ static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T
 }
 #endif
 
-static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr)
+/* What a span's fragments share: the triangle, the row's buffers, and the
+ * planes U, V, T at the row's pixel 0.  At pixel x they are these plus x
+ * steps, formed only where a fragment is shaded: most pixels a triangle
+ * visits fail the depth test. */
+typedef struct span_ctx {
+    silk_target *t;
+    const silk_hal *h;
+    const tri_setup *s;
+    const int64_t *uvt;
+    uint16_t *wrow;
+    uint8_t *crow;
+} span_ctx;
+
+/* varyings() where every factor is within 32 bits: two multiply-accumulates
+ * each.  Out of line, and the weights as 32-bit arguments: inlined, the
+ * compiler sees through the narrowing and multiplies in 64 bits again. */
+#if SILK_CPU32 && defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
+{
+    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
+    for (int k = 0; k < s->nvar; k++)
+        var[k] = (silk_fx)((base[k] + (int64_t)(int32_t)d1[k] * b1 + (int64_t)(int32_t)d2[k] * b2) >> 30);
+}
+
+/* var_k = a0 + (a1 - a0) b1 + (a2 - a0) b2 in Q30, rounded (tri_setup). */
+static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
+{
+    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
+    int k = 0;
+    if (s->vnarrow && b1 == (int32_t)b1 && b2 == (int32_t)b2) {
+        varyings32(s, (int32_t)b1, (int32_t)b2, var);
+        return;
+    }
+    for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
+        var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+        var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
+    }
+    if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+}
+
+/* The pixel x of a span that passed the depth test at depth z: its
+ * fragment, then its depth, write count and colour.  Out of line on a
+ * 32-bit processor, so the span's loop keeps its few values in registers. */
+#if SILK_CPU32 && defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
+{
+    const silk_hal *h = c->h;
+    uint32_t rgb = SILK_FRAGMENT_DISCARD;
+    if (h && h->fragment) {
+        const tri_setup *s = c->s;
+        int64_t U = c->uvt[0] + x * s->du, V = c->uvt[1] + x * s->dv, T = c->uvt[2] + x * s->dt;
+        silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
+        int64_t b1, b2;
+        bary(s, U, V, T, &b1, &b2);
+        varyings(s, b1, b2, var);
+#ifndef SILK_NO_TEXTURE
+        if (h->footprint_var > 0 && h->footprint_var < s->nvar)
+            footprint(s, h->footprint_var - 1, U, V, T, b1, b2, var);
+#endif
+        rgb = h->fragment(h, var);
+        /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
+        if (rgb == SILK_FRAGMENT_DISCARD) return;
+    }
+    if (zrow) zrow[x] = z;
+    if (c->wrow) c->wrow[x]++;
+    if (c->crow && h && h->fragment) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
+}
+
+static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
 {
     int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
-    const svert *v0 = s->v[0];
-    int64_t dx = X - v0->x, dy = Y - v0->y;
-    int64_t e1 = s->ea[1] * dx + s->eb[1] * dy;     /* edges through v0 */
-    int64_t e2 = s->ea[2] * dx + s->eb[2] * dy;
-    int64_t e0 = s->area - e1 - e2;
-    int64_t U = s->qn[1] * e1, V = s->qn[2] * e2, T = s->qn[0] * e0 + U + V;
+    span_ctx c;
+    c.t = t;
+    c.h = h;
+    c.s = s;
+    c.uvt = uvt;
+    size_t r = (size_t)(row - t->y0);
+    c.wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
+    c.crow = t->color ? t->color + r * t->stride : NULL;
+    uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
     rstep D = s->dstep;
     depth_at(s, X, Y, &D);
-
-    size_t r = (size_t)(row - t->y0);
-    uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
-    uint16_t *wrow = t->writes ? t->writes + r * (size_t)t->width : NULL;
-    size_t bpp = silk_pixfmt_bytes(t->fmt);
-    uint8_t *crow = t->color ? t->color + r * t->stride : NULL;
-    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
-    silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
-#ifndef SILK_NO_TEXTURE
-    int fp = h && h->footprint_var > 0 && h->footprint_var < s->nvar ? h->footprint_var - 1 : -1;
-#endif
-
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
+    if (SILK_CPU32 && zrow && !mrow && D.den <= ((int64_t)1 << 31)) {
+        /* The usual case on a 32-bit processor, where most of a span's
+         * pixels fail the depth test: the loop's values in registers and
+         * the depth's remainder in 32 bits (the area allows it for all but
+         * clipped triangles spanning most of the guard band). */
+        uint64_t q = (uint64_t)D.q;
+        const uint64_t sq = (uint64_t)D.sq;
+        uint32_t dr = (uint32_t)D.r;
+        const uint32_t dsr = (uint32_t)D.sr, dden = (uint32_t)D.den;
+        const int call = (h && h->fragment) || c.wrow;   /* else a depth pass: the depth alone */
+        for (int x = xl; x < xr; x++) {
+            uint32_t z = q >> 32 == 0 ? (uint32_t)q : ((int64_t)q < 0 ? 0 : DEPTH_MAX);
+            if (z > zrow[x] - eq) {
+                if (call) fragment_at(&c, x, z, zrow);
+                else zrow[x] = z;
+            }
+            q += sq;                    /* rstep_next */
+            dr += dsr;
+            if (dr >= dden) { dr -= dden; q++; }
+        }
+        return;
+    }
     for (int x = xl; x < xr; x++) {
         uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
-        if ((!mrow || (mrow[x >> 3] >> (x & 7) & 1)) && (!zrow || z > zrow[x] - eq)) {
-            uint32_t rgb = SILK_FRAGMENT_DISCARD;
-            if (h && h->fragment) {
-                int64_t b1, b2;
-                bary(s, U, V, T, &b1, &b2);
-                int k = 0;
-                for (; k + 2 <= s->nvar; k += 2) {     /* pairs: most stages use 6 */
-                    var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
-                    var[k + 1] = (silk_fx)((base[k + 1] + d1[k + 1] * b1 + d2[k + 1] * b2) >> 30);
-                }
-                if (k < s->nvar) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
-#ifndef SILK_NO_TEXTURE
-                if (fp >= 0) footprint(s, fp, U, V, T, b1, b2, var);
-#endif
-                rgb = h->fragment(h, var);
-            }
-            /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
-            if (rgb != SILK_FRAGMENT_DISCARD || !h || !h->fragment) {
-                if (zrow) zrow[x] = z;
-                if (wrow) wrow[x]++;
-                if (crow && h && h->fragment) store(t, crow + (size_t)x * bpp, rgb);
-            }
-        }
-        U += s->du;
-        V += s->dv;
-        T += s->dt;
+        if ((!mrow || (mrow[x >> 3] >> (x & 7) & 1)) && (!zrow || z > zrow[x] - eq)) fragment_at(&c, x, z, zrow);
         rstep_next(&D);
     }
 }
@@ -543,32 +647,43 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
         s.ea[i] = a->y - b->y;
         s.eb[i] = b->x - a->x;
     }
-    for (int k = 0; h && h->fragment && k < nvar; k++) {
-        const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
-        s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
-        s.vd1[k] = (int64_t)a1[k] - a0[k];
-        s.vd2[k] = (int64_t)a2[k] - a0[k];
-    }
-    silk_fx wmin = s.v[0]->w;
-    for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;
-    for (int i = 0; i < 3; i++) {
-        s.qn[i] = ((int64_t)wmin << QN_BITS) / s.v[i]->w;
-        if (s.qn[i] < 1) s.qn[i] = 1;
-    }
-    s.du = s.qn[1] * s.ea[1] * SUB;
-    s.dv = s.qn[2] * s.ea[2] * SUB;
-    s.dt = (s.qn[0] * s.ea[0] + s.qn[1] * s.ea[1] + s.qn[2] * s.ea[2]) * SUB;
-    s.duy = s.qn[1] * s.eb[1] * SUB;
-    s.dvy = s.qn[2] * s.eb[2] * SUB;
-    s.dty = (s.qn[0] * s.eb[0] + s.qn[1] * s.eb[1] + s.qn[2] * s.eb[2]) * SUB;
-    s.affine = s.qn[0] == s.qn[1] && s.qn[1] == s.qn[2];
-    s.aff_inv = 0;
-    s.aff_shift = 0;
-    if (s.affine) {
-        int64_t tt = s.qn[0] * s.area;
-        s.aff_shift = bitlen64((uint64_t)tt) - 31;
-        if (s.aff_shift < 0) s.aff_shift = 0;
-        s.aff_inv = ((int64_t)1 << 61) / (tt >> s.aff_shift);
+    /* The weights and varyings only where fragments are shaded: a depth
+     * pass needs the depth alone. */
+    const int shading = h && h->fragment;
+    s.qn[0] = s.qn[1] = s.qn[2] = 0;
+    s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
+    s.affine = 0;
+    if (shading) {
+        s.vnarrow = SILK_CPU32;
+        for (int k = 0; k < nvar; k++) {
+            const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
+            s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
+            s.vd1[k] = (int64_t)a1[k] - a0[k];
+            s.vd2[k] = (int64_t)a2[k] - a0[k];
+            if (s.vd1[k] != (int32_t)s.vd1[k] || s.vd2[k] != (int32_t)s.vd2[k]) s.vnarrow = 0;
+        }
+        silk_fx wmin = s.v[0]->w;
+        for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;
+        for (int i = 0; i < 3; i++) {
+            uint32_t r;   /* 0 < wmin <= w < 2^31: the quotient is at most 2^QN_BITS */
+            s.qn[i] = udiv_q32((uint64_t)wmin << QN_BITS, (uint32_t)s.v[i]->w, &r);
+            if (s.qn[i] < 1) s.qn[i] = 1;
+        }
+        s.du = s.qn[1] * s.ea[1] * SUB;
+        s.dv = s.qn[2] * s.ea[2] * SUB;
+        s.dt = (s.qn[0] * s.ea[0] + s.qn[1] * s.ea[1] + s.qn[2] * s.ea[2]) * SUB;
+        s.duy = s.qn[1] * s.eb[1] * SUB;
+        s.dvy = s.qn[2] * s.eb[2] * SUB;
+        s.dty = (s.qn[0] * s.eb[0] + s.qn[1] * s.eb[1] + s.qn[2] * s.eb[2]) * SUB;
+        s.affine = s.qn[0] == s.qn[1] && s.qn[1] == s.qn[2];
+        s.aff_inv = 0;
+        s.aff_shift = 0;
+        if (s.affine) {
+            int64_t tt = s.qn[0] * s.area;
+            s.aff_shift = bitlen64((uint64_t)tt) - 31;
+            if (s.aff_shift < 0) s.aff_shift = 0;
+            s.aff_inv = recip61(tt >> s.aff_shift);
+        }
     }
 
     int64_t dd1 = s.v[1]->d - s.v[0]->d, dd2 = s.v[2]->d - s.v[0]->d;
@@ -582,6 +697,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     /* Is the middle vertex right of the long edge o0 -> o2? */
     int64_t cross = (o[1]->x - o[0]->x) * (o[2]->y - o[0]->y) - (o[2]->x - o[0]->x) * (o[1]->y - o[0]->y);
     int mid_right = cross > 0;
+    /* the planes U, V, T at pixel 0 of row ys, then stepped row by row:
+     * the exact values, from additions only */
+    int64_t dx = SUB / 2 - s.v[0]->x, dy = (int64_t)ys * SUB + SUB / 2 - s.v[0]->y;
+    int64_t e1 = s.ea[1] * dx + s.eb[1] * dy, e2 = s.ea[2] * dx + s.eb[2] * dy;
+    int64_t uvt[3] = { s.qn[1] * e1, s.qn[2] * e2, 0 };
+    uvt[2] = s.qn[0] * (s.area - e1 - e2) + uvt[0] + uvt[1];
     rstep lng, sht;
     edge_init(&lng, o[0], o[2], ys);
     for (int part = 0; part < 2; part++) {
@@ -594,9 +715,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             int xl = edge_x(mid_right ? &lng : &sht), xr = edge_x(mid_right ? &sht : &lng);
             if (xl < 0) xl = 0;
             if (xr > t->width) xr = t->width;
-            if (xl < xr) span(t, h, &s, y, xl, xr);
+            if (xl < xr) span(t, h, &s, y, xl, xr, uvt);
             rstep_next(&lng);
             rstep_next(&sht);
+            uvt[0] += s.duy;
+            uvt[1] += s.dvy;
+            uvt[2] += s.dty;
         }
     }
 }

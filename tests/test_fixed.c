@@ -279,6 +279,48 @@ static int isqrt64_ok(uint64_t v, uint32_t r)
     return ((uint64_t)r + 1) * ((uint64_t)r + 1) > v;
 }
 
+/* silk_udiv64_32 against the plain 64-bit division: random divisors of
+ * every length with random numerators below d 2^32, the quotients the
+ * rasterizer asks for (2^61 / d, its depths and reciprocals), and the cases
+ * where a quotient digit's estimate needs both corrections. */
+static int udiv_ok(uint64_t n, uint32_t d)
+{
+    uint32_t r = 0xDEADBEEF, q = silk_udiv64_32(n, d, &r);
+    return q == n / d && r == n % d && silk_udiv64_32(n, d, NULL) == q;
+}
+
+TEST(test_udiv64_32)
+{
+    long bad = 0, n_checked = 0;
+    for (int i = 0; i < 4 * N_RANDOM; i++) {
+        unsigned long long r = check_rand64();
+        uint32_t d = (uint32_t)(check_rand64() >> (32 + (r & 31)));
+        if (d == 0) d = 1;
+        uint64_t hi = (uint64_t)(check_rand64() >> 32) % d;          /* n >> 32 < d */
+        uint64_t n = hi << 32 | (uint32_t)check_rand64();
+        n >>= (r >> 8) & 63;                                      /* short numerators too */
+        bad += !udiv_ok(n, d);
+        bad += !udiv_ok((uint64_t)d * (uint32_t)(r >> 32), d);    /* exact multiples */
+        bad += !udiv_ok((uint64_t)d * (uint32_t)(r >> 32) - 1 + (d == 1 && !(r >> 32)), d);
+        bad += !udiv_ok(((uint64_t)d << 32) - 1, d);              /* the largest quotient */
+        if (d >= (1u << 29)) bad += !udiv_ok((uint64_t)1 << 61, d);
+        n_checked += 5;
+    }
+    /* divisors just above and below the 16-bit digit boundaries, where the
+     * digit estimate is furthest off */
+    const uint32_t ds[] = { 1, 2, 3, 0xFFFF, 0x10000, 0x10001, 0x7FFF8000, 0x80000000u, 0x80000001u,
+                            0x8000FFFFu, 0xFFFF0000u, 0xFFFF0001u, 0xFFFFFFFFu, 0x40000000, 0x7FFFFFFF };
+    for (size_t i = 0; i < sizeof ds / sizeof ds[0]; i++)
+        for (uint32_t k = 0; k < 4096; k++) {
+            uint64_t top = ((uint64_t)ds[i] << 32) - 1;
+            bad += !udiv_ok(top - (uint64_t)k * 0x10001u * 0x10001u % (top + 1), ds[i]);
+            bad += !udiv_ok((uint64_t)k << 32 | (0xFFFFFFFFu - k), ds[i]) * (k < ds[i]);
+            n_checked += 2;
+        }
+    printf("  udiv64_32: %ld of %ld wrong (bound 0: exact)\n", bad, n_checked);
+    CHECK(bad == 0);
+}
+
 TEST(test_isqrt)
 {
     int bad32 = 0, bad64 = 0;
@@ -488,6 +530,13 @@ TEST(test_normalize)
             continue;
         }
         if (ok != 1) bad_ret++;
+        /* silk_unit_fx: silk_unit64's bits from 32-bit products, INT32_MIN too */
+        int32_t f[3];
+        int64_t u[3];
+        silk_fx bx = (i & 1023) == 7 ? INT32_MIN : a.x;
+        if (silk_unit_fx(bx, a.y, a.z, f) != silk_unit64(bx, a.y, a.z, u) || f[0] != u[0] || f[1] != u[1] ||
+            f[2] != u[2])
+            bad_ret++;
         double x = a.x, y = a.y, z = a.z, l = sqrt(x * x + y * y + z * z);
         double e = fmax(fabs(n.x - x / l * ULP), fmax(fabs(n.y - y / l * ULP), fabs(n.z - z / l * ULP)));
         if (e > worst) worst = e;
@@ -822,6 +871,7 @@ int main(void)
     RUN(test_saturation);
     RUN(test_sqrt);
     RUN(test_rsqrt);
+    RUN(test_udiv64_32);
     RUN(test_isqrt);
     RUN(test_sqrt_rsqrt_all);
     RUN(test_sincos);

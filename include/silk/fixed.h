@@ -19,6 +19,13 @@ extern "C" {
 
 typedef int32_t silk_fx;                   /* Q16.16 */
 
+/* 1 on a processor with 32-bit registers (Cortex-M): there a 64-bit
+ * product takes three multiply instructions and a 64-bit division a
+ * library call, so the hot paths take 32-bit routes where their operands
+ * allow, with the same results; 0 on a 64-bit host, where either is one
+ * instruction. */
+#define SILK_CPU32 (UINTPTR_MAX <= UINT32_MAX)
+
 #define SILK_FX_SHIFT 16
 #define SILK_FX_ONE   ((silk_fx)65536)
 #define SILK_FX_HALF  ((silk_fx)32768)
@@ -91,6 +98,13 @@ static inline silk_fx silk_fx_clamp(silk_fx a, silk_fx lo, silk_fx hi)
 silk_fx silk_fx_recip(silk_fx a);          /* 1/a, saturated */
 silk_fx silk_fx_sqrt(silk_fx a);           /* a >= 0; negative input gives 0 */
 silk_fx silk_fx_rsqrt(silk_fx a);          /* 1/sqrt(a), a > 0; a <= 0 gives SILK_FX_MAX */
+
+/* floor(n / d) and its remainder for a quotient that fits 32 bits:
+ * requires d > 0 and n >> 32 < d.  Exact, from two 32-by-16-bit divisions
+ * (Knuth's algorithm D in base 2^16): a 32-bit processor without a 64-bit
+ * divide (Cortex-M) pays a few dozen instructions instead of a library
+ * call of several hundred. */
+uint32_t silk_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
 
 /* Integer square roots, exact floor. */
 uint32_t silk_isqrt32(uint32_t v);
@@ -174,17 +188,12 @@ int       silk_v3_normalize(silk_vec3 a, silk_vec3 *out);
 /* 1/sqrt(M) in Q16 at the centre of each of 192 slices of M in [1, 4) (read-only). */
 extern const uint16_t silk_rsqrt_seed[192];
 
-/* Unit vector of (x, y, z), |components| < 2^31, in Q16.16 (the work of
- * silk_v3_normalize, which calls it): the sum of squares rescaled by an even
- * shift, a table seed and two Newton steps for 1/sqrt (relative error below
- * 3e-9), one product and rounding shift per component.  Inline: the default
- * fragment stage calls it twice per shaded pixel.  Returns 0 (and a zero
- * vector) for the zero vector. */
-static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
+/* 1/sqrt(ss) for a sum of squares ss > 0, the core of silk_unit64: ss
+ * rescaled by an even shift, a table seed and two Newton steps (relative
+ * error below 3e-9).  A component c of the vector becomes
+ * (c r + 2^(rs-1)) >> rs. */
+static inline uint32_t silk_rsqrt_ss(uint64_t ss, int *rs)
 {
-    uint64_t ux = (uint64_t)(x < 0 ? -x : x), uy = (uint64_t)(y < 0 ? -y : y), uz = (uint64_t)(z < 0 ? -z : z);
-    uint64_t ss = ux * ux + uy * uy + uz * uz;
-    if (ss == 0) { out[0] = out[1] = out[2] = 0; return 0; }
 #if defined(__GNUC__)
     int e = __builtin_clzll(ss) & ~1;
 #else
@@ -198,7 +207,21 @@ static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
         uint32_t mr2 = (uint32_t)(((uint64_t)m * r2) >> 30);
         r = (uint32_t)(((uint64_t)r * (3u * (1u << 30) - mr2)) >> 31);
     }
-    int rs = 46 - e / 2;
+    *rs = 46 - e / 2;
+    return r;
+}
+
+/* Unit vector of (x, y, z), |components| < 2^31, in Q16.16 (the work of
+ * silk_v3_normalize): silk_rsqrt_ss of the sum of squares, one product and
+ * rounding shift per component.  Inline: fragment stages call it per
+ * pixel.  Returns 0 (and a zero vector) for the zero vector. */
+static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
+{
+    uint64_t ux = (uint64_t)(x < 0 ? -x : x), uy = (uint64_t)(y < 0 ? -y : y), uz = (uint64_t)(z < 0 ? -z : z);
+    uint64_t ss = ux * ux + uy * uy + uz * uz;
+    if (ss == 0) { out[0] = out[1] = out[2] = 0; return 0; }
+    int rs;
+    uint32_t r = silk_rsqrt_ss(ss, &rs);
     uint64_t half = (uint64_t)1 << (rs - 1);
     int64_t nx = (int64_t)((ux * r + half) >> rs), ny = (int64_t)((uy * r + half) >> rs),
             nz = (int64_t)((uz * r + half) >> rs);
@@ -207,6 +230,11 @@ static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
     out[2] = z < 0 ? -nz : nz;
     return 1;
 }
+
+/* silk_unit64 of a silk_fx vector, the same bits from 32-by-32-bit
+ * products: a 32-bit processor's single multiply instruction each, where
+ * silk_unit64's 64-bit ones take three.  The default fragment stage's. */
+int silk_unit_fx(silk_fx x, silk_fx y, silk_fx z, int32_t out[3]);
 
 /* a + (b-a)*t */
 silk_vec3 silk_v3_lerp(silk_vec3 a, silk_vec3 b, silk_fx t);
