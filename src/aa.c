@@ -27,9 +27,13 @@
  * taken from the curve itself, eq. 5 evaluated at SUBDIV - 1 parameters
  * between the chord's samples and projected by the vertex stage (a
  * polyline within 1/16 of the chord's distance from the curve), and every
- * pixel from the chord's two to the one the curve crosses gets the
- * curve's coverage, whatever was drawn there.  Straight sides are the
- * outline as it is.  Positions are the rasterizer's own subpixel ones
+ * pixel from the chord's two to the one the curve crosses, and two more
+ * each way (the outline drawn where the parts do not fold), gets the
+ * curve's coverage, except that a pixel drawn covered keeps at least half:
+ * where the curve lies inside the geometry drawn by more than that, the
+ * pixel's outside would be two pixels away, and a pixel emptied there
+ * next to one that cannot be leaves a notch in the outline.  Straight
+ * sides are the outline as it is.  Positions are the rasterizer's own subpixel ones
  * (silk_raster_point), 1/16 pixel, so a coverage within 1/32 of empty or
  * full is taken as empty or full; from a curve, within 1/10 (the Hermite
  * curve follows the surface's true outline to about a tenth of a pixel).
