@@ -27,9 +27,13 @@
  * taken from the curve itself, eq. 5 evaluated at SUBDIV - 1 parameters
  * between the chord's samples and projected by the vertex stage (a
  * polyline within 1/16 of the chord's distance from the curve), and every
- * pixel from the chord's two to the one the curve crosses gets the
- * curve's coverage, whatever was drawn there.  Straight sides are the
- * outline as it is.  Positions are the rasterizer's own subpixel ones
+ * pixel from the chord's two to the one the curve crosses, and two more
+ * each way (the outline drawn where the parts do not fold), gets the
+ * curve's coverage, except that a pixel drawn covered keeps at least half:
+ * where the curve lies inside the geometry drawn by more than that, the
+ * pixel's outside would be two pixels away, and a pixel emptied there
+ * next to one that cannot be leaves a notch in the outline.  Straight
+ * sides are the outline as it is.  Positions are the rasterizer's own subpixel ones
  * (silk_raster_point), 1/16 pixel, so a coverage within 1/32 of empty or
  * full is taken as empty or full; from a curve, within 1/10 (the Hermite
  * curve follows the surface's true outline to about a tenth of a pixel).
@@ -177,6 +181,8 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int dir, uint32_t cov
     uint32_t cr, dr, cn, dn;
     if (!fetch(aa, x, y, &cr, &dr)) return;
     int sr = (int64_t)dr > ds + tol ? 2 : (int64_t)dr + tol >= ds;   /* 2: in front, 1: the surface, 0: behind */
+    /* a curve may thin a pixel drawn covered to half, not empty it (see side()) */
+    if (sr == 1 && cut == 2 && cov < FRAC / 2) cov = FRAC / 2;
     if (sr == 2 || cov == (sr ? FRAC : 0) || (sr && !cut)) return;   /* hidden, as drawn, or kept */
     int n = sr ? r - dir : r + dir;
     if (!fetch(aa, steep ? n : c, steep ? c : n, &cn, &dn)) return;
@@ -254,15 +260,19 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         int64_t ds = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du);
         uint32_t snap = curve ? SNAP_CURVE : SNAP;
         /* every pixel from the chord's two to the curve's, whose coverage
-         * may differ from what was drawn */
+         * may differ from what was drawn, and along a curve two more each
+         * way: where the share's parts do not fold the outline drawn is a
+         * side off the chord, and each of its pixels near the curve takes
+         * the curve's coverage (left out, one would stand out of the line) */
         int64_t r0 = ri < ro ? ri : ro, r1 = r0 + 1;
         if (rk < r0 && curve) r0 = rk;
         if (rk > r1 && curve) r1 = rk;
+        if (curve) r0 -= 2, r1 += 2;
         for (int64_t r = r0; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
             cov = cov < snap ? 0 : cov > FRAC - snap ? FRAC : cov;
-            crossing(aa, steep, (int)c, (int)r, dir, cov, ds, tol, curve || r == ri);
+            crossing(aa, steep, (int)c, (int)r, dir, cov, ds, tol, curve ? 2 : r == ri);
         }
     }
 }

@@ -21,6 +21,11 @@
  * tolerance are printed for comparison.  SILK_AA_DUMP=DIR writes each
  * smooth anti-aliased view as DIR/SHAPE-VIEW.ppm (red: alpha, green: the
  * exact coverage) and lists the pixels that miss.
+ *
+ * On real meshes (../shared/meshes, 6 views each) the anti-aliased frame
+ * against the same frame drawn without (--aa off): no pixel drawn covered
+ * is left under half covered, and no pixel whose 8 neighbours are drawn as
+ * it is changes (SILK_AA_DUMP lists those).
  */
 #include <math.h>
 #include <stdint.h>
@@ -199,8 +204,64 @@ TEST(alpha_is_coverage)
     }
 }
 
+/* The drawn geometry (--aa off) against the anti-aliased frame on real
+ * meshes: a pixel drawn covered keeps at least half coverage (straight
+ * sides are the drawn outline; a curve may thin such a pixel to half, no
+ * more, so no pixel is emptied where the curve lies inside the geometry
+ * drawn), and only the pixels next to the drawn outline change: one whose
+ * 8 neighbours are drawn as it is keeps its value. */
+TEST(drawn_outline_kept)
+{
+    static uint8_t on[W * H], off[W * H];
+    static const char *const names[] = { "bunny-500", "armadillo-500", "dragon-500", "knot-480", "spot-500" };
+    const double dirs[][3] = { { 0.3, 0.4, 1 }, { 1, 0.1, 0.2 }, { -0.5, 1, 0.6 } };
+    size_t nnames = getenv("SILK_SAN") ? 1 : sizeof names / sizeof names[0];
+    long thinned = 0, inner = 0, drawn = 0, lowest = 255;
+    for (size_t k = 0; k < nnames; k++) {
+        tm_fixture f;
+        tm_fixture_init(&f, 32u << 20);
+        if (!tm_fixture_read_shared(&f, names[k]) || tm_fixture_build(&f) != SILK_OK) {
+            CHECKF(0, "cannot read %s", names[k]);
+            tm_fixture_free(&f);
+            continue;
+        }
+        for (size_t d = 0; d < sizeof dirs / sizeof dirs[0]; d++)
+            for (int ortho = 0; ortho < 2; ortho++) {
+                silk_view v;
+                CHECK(tf_view_around_size(&f.m, dirs[d], 2.5, ortho, W, H, &v));
+                CHECK(draw_alpha(&f, &v, SILK_MODE_SMOOTH, 1, 0, on));
+                CHECK(draw_alpha(&f, &v, SILK_MODE_SMOOTH, 0, 0, off));
+                for (int y = 0; y < H; y++)
+                    for (int x = 0; x < W; x++) {
+                        int i = y * W + x, same = 1;
+                        for (int j = -1; j <= 1; j++)
+                            for (int l = -1; l <= 1; l++)
+                                if (y + j >= 0 && y + j < H && x + l >= 0 && x + l < W)
+                                    same &= off[(y + j) * W + x + l] == off[i];
+                        if (off[i]) {
+                            drawn++;
+                            if (on[i] < lowest) lowest = on[i];
+                        }
+                        thinned += off[i] && on[i] < 127;
+                        if (same && on[i] != off[i]) {
+                            inner++;
+                            if (getenv("SILK_AA_DUMP"))
+                                printf("%s view %zu: (%d, %d) alpha %d, drawn %d with its 8 neighbours\n", names[k],
+                                       2 * d + (size_t)ortho, x, y, on[i], off[i]);
+                        }
+                    }
+            }
+        tm_fixture_free(&f);
+    }
+    printf("%zu meshes, 6 views each at %dx%d: %ld pixels drawn covered, the least alpha any keeps %ld; "
+           "%ld under half; %ld changed among drawn neighbours\n", nnames, W, H, drawn, lowest, thinned, inner);
+    CHECKF(!thinned, "%ld pixels drawn covered left under half covered (the least alpha %ld)", thinned, lowest);
+    CHECKF(!inner, "%ld pixels changed whose 8 neighbours are drawn as they are", inner);
+}
+
 int main(void)
 {
     RUN(alpha_is_coverage);
+    RUN(drawn_outline_kept);
     return check_done();
 }
