@@ -130,7 +130,8 @@ static silk_fx cot_half_deg(silk_fx deg)
 /* n / d rounded half away from zero; d > 0. */
 static int64_t div_round64(int64_t n, int64_t d)
 {
-    return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
+    uint64_t q = silk_udiv64(silk_abs64(n) + (uint64_t)d / 2, (uint64_t)d);
+    return n >= 0 ? (int64_t)q : -(int64_t)q;
 }
 
 /* The same, saturated to silk_fx. */
