@@ -42,10 +42,14 @@ typedef struct wvec {
 
 static int bit_length(uint64_t v)
 {
+#if defined(__GNUC__)
+    return v ? 64 - __builtin_clzll(v) : 0;
+#else
     int n = 0;
     while (v >= 256) { v >>= 8; n += 8; }
     while (v) { v >>= 1; n++; }
     return n;
+#endif
 }
 
 static uint64_t max3_abs(const int64_t c[3])
