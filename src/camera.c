@@ -130,7 +130,8 @@ static silk_fx cot_half_deg(silk_fx deg)
 /* n / d rounded half away from zero; d > 0. */
 static int64_t div_round64(int64_t n, int64_t d)
 {
-    return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
+    uint64_t q = silk_udiv64(silk_abs64(n) + (uint64_t)d / 2, (uint64_t)d);
+    return n >= 0 ? (int64_t)q : -(int64_t)q;
 }
 
 /* The same, saturated to silk_fx. */
@@ -141,6 +142,20 @@ static void eye_coords(const silk_view *v, silk_vec3 p, silk_fx e[3])
 {
     int64_t d[3] = { (int64_t)p.x - v->cam.eye.x, (int64_t)p.y - v->cam.eye.y,
                      (int64_t)p.z - v->cam.eye.z };
+#if SILK_CPU32
+    /* d within 32 bits, as it is for any point nearer the eye than 2^15
+     * units: 32-by-32-bit products, one multiply-accumulate instruction each
+     * on a 32-bit processor instead of three; the same sums */
+    if (d[0] == (int32_t)d[0] && d[1] == (int32_t)d[1] && d[2] == (int32_t)d[2]) {
+        int32_t d32[3] = { (int32_t)d[0], (int32_t)d[1], (int32_t)d[2] };
+        for (int i = 0; i < 3; i++) {
+            int64_t s = (int64_t)v->rot24[i][0] * d32[0] + (int64_t)v->rot24[i][1] * d32[1] +
+                        (int64_t)v->rot24[i][2] * d32[2];
+            e[i] = silk_fx_sat(silk_shr_round64(s, 24));
+        }
+        return;
+    }
+#endif
     for (int i = 0; i < 3; i++) {
         /* |R| <= 2^24 and |d| < 2^33: the sum stays below 2^59 */
         int64_t s = (int64_t)v->rot24[i][0] * d[0] + (int64_t)v->rot24[i][1] * d[1] +

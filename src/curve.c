@@ -42,10 +42,14 @@ typedef struct wvec {
 
 static int bit_length(uint64_t v)
 {
+#if defined(__GNUC__)
+    return v ? 64 - __builtin_clzll(v) : 0;
+#else
     int n = 0;
     while (v >= 256) { v >>= 8; n += 8; }
     while (v) { v >>= 1; n++; }
     return n;
+#endif
 }
 
 static uint64_t max3_abs(const int64_t c[3])
@@ -63,7 +67,8 @@ static int64_t mul_pow2(int64_t v, int s) { return v * ((int64_t)1 << s); }
 /* Rounded v / d, d > 0, halves away from zero (symmetric in the sign of v). */
 static int64_t div_round(int64_t v, int64_t d)
 {
-    return v >= 0 ? (v + d / 2) / d : -((-v + d / 2) / d);
+    uint64_t q = silk_udiv64(silk_abs64(v) + (uint64_t)d / 2, (uint64_t)d);
+    return v >= 0 ? (int64_t)q : -(int64_t)q;
 }
 
 /* Square root rounded to nearest: r*r <= v < (r+1)^2, and r+1 when v is past
@@ -337,7 +342,7 @@ uint32_t silk_sample_count(silk_fx h_px, silk_fx cos_alpha, silk_fx tol_px)
     uint64_t r24 = sqrt_round((uint64_t)(SILK_FX_ONE - c) << 31);
     uint64_t num = (uint64_t)h_px * r24;              /* h r in Q40, < 2^55 */
     /* n_s = ceil(sqrt(h r / e) / 2) is the least n with 4 n^2 e >= h r. */
-    uint64_t x24 = num / (uint64_t)tol_px;            /* h r / e in Q24, floored: exact for the test below */
+    uint64_t x24 = silk_udiv64(num, (uint64_t)tol_px);           /* h r / e in Q24, floored: exact for the test below */
     uint64_t cap = (uint64_t)4 * SILK_MAX_SAMPLES * SILK_MAX_SAMPLES << 24;
     if (x24 >= cap) return SILK_MAX_SAMPLES;
     uint64_t n = (silk_isqrt64(x24) >> 13) + 1;       /* sqrt(x)/2, from Q12 */

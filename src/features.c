@@ -30,8 +30,11 @@ silk_index silk_mesh_edge_feature(const silk_mesh *m, uint32_t e)
 {
     if (m->edge_feature) return m->edge_feature[e];
     if (!m->feature || !is_feature(&m->edge[e])) return SILK_NO_INDEX;
+    /* a packed mesh (no edge_feature) counts the feature edges before e:
+     * silk_edge_has_feature written out, which -Os would call per edge */
     uint32_t f = 0;
-    for (uint32_t i = 0; i < e; i++) f += (uint32_t)is_feature(&m->edge[i]);
+    for (const silk_edge *x = m->edge, *end = m->edge + e; x < end; x++)
+        f += (x->flags & SILK_EDGE_FEATURE) && x->v[0] != x->v[1];
     return (silk_index)f;
 }
 

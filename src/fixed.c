@@ -10,6 +10,7 @@
  * and saturated to +-SILK_FX_MAX; docs/fixed-point.md gives the measured
  * worst error of each function.
  */
+#include <stddef.h>
 #include "silk/fixed.h"
 
 /* ---- small integer helpers -------------------------------------------------- */
@@ -53,7 +54,7 @@ static silk_fx div_round_sat(int64_t n, int64_t d)
 {
     if (d == 0) return n > 0 ? SILK_FX_MAX : (n < 0 ? SILK_FX_MIN : 0);
     uint64_t un = silk_abs64(n), ud = silk_abs64(d);
-    uint64_t q = (un + ud / 2) / ud;
+    uint64_t q = silk_udiv64(un + ud / 2, ud);
     if (q > (uint64_t)SILK_FX_MAX) q = (uint64_t)SILK_FX_MAX;
     return ((n < 0) != (d < 0)) ? -(silk_fx)q : (silk_fx)q;
 }
@@ -81,6 +82,16 @@ uint32_t silk_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
     }
     if (rem) *rem = hi >> s;
     return q[0] << 16 | q[1];
+}
+
+uint64_t silk_udiv64_cpu32(uint64_t n, uint64_t d)
+{
+    if (d >> 32) return n / d;
+    uint32_t d32 = (uint32_t)d, hi = (uint32_t)(n >> 32);
+    if (!hi) return (uint32_t)n / d32;
+    if (hi < d32) return silk_udiv64_32(n, d32, NULL);
+    /* the high word's quotient, then the rest: (hi % d) 2^32 + lo < d 2^32 */
+    return (uint64_t)(hi / d32) << 32 | silk_udiv64_32((uint64_t)(hi % d32) << 32 | (uint32_t)n, d32, NULL);
 }
 
 silk_fx silk_fx_div(silk_fx a, silk_fx b) { return div_round_sat((int64_t)a * 65536, b); }

@@ -42,6 +42,12 @@ typedef struct silk_frame_geom {
  * maps clip point c to (w > 0), so that a renderer can tell which band a
  * vertex falls in exactly as the rasterizer will. */
 int64_t silk_raster_row(const silk_vec4 *c, int height);
+/* raster.c: whether triangle a b c, drawn into t (any of its bands) with
+ * back faces culled, draws nothing for a reason the vertices alone give:
+ * wholly outside one clip plane, or inside every plane (not clipped) and
+ * degenerate or seen from behind on the screen. */
+int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const silk_vertex_out *b,
+                       const silk_vertex_out *c);
 /* raster.c: where the rasterizer puts v (w > 0): x, y in 1/SILK_RASTER_SUB
  * pixels (pixel (0,0) covers [0, SILK_RASTER_SUB)^2), depth d as in the
  * depth buffer. */

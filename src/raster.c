@@ -832,6 +832,21 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     else raster_polygon(t, h, nvar, lo, hi, sv, n);
 }
 
+int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const silk_vertex_out *b,
+                       const silk_vertex_out *c)
+{
+    unsigned oa = outcode(&a->clip), ob = outcode(&b->clip), oc = outcode(&c->clip);
+    if (oa & ob & oc) return 1;
+    if (oa | ob | oc) return 0;                    /* clipped: the polygon decides */
+    /* silk_raster_triangle's test (tri_reaches, raster_tri): the screen
+     * positions do not depend on the band */
+    svert sv[3];
+    project_xy(t, a, &sv[0]);
+    project_xy(t, b, &sv[1]);
+    project_xy(t, c, &sv[2]);
+    return orient(&sv[0], &sv[1], &sv[2]) >= 0;
+}
+
 /* ---- lines ----------------------------------------------------------------------- */
 
 /* Depth bias of a line towards the viewer.  A line pixel takes the line's

@@ -495,13 +495,21 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
  * are exact); the first and last unit are rounded outwards, so a band may
  * rebuild a triangle it does not need, never miss one.  The pair 255, 0
  * reaches no row. */
-static void share_rows(frame *f, int height)
+static int part_hidden(const frame *f, const silk_render_opts *o, const silk_target *band);
+
+static void share_rows(frame *f, const silk_render_opts *o, const silk_target *band)
 {
     uint32_t n = f->geom.mesh->ntris;
+    int height = band->height;
     f->row_unit = height / 255 + 1;   /* 255 units more than the height: 255, 0 is past every band */
     for (uint32_t t = 0; f->rows && t < n; t++) {
         share_part(f, t);
         int64_t lo = height, hi = -1;
+        if (part_hidden(f, o, band)) {                   /* no band draws it: none rebuilds it */
+            f->rows[2 * t] = UINT8_MAX;
+            f->rows[2 * t + 1] = 0;
+            continue;
+        }
         for (uint32_t i = 0; i < f->g.nvrec; i++) {
             const silk_vec4 *c = &f->cache[i].clip;
             if (c->w <= 0) {
@@ -518,6 +526,25 @@ static void share_rows(frame *f, int height)
         f->rows[2 * t] = lo <= hi ? (uint8_t)(lo / f->row_unit) : UINT8_MAX;   /* never reached: no band takes it */
         f->rows[2 * t + 1] = lo <= hi ? (uint8_t)(hi / f->row_unit) : 0;
     }
+}
+
+/* Whether the part just built draws nothing in any band: frame_draw culls
+ * back faces for it (a plain share, or any share of a FLAT frame: one
+ * triangle of corners) and silk_raster_culled says its triangle is culled
+ * or outside the view.  Only where frame_draw is all that draws the parts
+ * (no outline anti-aliasing, wire, lines, stencil or SILTEX), so that a
+ * band need not rebuild it. */
+static int part_hidden(const frame *f, const silk_render_opts *o, const silk_target *band)
+{
+#ifdef SILK_NO_AA
+    int aa = 0;   /* built without it: o->aa draws nothing */
+#else
+    int aa = o->aa;
+#endif
+    if (!f->cull || (f->smooth && !f->plain) || f->g.ntri != 1 || aa || o->wire || o->lines || f->siltex || f->clip)
+        return 0;
+    const uint32_t *c = f->g.tri;
+    return silk_raster_culled(band, &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]]);
 }
 
 /* Whether part k can reach no row of y0 .. y1 (share_rows). */
@@ -948,7 +975,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
     if (st == SILK_OK) {
         frame_extras(&f, a, m, h, o, band);
-        share_rows(&f, band->height);
+        share_rows(&f, o, band);
     }
     for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
         band->y0 = y0;

@@ -119,8 +119,10 @@ static const scene_case cases[] = {
 };
 static const int band_heights[] = { 1, 7, 16, 240 };
 
-/* One scene: full frame once, then every band height; all must agree. */
-static void check_case(const scene_case *sc, silk_mode mode, silk_pixfmt fmt, int wire)
+/* One scene: full frame once, then every band height; all must agree.
+ * aa 0 as on the boards: the bands then skip the back faces culled once
+ * for every band (render.c part_hidden). */
+static void check_case(const scene_case *sc, silk_mode mode, silk_pixfmt fmt, int wire, int aa)
 {
     silk_arena a;
     silk_mesh m;
@@ -138,6 +140,7 @@ static void check_case(const scene_case *sc, silk_mode mode, silk_pixfmt fmt, in
     ro.mode = mode;
     ro.bg_rgb = BG;
     ro.wire = wire;
+    ro.aa = aa;
 
     size_t bpp = silk_pixfmt_bytes(fmt), frame_bytes = (size_t)W * H * bpp;
     uint8_t *color = silk_arena_alloc(&a, frame_bytes, SILK_MEM_RASTER);
@@ -182,18 +185,26 @@ static void check_case(const scene_case *sc, silk_mode mode, silk_pixfmt fmt, in
 
 TEST(bands_equal_full_frame_flat)
 {
-    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) check_case(&cases[i], SILK_MODE_FLAT, SILK_PIX_RGB565, 0);
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) check_case(&cases[i], SILK_MODE_FLAT, SILK_PIX_RGB565, 0, 1);
 }
 
 TEST(bands_equal_full_frame_smooth)
 {
-    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) check_case(&cases[i], SILK_MODE_SMOOTH, SILK_PIX_RGB565, 0);
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) check_case(&cases[i], SILK_MODE_SMOOTH, SILK_PIX_RGB565, 0, 1);
 }
 
 TEST(bands_equal_full_frame_rgb888_wire)
 {
-    check_case(&cases[0], SILK_MODE_SMOOTH, SILK_PIX_RGB888, 1);
-    check_case(&cases[3], SILK_MODE_FLAT, SILK_PIX_RGB888, 1);
+    check_case(&cases[0], SILK_MODE_SMOOTH, SILK_PIX_RGB888, 1, 1);
+    check_case(&cases[3], SILK_MODE_FLAT, SILK_PIX_RGB888, 1, 1);
+}
+
+TEST(bands_equal_full_frame_without_aa)
+{
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        check_case(&cases[i], SILK_MODE_FLAT, SILK_PIX_RGB565, 0, 0);
+        check_case(&cases[i], SILK_MODE_SMOOTH, SILK_PIX_RGB565, 0, 0);
+    }
 }
 
 /* A sink that stops the frame: the error names the row, nothing more is
@@ -249,6 +260,7 @@ int main(void)
     RUN(bands_equal_full_frame_flat);
     RUN(bands_equal_full_frame_smooth);
     RUN(bands_equal_full_frame_rgb888_wire);
+    RUN(bands_equal_full_frame_without_aa);
     RUN(sink_stop_is_an_error);
     free(arena_buf);
     return check_done();

@@ -321,6 +321,33 @@ TEST(test_udiv64_32)
     CHECK(bad == 0);
 }
 
+/* silk_udiv64_cpu32 (the 32-bit processor's silk_udiv64) against the plain
+ * 64-bit division: divisors of every length up to 64 bits, numerators of
+ * every length, quotients above 2^32 (the two-step route) and the edges
+ * of each route. */
+TEST(test_udiv64_cpu32)
+{
+    long bad = 0, n_checked = 0;
+    for (int i = 0; i < 4 * N_RANDOM; i++) {
+        unsigned long long r = check_rand64();
+        uint64_t d = check_rand64() >> (r & 63), n = check_rand64() >> ((r >> 6) & 63);
+        if (d == 0) d = 1;
+        const uint64_t ns[] = { n, d * (n >> 32), d * (n >> 32) - 1, ((d & 0xFFFFFFFFu) << 32) - 1,
+                                (d & 0xFFFFFFFFu) << 32, UINT64_MAX, (uint64_t)1 << 61 };
+        for (size_t j = 0; j < sizeof ns / sizeof ns[0]; j++) bad += silk_udiv64_cpu32(ns[j], d) != ns[j] / d;
+        n_checked += (long)(sizeof ns / sizeof ns[0]);
+    }
+    const uint64_t ds[] = { 1, 3, 0xFFFF, 0x10000, 0x7FFFFFFF, 0xFFFFFFFFu, 0x100000000ull, 0x100000001ull };
+    for (size_t i = 0; i < sizeof ds / sizeof ds[0]; i++)
+        for (uint64_t k = 0; k < 4096; k++) {
+            const uint64_t ns[] = { k, (ds[i] << 32) - 1 - k, (ds[i] << 32) + k, UINT64_MAX - k, k << 32 | k };
+            for (size_t j = 0; j < sizeof ns / sizeof ns[0]; j++) bad += silk_udiv64_cpu32(ns[j], ds[i]) != ns[j] / ds[i];
+            n_checked += (long)(sizeof ns / sizeof ns[0]);
+        }
+    printf("  udiv64_cpu32: %ld of %ld wrong (bound 0: exact)\n", bad, n_checked);
+    CHECK(bad == 0);
+}
+
 TEST(test_isqrt)
 {
     int bad32 = 0, bad64 = 0;
@@ -872,6 +899,7 @@ int main(void)
     RUN(test_sqrt);
     RUN(test_rsqrt);
     RUN(test_udiv64_32);
+    RUN(test_udiv64_cpu32);
     RUN(test_isqrt);
     RUN(test_sqrt_rsqrt_all);
     RUN(test_sincos);

@@ -307,6 +307,8 @@ static void put_mesh_fn(writer *w, const silk_mesh *m)
     fprintf(f, "    m->edge_feature = NULL;   /* counted along the edges (silk_mesh_edge_feature) */\n");
     fprintf(f, "    m->feature = (silk_feature_seg *)%s_feature;\n", n);
     if (m->vis) fprintf(f, "    m->vis = &%s_vis;\n", n);
+    /* closed and wound outward (orient.c): back faces may be culled */
+    if (m->closed_outward) fprintf(f, "    m->closed_outward = 1;\n");
     fprintf(f, "    m->bbox_min = silk_v3(%ld, %ld, %ld);\n", (long)m->bbox_min.x, (long)m->bbox_min.y,
             (long)m->bbox_min.z);
     fprintf(f, "    m->bbox_max = silk_v3(%ld, %ld, %ld);\n}\n\n", (long)m->bbox_max.x, (long)m->bbox_max.y,

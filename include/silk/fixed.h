@@ -106,6 +106,21 @@ silk_fx silk_fx_rsqrt(silk_fx a);          /* 1/sqrt(a), a > 0; a <= 0 gives SIL
  * call of several hundred. */
 uint32_t silk_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
 
+/* floor(n / d) for any d > 0, the same quotient as n / d: whenever d fits
+ * 32 bits through silk_udiv64_32 (in two steps when the quotient does not
+ * fit 32 bits either), otherwise the plain division.  For 32-bit
+ * processors; silk_udiv64 picks it there and n / d elsewhere. */
+uint64_t silk_udiv64_cpu32(uint64_t n, uint64_t d);
+
+static inline uint64_t silk_udiv64(uint64_t n, uint64_t d)
+{
+#if SILK_CPU32
+    return silk_udiv64_cpu32(n, d);
+#else
+    return n / d;
+#endif
+}
+
 /* Integer square roots, exact floor. */
 uint32_t silk_isqrt32(uint32_t v);
 uint32_t silk_isqrt64(uint64_t v);
