@@ -420,7 +420,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
     for (int k = 0; k < 3; k++)
         if (coarse_outline(aa, m, v, t, k, front)) return 1;
 #ifndef SILK_NO_AA_CREASE
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; aa->creases && k < 3; k++)
         if (crease(aa, m, v, t, k, front)) return 1;
 #endif
     return 0;
@@ -514,7 +514,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
     if (g->nvrec > aa->npt) return;
     for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
 #ifndef SILK_NO_AA_CREASE
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; aa->creases && k < 3; k++)
         if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
 #endif
     const uint32_t *tri = g->tri;
