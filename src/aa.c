@@ -55,6 +55,14 @@
  * the pixel left alone; an empty pixel next to such a one takes its colour
  * (two outlines meet there).
  *
+ * Creases.  A visible crease, a feature edge between two front-facing
+ * triangles, is walked the same way (in SMOOTH its feature curve, eq. 1-4,
+ * between its samples, eq. 8; else the mesh edge), but both sides are
+ * faces: each is drawn up to the chord, so the pixels the chord leaves on
+ * either side give the two colours, and a pixel the curve covers otherwise
+ * than drawn is blended from them when it and both hold the surface.
+ * -DSILK_NO_AA_CREASE (and silk_render_opts.aa = 2) leave creases aliased.
+ *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
  * rows just above and below a band are drawn into an apron for the pixels
