@@ -596,7 +596,8 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
     } else if (cli_is(arg, "--aa")) {
         VALUE();
         if (strcmp(v, "outline") == 0) o->render.aa = 2;   /* what a board built with -DSILK_NO_AA_CREASE draws */
-        else if (!(r = cli_parse_choice(opt, v, "on", "off", &c))) o->render.aa = !c;
+        else if (strcmp(v, "on") == 0 || strcmp(v, "off") == 0) o->render.aa = strcmp(v, "on") == 0;
+        else r = cli_fail(-1, "%s must be on, off or outline (got \"%s\")", opt, v);
     } else if (strcmp(arg, "--wire") == 0) {
         o->render.wire = 1;
     } else if (cli_is(arg, "--lines")) {
