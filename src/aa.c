@@ -55,6 +55,14 @@
  * the pixel left alone; an empty pixel next to such a one takes its colour
  * (two outlines meet there).
  *
+ * Creases.  A visible crease, a feature edge between two front-facing
+ * triangles, is walked the same way (in SMOOTH its feature curve, eq. 1-4,
+ * between its samples, eq. 8; else the mesh edge), but both sides are
+ * faces: each is drawn up to the chord, so the pixels the chord leaves on
+ * either side give the two colours, and a pixel the curve covers otherwise
+ * than drawn is blended from them when it and both hold the surface.
+ * -DSILK_NO_AA_CREASE (and silk_render_opts.aa = 2) leave creases aliased.
+ *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
  * rows just above and below a band are drawn into an apron for the pixels
@@ -194,6 +202,30 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int dir, uint32_t cov
     else blend(aa, x, y, cov, cn, cr, 255, dr ? 255 : 0);
 }
 
+#ifndef SILK_NO_AA_CREASE
+/* Pixel r of column c next to a crease (see side()), which the face on
+ * the inside (towards r + dir) covers by cov / FRAC.  Both faces are
+ * drawn up to the chord: the pixel the chord leaves inside, ri, holds the
+ * inside's colour and the one before it the outside's.  The pixel becomes
+ * the two blended by the coverage when it and both of those hold the
+ * surface (depths within tol of the crease's: nothing in front hides it). */
+static void crease_px(silk_aa *aa, int steep, int c, int64_t r, int64_t ri, int dir, uint32_t cov, int64_t ds,
+                      int64_t tol)
+{
+    const silk_target *t = aa->t;
+    int64_t rr[3] = { r, ri, ri - dir };
+    uint32_t rgb[3], d;
+    int x = steep ? (int)r : c, y = steep ? c : (int)r;
+    if (cov == ((r - ri) * dir >= 0 ? FRAC : 0) || y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width)
+        return;   /* as drawn, or not the band's */
+    for (int i = 0; i < 3; i++)
+        if (!fetch(aa, steep ? (int)rr[i] : c, steep ? c : (int)rr[i], &rgb[i], &d) || !d ||
+            (int64_t)d > ds + tol || (int64_t)d + tol < ds)
+            return;
+    blend(aa, x, y, cov, rgb[1], rgb[2], 255, 255);
+}
+#endif
+
 /* Where a through b crosses u = uc, in 1/FRAC pixels across (a.x <= uc < b.x). */
 static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
 {
@@ -206,7 +238,8 @@ static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
  * rasterizer drew the chord p-q; with mid (SUBDIV - 1 points from p to q)
  * the outline is the curve through them, and the pixels between the two
  * get the curve's coverage too, their colours from the drawn pixels next
- * to the chord. */
+ * to the chord.  curve: 0 a straight side, 1 a silhouette segment, 2 a
+ * crease (the two sides are faces, each pixel blended by crease_px). */
 static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid,
                  int curve)
 {
@@ -258,7 +291,7 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         }
         int64_t rk = floor_div(vk, FRAC), fk = vk - rk * FRAC;
         int64_t ds = 2 * ((int64_t)(p.d >> 1) + (int64_t)dd * U / du);
-        uint32_t snap = curve ? SNAP_CURVE : SNAP;
+        uint32_t snap = curve == 1 || (curve && mid) ? SNAP_CURVE : SNAP;
         /* every pixel from the chord's two to the curve's, whose coverage
          * may differ from what was drawn, and along a curve two more each
          * way: where the share's parts do not fold the outline drawn is a
@@ -267,11 +300,17 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         int64_t r0 = ri < ro ? ri : ro, r1 = r0 + 1;
         if (rk < r0 && curve) r0 = rk;
         if (rk > r1 && curve) r1 = rk;
-        if (curve) r0 -= 2, r1 += 2;
+        if (curve == 1) r0 -= 2, r1 += 2;
         for (int64_t r = r0; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
             cov = cov < snap ? 0 : cov > FRAC - snap ? FRAC : cov;
+#ifndef SILK_NO_AA_CREASE
+            if (curve == 2) {
+                crease_px(aa, steep, (int)c, r, ri, dir, cov, ds, tol);
+                continue;
+            }
+#endif
             crossing(aa, steep, (int)c, (int)r, dir, cov, ds, tol, curve ? 2 : r == ri);
         }
     }
@@ -321,12 +360,77 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
     return front && !tri_front(aa, m, v, nb);
 }
 
+#ifndef SILK_NO_AA_CREASE
+/* Whether side k of input triangle t is a visible crease walked from t: a
+ * feature edge between t and a triangle after it, both facing the eye. */
+static int crease(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
+{
+    silk_index e = silk_mesh_tri_edge(m, t, k);
+    if (!front || e >= m->nedges || !silk_edge_has_feature(&m->edge[e])) return 0;
+    const silk_edge *ed = &m->edge[e];
+    uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
+    return nb != SILK_NO_INDEX && nb < m->ntris && nb > t && tri_front(aa, m, v, nb);
+}
+
+/* Point u of curve c (NULL: corner record `corner`) through the vertex stage. */
+static silk_aa_pt crease_point(silk_aa *aa, const silk_curve *c, silk_fx u, uint32_t corner)
+{
+    silk_geom og = *aa->geom;
+    silk_vrec r = { SILK_VREC_CORNER, corner, 0, 0 };
+    if (c) {
+        *aa->curve = *c;
+        og.curves = aa->curve;
+        r.kind = SILK_VREC_CURVE, r.a = 0, r.t = u;
+    }
+    aa->hal->vertex(aa->hal, &og, &r, aa->out);
+    return point(aa->t, aa->out);
+}
+
+/* Crease side k of input triangle t: the chords the two faces are drawn
+ * up to, each pixel they cross blended by the faces' coverage of it.  In
+ * SMOOTH a sampled feature edge is its feature segment's curve (eq. 1-4)
+ * drawn as chords between its samples (eq. 8), each followed as SUBDIV
+ * chords of the curve; otherwise the mesh edge.  The inside is t's, where
+ * its third corner lies; the depth tolerance t's range (tolerance()). */
+static void crease_walk(silk_aa *aa, uint32_t t, int k)
+{
+    silk_aa_pt a = crease_point(aa, NULL, 0, 3 * t + (uint32_t)k), b = crease_point(aa, NULL, 0, 3 * t + (k + 1) % 3),
+               in = crease_point(aa, NULL, 0, 3 * t + (k + 2) % 3);
+    if (!a.ok || !b.ok || !in.ok) return;
+    int64_t tol = tolerance(&a, &b, &in);
+    const silk_sil_edge *e = aa->sil ? silk_sil_side_edge(aa->sil, t, (uint32_t)k) : NULL;
+    if (!e || !e->sampled || !e->nfeat) {
+        side(aa, a, b, &in, tol, NULL, 2);
+        return;
+    }
+    silk_curve c;
+    silk_sil_edge_curve(aa->sil, e, &c);
+    silk_aa_pt *mid = aa->walk + SUBDIV + 1;
+    silk_fx ua = 0;
+    for (uint32_t i = 0; i <= e->nchain; i++) {
+        silk_fx ub = i < e->nchain ? aa->sil->chain[e->chain0 + i] : SILK_FX_ONE;
+        silk_aa_pt p = crease_point(aa, &c, ua, 0), q = crease_point(aa, &c, ub, 0);
+        int ok = p.ok && q.ok;
+        for (int j = 1; ok && j < SUBDIV; j++) {
+            mid[j - 1] = crease_point(aa, &c, ua + (silk_fx)(((int64_t)ub - ua) * j / SUBDIV), 0);
+            ok = mid[j - 1].ok;
+        }
+        if (ok) side(aa, p, q, &in, tol, mid, 2);
+        ua = ub;
+    }
+}
+#endif
+
 int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t)
 {
     if (f && f->tri_state && (f->tri_state[t] & SILK_TS_SIL)) return 1;
     int front = tri_front(aa, m, v, t);
     for (int k = 0; k < 3; k++)
         if (coarse_outline(aa, m, v, t, k, front)) return 1;
+#ifndef SILK_NO_AA_CREASE
+    for (int k = 0; aa->creases && k < 3; k++)
+        if (crease(aa, m, v, t, k, front)) return 1;
+#endif
     return 0;
 }
 
@@ -417,6 +521,10 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
 {
     if (g->nvrec > aa->npt) return;
     for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
+#ifndef SILK_NO_AA_CREASE
+    for (int k = 0; aa->creases && k < 3; k++)
+        if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
+#endif
     const uint32_t *tri = g->tri;
     if (g->ntri == 1) {
         /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */

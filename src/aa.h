@@ -49,6 +49,7 @@ typedef struct silk_aa {
      * front), filled as asked; NULL: computed every time (same answers).
      * The caller owns it: it holds for the whole frame, every band. */
     uint8_t *facing;
+    int creases;                  /* visible creases blended too (set by the caller) */
 } silk_aa;
 
 /* Room from the top of the arena for band t: the pending pixels, max_recs

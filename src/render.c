@@ -869,6 +869,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         return;
     }
     aa.facing = f->facing;
+    aa.creases = o->aa == 1;
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
     aa.sil = f->smooth ? &f->sil : NULL;

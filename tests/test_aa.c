@@ -76,10 +76,11 @@ static void exact_coverage(const silk_view *v, const es_shape *s, uint16_t *cov)
         }
 }
 
-static int draw_alpha(tm_fixture *f, const silk_view *v, silk_mode mode, int aa, silk_fx tol, uint8_t *alpha)
+/* The frame at w x h (at most 4W x 4H) into rgb and alpha. */
+static int draw(tm_fixture *f, const silk_view *v, silk_mode mode, int aa, silk_fx tol, int w, int h, uint8_t *rgb,
+                uint8_t *alpha)
 {
-    static uint8_t rgb[W * H * 3];
-    static uint32_t depth[W * H];
+    static uint32_t depth[16 * W * H];
     silk_phong ph;
     silk_hal hal;
     silk_phong_default(&ph, v);
@@ -90,11 +91,17 @@ static int draw_alpha(tm_fixture *f, const silk_view *v, silk_mode mode, int aa,
     o.aa = aa;
     if (tol) o.tolerance_px = tol;
     silk_target t;
-    silk_target_init(&t, W, H, 0, H, SILK_PIX_RGB888, rgb, depth);
+    silk_target_init(&t, w, h, 0, h, SILK_PIX_RGB888, rgb, depth);
     t.alpha = alpha;
     silk_frame_stats st;
     silk_error err;
     return silk_render(&f->a, &f->m, v, &hal, &o, &t, &st, &err) == SILK_OK && !st.fell_back;
+}
+
+static int draw_alpha(tm_fixture *f, const silk_view *v, silk_mode mode, int aa, silk_fx tol, uint8_t *alpha)
+{
+    static uint8_t rgb[W * H * 3];
+    return draw(f, v, mode, aa, tol, W, H, rgb, alpha);
 }
 
 static void compare(const uint16_t *cov, const uint8_t *alpha, aa_stats *s)
@@ -259,9 +266,87 @@ TEST(drawn_outline_kept)
     CHECKF(!inner, "%ld pixels changed whose 8 neighbours are drawn as they are", inner);
 }
 
+/* Creases: a cylinder's rims between its caps and its side, in SMOOTH
+ * mode, against the same view drawn 4 x 4 times larger and averaged (what
+ * `silk render --ssaa 4` draws).  The rim pixels are those whose 5 x 5
+ * neighbourhood, drawn without anti-aliasing, is all surface and holds two
+ * colours further apart than 40 in a channel.  Checked: every pixel the
+ * anti-aliasing changes there lies, channel by channel, between the
+ * colours of its 3 x 3 neighbourhood as drawn (a blend of the two faces);
+ * the mean error along the rim is at most CREASE_BOUND, and below that of
+ * the frame without anti-aliasing. */
+#define CREASE_BOUND 2.0
+TEST(crease_blends_faces)
+{
+    static uint8_t on[W * H * 3], off[W * H * 3], big[16 * W * H * 3], alpha[16 * W * H];
+    const double dirs[][3] = { { 0.1, 1, 0.45 }, { 0.6, 1, -0.3 }, { 0.3, -1, 0.7 } };
+    tm_fixture f;
+    tm_fixture_init(&f, 32u << 20);
+    if (!gen_mesh_fixture(&f, GEN_CYLINDER)) {
+        CHECK(0);
+        tm_fixture_free(&f);
+        return;
+    }
+    long rim = 0, changed = 0, outside = 0;
+    double err_on = 0, err_off = 0;
+    for (size_t d = 0; d < sizeof dirs / sizeof dirs[0]; d++) {
+        silk_view v, vb;
+        CHECK(tf_view_around_size(&f.m, dirs[d], 3, 0, W, H, &v));
+        CHECK(tf_view_around_size(&f.m, dirs[d], 3, 0, 4 * W, 4 * H, &vb));
+        CHECK(draw(&f, &v, SILK_MODE_SMOOTH, 1, 0, W, H, on, alpha));
+        CHECK(draw(&f, &v, SILK_MODE_SMOOTH, 0, 0, W, H, off, alpha));
+        static uint8_t covered[W * H];
+        for (int i = 0; i < W * H; i++) covered[i] = alpha[i] != 0;
+        CHECK(draw(&f, &vb, SILK_MODE_SMOOTH, 0, 0, 4 * W, 4 * H, big, alpha));
+        for (int y = 2; y < H - 2; y++)
+            for (int x = 2; x < W - 2; x++) {
+                int all = 1, lo[3] = { 255, 255, 255 }, hi[3] = { 0, 0, 0 }, jump = 0;
+                for (int j = -2; j <= 2; j++)
+                    for (int l = -2; l <= 2; l++) {
+                        const uint8_t *q = &off[((y + j) * W + x + l) * 3];
+                        all &= covered[(y + j) * W + x + l];
+                        for (int c = 0; c < 3; c++)
+                            if (j * j <= 1 && l * l <= 1) {
+                                if (q[c] < lo[c]) lo[c] = q[c];
+                                if (q[c] > hi[c]) hi[c] = q[c];
+                            }
+                    }
+                for (int j = -2; all && j <= 2; j++)
+                    for (int l = -2; l <= 2; l++)
+                        for (int c = 0; c < 3; c++) {
+                            int a = off[((y + j) * W + x + l) * 3 + c], b = off[(y * W + x) * 3 + c];
+                            jump |= abs(a - b) > 40;
+                        }
+                if (!all || !jump) continue;
+                rim++;
+                const uint8_t *p = &on[(y * W + x) * 3], *q = &off[(y * W + x) * 3];
+                changed += memcmp(p, q, 3) != 0;
+                for (int c = 0; c < 3; c++) {
+                    int sum = 0;
+                    for (int j = 0; j < 4; j++)
+                        for (int l = 0; l < 4; l++) sum += big[((4 * y + j) * 4 * W + 4 * x + l) * 3 + c];
+                    double ref = sum / 16.0;
+                    err_on += fabs(p[c] - ref) / 3;
+                    err_off += fabs(q[c] - ref) / 3;
+                    outside += p[c] < lo[c] || p[c] > hi[c];
+                }
+            }
+    }
+    tm_fixture_free(&f);
+    printf("cylinder, %zu views at %dx%d: %ld rim pixels, %ld changed; mean error against 4x4 supersampling "
+           "%.2f (%.2f without anti-aliasing); %ld channels outside their neighbours' range\n",
+           sizeof dirs / sizeof dirs[0], W, H, rim, changed, err_on / (rim ? rim : 1), err_off / (rim ? rim : 1),
+           outside);
+    CHECK(rim > 0 && changed > 0);
+    CHECKF(!outside, "%ld rim channels outside the colours of their 3 x 3 neighbourhood", outside);
+    CHECKF(err_on / rim <= CREASE_BOUND && err_on < err_off, "rim mean error %.2f with aa, %.2f without",
+           err_on / rim, err_off / rim);
+}
+
 int main(void)
 {
     RUN(alpha_is_coverage);
     RUN(drawn_outline_kept);
+    RUN(crease_blends_faces);
     return check_done();
 }

@@ -17,6 +17,8 @@
 #include <string.h>
 #include "check.h"
 #include "support/testframe.h"
+#include "support/testmesh.h"
+#include "../tools/gen.h"
 #include "silk/silk.h"
 
 #define W 320
@@ -119,15 +121,16 @@ static const scene_case cases[] = {
 };
 static const int band_heights[] = { 1, 7, 16, 240 };
 
-/* One scene: full frame once, then every band height; all must agree.
- * aa 0 as on the boards: the bands then skip the back faces culled once
- * for every band (render.c part_hidden). */
-static void check_case(const scene_case *sc, silk_mode mode, silk_pixfmt fmt, int wire, int aa)
+/* One scene of mesh m in arena a: full frame once, then every band
+ * height; all must agree.  aa 0 as on the boards: the bands then skip the
+ * back faces culled once for every band (render.c part_hidden). */
+static void check_mesh(silk_arena *arena, const silk_mesh *mesh, const scene_case *sc, silk_mode mode, silk_pixfmt fmt,
+                       int wire, int aa)
 {
-    silk_arena a;
-    silk_mesh m;
+    silk_arena a = *arena;
+    silk_mesh m = *mesh;
     silk_view v;
-    if (!load(&a, sc->mesh, &m) || !make_view(&m, sc->az, sc->el, sc->ortho, &v)) {
+    if (!make_view(&m, sc->az, sc->el, sc->ortho, &v)) {
         CHECKF(0, "cannot set up %s", sc->mesh);
         return;
     }
@@ -183,6 +186,17 @@ static void check_case(const scene_case *sc, silk_mode mode, silk_pixfmt fmt, in
     free(copy);
 }
 
+static void check_case(const scene_case *sc, silk_mode mode, silk_pixfmt fmt, int wire, int aa)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load(&a, sc->mesh, &m)) {
+        CHECKF(0, "cannot set up %s", sc->mesh);
+        return;
+    }
+    check_mesh(&a, &m, sc, mode, fmt, wire, aa);
+}
+
 TEST(bands_equal_full_frame_flat)
 {
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) check_case(&cases[i], SILK_MODE_FLAT, SILK_PIX_RGB565, 0, 1);
@@ -205,6 +219,31 @@ TEST(bands_equal_full_frame_without_aa)
         check_case(&cases[i], SILK_MODE_FLAT, SILK_PIX_RGB565, 0, 0);
         check_case(&cases[i], SILK_MODE_SMOOTH, SILK_PIX_RGB565, 0, 0);
     }
+}
+
+/* Creases blended by the anti-aliasing read the rows next to a band too:
+ * `silk gen`'s cylinder, its rims in view, FLAT and SMOOTH. */
+TEST(bands_equal_full_frame_creases)
+{
+    const scene_case sc[] = { { "cylinder", 20, 30, 0 }, { "cylinder", 250, -40, 1 } };
+    tm_fixture f;
+    gen_params p;
+    gen_mesh gm;
+    silk_error err;
+    tm_fixture_init(&f, ARENA_BYTES);
+    gen_defaults(GEN_CYLINDER, &p);
+    int ok = gen_build(&p, &gm) == 0;
+    if (ok) {
+        ok = tm_fixture_input(&f, gm.pos, gm.nverts, gm.tri, gm.ntris) && tm_fixture_build(&f) == SILK_OK &&
+             silk_vis_build(&f.m, NULL, &f.a, &err) == SILK_OK;
+        gen_free(&gm);
+    }
+    CHECKF(ok, "cannot build the cylinder");
+    for (size_t i = 0; ok && i < sizeof sc / sizeof sc[0]; i++) {
+        check_mesh(&f.a, &f.m, &sc[i], SILK_MODE_SMOOTH, SILK_PIX_RGB565, 0, 1);
+        check_mesh(&f.a, &f.m, &sc[i], SILK_MODE_FLAT, SILK_PIX_RGB888, 0, 1);
+    }
+    tm_fixture_free(&f);
 }
 
 /* A sink that stops the frame: the error names the row, nothing more is
@@ -261,6 +300,7 @@ int main(void)
     RUN(bands_equal_full_frame_smooth);
     RUN(bands_equal_full_frame_rgb888_wire);
     RUN(bands_equal_full_frame_without_aa);
+    RUN(bands_equal_full_frame_creases);
     RUN(sink_stop_is_an_error);
     free(arena_buf);
     return check_done();

@@ -381,7 +381,8 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "Look (docs/viewer.md, \"Material and light\"):\n"
             "  --bg RRGGBB|none     background colour in hex (default %06x); none: a PNG\n"
             "                       with alpha: the object's coverage of each pixel\n"
-            "  --aa on|off          anti-aliased outlines, flat and smooth without lines\n"
+            "  --aa on|off|outline  anti-aliased outlines and creases, flat and smooth without\n"
+            "                       lines (outline: the outlines only)\n"
             "                       (default on)\n"
             "  --wire               draw the edges; triangles added by smoothing in red\n"
             "  --lines over|only    pen-and-ink outlines over the shading or alone: the\n"
@@ -594,7 +595,9 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         if (!o->bg_none) r = cli_parse_rgb(opt, v, &o->render.bg_rgb);
     } else if (cli_is(arg, "--aa")) {
         VALUE();
-        if (!(r = cli_parse_choice(opt, v, "on", "off", &c))) o->render.aa = !c;
+        if (strcmp(v, "outline") == 0) o->render.aa = 2;   /* what a board built with -DSILK_NO_AA_CREASE draws */
+        else if (strcmp(v, "on") == 0 || strcmp(v, "off") == 0) o->render.aa = strcmp(v, "on") == 0;
+        else r = cli_fail(-1, "%s must be on, off or outline (got \"%s\")", opt, v);
     } else if (strcmp(arg, "--wire") == 0) {
         o->render.wire = 1;
     } else if (cli_is(arg, "--lines")) {

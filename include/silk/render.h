@@ -124,7 +124,8 @@ typedef struct silk_render_opts {
      * silk_frame_stats.clip_tri); aa below anti-aliases its outline too */
     const struct silk_silmap *silmap;
     uint32_t silmap_hint;
-    int aa;                  /* anti-aliased outlines (default 1; FLAT, SMOOTH and CLIP frames without lines) */
+    int aa;                  /* anti-aliased outlines (default 1; FLAT, SMOOTH and CLIP frames without lines),
+                                and visible creases in FLAT and SMOOTH; 2: the outlines only */
     /* SILTEX: the model's silhouette texture (silk_model_siltex); the mesh
      * drawn is the model's hull, the HAL's stages shade it */
     const struct silk_siltex *siltex;

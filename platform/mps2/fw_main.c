@@ -60,6 +60,8 @@
 /* Whether the core draws anti-aliased outlines (silk render's --aa) */
 #ifdef SILK_NO_AA
 #define FW_AA "off"
+#elif defined SILK_NO_AA_CREASE
+#define FW_AA "outline"
 #else
 #define FW_AA "on"
 #endif
