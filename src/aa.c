@@ -425,11 +425,25 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
 {
     if (f && f->tri_state && (f->tri_state[t] & SILK_TS_SIL)) return 1;
     int front = tri_front(aa, m, v, t);
+#ifdef SILK_NO_AA_CREASE
     for (int k = 0; k < 3; k++)
         if (coarse_outline(aa, m, v, t, k, front)) return 1;
-#ifndef SILK_NO_AA_CREASE
-    for (int k = 0; aa->creases && k < 3; k++)
-        if (crease(aa, m, v, t, k, front)) return 1;
+#else
+    /* coarse_outline's and crease's rules at once (asked of every triangle
+     * every band): each side's edge looked up once, its neighbour's facing
+     * asked once, and only where t faces the eye */
+    for (int k = 0; k < 3; k++) {
+        silk_index e = silk_mesh_tri_edge(m, t, (uint32_t)k);
+        if (e >= m->nedges) continue;
+        const silk_edge *ed = &m->edge[e];
+        uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
+        if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
+        if (!front) continue;
+        int walked = aa->sil && aa->sil->tri_state && (aa->sil->tri_state[nb] & SILK_TS_SIL);
+        int feature = aa->creases && nb > t && silk_edge_has_feature(ed);
+        if (walked && !feature) continue;
+        if (tri_front(aa, m, v, nb) ? feature : !walked) return 1;
+    }
 #endif
     return 0;
 }
