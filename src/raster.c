@@ -236,6 +236,17 @@ static unsigned outcode(const silk_vec4 *c)
            (unsigned)(w < W_MIN) << 6;
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* Whether c is inside every plane (outcode 0), in four tests: most corners
+ * are, and those need no more (a board keeps the code bytes instead). */
+static int inside(const silk_vec4 *c)
+{
+    int64_t w = c->w, gw = GUARD * w;
+    return w >= W_MIN && (uint64_t)(c->z + w) <= (uint64_t)(2 * w) && (uint64_t)(c->x + gw) <= (uint64_t)(2 * gw) &&
+           (uint64_t)(c->y + gw) <= (uint64_t)(2 * gw);
+}
+#endif
+
 static silk_fx lerp30(silk_fx a, silk_fx b, int64_t t30)
 {
     /* |b - a| < 2^32, t30 < 2^30: the product stays below 2^62 */
@@ -285,7 +296,17 @@ typedef struct svert {
 } svert;
 
 /* n / d rounded to nearest (halves up), d > 0 */
-static int64_t round_div(int64_t n, int64_t d) { return floor_div(2 * n + d, 2 * d); }
+static int64_t round_div(int64_t n, int64_t d)
+{
+#if !SILK_CPU32
+    /* a 64-bit host divides in one instruction: floor_div's narrowing is
+     * for 32-bit processors (every corner of every triangle comes here) */
+    int64_t m = 2 * n + d, q = m / (2 * d);
+    return q - (m % (2 * d) != 0 && m < 0);
+#else
+    return floor_div(2 * n + d, 2 * d);
+#endif
+}
 
 /* y' = (1 - y/w) H/2 in subpixels (w > 0); below 2^50 within the guard
  * band, below 2^55 for any clip point. */
@@ -795,7 +816,13 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     int lo, hi;
     if (!t || !a || !b || !c || !band_rows(t, &lo, &hi)) return;
     int nvar = varying_count(h);
-    unsigned oa = outcode(&a->clip), ob = outcode(&b->clip), oc = outcode(&c->clip);
+    unsigned oa = 0, ob = 0, oc = 0;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (!inside(&a->clip) || !inside(&b->clip) || !inside(&c->clip))
+#endif
+    {
+        oa = outcode(&a->clip), ob = outcode(&b->clip), oc = outcode(&c->clip);
+    }
     if (oa & ob & oc) return;                      /* wholly outside one plane */
 
     silk_vertex_out buf[2][MAXPOLY];
