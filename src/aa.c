@@ -421,14 +421,25 @@ static void crease_walk(silk_aa *aa, uint32_t t, int k)
 }
 #endif
 
+#ifndef SILK_NO_AA_CREASE
+/* tri_front with the memo's answer read in place (the candidate test asks
+ * it of every triangle and its neighbours every band). */
+static inline int tri_front_known(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
+{
+    unsigned b = aa->facing ? (unsigned)aa->facing[t / 4] >> 2 * (t % 4) : 0;
+    return b & 2 ? (int)(b & 1) : tri_front(aa, m, v, t);
+}
+#endif
+
 int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t)
 {
     if (f && f->tri_state && (f->tri_state[t] & SILK_TS_SIL)) return 1;
-    int front = tri_front(aa, m, v, t);
 #ifdef SILK_NO_AA_CREASE
+    int front = tri_front(aa, m, v, t);
     for (int k = 0; k < 3; k++)
         if (coarse_outline(aa, m, v, t, k, front)) return 1;
 #else
+    int front = tri_front_known(aa, m, v, t);
     /* coarse_outline's and crease's rules at once (asked of every triangle
      * every band): each side's edge looked up once, its neighbour's facing
      * asked once, and only where t faces the eye */
@@ -442,7 +453,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
         int walked = aa->sil && aa->sil->tri_state && (aa->sil->tri_state[nb] & SILK_TS_SIL);
         int feature = aa->creases && nb > t && silk_edge_has_feature(ed);
         if (walked && !feature) continue;
-        if (tri_front(aa, m, v, nb) ? feature : !walked) return 1;
+        if (tri_front_known(aa, m, v, nb) ? feature : !walked) return 1;
     }
 #endif
     return 0;
