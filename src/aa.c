@@ -300,7 +300,7 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
         int64_t r0 = ri < ro ? ri : ro, r1 = r0 + 1;
         if (rk < r0 && curve) r0 = rk;
         if (rk > r1 && curve) r1 = rk;
-        if (curve == 1) r0 -= 2, r1 += 2;
+        if (curve == 1 && steep) r0 -= 2, r1 += 2;   /* along its row: a band reads one row past its own */
         for (int64_t r = r0; r <= r1; r++) {
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
