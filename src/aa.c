@@ -28,7 +28,8 @@
  * between the chord's samples and projected by the vertex stage (a
  * polyline within 1/16 of the chord's distance from the curve), and every
  * pixel from the chord's two to the one the curve crosses, and two more
- * each way (the outline drawn where the parts do not fold), gets the
+ * each way along a row for a steep side (the outline drawn where the
+ * parts do not fold; a band reads only one row past its own), gets the
  * curve's coverage, except that a pixel drawn covered keeps at least half:
  * where the curve lies inside the geometry drawn by more than that, the
  * pixel's outside would be two pixels away, and a pixel emptied there
