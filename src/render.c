@@ -796,11 +796,15 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
      * near as the nearest, so each pixel is shaded once (docs/raster.md).
      * In reverse order: of fragments at equal depth the first drawn keeps
      * the pixel, as in a single pass.  It doubles the per-triangle work, so
-     * only where triangles are large (16 pixels on average or more). */
+     * only where triangles are large (16 pixels on average or more), and
+     * not in a band of a frame drawn share by share: there it would also
+     * rebuild every share twice a band, which costs more than the shading
+     * it spares (a smooth bunny-500 frame on the Cortex-M3 board: 47 M
+     * instructions with it, 37 M without; docs/small-devices.md). */
     uint64_t ntri = f->part == share_part ? f->geom.mesh->ntris : g->ntri;
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
-                      !f->siltex;
+                      !f->siltex && (f->part != share_part || t->rows >= t->height);
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
