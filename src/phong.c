@@ -225,6 +225,7 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
         dr += mul32(ndl, li->color.x) >> 16;
         dg += mul32(ndl, li->color.y) >> 16;
         db += mul32(ndl, li->color.z) >> 16;
+        if (!s) continue;   /* most pixels are outside the highlight (pow_unit) */
         sr += mul32(s, li->color.x) >> 16;
         sg += mul32(s, li->color.y) >> 16;
         sb += mul32(s, li->color.z) >> 16;
@@ -233,17 +234,24 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
     int64_t spec = m->specular;
     /* Usual case, one test: every light sum and material term in [0, 16):
      * then every product has factors below 2^21, no sum can leave the
-     * range, and only the final clamp to 1 remains. */
-    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb | spec | m->ambient | m->diffuse | base[0] |
-                              base[1] | base[2] | m->specular_color.x | m->specular_color.y |
-                              m->specular_color.z);
+     * range, and only the final clamp to 1 remains.  The material terms
+     * and base are silk_fx values, so their low 32 bits tell. */
+    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb) |
+                   (uint32_t)(spec | m->ambient | m->diffuse | base[0] | base[1] | base[2] | m->specular_color.x |
+                              m->specular_color.y | m->specular_color.z);
     if (all < ((uint64_t)1 << 20)) {
-        int64_t amb = m->ambient, dif = m->diffuse;
-        int64_t cr = (mul32(base[0], amb + (mul32(dif, dr) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.x) >> 16, sr) >> 16);
-        int64_t cg = (mul32(base[1], amb + (mul32(dif, dg) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.y) >> 16, sg) >> 16);
-        int64_t cb = (mul32(base[2], amb + (mul32(dif, db) >> 16)) >> 16) + (mul32(mul32(spec, m->specular_color.z) >> 16, sb) >> 16);
-        uint32_t c[3] = { (uint32_t)(cr < SILK_FX_ONE ? cr : SILK_FX_ONE), (uint32_t)(cg < SILK_FX_ONE ? cg : SILK_FX_ONE),
-                          (uint32_t)(cb < SILK_FX_ONE ? cb : SILK_FX_ONE) };
+        /* every sum below is under 2^30: 32-bit arithmetic */
+        int32_t amb = m->ambient, dif = m->diffuse, hr = 0, hg = 0, hb = 0;
+        if (sr | sg | sb) {   /* a highlight (about half the pixels have none) */
+            hr = (int32_t)(mul32(mul32(spec, m->specular_color.x) >> 16, sr) >> 16);
+            hg = (int32_t)(mul32(mul32(spec, m->specular_color.y) >> 16, sg) >> 16);
+            hb = (int32_t)(mul32(mul32(spec, m->specular_color.z) >> 16, sb) >> 16);
+        }
+        uint32_t cr = (uint32_t)(mul32(base[0], amb + (int32_t)(mul32(dif, dr) >> 16)) >> 16) + (uint32_t)hr;
+        uint32_t cg = (uint32_t)(mul32(base[1], amb + (int32_t)(mul32(dif, dg) >> 16)) >> 16) + (uint32_t)hg;
+        uint32_t cb = (uint32_t)(mul32(base[2], amb + (int32_t)(mul32(dif, db) >> 16)) >> 16) + (uint32_t)hb;
+        uint32_t c[3] = { cr < SILK_FX_ONE ? cr : SILK_FX_ONE, cg < SILK_FX_ONE ? cg : SILK_FX_ONE,
+                          cb < SILK_FX_ONE ? cb : SILK_FX_ONE };
         return ((c[0] * 255 + SILK_FX_HALF) >> 16) << 16 | ((c[1] * 255 + SILK_FX_HALF) >> 16) << 8 |
                ((c[2] * 255 + SILK_FX_HALF) >> 16);
     }
