@@ -152,7 +152,6 @@ FILENAME ~ /report\.txt$/ {
         tticks[tf] = field("render_ticks"); ntime++
     } else if ($0 ~ /^fw stages /) {
         tf = field("frame"); ov = field("overhead_ticks_per_1000_calls") / 1000
-        vticks[tf] = field("vertex_ticks") - ov * field("vertex_calls"); vcalls[tf] = field("vertex_calls")
         fticks[tf] = field("fragment_ticks") - ov * field("fragment_calls"); fcalls[tf] = field("fragment_calls")
     } else if ($0 ~ /^fw stage /) {
         tf = field("frame"); sname = $6; sub(/^stage=/, "", sname)

@@ -143,23 +143,18 @@ static int send_band(void *user, const silk_target *t)
     return o->failed;
 }
 
-/* The HAL with each stage call timed: vertex and fragment ticks and calls.
- * Summed over many calls the tick counts are the stages' time (each call's
- * start falls anywhere within a tick), plus a fixed overhead per call. */
+/* The HAL with each fragment stage call timed: ticks and calls.  Summed
+ * over many calls the tick count is the stage's time (each call's start
+ * falls anywhere within a tick), plus a fixed overhead per call.  The
+ * vertex stage stays the default one: the renderer culls back faces only
+ * behind it (it knows where that stage puts the mesh), so the frame is
+ * drawn as the one written, with as many fragments (the stage clock times
+ * the vertex stage). */
 typedef struct timed_hal {
     silk_hal hal;                /* first: the core calls the stages with &hal */
     const silk_hal *inner;
-    uint32_t vticks, vcalls, fticks, fcalls;
+    uint32_t fticks, fcalls;
 } timed_hal;
-
-static void timed_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out)
-{
-    timed_hal *t = (timed_hal *)h;
-    uint32_t t0 = fw_ticks();
-    t->inner->vertex(t->inner, g, r, out);
-    t->vticks += fw_ticks() - t0;
-    t->vcalls++;
-}
 
 static uint32_t timed_fragment(const silk_hal *h, const silk_fx *var)
 {
@@ -175,7 +170,6 @@ static void timed_hal_init(timed_hal *t, const silk_hal *inner)
 {
     memset(t, 0, sizeof *t);
     t->hal = *inner;
-    t->hal.vertex = timed_vertex;
     t->hal.fragment = timed_fragment;
     t->inner = inner;
 }
@@ -268,10 +262,9 @@ static int time_stages(silk_arena *a, const silk_mesh *m, const silk_view *view,
         return 1;
     }
     const char *mname = ro->mode == SILK_MODE_FLAT ? "flat" : "smooth";
-    say("fw stages frame=%d camera=%d mode=%s vertex_ticks=%lu vertex_calls=%lu fragment_ticks=%lu "
-        "fragment_calls=%lu overhead_ticks_per_1000_calls=%lu",
-        frame, k, mname, (unsigned long)th.vticks, (unsigned long)th.vcalls,
-        (unsigned long)th.fticks, (unsigned long)th.fcalls, (unsigned long)pass->overhead);
+    say("fw stages frame=%d camera=%d mode=%s fragment_ticks=%lu fragment_calls=%lu "
+        "overhead_ticks_per_1000_calls=%lu",
+        frame, k, mname, (unsigned long)th.fticks, (unsigned long)th.fcalls, (unsigned long)pass->overhead);
     for (int s = 0; s < SILK_STAGE_COUNT; s++)
         say("fw stage frame=%d camera=%d mode=%s stage=%s ticks=%lu pieces=%lu overhead_ticks_per_1000_pieces=%lu",
             frame, k, mname, silk_stage_name((silk_stage)s), (unsigned long)clock.ticks[s],
