@@ -18,7 +18,7 @@ BOARD_FORMAT := SILK_PIX_RGB565
 # bytes for a frame's scratch: a smooth frame of a 500-triangle shared
 # model needs 7.5 to 10.1 KB; taller bands are faster, since every band
 # sets up again the triangles that reach into it (4 rows take a smooth
-# bunny-500 frame from about 68 to 87 M instructions).
+# bunny-500 frame from about 36 to 42 M instructions).
 BOARD_BAND_ROWS := 8
 BOARD_SINK   := semihosting
 
