@@ -874,6 +874,41 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
     return orient(&sv[0], &sv[1], &sv[2]) >= 0;
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+int silk_raster_place(const silk_target *t, const silk_vertex_out *v, int32_t xy[2])
+{
+    if (!inside(&v->clip)) return 0;
+    svert s;
+    project_xy(t, v, &s);   /* within the guard band: |x|, |y| below 2 SILK_MAX_DIM SUB */
+    xy[0] = (int32_t)s.x;
+    xy[1] = (int32_t)s.y;
+    return 1;
+}
+
+void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
+                        const int32_t *const xy[3])
+{
+    int lo, hi;
+    if (!band_rows(t, &lo, &hi)) return;
+    svert sv[3];
+    for (int i = 0; i < 3; i++) {
+        sv[i].x = xy[i][0];
+        sv[i].y = xy[i][1];
+    }
+    /* silk_raster_triangle's own test, culled or not: raster_tri draws
+     * nothing for a triangle it fails (tri_reaches).  The cheapest part
+     * first: half of a closed mesh faces away. */
+    int64_t area = orient(&sv[0], &sv[1], &sv[2]);
+    if (area == 0 || (t->cull_back && area > 0) || !tri_reaches(t, lo, hi, sv, area)) return;
+    for (int i = 0; i < 3; i++) {
+        sv[i].w = v[i]->clip.w;
+        sv[i].var = v[i]->var;
+        project_depth(v[i], &sv[i]);
+    }
+    raster_tri(t, h, varying_count(h), lo, hi, &sv[0], &sv[1], &sv[2]);
+}
+#endif
+
 /* ---- lines ----------------------------------------------------------------------- */
 
 /* Depth bias of a line towards the viewer.  A line pixel takes the line's

@@ -142,6 +142,10 @@ typedef struct frame {
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
+    /* FLAT: where the rasterizer places slot s's vertex, vc_xy[2s .. 2s+1]
+     * (silk_raster_place), or VC_UNPLACED, or VC_OUTSIDE (clipped); NULL
+     * when the triangles are not drawn straight from the cache (draw_direct) */
+    int32_t *vc_xy;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -249,25 +253,35 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
  * uv (silk_hal_vertex_by_attrs), so the corners of the six or so triangles
  * around a vertex are evaluated once, not once each.  The cache is
  * direct-mapped on the normal index: neighbouring triangles come close
- * together in a mesh, and a miss only costs the evaluation. */
-static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
+ * together in a mesh, and a miss only costs the evaluation.  corner_slot
+ * returns the slot holding r's output, UINT32_MAX for a corner without a
+ * usable normal (not cached). */
+#define VC_UNPLACED INT32_MIN        /* vc_xy: not placed yet this frame */
+#define VC_OUTSIDE (INT32_MIN + 1)   /* vc_xy: outside a clip plane */
+static uint32_t corner_slot(const frame *f, const silk_vrec *r)
 {
     const silk_mesh *m = f->geom.mesh;
     uint32_t a = r->a, n;
-    if (a / 3 < m->ntris && (n = m->tri_normal[a]) < m->nnormals) {
-        uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
-        uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
-        silk_vertex_out *slot = &f->vc[s];
-        if (tag[0] != n || tag[1] != v || tag[2] != uv) {
-            f->hal->vertex(f->hal, &f->geom, r, slot);
-            tag[0] = n;
-            tag[1] = v;
-            tag[2] = uv;
-        }
-        *out = *slot;
-        return;
+    if (a / 3 >= m->ntris || (n = m->tri_normal[a]) >= m->nnormals) return UINT32_MAX;
+    uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
+    uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
+    if (tag[0] != n || tag[1] != v || tag[2] != uv) {
+        f->hal->vertex(f->hal, &f->geom, r, &f->vc[s]);
+        tag[0] = n;
+        tag[1] = v;
+        tag[2] = uv;
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->vc_xy) f->vc_xy[2 * s] = VC_UNPLACED;
+#endif
     }
-    f->hal->vertex(f->hal, &f->geom, r, out);
+    return s;
+}
+
+static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
+{
+    uint32_t s = corner_slot(f, r);
+    if (s != UINT32_MAX) *out = f->vc[s];
+    else f->hal->vertex(f->hal, &f->geom, r, out);
 }
 
 #ifdef SILK_NO_VERTEX_CACHE
@@ -369,7 +383,7 @@ static void share_part(frame *f, uint32_t t)
  * normal of the mesh when there is room, else fewer (more misses, the same
  * bits), none below 64.  It is not part of the frame's need
  * (silk_frame_stats.frame_bytes): a frame without it is drawn the same. */
-#define VCACHE_MAX 4096
+#define VCACHE_MAX 65536
 static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 {
 #ifdef SILK_NO_VERTEX_CACHE
@@ -379,18 +393,22 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 #else
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
+    const int direct = !f->smooth;   /* FLAT (and CLIP's hull): draw_direct, which places the vertices too */
+    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag + (direct ? 2 * sizeof *f->vc_xy : 0),
+                 half = silk_arena_free_bytes(a) / 2,
                  room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes, free0 = silk_arena_free_bytes(a);
     uint32_t n = 64;
     while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
     f->vc = silk_arena_array_top(a, n, sizeof *f->vc, SILK_MEM_FRAME);
     f->vc_tag = silk_arena_array_top(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
-    if (!f->vc || !f->vc_tag) {
+    if (direct) f->vc_xy = silk_arena_array_top(a, 2 * (size_t)n, sizeof *f->vc_xy, SILK_MEM_FRAME);
+    if (!f->vc || !f->vc_tag || (direct && !f->vc_xy)) {
         f->vc = NULL;
+        f->vc_xy = NULL;
         return;
     }
-    memset(f->vc_tag, 0xFF, 3 * (size_t)n * sizeof *f->vc_tag);   /* empty: no normal index is UINT32_MAX */
+    for (uint32_t i = 0; i < n; i++) f->vc_tag[3 * i] = UINT32_MAX;   /* empty: no normal index is UINT32_MAX */
     f->vc_bytes = free0 - silk_arena_free_bytes(a);
     f->vc_mask = n - 1;
 #endif
@@ -780,6 +798,53 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     }
 }
 
+/* FLAT through the vertex cache: input triangle k drawn straight from the
+ * cache's slots (shade: the fragment stage, or NULL for depth alone), its
+ * share never built.  Each vertex is placed on the screen once a frame
+ * (silk_raster_place, vc_xy), so that the triangles the rasterizer would
+ * draw nothing of - seen from behind, zero area, between pixel centres or
+ * outside the band, most of a fine mesh's - cost a few comparisons; the
+ * others go to silk_raster_triangle with the bits the share would give
+ * it.  0 when a corner is not cached (no usable normal, or two corners in
+ * one slot): the caller then builds the share as usual. */
+static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    const silk_mesh *m = f->geom.mesh;
+    const silk_vertex_out *v[3];
+    const int32_t *xy[3];
+    uint32_t s[3];
+    int placed = 1;
+    if (k >= m->ntris) return 0;
+    for (uint32_t i = 0; i < 3; i++) {
+        uint32_t a = 3 * k + i, n = m->tri_normal[a], *tag = &f->vc_tag[3 * (n & f->vc_mask)];
+        /* a hit inline (most corners); a miss fills the slot */
+        if (n < m->nnormals && tag[0] == n && tag[1] == m->tri[a] && tag[2] == (m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX)) {
+            s[i] = n & f->vc_mask;
+        } else {
+            const silk_vrec r = { SILK_VREC_CORNER, a, 0, 0 };   /* silk_frame_flat_emit_tri's */
+            if ((s[i] = corner_slot(f, &r)) == UINT32_MAX) return 0;
+        }
+        int32_t *p = &f->vc_xy[2 * s[i]];
+        v[i] = &f->vc[s[i]];
+        if (p[0] == VC_UNPLACED && !silk_raster_place(t, v[i], p)) p[0] = VC_OUTSIDE;
+        placed &= p[0] != VC_OUTSIDE;
+        xy[i] = p;
+    }
+    if (s[0] == s[1] || s[1] == s[2] || s[2] == s[0]) return 0;   /* a later corner may have taken an earlier's slot */
+    t->cull_back = f->cull;   /* FLAT: frame_draw's rule */
+    if (placed) silk_raster_placed(t, shade, v, xy);
+    else silk_raster_triangle(t, shade, v[0], v[1], v[2]);
+    return 1;
+#else
+    (void)f;
+    (void)t;
+    (void)shade;
+    (void)k;
+    return 0;
+#endif
+}
+
 /* The frame's triangles part by part (only the parts that reach into the
  * band), then the lines. */
 static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
@@ -806,6 +871,14 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (pass <= 0 && f->vc_xy) {
+                t0 = silk_stage_start(f->clock);
+                int drawn = draw_direct(f, t, pass < 0 ? NULL : f->hal, k);
+                silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+                if (drawn) continue;
+            }
+#endif
             f->part(f, k);
             t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
             /* SILTEX: a back face of the hull is seen from inside it, where
