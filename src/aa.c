@@ -441,6 +441,12 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
         if (coarse_outline(aa, m, v, t, k, front)) return 1;
 #else
     int front = tri_front_known(aa, m, v, t);
+    /* A triangle facing away from the eye has an outline side only against
+     * nothing, which a closed mesh has none of (orient.c): half of such a
+     * mesh is done with here. */
+#ifndef SILK_NO_VERTEX_CACHE   /* a host's shortcut: a board keeps the code bytes */
+    if (!front && m->closed_outward) return 0;
+#endif
     /* coarse_outline's and crease's rules at once (asked of every triangle
      * every band): each side's edge looked up once, its neighbour's facing
      * asked once, and only where t faces the eye */

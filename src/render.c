@@ -258,7 +258,10 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
  * usable normal (not cached). */
 #define VC_UNPLACED INT32_MIN        /* vc_xy: not placed yet this frame */
 #define VC_OUTSIDE (INT32_MIN + 1)   /* vc_xy: outside a clip plane */
-static uint32_t corner_slot(const frame *f, const silk_vrec *r)
+#if defined(__GNUC__)
+__attribute__((always_inline))   /* every corner of a streamed frame: inline in share_part, as a call it costs a tenth more */
+#endif
+static inline uint32_t corner_slot(const frame *f, const silk_vrec *r)
 {
     const silk_mesh *m = f->geom.mesh;
     uint32_t a = r->a, n;
@@ -383,7 +386,7 @@ static void share_part(frame *f, uint32_t t)
  * normal of the mesh when there is room, else fewer (more misses, the same
  * bits), none below 64.  It is not part of the frame's need
  * (silk_frame_stats.frame_bytes): a frame without it is drawn the same. */
-#define VCACHE_MAX 65536
+#define VCACHE_MAX 4096
 static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 {
 #ifdef SILK_NO_VERTEX_CACHE
@@ -810,21 +813,13 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
 static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
 {
 #ifndef SILK_NO_VERTEX_CACHE
-    const silk_mesh *m = f->geom.mesh;
     const silk_vertex_out *v[3];
     const int32_t *xy[3];
     uint32_t s[3];
     int placed = 1;
-    if (k >= m->ntris) return 0;
     for (uint32_t i = 0; i < 3; i++) {
-        uint32_t a = 3 * k + i, n = m->tri_normal[a], *tag = &f->vc_tag[3 * (n & f->vc_mask)];
-        /* a hit inline (most corners); a miss fills the slot */
-        if (n < m->nnormals && tag[0] == n && tag[1] == m->tri[a] && tag[2] == (m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX)) {
-            s[i] = n & f->vc_mask;
-        } else {
-            const silk_vrec r = { SILK_VREC_CORNER, a, 0, 0 };   /* silk_frame_flat_emit_tri's */
-            if ((s[i] = corner_slot(f, &r)) == UINT32_MAX) return 0;
-        }
+        const silk_vrec r = { SILK_VREC_CORNER, 3 * k + i, 0, 0 };   /* silk_frame_flat_emit_tri's */
+        if ((s[i] = corner_slot(f, &r)) == UINT32_MAX) return 0;
         int32_t *p = &f->vc_xy[2 * s[i]];
         v[i] = &f->vc[s[i]];
         if (p[0] == VC_UNPLACED && !silk_raster_place(t, v[i], p)) p[0] = VC_OUTSIDE;
