@@ -466,6 +466,31 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
     return 0;
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand)
+{
+    for (uint32_t t = 0; t < m->ntris; t++) (void)tri_front(aa, m, v, t);   /* every facing, in mesh order */
+    memset(cand, 0, ((size_t)m->ntris + 7) / 8);
+#ifdef SILK_NO_AA_CREASE
+    const int creases = 0;
+#else
+    const int creases = aa->creases;
+#endif
+    /* Closed: each edge is a side of its two triangles and of no other, so
+     * silk_aa_candidate's rule per side is a rule per edge, and a
+     * triangle facing away has no outline side. */
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        const silk_edge *ed = &m->edge[e];
+        uint32_t t0 = ed->t[0], t1 = ed->t[1];
+        if (t0 >= m->ntris || t1 >= m->ntris) continue;
+        int f0 = aa->facing[t0 / 4] >> 2 * (t0 % 4) & 1, f1 = aa->facing[t1 / 4] >> 2 * (t1 % 4) & 1;   /* known */
+        uint32_t mark = f0 != f1 ? (f0 ? t0 : t1)                           /* an outline side */
+                        : f0 && creases && silk_edge_has_feature(ed) ? (t0 < t1 ? t0 : t1)   /* a crease, from its first triangle */
+                        : SILK_NO_INDEX;
+        if (mark != SILK_NO_INDEX) cand[mark / 8] = (uint8_t)(cand[mark / 8] | 1u << (mark % 8));
+    }
+}
+#endif
 
 /* Where a share's silhouette segment is: its curve among the share's
  * curves, and the records of its ends A and B (the samples between are

@@ -122,6 +122,10 @@ typedef struct frame {
     uint32_t *vc_tag;
     uint32_t vc_mask;
     uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
+#ifndef SILK_NO_VERTEX_CACHE
+    uint8_t *cand;            /* FLAT, closed mesh: silk_aa_candidates' bits, or NULL */
+    uint8_t cand_ready;       /* made (by the first band's frame_aa) */
+#endif
     size_t vc_bytes;          /* the arena it and the facing memo take */
     size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
     size_t peak_before;       /* the arena's top high-water before those */
@@ -432,6 +436,14 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
     f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);
     if (!f->facing) return;
     memset(f->facing, 0, n);   /* nothing known yet */
+#ifndef SILK_NO_VERTEX_CACHE
+    /* FLAT of a closed mesh: the outline's candidates for all bands at once
+     * (silk_aa_candidates), a bit a triangle, when the budget has room too */
+    size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
+    if (!f->smooth && f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
+        n + nc + 2 * SILK_ARENA_ALIGN <= free0 / 2)
+        f->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
+#endif
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 #else
     (void)f;
@@ -943,9 +955,19 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.sil = f->smooth ? &f->sil : NULL;
     aa.hal = f->hal;
     aa.geom = &f->geom;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (f->cand && !f->cand_ready) {
+        silk_aa_candidates(&aa, f->geom.mesh, v, f->cand);
+        f->cand_ready = 1;
+    }
+#endif
     for (uint32_t k = 0; k < f->nparts; k++) {
         if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->cand ? !(f->cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
+#else
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
+#endif
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }
