@@ -339,13 +339,17 @@ static void tri_side(silk_aa *aa, const silk_aa_pt *a, const silk_aa_pt *b, cons
 
 /* silk_sil_tri_front, through aa->facing when there is one: the outline
  * test asks it of a triangle once for itself and once for each neighbour. */
-static int tri_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
+static inline int memo_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
 {
-    if (!aa->facing) return silk_sil_tri_front(m, v, t);
     uint8_t *b = &aa->facing[t / 4];
     unsigned sh = 2 * (t % 4);
     if (!(*b >> sh & 2)) *b = (uint8_t)(*b | (2u | (unsigned)silk_sil_tri_front(m, v, t)) << sh);
     return *b >> sh & 1;
+}
+
+static int tri_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
+{
+    return aa->facing ? memo_front(aa, m, v, t) : silk_sil_tri_front(m, v, t);
 }
 
 /* FLAT's rule for side k of input triangle t. */
@@ -469,7 +473,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
 #ifndef SILK_NO_VERTEX_CACHE
 void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand)
 {
-    for (uint32_t t = 0; t < m->ntris; t++) (void)tri_front(aa, m, v, t);   /* every facing, in mesh order */
+    for (uint32_t t = 0; t < m->ntris; t++) (void)memo_front(aa, m, v, t);   /* every facing, in mesh order */
     memset(cand, 0, ((size_t)m->ntris + 7) / 8);
 #ifdef SILK_NO_AA_CREASE
     const int creases = 0;
