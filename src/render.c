@@ -258,22 +258,24 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
  * around a vertex are evaluated once, not once each.  The cache is
  * direct-mapped on the normal index: neighbouring triangles come close
  * together in a mesh, and a miss only costs the evaluation.  corner_slot
- * returns the slot holding r's output, UINT32_MAX for a corner without a
- * usable normal (not cached). */
+ * returns the slot holding the output for corner a (record r, or when r is
+ * NULL the corner's own CORNER record, as silk_frame_flat_emit_tri makes
+ * it), UINT32_MAX for a corner without a usable normal (not cached). */
 #define VC_UNPLACED INT32_MIN        /* vc_xy: not placed yet this frame */
 #define VC_OUTSIDE (INT32_MIN + 1)   /* vc_xy: outside a clip plane */
 #if defined(__GNUC__)
 __attribute__((always_inline))   /* every corner of a streamed frame: inline in share_part, as a call it costs a tenth more */
 #endif
-static inline uint32_t corner_slot(const frame *f, const silk_vrec *r)
+static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *r)
 {
     const silk_mesh *m = f->geom.mesh;
-    uint32_t a = r->a, n;
+    uint32_t n;
     if (a / 3 >= m->ntris || (n = m->tri_normal[a]) >= m->nnormals) return UINT32_MAX;
     uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
     uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
     if (tag[0] != n || tag[1] != v || tag[2] != uv) {
-        f->hal->vertex(f->hal, &f->geom, r, &f->vc[s]);
+        const silk_vrec own = { SILK_VREC_CORNER, a, 0, 0 };
+        f->hal->vertex(f->hal, &f->geom, r ? r : &own, &f->vc[s]);
         tag[0] = n;
         tag[1] = v;
         tag[2] = uv;
@@ -286,7 +288,7 @@ static inline uint32_t corner_slot(const frame *f, const silk_vrec *r)
 
 static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
 {
-    uint32_t s = corner_slot(f, r);
+    uint32_t s = corner_slot(f, r->a, r);
     if (s != UINT32_MAX) *out = f->vc[s];
     else f->hal->vertex(f->hal, &f->geom, r, out);
 }
@@ -830,8 +832,7 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
     uint32_t s[3];
     int placed = 1;
     for (uint32_t i = 0; i < 3; i++) {
-        const silk_vrec r = { SILK_VREC_CORNER, 3 * k + i, 0, 0 };   /* silk_frame_flat_emit_tri's */
-        if ((s[i] = corner_slot(f, &r)) == UINT32_MAX) return 0;
+        if ((s[i] = corner_slot(f, 3 * k + i, NULL)) == UINT32_MAX) return 0;
         int32_t *p = &f->vc_xy[2 * s[i]];
         v[i] = &f->vc[s[i]];
         if (p[0] == VC_UNPLACED && !silk_raster_place(t, v[i], p)) p[0] = VC_OUTSIDE;
