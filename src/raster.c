@@ -904,8 +904,6 @@ int silk_raster_place(const silk_target *t, const silk_vertex_out *v, int32_t xy
 void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
                         const int32_t *const xy[3])
 {
-    int lo, hi;
-    if (!band_rows(t, &lo, &hi)) return;
     svert sv[3];
     for (int i = 0; i < 3; i++) {
         sv[i].x = xy[i][0];
@@ -915,7 +913,9 @@ void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out
      * nothing for a triangle it fails (tri_reaches).  The cheapest part
      * first: half of a closed mesh faces away. */
     int64_t area = orient(&sv[0], &sv[1], &sv[2]);
-    if (area == 0 || (t->cull_back && area > 0) || !tri_reaches(t, lo, hi, sv, area)) return;
+    int lo, hi;
+    if (area == 0 || (t->cull_back && area > 0) || !band_rows(t, &lo, &hi) || !tri_reaches(t, lo, hi, sv, area))
+        return;
     for (int i = 0; i < 3; i++) {
         sv[i].w = v[i]->clip.w;
         sv[i].var = v[i]->var;

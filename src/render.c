@@ -963,6 +963,12 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     }
 #endif
     for (uint32_t k = 0; k < f->nparts; k++) {
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->cand && !f->cand[k / 8]) {   /* eight triangles at once: most have no outline side */
+            k |= 7;
+            continue;
+        }
+#endif
         if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
 #ifndef SILK_NO_VERTEX_CACHE
         if (f->cand ? !(f->cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
