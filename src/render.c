@@ -815,6 +815,7 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     }
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
 /* FLAT through the vertex cache: input triangle k drawn straight from the
  * cache's slots (shade: the fragment stage, or NULL for depth alone), its
  * share never built.  Each vertex is placed on the screen once a frame
@@ -826,7 +827,6 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
  * one slot): the caller then builds the share as usual. */
 static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
 {
-#ifndef SILK_NO_VERTEX_CACHE
     const silk_vertex_out *v[3];
     const int32_t *xy[3];
     uint32_t s[3];
@@ -844,14 +844,8 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
     if (placed) silk_raster_placed(t, shade, v, xy);
     else silk_raster_triangle(t, shade, v[0], v[1], v[2]);
     return 1;
-#else
-    (void)f;
-    (void)t;
-    (void)shade;
-    (void)k;
-    return 0;
-#endif
 }
+#endif
 
 /* The frame's triangles part by part (only the parts that reach into the
  * band), then the lines. */
