@@ -824,7 +824,9 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
  * outside the band, most of a fine mesh's - cost a few comparisons; the
  * others go to silk_raster_triangle with the bits the share would give
  * it.  0 when a corner is not cached (no usable normal, or two corners in
- * one slot): the caller then builds the share as usual. */
+ * one slot): the caller then builds the share as usual.  (The stage clock
+ * counts the vertex stage run here as the rasterizer's: a clock per
+ * corner would cost more than the look-up.) */
 static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
 {
     const silk_vertex_out *v[3];
