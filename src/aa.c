@@ -339,13 +339,17 @@ static void tri_side(silk_aa *aa, const silk_aa_pt *a, const silk_aa_pt *b, cons
 
 /* silk_sil_tri_front, through aa->facing when there is one: the outline
  * test asks it of a triangle once for itself and once for each neighbour. */
-static int tri_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
+static inline int memo_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
 {
-    if (!aa->facing) return silk_sil_tri_front(m, v, t);
     uint8_t *b = &aa->facing[t / 4];
     unsigned sh = 2 * (t % 4);
     if (!(*b >> sh & 2)) *b = (uint8_t)(*b | (2u | (unsigned)silk_sil_tri_front(m, v, t)) << sh);
     return *b >> sh & 1;
+}
+
+static int tri_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
+{
+    return aa->facing ? memo_front(aa, m, v, t) : silk_sil_tri_front(m, v, t);
 }
 
 /* FLAT's rule for side k of input triangle t. */
@@ -441,6 +445,12 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
         if (coarse_outline(aa, m, v, t, k, front)) return 1;
 #else
     int front = tri_front_known(aa, m, v, t);
+    /* A triangle facing away from the eye has an outline side only against
+     * nothing, which a closed mesh has none of (orient.c): half of such a
+     * mesh is done with here. */
+#ifndef SILK_NO_VERTEX_CACHE   /* a host's shortcut: a board keeps the code bytes */
+    if (!front && m->closed_outward) return 0;
+#endif
     /* coarse_outline's and crease's rules at once (asked of every triangle
      * every band): each side's edge looked up once, its neighbour's facing
      * asked once, and only where t faces the eye */
@@ -460,6 +470,31 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
     return 0;
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand)
+{
+    for (uint32_t t = 0; t < m->ntris; t++) (void)memo_front(aa, m, v, t);   /* every facing, in mesh order */
+    memset(cand, 0, ((size_t)m->ntris + 7) / 8);
+#ifdef SILK_NO_AA_CREASE
+    const int creases = 0;
+#else
+    const int creases = aa->creases;
+#endif
+    /* Closed: each edge is a side of its two triangles and of no other, so
+     * silk_aa_candidate's rule per side is a rule per edge, and a
+     * triangle facing away has no outline side. */
+    for (uint32_t e = 0; e < m->nedges; e++) {
+        const silk_edge *ed = &m->edge[e];
+        uint32_t t0 = ed->t[0], t1 = ed->t[1];
+        if (t0 >= m->ntris || t1 >= m->ntris) continue;
+        int f0 = aa->facing[t0 / 4] >> 2 * (t0 % 4) & 1, f1 = aa->facing[t1 / 4] >> 2 * (t1 % 4) & 1;   /* known */
+        uint32_t mark = f0 != f1 ? (f0 ? t0 : t1)                           /* an outline side */
+                        : f0 && creases && silk_edge_has_feature(ed) ? (t0 < t1 ? t0 : t1)   /* a crease, from its first triangle */
+                        : SILK_NO_INDEX;
+        if (mark != SILK_NO_INDEX) cand[mark / 8] = (uint8_t)(cand[mark / 8] | 1u << (mark % 8));
+    }
+}
+#endif
 
 /* Where a share's silhouette segment is: its curve among the share's
  * curves, and the records of its ends A and B (the samples between are

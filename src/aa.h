@@ -63,6 +63,14 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
  * a SMOOTH plan f) a silhouette triangle, whose segment is an outline. */
 int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t);
 
+/* silk_aa_candidate for every input triangle of a FLAT frame (no plan) of
+ * a closed mesh (silk_mesh.closed_outward) at once: bit t of cand (ntris
+ * bits) set where it says 1, from one pass over the edges instead of three
+ * sides a triangle, and aa->facing (which must be there) filled for every
+ * triangle.  The answers do not change from band to band.  Not in a build
+ * with -DSILK_NO_VERTEX_CACHE. */
+void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand);
+
 /* The outline sides of input triangle t's share g (out: its vertex-stage
  * output per record), walked over the band: a share that is t as it is
  * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate (in

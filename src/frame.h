@@ -54,6 +54,17 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
 #define SILK_RASTER_SUB 16
 void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *x, int64_t *y, uint32_t *d);
 
+/* raster.c, for a renderer that places each vertex once a frame
+ * (render.c's vertex cache; not in a build with -DSILK_NO_VERTEX_CACHE):
+ * silk_raster_place puts v where silk_raster_triangle does (xy in
+ * 1/SILK_RASTER_SUB pixels) and returns 1, or returns 0 when v lies
+ * outside a clip plane (then the triangles at v are clipped);
+ * silk_raster_placed is silk_raster_triangle for a triangle of three
+ * vertices so placed at xy, the same pixels without placing them again. */
+int silk_raster_place(const silk_target *t, const silk_vertex_out *v, int32_t xy[2]);
+void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
+                        const int32_t *const xy[3]);
+
 /* phong.c: whether h's vertex stage is the default one, which reads a
  * record only through silk_vrec_eval: then two CORNER records of the same
  * vertex, normal and uv give the same bits, and the renderer may evaluate

@@ -642,6 +642,61 @@ static int64_t orient(const svert *a, const svert *b, const svert *c)
     return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
 }
 
+/* What raster_tri needs only where it draws a pixel: the weights and
+ * varyings' set-up (when shading), the depth plane, and the planes U, V, T
+ * at pixel 0 of row y, stepped from there row by row by additions only
+ * (the same exact values as stepped from the triangle's first row).  Most
+ * triangles of a fine mesh that reach a row cover no pixel centre at all. */
+static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
+{
+    if (shading) {
+        s->vnarrow = SILK_CPU32;
+        for (int k = 0; k < s->nvar; k++) {
+            const silk_fx *a0 = s->v[0]->var, *a1 = s->v[1]->var, *a2 = s->v[2]->var;
+            s->vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
+            s->vd1[k] = (int64_t)a1[k] - a0[k];
+            s->vd2[k] = (int64_t)a2[k] - a0[k];
+            if (s->vd1[k] != (int32_t)s->vd1[k] || s->vd2[k] != (int32_t)s->vd2[k]) s->vnarrow = 0;
+        }
+        silk_fx wmin = s->v[0]->w;
+        for (int i = 1; i < 3; i++) if (s->v[i]->w < wmin) wmin = s->v[i]->w;
+        for (int i = 0; i < 3; i++) {
+            uint32_t r;   /* 0 < wmin <= w < 2^31: the quotient is at most 2^QN_BITS */
+            s->qn[i] = udiv_q32((uint64_t)wmin << QN_BITS, (uint32_t)s->v[i]->w, &r);
+            if (s->qn[i] < 1) s->qn[i] = 1;
+        }
+        s->du = s->qn[1] * s->ea[1] * SUB;
+        s->dv = s->qn[2] * s->ea[2] * SUB;
+        s->dt = (s->qn[0] * s->ea[0] + s->qn[1] * s->ea[1] + s->qn[2] * s->ea[2]) * SUB;
+        s->duy = s->qn[1] * s->eb[1] * SUB;
+        s->dvy = s->qn[2] * s->eb[2] * SUB;
+        s->dty = (s->qn[0] * s->eb[0] + s->qn[1] * s->eb[1] + s->qn[2] * s->eb[2]) * SUB;
+        s->affine = s->qn[0] == s->qn[1] && s->qn[1] == s->qn[2];
+        s->aff_inv = 0;
+        s->aff_shift = 0;
+        if (s->affine) {
+            int64_t tt = s->qn[0] * s->area;
+            s->aff_shift = bitlen64((uint64_t)tt) - 31;
+            if (s->aff_shift < 0) s->aff_shift = 0;
+            s->aff_inv = recip61(tt >> s->aff_shift);
+        }
+    }
+
+    int64_t dd1 = s->v[1]->d - s->v[0]->d, dd2 = s->v[2]->d - s->v[0]->d;
+    int64_t gxn = s->ea[1] * dd1 + s->ea[2] * dd2, gyn = s->eb[1] * dd1 + s->eb[2] * dd2;
+    s->gxq = floor_div(gxn, s->area);
+    s->gxr = gxn - s->gxq * s->area;
+    s->gyq = floor_div(gyn, s->area);
+    s->gyr = gyn - s->gyq * s->area;
+    rstep_init(&s->dstep, 0, s->area, SUB * gxn);
+
+    int64_t dx = SUB / 2 - s->v[0]->x, dy = (int64_t)y * SUB + SUB / 2 - s->v[0]->y;
+    int64_t e1 = s->ea[1] * dx + s->eb[1] * dy, e2 = s->ea[2] * dx + s->eb[2] * dy;
+    uvt[0] = s->qn[1] * e1;
+    uvt[1] = s->qn[2] * e2;
+    uvt[2] = s->qn[0] * (s->area - e1 - e2) + uvt[0] + uvt[1];
+}
+
 static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int hi,
                        const svert *p0, const svert *p1, const svert *p2)
 {
@@ -669,61 +724,18 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
         s.eb[i] = b->x - a->x;
     }
     /* The weights and varyings only where fragments are shaded: a depth
-     * pass needs the depth alone. */
+     * pass needs the depth alone.  Both at the first pixel (tri_pixels):
+     * until then the planes' steps are 0. */
     const int shading = h && h->fragment;
     s.qn[0] = s.qn[1] = s.qn[2] = 0;
     s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
     s.affine = 0;
-    if (shading) {
-        s.vnarrow = SILK_CPU32;
-        for (int k = 0; k < nvar; k++) {
-            const silk_fx *a0 = s.v[0]->var, *a1 = s.v[1]->var, *a2 = s.v[2]->var;
-            s.vbase[k] = (int64_t)a0[k] * ((int64_t)1 << 30) + ((int64_t)1 << 29);
-            s.vd1[k] = (int64_t)a1[k] - a0[k];
-            s.vd2[k] = (int64_t)a2[k] - a0[k];
-            if (s.vd1[k] != (int32_t)s.vd1[k] || s.vd2[k] != (int32_t)s.vd2[k]) s.vnarrow = 0;
-        }
-        silk_fx wmin = s.v[0]->w;
-        for (int i = 1; i < 3; i++) if (s.v[i]->w < wmin) wmin = s.v[i]->w;
-        for (int i = 0; i < 3; i++) {
-            uint32_t r;   /* 0 < wmin <= w < 2^31: the quotient is at most 2^QN_BITS */
-            s.qn[i] = udiv_q32((uint64_t)wmin << QN_BITS, (uint32_t)s.v[i]->w, &r);
-            if (s.qn[i] < 1) s.qn[i] = 1;
-        }
-        s.du = s.qn[1] * s.ea[1] * SUB;
-        s.dv = s.qn[2] * s.ea[2] * SUB;
-        s.dt = (s.qn[0] * s.ea[0] + s.qn[1] * s.ea[1] + s.qn[2] * s.ea[2]) * SUB;
-        s.duy = s.qn[1] * s.eb[1] * SUB;
-        s.dvy = s.qn[2] * s.eb[2] * SUB;
-        s.dty = (s.qn[0] * s.eb[0] + s.qn[1] * s.eb[1] + s.qn[2] * s.eb[2]) * SUB;
-        s.affine = s.qn[0] == s.qn[1] && s.qn[1] == s.qn[2];
-        s.aff_inv = 0;
-        s.aff_shift = 0;
-        if (s.affine) {
-            int64_t tt = s.qn[0] * s.area;
-            s.aff_shift = bitlen64((uint64_t)tt) - 31;
-            if (s.aff_shift < 0) s.aff_shift = 0;
-            s.aff_inv = recip61(tt >> s.aff_shift);
-        }
-    }
-
-    int64_t dd1 = s.v[1]->d - s.v[0]->d, dd2 = s.v[2]->d - s.v[0]->d;
-    int64_t gxn = s.ea[1] * dd1 + s.ea[2] * dd2, gyn = s.eb[1] * dd1 + s.eb[2] * dd2;
-    s.gxq = floor_div(gxn, s.area);
-    s.gxr = gxn - s.gxq * s.area;
-    s.gyq = floor_div(gyn, s.area);
-    s.gyr = gyn - s.gyq * s.area;
-    rstep_init(&s.dstep, 0, s.area, SUB * gxn);
+    int ready = 0;
 
     /* Is the middle vertex right of the long edge o0 -> o2? */
     int64_t cross = (o[1]->x - o[0]->x) * (o[2]->y - o[0]->y) - (o[2]->x - o[0]->x) * (o[1]->y - o[0]->y);
     int mid_right = cross > 0;
-    /* the planes U, V, T at pixel 0 of row ys, then stepped row by row:
-     * the exact values, from additions only */
-    int64_t dx = SUB / 2 - s.v[0]->x, dy = (int64_t)ys * SUB + SUB / 2 - s.v[0]->y;
-    int64_t e1 = s.ea[1] * dx + s.eb[1] * dy, e2 = s.ea[2] * dx + s.eb[2] * dy;
-    int64_t uvt[3] = { s.qn[1] * e1, s.qn[2] * e2, 0 };
-    uvt[2] = s.qn[0] * (s.area - e1 - e2) + uvt[0] + uvt[1];
+    int64_t uvt[3] = { 0, 0, 0 };
     rstep lng, sht;
     edge_init(&lng, o[0], o[2], ys);
     for (int part = 0; part < 2; part++) {
@@ -736,7 +748,11 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             int xl = edge_x(mid_right ? &lng : &sht), xr = edge_x(mid_right ? &sht : &lng);
             if (xl < 0) xl = 0;
             if (xr > t->width) xr = t->width;
-            if (xl < xr) span(t, h, &s, y, xl, xr, uvt);
+            if (xl < xr) {
+                if (!ready) tri_pixels(&s, shading, y, uvt);
+                ready = 1;
+                span(t, h, &s, y, xl, xr, uvt);
+            }
             rstep_next(&lng);
             rstep_next(&sht);
             uvt[0] += s.duy;
@@ -873,6 +889,41 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
     project_xy(t, c, &sv[2]);
     return orient(&sv[0], &sv[1], &sv[2]) >= 0;
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+int silk_raster_place(const silk_target *t, const silk_vertex_out *v, int32_t xy[2])
+{
+    if (!inside(&v->clip)) return 0;
+    svert s;
+    project_xy(t, v, &s);   /* within the guard band: |x|, |y| below 2 SILK_MAX_DIM SUB */
+    xy[0] = (int32_t)s.x;
+    xy[1] = (int32_t)s.y;
+    return 1;
+}
+
+void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
+                        const int32_t *const xy[3])
+{
+    svert sv[3];
+    for (int i = 0; i < 3; i++) {
+        sv[i].x = xy[i][0];
+        sv[i].y = xy[i][1];
+    }
+    /* silk_raster_triangle's own test, culled or not: raster_tri draws
+     * nothing for a triangle it fails (tri_reaches).  The cheapest part
+     * first: half of a closed mesh faces away. */
+    int64_t area = orient(&sv[0], &sv[1], &sv[2]);
+    int lo, hi;
+    if (area == 0 || (t->cull_back && area > 0) || !band_rows(t, &lo, &hi) || !tri_reaches(t, lo, hi, sv, area))
+        return;
+    for (int i = 0; i < 3; i++) {
+        sv[i].w = v[i]->clip.w;
+        sv[i].var = v[i]->var;
+        project_depth(v[i], &sv[i]);
+    }
+    raster_tri(t, h, varying_count(h), lo, hi, &sv[0], &sv[1], &sv[2]);
+}
+#endif
 
 /* ---- lines ----------------------------------------------------------------------- */
 

@@ -122,6 +122,10 @@ typedef struct frame {
     uint32_t *vc_tag;
     uint32_t vc_mask;
     uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
+#ifndef SILK_NO_VERTEX_CACHE
+    uint8_t *cand;            /* FLAT, closed mesh: silk_aa_candidates' bits, or NULL */
+    uint8_t cand_ready;       /* made (by the first band's frame_aa) */
+#endif
     size_t vc_bytes;          /* the arena it and the facing memo take */
     size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
     size_t peak_before;       /* the arena's top high-water before those */
@@ -142,6 +146,10 @@ typedef struct frame {
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
+    /* FLAT: where the rasterizer places slot s's vertex, vc_xy[2s .. 2s+1]
+     * (silk_raster_place), or VC_UNPLACED, or VC_OUTSIDE (clipped); NULL
+     * when the triangles are not drawn straight from the cache (draw_direct) */
+    int32_t *vc_xy;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -249,25 +257,40 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
  * uv (silk_hal_vertex_by_attrs), so the corners of the six or so triangles
  * around a vertex are evaluated once, not once each.  The cache is
  * direct-mapped on the normal index: neighbouring triangles come close
- * together in a mesh, and a miss only costs the evaluation. */
-static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
+ * together in a mesh, and a miss only costs the evaluation.  corner_slot
+ * returns the slot holding the output for corner a (record r, or when r is
+ * NULL the corner's own CORNER record, as silk_frame_flat_emit_tri makes
+ * it), UINT32_MAX for a corner without a usable normal (not cached). */
+#define VC_UNPLACED INT32_MIN        /* vc_xy: not placed yet this frame */
+#define VC_OUTSIDE (INT32_MIN + 1)   /* vc_xy: outside a clip plane */
+#if defined(__GNUC__)
+__attribute__((always_inline))   /* every corner of a streamed frame: inline in share_part, as a call it costs a tenth more */
+#endif
+static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *r)
 {
     const silk_mesh *m = f->geom.mesh;
-    uint32_t a = r->a, n;
-    if (a / 3 < m->ntris && (n = m->tri_normal[a]) < m->nnormals) {
-        uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
-        uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
-        silk_vertex_out *slot = &f->vc[s];
-        if (tag[0] != n || tag[1] != v || tag[2] != uv) {
-            f->hal->vertex(f->hal, &f->geom, r, slot);
-            tag[0] = n;
-            tag[1] = v;
-            tag[2] = uv;
-        }
-        *out = *slot;
-        return;
+    uint32_t n;
+    if (a / 3 >= m->ntris || (n = m->tri_normal[a]) >= m->nnormals) return UINT32_MAX;
+    uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
+    uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
+    if (tag[0] != n || tag[1] != v || tag[2] != uv) {
+        const silk_vrec own = { SILK_VREC_CORNER, a, 0, 0 };
+        f->hal->vertex(f->hal, &f->geom, r ? r : &own, &f->vc[s]);
+        tag[0] = n;
+        tag[1] = v;
+        tag[2] = uv;
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->vc_xy) f->vc_xy[2 * s] = VC_UNPLACED;
+#endif
     }
-    f->hal->vertex(f->hal, &f->geom, r, out);
+    return s;
+}
+
+static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
+{
+    uint32_t s = corner_slot(f, r->a, r);
+    if (s != UINT32_MAX) *out = f->vc[s];
+    else f->hal->vertex(f->hal, &f->geom, r, out);
 }
 
 #ifdef SILK_NO_VERTEX_CACHE
@@ -379,18 +402,22 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 #else
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
+    const int direct = !f->smooth;   /* FLAT (and CLIP's hull): draw_direct, which places the vertices too */
+    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag + (direct ? 2 * sizeof *f->vc_xy : 0),
+                 half = silk_arena_free_bytes(a) / 2,
                  room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes, free0 = silk_arena_free_bytes(a);
     uint32_t n = 64;
     while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
     f->vc = silk_arena_array_top(a, n, sizeof *f->vc, SILK_MEM_FRAME);
     f->vc_tag = silk_arena_array_top(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
-    if (!f->vc || !f->vc_tag) {
+    if (direct) f->vc_xy = silk_arena_array_top(a, 2 * (size_t)n, sizeof *f->vc_xy, SILK_MEM_FRAME);
+    if (!f->vc || !f->vc_tag || (direct && !f->vc_xy)) {
         f->vc = NULL;
+        f->vc_xy = NULL;
         return;
     }
-    memset(f->vc_tag, 0xFF, 3 * (size_t)n * sizeof *f->vc_tag);   /* empty: no normal index is UINT32_MAX */
+    for (uint32_t i = 0; i < n; i++) f->vc_tag[3 * i] = UINT32_MAX;   /* empty: no normal index is UINT32_MAX */
     f->vc_bytes = free0 - silk_arena_free_bytes(a);
     f->vc_mask = n - 1;
 #endif
@@ -411,6 +438,14 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
     f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);
     if (!f->facing) return;
     memset(f->facing, 0, n);   /* nothing known yet */
+#ifndef SILK_NO_VERTEX_CACHE
+    /* FLAT of a closed mesh: the outline's candidates for all bands at once
+     * (silk_aa_candidates), a bit a triangle, when the budget has room too */
+    size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
+    if (!f->smooth && f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
+        n + nc + 2 * SILK_ARENA_ALIGN <= free0 / 2)
+        f->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
+#endif
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 #else
     (void)f;
@@ -780,6 +815,40 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
     }
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* FLAT through the vertex cache: input triangle k drawn straight from the
+ * cache's slots (shade: the fragment stage, or NULL for depth alone), its
+ * share never built.  Each vertex is placed on the screen once a frame
+ * (silk_raster_place, vc_xy), so that the triangles the rasterizer would
+ * draw nothing of - seen from behind, zero area, between pixel centres or
+ * outside the band, most of a fine mesh's - cost a few comparisons; the
+ * others go to silk_raster_triangle with the bits the share would give
+ * it.  0 when a corner is not cached (no usable normal, or two corners in
+ * one slot): the caller then builds the share as usual.  (The stage clock
+ * counts the vertex stage run here as the rasterizer's: a clock per
+ * corner would cost more than the look-up.) */
+static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
+{
+    const silk_vertex_out *v[3];
+    const int32_t *xy[3];
+    uint32_t s[3];
+    int placed = 1;
+    for (uint32_t i = 0; i < 3; i++) {
+        if ((s[i] = corner_slot(f, 3 * k + i, NULL)) == UINT32_MAX) return 0;
+        int32_t *p = &f->vc_xy[2 * s[i]];
+        v[i] = &f->vc[s[i]];
+        if (p[0] == VC_UNPLACED && !silk_raster_place(t, v[i], p)) p[0] = VC_OUTSIDE;
+        placed &= p[0] != VC_OUTSIDE;
+        xy[i] = p;
+    }
+    if (s[0] == s[1] || s[1] == s[2] || s[2] == s[0]) return 0;   /* a later corner may have taken an earlier's slot */
+    t->cull_back = f->cull;   /* FLAT: frame_draw's rule */
+    if (placed) silk_raster_placed(t, shade, v, xy);
+    else silk_raster_triangle(t, shade, v[0], v[1], v[2]);
+    return 1;
+}
+#endif
+
 /* The frame's triangles part by part (only the parts that reach into the
  * band), then the lines. */
 static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
@@ -810,6 +879,14 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (pass <= 0 && f->vc_xy) {
+                t0 = silk_stage_start(f->clock);
+                int drawn = draw_direct(f, t, pass < 0 ? NULL : f->hal, k);
+                silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+                if (drawn) continue;
+            }
+#endif
             f->part(f, k);
             t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
             /* SILTEX: a back face of the hull is seen from inside it, where
@@ -879,9 +956,25 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.sil = f->smooth ? &f->sil : NULL;
     aa.hal = f->hal;
     aa.geom = &f->geom;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (f->cand && !f->cand_ready) {
+        silk_aa_candidates(&aa, f->geom.mesh, v, f->cand);
+        f->cand_ready = 1;
+    }
+#endif
     for (uint32_t k = 0; k < f->nparts; k++) {
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->cand && !f->cand[k / 8]) {   /* eight triangles at once: most have no outline side */
+            k |= 7;
+            continue;
+        }
+#endif
         if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->cand ? !(f->cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
+#else
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
+#endif
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }

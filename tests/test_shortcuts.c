@@ -9,8 +9,10 @@
  * the caller's own takes neither shortcut, so the same default stage behind
  * a wrapper draws the reference.  Shared meshes from views all round, near
  * and far, perspective and orthographic, FLAT and SMOOTH, whole frames and
- * bands; the arena left for the cache from nothing to plenty; and
- * silk_mesh.closed_outward for closed, open, inside-out and kept meshes.
+ * bands; the arena left for the cache from nothing to plenty; the
+ * anti-aliased outline with and without its shortcuts (the facing memo, a
+ * closed mesh's candidates from its edges); and silk_mesh.closed_outward
+ * for closed, open, inside-out and kept meshes.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -37,10 +39,11 @@ static void wrapped_vertex(const silk_hal *h, const silk_geom *g, const silk_vre
 }
 
 /* One frame into rgb (W x H x 3) in bands of `rows`, with the default
- * stages or (plain) the wrapped ones; fragment writes summed into *writes
+ * stages or (plain) the wrapped ones, anti-aliased outlines (aa) and the
+ * vertex cache's budget as given; fragment writes summed into *writes
  * when not NULL (whole frames only). */
-static int draw(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_mode mode, int plain, int rows,
-                uint8_t *rgb, long *writes)
+static int draw_with(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_mode mode, int plain, int rows,
+                     int aa, size_t cache_bytes, uint8_t *rgb, long *writes)
 {
     silk_phong ph;
     silk_hal hal;
@@ -51,7 +54,8 @@ static int draw(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_mode
     silk_render_opts o;
     silk_render_opts_default(&o);
     o.mode = mode;
-    o.aa = 0;   /* the outline pass takes arena too, and with too little leaves pixels aliased */
+    o.aa = aa;
+    o.vertex_cache_bytes = cache_bytes;
     silk_frame_stats st;
     silk_error err;
     silk_status s;
@@ -72,6 +76,13 @@ static int draw(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_mode
     }
     if (s != SILK_OK) fprintf(stderr, "render: %s\n", err.msg);
     return s == SILK_OK && !st.fell_back;
+}
+
+/* Without the outline (it takes arena too, and with too little leaves pixels aliased). */
+static int draw(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_mode mode, int plain, int rows,
+                uint8_t *rgb, long *writes)
+{
+    return draw_with(a, m, v, mode, plain, rows, 0, SIZE_MAX, rgb, writes);
 }
 
 static long differ(const uint8_t *a, const uint8_t *b)
@@ -122,6 +133,68 @@ TEST(shortcuts_draw_the_plain_pixels)
                 }
     }
     printf("  %ld frames, %ld differ\n", cases, bad);
+    free(fast);
+    free(plain);
+}
+
+/* The anti-aliased outline's shortcuts under the vertex cache's budget
+ * (the facing memo; in a FLAT frame of a closed mesh the candidates found
+ * once a frame from the edges, aa.c silk_aa_candidates) and the FLAT
+ * triangles drawn straight from the cache: the pixels of a frame without
+ * them (budget 0), FLAT and SMOOTH, whole frames and bands, outlines with
+ * and without creases, closed meshes and an open one. */
+TEST(outline_shortcuts_draw_the_plain_pixels)
+{
+    static const char *meshes[] = { "bunny-500.obj", "fandisk-128.obj", "knot-480.obj", "cone-70.obj" };
+    static const double dirs[][3] = { { 1, 0.4, 0.8 }, { -0.4, 0.2, -1 }, { 0.3, -1, -0.5 } };
+    static const double dists[] = { 3, 0.7 };
+    uint8_t *fast = malloc((size_t)W * H * 3), *plain = malloc((size_t)W * H * 3);
+    long cases = 0, open = 0;
+    /* the shared meshes, then a sphere with a hole, whose inside shows */
+    ts_mesh hole = { 0 };
+    ts_sphere(&hole, 16, 10, 1, 0, 0, 0);
+    hole.nf -= 6;
+    tm_fixture fx;
+    tm_fixture_init(&fx, 8u << 20);
+    for (size_t i = 0; i <= sizeof meshes / sizeof *meshes; i++) {
+        silk_arena a;
+        silk_mesh m;
+        if (i == sizeof meshes / sizeof *meshes) {
+            if (!tm_fixture_input(&fx, hole.v, hole.nv, hole.f, hole.nf) || tm_fixture_build(&fx) != SILK_OK) {
+                CHECK(0);
+                break;
+            }
+            a = fx.a;
+            m = fx.m;
+        } else {
+            silk_arena_init(&a, arena_buf, ARENA_BYTES);
+            if (!tm_load_shared(&a, meshes[i], &m)) {
+                CHECK(check_cur_skipped);
+                continue;
+            }
+        }
+        open += !m.closed_outward;
+        for (size_t d = 0; d < sizeof dirs / sizeof *dirs; d++)
+            for (size_t k = 0; k < sizeof dists / sizeof *dists; k++) {
+                silk_view v;
+                CHECK(tf_view_around_size(&m, dirs[d], dists[k], 0, W, H, &v));
+                for (int mode = 0; mode < 2; mode++) {
+                    int rows = (d + k + mode) % 2 ? 16 : H, aa = 1 + (int)(d == 1);   /* 2: no creases */
+                    silk_mode md = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+                    CHECK(draw_with(&a, &m, &v, md, 0, rows, aa, SIZE_MAX, fast, NULL));
+                    CHECK(draw_with(&a, &m, &v, md, 0, rows, aa, 0, plain, NULL));
+                    long n = differ(fast, plain);
+                    cases++;
+                    CHECKF(n == 0, "%s dir %zu dist %g %s: %ld pixels differ",
+                           i < sizeof meshes / sizeof *meshes ? meshes[i] : "open sphere", d, dists[k],
+                           silk_mode_name(md), n);
+                }
+            }
+    }
+    printf("  %ld frames, %ld of them of an open mesh\n", cases, open * 12);
+    CHECK(open == 1);
+    tm_fixture_free(&fx);
+    ts_mesh_free(&hole);
     free(fast);
     free(plain);
 }
@@ -222,6 +295,7 @@ int main(void)
     arena_buf = malloc(ARENA_BYTES);
     RUN(closed_outward_flag);
     RUN(shortcuts_draw_the_plain_pixels);
+    RUN(outline_shortcuts_draw_the_plain_pixels);
     RUN(back_faces_are_skipped);
     RUN(cache_sized_by_the_arena);
     free(arena_buf);

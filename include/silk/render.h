@@ -112,10 +112,13 @@ typedef struct silk_render_opts {
     /* The most bytes of the arena the vertex cache may take (src/render.c:
      * with the default vertex stage, each mesh vertex is evaluated once per
      * frame instead of once per triangle corner).  It takes at most half of
-     * what the frame leaves and at least 64 slots of 72 bytes, else nothing;
-     * the pixels are the same either way.  The anti-aliased outline's memo
-     * of which way each triangle faces (2 bits per triangle) comes out of
-     * the same budget.  Default SIZE_MAX; a device whose RAM budget is
+     * what the frame leaves and at least 64 slots of 72 bytes (80 in a
+     * flat frame, which keeps each vertex's screen position too), else
+     * nothing; the pixels are the same either way.  The anti-aliased
+     * outline's memo of which way each triangle faces (2 bits per
+     * triangle) and, in a flat frame of a closed mesh, its outline
+     * candidates (1 bit per triangle) come out of the same budget.
+     * Default SIZE_MAX; a device whose RAM budget is
      * tight sets what it can spare, 0 for none (and may leave the code
      * out: -DSILK_NO_VERTEX_CACHE, src/render.c). */
     size_t vertex_cache_bytes;
