@@ -261,6 +261,30 @@ static void chain_insert(silk_fx *c, uint32_t *n, silk_fx u)
 
 /* ---- the stage ----------------------------------------------------------------- */
 
+/* Whether triangle t is whole (silk_sil_tri_ok), and then its sides'
+ * edges in e.  A host's mesh has them listed (tri_edge): every triangle
+ * is tested every frame, so there the test is written out, each index
+ * read once; a board's packed mesh finds them (-DSILK_NO_VERTEX_CACHE
+ * keeps the code bytes). */
+static int tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    if (m->tri_edge) {
+        const silk_index *tv = &m->tri[3 * (size_t)t], *tn = &m->tri_normal[3 * (size_t)t],
+                         *te = &m->tri_edge[3 * (size_t)t];
+        uint32_t nv = m->nverts, nn = m->nnormals, ne = m->nedges;
+        e[0] = te[0];
+        e[1] = te[1];
+        e[2] = te[2];
+        return (tv[0] < nv) & (tv[1] < nv) & (tv[2] < nv) & (tn[0] < nn) & (tn[1] < nn) & (tn[2] < nn) &
+               (e[0] < ne) & (e[1] < ne) & (e[2] < ne);
+    }
+#endif
+    if (!silk_sil_tri_ok(m, t)) return 0;
+    for (uint32_t k = 0; k < 3; k++) e[k] = silk_mesh_tri_edge(m, t, k);
+    return 1;
+}
+
 /* Mark edge e as carrying points, counting it the first time. */
 static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
 {
@@ -300,28 +324,23 @@ static silk_status find_triangles(silk_sil_frame *f)
     f->nsil = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = 0;
+        silk_index e[3];
         f->tri_state[t] = SILK_TS_BROKEN;   /* tested once here, read by lay_out_edges */
-        if (!silk_sil_tri_ok(m, t)) continue;
+        if (!tri_edges(m, t, e)) continue;
         const silk_index *tn = &m->tri_normal[3 * t];
         uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
         if (v0 != v1 || v1 != v2) {
             uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
             st |= (uint8_t)(SILK_TS_SIL | lone);
             f->nsil++;
-            mark_edge(f, silk_mesh_tri_edge(m, t, lone), &nwork);
-            mark_edge(f, silk_mesh_tri_edge(m, t, (lone + 2) % 3), &nwork);
+            mark_edge(f, e[lone], &nwork);
+            mark_edge(f, e[(lone + 2) % 3], &nwork);
         }
-        if (features) {
-            int has_feature = 0;
+        if (features && ((m->edge[e[0]].flags | m->edge[e[1]].flags | m->edge[e[2]].flags) & SILK_EDGE_FEATURE) &&
+            silk_sil_tri_front(m, v, t)) {
+            st |= SILK_TS_FRONT;
             for (int k = 0; k < 3; k++)
-                if (m->edge[silk_mesh_tri_edge(m, t, k)].flags & SILK_EDGE_FEATURE) has_feature = 1;
-            if (has_feature && silk_sil_tri_front(m, v, t)) {
-                st |= SILK_TS_FRONT;
-                for (int k = 0; k < 3; k++) {
-                    silk_index e = silk_mesh_tri_edge(m, t, k);
-                    if (m->edge[e].flags & SILK_EDGE_FEATURE) mark_edge(f, e, &nwork);
-                }
-            }
+                if (m->edge[e[k]].flags & SILK_EDGE_FEATURE) mark_edge(f, e[k], &nwork);
         }
         f->tri_state[t] = st;
     }
