@@ -405,6 +405,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
     for (uint32_t e = 0, w = 0; e < m->nedges; e++) {
+        if (!f->carrying[e >> 3]) { e |= 7; continue; }   /* most bytes: none of their eight */
         if (!(f->carrying[e >> 3] & (1u << (e & 7)))) continue;
         f->edges[w].edge = (silk_index)e;
         f->edges[w++].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
@@ -415,6 +416,15 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = f->tri_state[t];
         if ((st & (SILK_TS_SIL | SILK_TS_LONE)) == SILK_TS_BROKEN) continue;
+#ifndef SILK_NO_VERTEX_CACHE
+        /* a host's listed edges: the three bits first, as most triangles have none */
+        if (m->tri_edge) {
+            const silk_index *te = &m->tri_edge[3 * (size_t)t];
+            if (!((f->carrying[te[0] >> 3] >> (te[0] & 7)) & 1) && !((f->carrying[te[1] >> 3] >> (te[1] & 7)) & 1) &&
+                !((f->carrying[te[2] >> 3] >> (te[2] & 7)) & 1))
+                continue;
+        }
+#endif
         for (uint32_t k = 0; k < 3; k++) {
             uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
             if (w == SILK_SIL_NONE) continue;
