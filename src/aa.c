@@ -466,6 +466,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
  * records on the curve itself). */
 typedef struct seg_at {
     uint32_t curve, a, b;
+    uint32_t first;          /* the record of its first interior sample */
 } seg_at;
 
 /* Record rec's parameter on the segment's curve; 0 if it is not on it. */
@@ -504,7 +505,7 @@ static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, ui
  * and the surface lies behind a visible outline).  The depth tolerance is
  * the whole share's range: the pixels next to the outline hold any of its
  * triangles. */
-static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uint32_t t)
+static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
 {
     /* A moved out along its normal by a sixteenth of the segment, projected */
     const silk_curve *c = &aa->geom->curves[s->curve];
@@ -528,9 +529,7 @@ static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uin
     }
     int64_t tol = (int64_t)(hi - lo) + hi / 64;   /* A is placed: lo <= hi */
     /* the samples: A, the records on the curve after the share's boundary, B */
-    uint32_t rec[3];
-    silk_remesh_seg_recs(aa->sil, t, 0, rec);
-    uint32_t a = s->a, b = rec[2];
+    uint32_t a = s->a, b = s->first;
     silk_aa_pt *mid = aa->walk + SUBDIV + 1;
     for (int last = 0; !last; a = b++) {
         last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
@@ -561,11 +560,12 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         return;
     }
     seg_at at;
-    uint32_t ends[2];
-    if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, ends, &at.curve)) {
-        at.a = ends[0];
-        at.b = ends[1];
-        seg_walk(aa, g, &at, t);
+    uint32_t rec[3];
+    if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, rec, &at.curve)) {
+        at.a = rec[0];
+        at.b = rec[1];
+        at.first = rec[2];
+        seg_walk(aa, g, &at);
     }
 }
 

@@ -232,13 +232,9 @@ static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 #ifndef SILK_NO_VERTEX_CACHE
     if (f->carry_rank) {
         unsigned below = f->carrying[edge >> 3] & ((1u << (edge & 7)) - 1);
-#if defined(__GNUC__)
-        return f->carry_rank[edge >> 3] + (uint32_t)__builtin_popcount(below);
-#else
-        uint32_t r = f->carry_rank[edge >> 3];
-        for (; below; below &= below - 1) r++;
-        return r;
-#endif
+        /* the bits of a byte by nibbles (__builtin_popcount is a library call without a popcount instruction) */
+        static const uint8_t bits[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+        return f->carry_rank[edge >> 3] + bits[below & 15] + bits[below >> 4];
     }
 #endif
     uint32_t lo = 0, hi = f->nedges;

@@ -174,6 +174,7 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 {
     uint32_t lo = 0, hi = f->nseg_kept;
+    if (!hi || f->seg_tri[hi - 1] < t) return SILK_SIL_NONE;   /* past them all: as the plan asks while it keeps them */
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;
         if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
@@ -580,32 +581,44 @@ int silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g)
     return 1;
 }
 
+/* The silhouette point side k of t puts on its edge, or NULL. */
+static const silk_sil_pair *side_pair_of(const silk_sil_frame *f, uint32_t t, uint32_t k)
+{
+    const silk_sil_edge *e = edge_at(f, t, k);
+    silk_sil_side s;
+    if (!e) return NULL;
+    silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+    return side_pair(f, e, &s);
+}
+
+/* The share's boundary starts at L (first_corner), L's side first: its
+ * chain follows L's record, then B1's record and the base's chain, then
+ * B2's record (L+2's corner) and L+2's chain, then the samples. */
+static void seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, const silk_fx u[2], uint32_t rec[3])
+{
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE, k2 = (lone + 2) % 3;
+    const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, k2);
+    uint32_t c2 = base + 2 + ea->nchain + side_points(f, t, (lone + 1) % 3);
+    rec[0] = base + 1 + silk_sil_chain_index(&f->chain[ea->chain0], ea->nchain, u[0]);
+    rec[1] = c2 + 1 + silk_sil_chain_index(&f->chain[eb->chain0], eb->nchain, u[1]);
+    rec[2] = c2 + 1 + eb->nchain;
+}
+
 void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, uint32_t rec[3])
 {
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
-    for (uint32_t i = 0; i < 2; i++) {
-        uint32_t k = (lone + 2 * i) % 3;
-        rec[i] = silk_remesh_corner_rec(f, t, k, base) + 1 + pair_chain(f, t, k);
-    }
-    /* the samples follow the boundary, whose last side is L+2's */
-    rec[2] = silk_remesh_corner_rec(f, t, (lone + 2) % 3, base) + 1 + side_points(f, t, (lone + 2) % 3);
+    silk_fx u[2] = { side_pair_of(f, t, lone)->u, side_pair_of(f, t, (lone + 2) % 3)->u };
+    seg_recs(f, t, base, u, rec);
 }
 
-int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[2], uint32_t *curve)
+int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve)
 {
     /* what silk_remesh_seg needs before it builds anything: both silhouette points */
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
-    for (uint32_t k = lone; k <= lone + 2; k += 2) {
-        const silk_sil_edge *e = edge_at(f, t, k % 3);
-        silk_sil_side s;
-        if (!e) return 0;
-        silk_sil_side_attrs(f->m, t, k % 3, &f->m->edge[e->edge], &s);
-        if (!side_pair(f, e, &s)) return 0;
-    }
-    uint32_t r[3];
-    silk_remesh_seg_recs(f, t, 0, r);
-    rec[0] = r[0];
-    rec[1] = r[1];
+    const silk_sil_pair *pa = side_pair_of(f, t, lone), *pb = side_pair_of(f, t, (lone + 2) % 3);
+    if (!pa || !pb) return 0;
+    silk_fx u[2] = { pa->u, pb->u };
+    seg_recs(f, t, 0, u, rec);
     *curve = 0;
     for (uint32_t k = 0; k < 3; k++) *curve += side_points(f, t, k) > 0;   /* walk_side: a curve per side with points */
     return 1;
