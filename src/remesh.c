@@ -534,6 +534,25 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
     silk_sil_seg seg;
     g->offset = f->offset;
     g->noffset = f->noffset;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {
+        /* most triangles, as they are: put_corner's three records written
+         * out (a host's shortcut; a small part keeps the code bytes) */
+        silk_vrec *r = &g->vrec[g->nvrec];
+        const silk_index *tv = &f->m->tri[3 * (size_t)t], *vo = f->vert_offset;
+        uint32_t n = g->nvrec;
+        for (uint32_t k = 0; k < 3; k++) {
+            silk_index off = vo ? vo[tv[k]] : SILK_NO_INDEX;
+            r[k].kind = off == SILK_NO_INDEX ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+            r[k].a = 3 * t + k;
+            r[k].b = off == SILK_NO_INDEX ? 0 : off;
+            r[k].t = 0;
+        }
+        g->nvrec = n + 3;
+        put_tri(g, n, n + 1, n + 2, 0);
+        return;
+    }
+#endif
     if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &seg)) {
         emit_silhouette(f, g, t, &seg);     /* Fig. 11 */
         return;
