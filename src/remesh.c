@@ -83,7 +83,9 @@ static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
     uint32_t best = s->n / 2;
     int64_t best_d = INT64_MAX;
     for (uint32_t i = 0; i <= s->n; i++) {
-        int64_t d = silk_v3_dot64(silk_v3_sub(silk_hermite_point(&s->c, silk_sample_param(i, s->n)), mid), dir);
+        /* the ends are the curve's ends, bit for bit (eq. 5 at 0 and 1 is exact) */
+        silk_vec3 p = i == 0 ? s->c.p0 : i == s->n ? s->c.p1 : silk_hermite_point(&s->c, silk_sample_param(i, s->n));
+        int64_t d = silk_v3_dot64(silk_v3_sub(p, mid), dir);
         if (d < 0) d = -d;
         if (d < best_d) { best_d = d; best = i; }
     }
