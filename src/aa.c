@@ -241,6 +241,31 @@ static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
  * get the curve's coverage too, their colours from the drawn pixels next
  * to the chord.  curve: 0 a straight side, 1 a silhouette segment, 2 a
  * crease (the two sides are faces, each pixel blended by crease_px). */
+/* The pixel centres a side walks, lo .. hi - 1 along u (x, or y when
+ * steep) for a walk from u = a to u = b > a: those in [a, b), of the
+ * band's rows or the frame's columns. */
+static void walk_range(const silk_target *t, int steep, int32_t a, int32_t b, int64_t *lo, int64_t *hi)
+{
+    int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
+    *lo = floor_div(a + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
+    *hi = floor_div(b + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
+    if (*lo < ulo) *lo = ulo;
+    if (*hi > uhi) *hi = uhi;
+}
+
+/* Whether side() from p to q walks any pixel: a chord shorter than a
+ * pixel often passes between centres, and then the curve's points along
+ * it are not needed. */
+static int walks_any(const silk_target *t, const silk_aa_pt *p, const silk_aa_pt *q)
+{
+    int steep = absl(q->y - p->y) > absl(q->x - p->x);
+    int32_t a = steep ? p->y : p->x, b = steep ? q->y : q->x;
+    int64_t lo, hi;
+    if (a == b) return 0;
+    walk_range(t, steep, a < b ? a : b, a < b ? b : a, &lo, &hi);
+    return lo < hi;
+}
+
 static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid,
                  int curve)
 {
@@ -272,11 +297,8 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
     const silk_target *t = aa->t;
     int32_t du = q.x - p.x, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
     if (!du) return;
-    int64_t lo = floor_div(p.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);   /* centres in [p.x, q.x) */
-    int64_t hi = floor_div(q.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
-    int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
-    if (lo < ulo) lo = ulo;
-    if (hi > uhi) hi = uhi;
+    int64_t lo, hi;
+    walk_range(t, steep, p.x, q.x, &lo, &hi);
     int j = 0;
     for (int64_t c = lo; c < hi; c++) {
         int32_t uc = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2, U = uc - p.x;
@@ -535,7 +557,7 @@ static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
         last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
         if (last) b = s->b;
         const silk_aa_pt *p = &aa->pt[a], *q = &aa->pt[b];
-        if (!p->ok || !q->ok) continue;
+        if (!p->ok || !q->ok || !walks_any(aa->t, p, q)) continue;   /* side() would walk no pixel */
         silk_aa_pt in = { (int32_t)(((int64_t)p->x + q->x) / 2 - ox), (int32_t)(((int64_t)p->y + q->y) / 2 - oy), 0, 1 };
         side(aa, *p, *q, &in, tol, seg_points(aa, s, g, a, b, mid) ? mid : NULL, 1);
     }
