@@ -518,16 +518,9 @@ static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, ui
     return 1;
 }
 
-/* Silhouette triangle t's share: its segment walked chord by chord with
- * the curve's coverage, whether or not the share's two parts fold there on
- * screen (where they face the same way, the outline drawn is a side next
- * to the chord rather than the chord), and no other side of the share
- * (those lie within the curve).  The inside is away from where the
- * normal at A points on screen (it is perpendicular to the view there,
- * and the surface lies behind a visible outline).  The depth tolerance is
- * the whole share's range: the pixels next to the outline hold any of its
- * triangles. */
-static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
+/* Where the segment's outside is on screen, (ox, oy) from A, and the
+ * share's depth tolerance; 0 when A or its outside is not placed. */
+static int seg_outward(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, int32_t *ox, int32_t *oy, int64_t *tol)
 {
     /* A moved out along its normal by a sixteenth of the segment, projected */
     const silk_curve *c = &aa->geom->curves[s->curve];
@@ -541,15 +534,35 @@ static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
     aa->hal->vertex(aa->hal, &og, &r, aa->out);
     silk_aa_pt n = point(aa->t, aa->out);
     const silk_aa_pt *m = &aa->pt[s->a];
-    int32_t ox = n.x - m->x, oy = n.y - m->y;
-    if (!m->ok || !n.ok || (!ox && !oy)) return;
+    *ox = n.x - m->x;
+    *oy = n.y - m->y;
+    if (!m->ok || !n.ok || (!*ox && !*oy)) return 0;
     uint32_t lo = UINT32_MAX, hi = 0;
     for (uint32_t i = 0; i < g->nvrec; i++) {
         if (!aa->pt[i].ok) continue;
         if (aa->pt[i].d < lo) lo = aa->pt[i].d;
         if (aa->pt[i].d > hi) hi = aa->pt[i].d;
     }
-    int64_t tol = (int64_t)(hi - lo) + hi / 64;   /* A is placed: lo <= hi */
+    *tol = (int64_t)(hi - lo) + hi / 64;   /* A is placed: lo <= hi */
+    return 1;
+}
+
+/* Silhouette triangle t's share: its segment walked chord by chord with
+ * the curve's coverage, whether or not the share's two parts fold there on
+ * screen (where they face the same way, the outline drawn is a side next
+ * to the chord rather than the chord), and no other side of the share
+ * (those lie within the curve).  The inside is away from where the
+ * normal at A points on screen (it is perpendicular to the view there,
+ * and the surface lies behind a visible outline).  The depth tolerance is
+ * the whole share's range: the pixels next to the outline hold any of its
+ * triangles. */
+static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
+{
+    /* the outside and the tolerance once a chord walks a pixel: a segment
+     * of a fine mesh often walks none */
+    int32_t ox = 0, oy = 0;
+    int64_t tol = 0;
+    int placed = 0;
     /* the samples: A, the records on the curve after the share's boundary, B */
     uint32_t a = s->a, b = s->first;
     silk_aa_pt *mid = aa->walk + SUBDIV + 1;
@@ -558,6 +571,7 @@ static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
         if (last) b = s->b;
         const silk_aa_pt *p = &aa->pt[a], *q = &aa->pt[b];
         if (!p->ok || !q->ok || !walks_any(aa->t, p, q)) continue;   /* side() would walk no pixel */
+        if (!placed && !(placed = seg_outward(aa, g, s, &ox, &oy, &tol))) return;
         silk_aa_pt in = { (int32_t)(((int64_t)p->x + q->x) / 2 - ox), (int32_t)(((int64_t)p->y + q->y) / 2 - oy), 0, 1 };
         side(aa, *p, *q, &in, tol, seg_points(aa, s, g, a, b, mid) ? mid : NULL, 1);
     }
