@@ -489,6 +489,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
 typedef struct seg_at {
     uint32_t curve, a, b;
     uint32_t first;          /* the record of its first interior sample */
+    const silk_vertex_out *out;   /* the share's vertex-stage output, placed into aa->pt as needed */
 } seg_at;
 
 /* Record rec's parameter on the segment's curve; 0 if it is not on it. */
@@ -539,6 +540,7 @@ static int seg_outward(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, i
     if (!m->ok || !n.ok || (!*ox && !*oy)) return 0;
     uint32_t lo = UINT32_MAX, hi = 0;
     for (uint32_t i = 0; i < g->nvrec; i++) {
+        aa->pt[i] = point(aa->t, &s->out[i]);   /* every record: the chords' again, the same */
         if (!aa->pt[i].ok) continue;
         if (aa->pt[i].d < lo) lo = aa->pt[i].d;
         if (aa->pt[i].d > hi) hi = aa->pt[i].d;
@@ -566,9 +568,11 @@ static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
     /* the samples: A, the records on the curve after the share's boundary, B */
     uint32_t a = s->a, b = s->first;
     silk_aa_pt *mid = aa->walk + SUBDIV + 1;
+    aa->pt[a] = point(aa->t, &s->out[a]);   /* the chords' ends as they come; the rest only once placed */
     for (int last = 0; !last; a = b++) {
         last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
         if (last) b = s->b;
+        if (!placed) aa->pt[b] = point(aa->t, &s->out[b]);
         const silk_aa_pt *p = &aa->pt[a], *q = &aa->pt[b];
         if (!p->ok || !q->ok || !walks_any(aa->t, p, q)) continue;   /* side() would walk no pixel */
         if (!placed && !(placed = seg_outward(aa, g, s, &ox, &oy, &tol))) return;
@@ -581,7 +585,6 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                    const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
-    for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
 #ifndef SILK_NO_AA_CREASE
     for (int k = 0; aa->creases && k < 3; k++)
         if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
@@ -589,6 +592,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
     const uint32_t *tri = g->tri;
     if (g->ntri == 1) {
         /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
+        for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
         int front = tri_front(aa, m, v, t);
         for (int k = 0; k < 3; k++)
             if (coarse_outline(aa, m, v, t, k, front))
@@ -601,6 +605,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         at.a = rec[0];
         at.b = rec[1];
         at.first = rec[2];
+        at.out = out;
         seg_walk(aa, g, &at);
     }
 }
