@@ -97,8 +97,8 @@ typedef struct silk_sil_seg {
     uint32_t n;              /* sampling intervals (eq. 8) */
     uint32_t split;          /* sample joined to both base vertices (Fig. 11) */
     int concave;             /* III-E: N_A.F > 0 and N_B.F < 0 */
-    silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E */
-    silk_fx rise;            /* how far the segment's ends rise above P_i */
+    silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E (concave only, else zero) */
+    silk_fx rise;            /* how far the segment's ends rise above P_i (the same) */
 } silk_sil_seg;
 
 /* Edge tangents kept by silk_sil_edge_curve: the three sides of the

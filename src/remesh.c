@@ -243,6 +243,7 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     /* III-E: concave when N_A.F > 0 and N_B.F < 0, F = B - A */
     silk_vec3 F = silk_v3_sub(B, A);
     s->concave = silk_v3_dot64(nA, F) > 0 && silk_v3_dot64(nB, F) < 0;
+    if (!s->concave) return 1;   /* the plane P_i is only a concave segment's (perturb.c) */
     s->m = silk_hermite_point(&s->c, SILK_FX_HALF);
     if (!silk_v3_normalize(silk_v3_lerp(nA, nB, SILK_FX_HALF), &s->nm)) s->concave = 0;
     s->rise = silk_fx_max(silk_fx_max(silk_v3_dot(silk_v3_sub(A, s->m), s->nm),
