@@ -399,6 +399,54 @@ static int pair_seen(const silk_sil_frame *f, uint32_t t, uint32_t k, silk_index
     return 0;
 }
 
+/* Side k of triangle t lies on carrying edge we: counted, and with it
+ * its silhouette point unless the triangle across gave the same one;
+ * 0 when the edge has more sides than it can count. */
+static int count_side(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *we)
+{
+    uint8_t st = f->tri_state[t];
+    if (we->nsides == SILK_SIL_SIDES_MAX) return 0;
+    f->tri_state[t] |= (uint8_t)(SILK_TS_CARRY0 << k);
+    we->nsides++;
+    if (st & SILK_TS_SIL) {
+        uint32_t lone = st & SILK_TS_LONE;
+        if ((k == lone || k == (lone + 2) % 3) && !pair_seen(f, t, k, we->edge)) we->npairs++;
+    }
+    if ((st & SILK_TS_FRONT) && we->is_feature) we->sampled = 1;
+    return 1;
+}
+
+#ifndef SILK_NO_VERTEX_CACHE
+/* Whether the sides on the carrying edges may be found from the edges'
+ * triangles instead of a pass over every triangle: with listed edges
+ * (tri_edge) and no edge of more than two triangles, edge.t names every
+ * triangle with a side on the edge (silk_mesh_build), so the work is the
+ * silhouette's, not the mesh's.  A host's shortcut: a board's packed mesh
+ * has no tri_edge. */
+static int by_edges(const silk_mesh *m)
+{
+    return m->tri_edge && !m->nnonmanifold_edges;
+}
+
+/* Whether triangle t is whole (find_triangles tested it). */
+static int tri_whole(const silk_sil_frame *f, uint32_t t)
+{
+    return t < f->m->ntris && (f->tri_state[t] & (SILK_TS_SIL | SILK_TS_LONE)) != SILK_TS_BROKEN;
+}
+
+/* The whole triangles on edge e, ascending (the order a pass over every
+ * triangle meets them in): tt[0 .. n). */
+static uint32_t edge_tris(const silk_sil_frame *f, silk_index e, uint32_t tt[2])
+{
+    const silk_edge *ed = &f->m->edge[e];
+    uint32_t a = ed->t[0], b = ed->t[1], n = 0;
+    if (b < a) { uint32_t x = a; a = b; b = x; }
+    if (tri_whole(f, a)) tt[n++] = a;
+    if (b != a && tri_whole(f, b)) tt[n++] = b;
+    return n;
+}
+#endif
+
 /* The carrying edges, and room for their sides and silhouette points:
  * each edge's run of sides and of points laid out edge by edge. */
 static silk_status lay_out_edges(silk_sil_frame *f)
@@ -417,32 +465,25 @@ static silk_status lay_out_edges(silk_sil_frame *f)
 
     /* Count the sides (every triangle side on a carrying edge) and the
      * silhouette sides of each edge, then lay them out edge by edge. */
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        uint8_t st = f->tri_state[t];
-        if ((st & (SILK_TS_SIL | SILK_TS_LONE)) == SILK_TS_BROKEN) continue;
 #ifndef SILK_NO_VERTEX_CACHE
-        /* a host's listed edges: the three bits first, as most triangles have none */
-        if (m->tri_edge) {
-            const silk_index *te = &m->tri_edge[3 * (size_t)t];
-            if (!((f->carrying[te[0] >> 3] >> (te[0] & 7)) & 1) && !((f->carrying[te[1] >> 3] >> (te[1] & 7)) & 1) &&
-                !((f->carrying[te[2] >> 3] >> (te[2] & 7)) & 1))
-                continue;
-        }
-#endif
-        for (uint32_t k = 0; k < 3; k++) {
-            uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
-            if (w == SILK_SIL_NONE) continue;
+    if (by_edges(m)) {
+        for (uint32_t w = 0; w < nwork; w++) {
             silk_sil_edge *we = &f->edges[w];
-            if (we->nsides == SILK_SIL_SIDES_MAX) return SILK_ERR_NOMEM;
-            f->tri_state[t] |= (uint8_t)(SILK_TS_CARRY0 << k);
-            we->nsides++;
-            if (st & SILK_TS_SIL) {
-                uint32_t lone = st & SILK_TS_LONE;
-                if ((k == lone || k == (lone + 2) % 3) && !pair_seen(f, t, k, we->edge)) we->npairs++;
-            }
-            if ((st & SILK_TS_FRONT) && we->is_feature) we->sampled = 1;
+            uint32_t tt[2];
+            for (uint32_t i = 0, n = edge_tris(f, we->edge, tt); i < n; i++)
+                for (uint32_t k = 0; k < 3; k++)
+                    if (m->tri_edge[3 * (size_t)tt[i] + k] == we->edge && !count_side(f, tt[i], k, we))
+                        return SILK_ERR_NOMEM;
         }
-    }
+    } else
+#endif
+        for (uint32_t t = 0; t < m->ntris; t++) {
+            if ((f->tri_state[t] & (SILK_TS_SIL | SILK_TS_LONE)) == SILK_TS_BROKEN) continue;
+            for (uint32_t k = 0; k < 3; k++) {
+                uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
+                if (w != SILK_SIL_NONE && !count_side(f, t, k, &f->edges[w])) return SILK_ERR_NOMEM;
+            }
+        }
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
         nsides += f->edges[w].nsides;
@@ -455,30 +496,51 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     return f->pairs ? SILK_OK : SILK_ERR_NOMEM;
 }
 
+/* The silhouette point of silhouette side k of t on its edge we, unless
+ * the edge has one of the same normal pair. */
+static void add_pair(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *we)
+{
+    const silk_mesh *m = f->m;
+    silk_sil_side s;
+    silk_sil_side_attrs(m, t, k, &m->edge[we->edge], &s);
+    for (uint32_t j = 0; j < we->npairs; j++) {
+        const silk_sil_pair *p = &f->pairs[we->pair0 + j];
+        if (p->n0 == s.n0 && p->n1 == s.n1) return;
+    }
+    silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
+    p->n0 = s.n0;
+    p->n1 = s.n1;
+}
+
 /* One silhouette point per distinct normal pair on each edge a silhouette
  * triangle's silhouette side lies on. */
 static void fill_pairs(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (by_edges(m)) {   /* the same points in the same order, edge by edge */
+        for (uint32_t w = 0; w < f->nedges; w++) {
+            silk_sil_edge *we = &f->edges[w];
+            uint32_t tt[2];
+            for (uint32_t i = 0, n = edge_tris(f, we->edge, tt); i < n; i++) {
+                uint8_t st = f->tri_state[tt[i]];
+                if (!(st & SILK_TS_SIL)) continue;
+                uint32_t lone = st & SILK_TS_LONE;
+                for (uint32_t k = 0; k < 3; k++)
+                    if ((k == lone || k == (lone + 2) % 3) && m->tri_edge[3 * (size_t)tt[i] + k] == we->edge)
+                        add_pair(f, tt[i], k, we);
+            }
+        }
+        return;
+    }
+#endif
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = f->tri_state[t];
         if (!(st & SILK_TS_SIL)) continue;
         uint32_t lone = st & SILK_TS_LONE;
         for (uint32_t k = 0; k < 3; k++) {
             if (k != lone && k != (lone + 2) % 3) continue;
-            silk_index e = silk_mesh_tri_edge(m, t, k);
-            silk_sil_edge *we = &f->edges[silk_sil_slot(f, e)];
-            silk_sil_side s;
-            silk_sil_side_attrs(m, t, k, &m->edge[e], &s);
-            uint32_t j;
-            for (j = 0; j < we->npairs; j++) {
-                const silk_sil_pair *p = &f->pairs[we->pair0 + j];
-                if (p->n0 == s.n0 && p->n1 == s.n1) break;
-            }
-            if (j < we->npairs) continue;
-            silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
-            p->n0 = s.n0;
-            p->n1 = s.n1;
+            add_pair(f, t, k, &f->edges[silk_sil_slot(f, silk_mesh_tri_edge(m, t, k))]);
         }
     }
 }
