@@ -153,9 +153,16 @@ int silk_perturb(silk_sil_frame *f)
     if (!f->lift || !f->slot_vert || !f->slot_stamp) return 0;
     uint32_t ns = f->nsegs;
     for (int pass = 0; pass < 2; pass++) {
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->seg_kept && f->nseg_kept == ns) {
+            /* every segment kept, in triangle order (silk_remesh_keep): the
+             * concave ones read from there, not sought among every triangle */
+            for (uint32_t j = 0; j < ns; j++)
+                if (f->seg_kept[j].concave) visit_near(f, f->seg_tri[j], &f->seg_kept[j], pass * ns + j + 1, pass);
+        } else
+#endif
         /* the segments in triangle order */
-        uint32_t i = 0;
-        for (uint32_t t = 0; t < f->m->ntris && i < ns; t++) {
+        for (uint32_t t = 0, i = 0; t < f->m->ntris && i < ns; t++) {
             if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
             i++;
             silk_sil_seg tmp;   /* rebuilt only where the plan found it concave */
