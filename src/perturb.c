@@ -47,7 +47,7 @@ int silk_perturb_alloc(silk_sil_frame *f)
     f->vert_slot = f->vert_offset = NULL;
     f->offset = NULL;
     f->noffset = f->nslots = f->near_bound = 0;
-    uint32_t t;
+    uint32_t t = 0;
 #ifndef SILK_NO_VERTEX_CACHE
     /* every segment kept, in triangle order (silk_remesh_keep): the concave
      * ones read from there, not sought among every triangle */
