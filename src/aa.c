@@ -241,6 +241,31 @@ static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
  * get the curve's coverage too, their colours from the drawn pixels next
  * to the chord.  curve: 0 a straight side, 1 a silhouette segment, 2 a
  * crease (the two sides are faces, each pixel blended by crease_px). */
+/* The pixel centres a side walks, lo .. hi - 1 along u (x, or y when
+ * steep) for a walk from u = a to u = b > a: those in [a, b), of the
+ * band's rows or the frame's columns. */
+static void walk_range(const silk_target *t, int steep, int32_t a, int32_t b, int64_t *lo, int64_t *hi)
+{
+    int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
+    *lo = floor_div(a + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
+    *hi = floor_div(b + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
+    if (*lo < ulo) *lo = ulo;
+    if (*hi > uhi) *hi = uhi;
+}
+
+/* Whether side() from p to q walks any pixel: a chord shorter than a
+ * pixel often passes between centres, and then the curve's points along
+ * it are not needed. */
+static int walks_any(const silk_target *t, const silk_aa_pt *p, const silk_aa_pt *q)
+{
+    int steep = absl(q->y - p->y) > absl(q->x - p->x);
+    int32_t a = steep ? p->y : p->x, b = steep ? q->y : q->x;
+    int64_t lo, hi;
+    if (a == b) return 0;
+    walk_range(t, steep, a < b ? a : b, a < b ? b : a, &lo, &hi);
+    return lo < hi;
+}
+
 static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, int64_t tol, const silk_aa_pt *mid,
                  int curve)
 {
@@ -272,11 +297,8 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
     const silk_target *t = aa->t;
     int32_t du = q.x - p.x, dd = (int32_t)(q.d >> 1) - (int32_t)(p.d >> 1);   /* depth to 31 bits */
     if (!du) return;
-    int64_t lo = floor_div(p.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);   /* centres in [p.x, q.x) */
-    int64_t hi = floor_div(q.x + SILK_RASTER_SUB / 2 - 1, SILK_RASTER_SUB);
-    int64_t ulo = steep ? t->y0 : 0, uhi = steep ? t->y0 + t->rows : t->width;   /* only the band's rows matter */
-    if (lo < ulo) lo = ulo;
-    if (hi > uhi) hi = uhi;
+    int64_t lo, hi;
+    walk_range(t, steep, p.x, q.x, &lo, &hi);
     int j = 0;
     for (int64_t c = lo; c < hi; c++) {
         int32_t uc = (int32_t)c * SILK_RASTER_SUB + SILK_RASTER_SUB / 2, U = uc - p.x;
@@ -501,6 +523,8 @@ void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uin
  * records on the curve itself). */
 typedef struct seg_at {
     uint32_t curve, a, b;
+    uint32_t first;          /* the record of its first interior sample */
+    const silk_vertex_out *out;   /* the share's vertex-stage output, placed into aa->pt as needed */
 } seg_at;
 
 /* Record rec's parameter on the segment's curve; 0 if it is not on it. */
@@ -530,16 +554,9 @@ static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, ui
     return 1;
 }
 
-/* Silhouette triangle t's share: its segment walked chord by chord with
- * the curve's coverage, whether or not the share's two parts fold there on
- * screen (where they face the same way, the outline drawn is a side next
- * to the chord rather than the chord), and no other side of the share
- * (those lie within the curve).  The inside is away from where the
- * normal at A points on screen (it is perpendicular to the view there,
- * and the surface lies behind a visible outline).  The depth tolerance is
- * the whole share's range: the pixels next to the outline hold any of its
- * triangles. */
-static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uint32_t t)
+/* Where the segment's outside is on screen, (ox, oy) from A, and the
+ * share's depth tolerance; 0 when A or its outside is not placed. */
+static int seg_outward(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, int32_t *ox, int32_t *oy, int64_t *tol)
 {
     /* A moved out along its normal by a sixteenth of the segment, projected */
     const silk_curve *c = &aa->geom->curves[s->curve];
@@ -553,25 +570,47 @@ static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, uin
     aa->hal->vertex(aa->hal, &og, &r, aa->out);
     silk_aa_pt n = point(aa->t, aa->out);
     const silk_aa_pt *m = &aa->pt[s->a];
-    int32_t ox = n.x - m->x, oy = n.y - m->y;
-    if (!m->ok || !n.ok || (!ox && !oy)) return;
+    *ox = n.x - m->x;
+    *oy = n.y - m->y;
+    if (!m->ok || !n.ok || (!*ox && !*oy)) return 0;
     uint32_t lo = UINT32_MAX, hi = 0;
     for (uint32_t i = 0; i < g->nvrec; i++) {
+        aa->pt[i] = point(aa->t, &s->out[i]);   /* every record: the chords' again, the same */
         if (!aa->pt[i].ok) continue;
         if (aa->pt[i].d < lo) lo = aa->pt[i].d;
         if (aa->pt[i].d > hi) hi = aa->pt[i].d;
     }
-    int64_t tol = (int64_t)(hi - lo) + hi / 64;   /* A is placed: lo <= hi */
+    *tol = (int64_t)(hi - lo) + hi / 64;   /* A is placed: lo <= hi */
+    return 1;
+}
+
+/* Silhouette triangle t's share: its segment walked chord by chord with
+ * the curve's coverage, whether or not the share's two parts fold there on
+ * screen (where they face the same way, the outline drawn is a side next
+ * to the chord rather than the chord), and no other side of the share
+ * (those lie within the curve).  The inside is away from where the
+ * normal at A points on screen (it is perpendicular to the view there,
+ * and the surface lies behind a visible outline).  The depth tolerance is
+ * the whole share's range: the pixels next to the outline hold any of its
+ * triangles. */
+static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
+{
+    /* the outside and the tolerance once a chord walks a pixel: a segment
+     * of a fine mesh often walks none */
+    int32_t ox = 0, oy = 0;
+    int64_t tol = 0;
+    int placed = 0;
     /* the samples: A, the records on the curve after the share's boundary, B */
-    uint32_t rec[3];
-    silk_remesh_seg_recs(aa->sil, t, 0, rec);
-    uint32_t a = s->a, b = rec[2];
+    uint32_t a = s->a, b = s->first;
     silk_aa_pt *mid = aa->walk + SUBDIV + 1;
+    aa->pt[a] = point(aa->t, &s->out[a]);   /* the chords' ends as they come; the rest only once placed */
     for (int last = 0; !last; a = b++) {
         last = b >= g->nvrec || g->vrec[b].kind != SILK_VREC_CURVE || g->vrec[b].a != s->curve;
         if (last) b = s->b;
+        if (!placed) aa->pt[b] = point(aa->t, &s->out[b]);
         const silk_aa_pt *p = &aa->pt[a], *q = &aa->pt[b];
-        if (!p->ok || !q->ok) continue;
+        if (!p->ok || !q->ok || !walks_any(aa->t, p, q)) continue;   /* side() would walk no pixel */
+        if (!placed && !(placed = seg_outward(aa, g, s, &ox, &oy, &tol))) return;
         silk_aa_pt in = { (int32_t)(((int64_t)p->x + q->x) / 2 - ox), (int32_t)(((int64_t)p->y + q->y) / 2 - oy), 0, 1 };
         side(aa, *p, *q, &in, tol, seg_points(aa, s, g, a, b, mid) ? mid : NULL, 1);
     }
@@ -581,7 +620,6 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                    const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
-    for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
 #ifndef SILK_NO_AA_CREASE
     for (int k = 0; aa->creases && k < 3; k++)
         if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
@@ -589,6 +627,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
     const uint32_t *tri = g->tri;
     if (g->ntri == 1) {
         /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
+        for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
         int front = tri_front(aa, m, v, t);
         for (int k = 0; k < 3; k++)
             if (coarse_outline(aa, m, v, t, k, front))
@@ -596,11 +635,13 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         return;
     }
     seg_at at;
-    uint32_t ends[2];
-    if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, ends, &at.curve)) {
-        at.a = ends[0];
-        at.b = ends[1];
-        seg_walk(aa, g, &at, t);
+    uint32_t rec[3];
+    if (aa->sil && (aa->sil->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg_at(aa->sil, t, rec, &at.curve)) {
+        at.a = rec[0];
+        at.b = rec[1];
+        at.first = rec[2];
+        at.out = out;
+        seg_walk(aa, g, &at);
     }
 }
 

@@ -58,18 +58,33 @@ void *silk_arena_alloc(silk_arena *a, size_t n, silk_purpose p)
     return r;
 }
 
+/* n bytes from the top, m of them taken; not zero-filled. */
+static uint8_t *take_top(silk_arena *a, size_t n, silk_purpose p, size_t *m)
+{
+    if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, m)) return NULL;
+    a->top += *m;
+    a->top_used[p] += *m;
+    if (a->top > a->top_peak) a->top_peak = a->top;
+    account(a, *m, p);
+    return a->base + a->size - a->top;
+}
+
 void *silk_arena_alloc_top(silk_arena *a, size_t n, silk_purpose p)
 {
     size_t m;
-    if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, &m)) return NULL;
-    a->top += m;
-    a->top_used[p] += m;
-    if (a->top > a->top_peak) a->top_peak = a->top;
-    uint8_t *r = a->base + a->size - a->top;
-    account(a, m, p);
-    memset(r, 0, m);
+    uint8_t *r = take_top(a, n, p, &m);
+    if (r) memset(r, 0, m);
     return r;
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+void *silk_arena_scratch_top(silk_arena *a, size_t count, size_t size, silk_purpose p)
+{
+    size_t m;
+    if (size && count > (size_t)-1 / size) { a->failed_request = (size_t)-1; return NULL; }
+    return take_top(a, count * size, p, &m);
+}
+#endif
 
 static int mul_ok(size_t count, size_t size, size_t *out)
 {

@@ -97,8 +97,8 @@ typedef struct silk_sil_seg {
     uint32_t n;              /* sampling intervals (eq. 8) */
     uint32_t split;          /* sample joined to both base vertices (Fig. 11) */
     int concave;             /* III-E: N_A.F > 0 and N_B.F < 0 */
-    silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E */
-    silk_fx rise;            /* how far the segment's ends rise above P_i */
+    silk_vec3 m, nm;         /* S(1/2) and its normal: the plane P_i of III-E (concave only, else zero) */
+    silk_fx rise;            /* how far the segment's ends rise above P_i (the same) */
 } silk_sil_seg;
 
 /* Edge tangents kept by silk_sil_edge_curve: the three sides of the
@@ -171,6 +171,12 @@ typedef struct silk_sil_frame {
 } silk_sil_frame;
 
 #ifndef SILK_NO_VERTEX_CACHE
+/* arena.c: count * size bytes from the top as silk_arena_array_top takes
+ * them, but not zero-filled: for what a frame keeps for speed, every byte
+ * of it written before it is read (megabytes a frame on a large mesh,
+ * where zeroing them would cost more than some of the stages). */
+void *silk_arena_scratch_top(silk_arena *a, size_t count, size_t size, silk_purpose p);
+
 /* Counts what the plan took from the arena since it had free0 bytes free
  * and the high-water peak as kept for speed (kept_bytes, kept_need). */
 void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak);
@@ -232,13 +238,9 @@ static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 #ifndef SILK_NO_VERTEX_CACHE
     if (f->carry_rank) {
         unsigned below = f->carrying[edge >> 3] & ((1u << (edge & 7)) - 1);
-#if defined(__GNUC__)
-        return f->carry_rank[edge >> 3] + (uint32_t)__builtin_popcount(below);
-#else
-        uint32_t r = f->carry_rank[edge >> 3];
-        for (; below; below &= below - 1) r++;
-        return r;
-#endif
+        /* the bits of a byte by nibbles (__builtin_popcount is a library call without a popcount instruction) */
+        static const uint8_t bits[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+        return f->carry_rank[edge >> 3] + bits[below & 15] + bits[below >> 4];
     }
 #endif
     uint32_t lo = 0, hi = f->nedges;

@@ -83,7 +83,9 @@ static uint32_t split_sample(const silk_sil_seg *s, silk_vec3 b1, silk_vec3 b2)
     uint32_t best = s->n / 2;
     int64_t best_d = INT64_MAX;
     for (uint32_t i = 0; i <= s->n; i++) {
-        int64_t d = silk_v3_dot64(silk_v3_sub(silk_hermite_point(&s->c, silk_sample_param(i, s->n)), mid), dir);
+        /* the ends are the curve's ends, bit for bit (eq. 5 at 0 and 1 is exact) */
+        silk_vec3 p = i == 0 ? s->c.p0 : i == s->n ? s->c.p1 : silk_hermite_point(&s->c, silk_sample_param(i, s->n));
+        int64_t d = silk_v3_dot64(silk_v3_sub(p, mid), dir);
         if (d < 0) d = -d;
         if (d < best_d) { best_d = d; best = i; }
     }
@@ -174,6 +176,7 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 {
     uint32_t lo = 0, hi = f->nseg_kept;
+    if (!hi || f->seg_tri[hi - 1] < t) return SILK_SIL_NONE;   /* past them all: as the plan asks while it keeps them */
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;
         if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
@@ -196,7 +199,7 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
                   3 * SILK_ARENA_ALIGN;
     if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
-    f->seg_kept = silk_arena_array_top(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);
+    f->seg_kept = silk_arena_scratch_top(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);   /* written as made */
     f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
     if (!f->seg_kept || !f->seg_tri || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
         f->seg_kept = NULL;
@@ -240,6 +243,7 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     /* III-E: concave when N_A.F > 0 and N_B.F < 0, F = B - A */
     silk_vec3 F = silk_v3_sub(B, A);
     s->concave = silk_v3_dot64(nA, F) > 0 && silk_v3_dot64(nB, F) < 0;
+    if (!s->concave) return 1;   /* the plane P_i is only a concave segment's (perturb.c) */
     s->m = silk_hermite_point(&s->c, SILK_FX_HALF);
     if (!silk_v3_normalize(silk_v3_lerp(nA, nB, SILK_FX_HALF), &s->nm)) s->concave = 0;
     s->rise = silk_fx_max(silk_fx_max(silk_v3_dot(silk_v3_sub(A, s->m), s->nm),
@@ -533,6 +537,25 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
     silk_sil_seg seg;
     g->offset = f->offset;
     g->noffset = f->noffset;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {
+        /* most triangles, as they are: put_corner's three records written
+         * out (a host's shortcut; a small part keeps the code bytes) */
+        silk_vrec *r = &g->vrec[g->nvrec];
+        const silk_index *tv = &f->m->tri[3 * (size_t)t], *vo = f->vert_offset;
+        uint32_t n = g->nvrec;
+        for (uint32_t k = 0; k < 3; k++) {
+            silk_index off = vo ? vo[tv[k]] : SILK_NO_INDEX;
+            r[k].kind = off == SILK_NO_INDEX ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+            r[k].a = 3 * t + k;
+            r[k].b = off == SILK_NO_INDEX ? 0 : off;
+            r[k].t = 0;
+        }
+        g->nvrec = n + 3;
+        put_tri(g, n, n + 1, n + 2, 0);
+        return;
+    }
+#endif
     if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &seg)) {
         emit_silhouette(f, g, t, &seg);     /* Fig. 11 */
         return;
@@ -580,32 +603,44 @@ int silk_remesh_store(silk_sil_frame *f, silk_frame_geom *g)
     return 1;
 }
 
+/* The silhouette point side k of t puts on its edge, or NULL. */
+static const silk_sil_pair *side_pair_of(const silk_sil_frame *f, uint32_t t, uint32_t k)
+{
+    const silk_sil_edge *e = edge_at(f, t, k);
+    silk_sil_side s;
+    if (!e) return NULL;
+    silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+    return side_pair(f, e, &s);
+}
+
+/* The share's boundary starts at L (first_corner), L's side first: its
+ * chain follows L's record, then B1's record and the base's chain, then
+ * B2's record (L+2's corner) and L+2's chain, then the samples. */
+static void seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, const silk_fx u[2], uint32_t rec[3])
+{
+    uint32_t lone = f->tri_state[t] & SILK_TS_LONE, k2 = (lone + 2) % 3;
+    const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, k2);
+    uint32_t c2 = base + 2 + ea->nchain + side_points(f, t, (lone + 1) % 3);
+    rec[0] = base + 1 + silk_sil_chain_index(&f->chain[ea->chain0], ea->nchain, u[0]);
+    rec[1] = c2 + 1 + silk_sil_chain_index(&f->chain[eb->chain0], eb->nchain, u[1]);
+    rec[2] = c2 + 1 + eb->nchain;
+}
+
 void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, uint32_t rec[3])
 {
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
-    for (uint32_t i = 0; i < 2; i++) {
-        uint32_t k = (lone + 2 * i) % 3;
-        rec[i] = silk_remesh_corner_rec(f, t, k, base) + 1 + pair_chain(f, t, k);
-    }
-    /* the samples follow the boundary, whose last side is L+2's */
-    rec[2] = silk_remesh_corner_rec(f, t, (lone + 2) % 3, base) + 1 + side_points(f, t, (lone + 2) % 3);
+    silk_fx u[2] = { side_pair_of(f, t, lone)->u, side_pair_of(f, t, (lone + 2) % 3)->u };
+    seg_recs(f, t, base, u, rec);
 }
 
-int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[2], uint32_t *curve)
+int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve)
 {
     /* what silk_remesh_seg needs before it builds anything: both silhouette points */
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
-    for (uint32_t k = lone; k <= lone + 2; k += 2) {
-        const silk_sil_edge *e = edge_at(f, t, k % 3);
-        silk_sil_side s;
-        if (!e) return 0;
-        silk_sil_side_attrs(f->m, t, k % 3, &f->m->edge[e->edge], &s);
-        if (!side_pair(f, e, &s)) return 0;
-    }
-    uint32_t r[3];
-    silk_remesh_seg_recs(f, t, 0, r);
-    rec[0] = r[0];
-    rec[1] = r[1];
+    const silk_sil_pair *pa = side_pair_of(f, t, lone), *pb = side_pair_of(f, t, (lone + 2) % 3);
+    if (!pa || !pb) return 0;
+    silk_fx u[2] = { pa->u, pb->u };
+    seg_recs(f, t, 0, u, rec);
     *curve = 0;
     for (uint32_t k = 0; k < 3; k++) *curve += side_points(f, t, k) > 0;   /* walk_side: a curve per side with points */
     return 1;

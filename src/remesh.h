@@ -41,10 +41,10 @@ uint32_t silk_remesh_corner_rec(const silk_sil_frame *f, uint32_t t, uint32_t k,
  * at record base): rec[0] A, rec[1] B, rec[2] its first interior sample. */
 void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, uint32_t rec[3]);
 /* Where silhouette triangle t's segment is in its share (records from
- * 0): rec[0] A, rec[1] B, *curve its curve (emitted after one curve per
- * side of t that carries points); 0 when t has no segment (silk_remesh_seg
- * would fail: the share is then not cut by one). */
-int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[2], uint32_t *curve);
+ * 0): rec as silk_remesh_seg_recs gives them, *curve its curve (emitted
+ * after one curve per side of t that carries points); 0 when t has no
+ * segment (silk_remesh_seg would fail: the share is then not cut by one). */
+int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve);
 void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats);   /* the frame's counts */
 
 #endif

@@ -502,7 +502,7 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
                    (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris + 20 * (uint64_t)n;
     size_t cap = all < room ? (size_t)all : room;
     f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);
-    f->ks = silk_arena_alloc_top(a, cap, SILK_MEM_FRAME);
+    f->ks = silk_arena_scratch_top(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
     if (!f->ks_at || !f->ks) {
         f->ks = NULL;
         return;

@@ -216,7 +216,11 @@ size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
     size_t fit = room > SILK_ARENA_ALIGN ? (room - SILK_ARENA_ALIGN) / (2 * sizeof *f->tan_kept) : 0;
     uint32_t n = fit < f->nedges ? (uint32_t)fit : f->nedges;
     if (f->tan_kept || n == 0) return 0;
+#ifndef SILK_NO_VERTEX_CACHE
+    silk_vec3 *t = silk_arena_scratch_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);   /* every one written below */
+#else
     silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
+#endif
     if (!t) return 0;
     for (uint32_t w = 0; w < n; w++) edge_tangents(f, &f->edges[w], &t[2 * w]);
     f->tan_kept = t;
@@ -261,6 +265,30 @@ static void chain_insert(silk_fx *c, uint32_t *n, silk_fx u)
 
 /* ---- the stage ----------------------------------------------------------------- */
 
+/* Whether triangle t is whole (silk_sil_tri_ok), and then its sides'
+ * edges in e.  A host's mesh has them listed (tri_edge): every triangle
+ * is tested every frame, so there the test is written out, each index
+ * read once; a board's packed mesh finds them (-DSILK_NO_VERTEX_CACHE
+ * keeps the code bytes). */
+static int tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    if (m->tri_edge) {
+        const silk_index *tv = &m->tri[3 * (size_t)t], *tn = &m->tri_normal[3 * (size_t)t],
+                         *te = &m->tri_edge[3 * (size_t)t];
+        uint32_t nv = m->nverts, nn = m->nnormals, ne = m->nedges;
+        e[0] = te[0];
+        e[1] = te[1];
+        e[2] = te[2];
+        return (tv[0] < nv) & (tv[1] < nv) & (tv[2] < nv) & (tn[0] < nn) & (tn[1] < nn) & (tn[2] < nn) &
+               (e[0] < ne) & (e[1] < ne) & (e[2] < ne);
+    }
+#endif
+    if (!silk_sil_tri_ok(m, t)) return 0;
+    for (uint32_t k = 0; k < 3; k++) e[k] = silk_mesh_tri_edge(m, t, k);
+    return 1;
+}
+
 /* Mark edge e as carrying points, counting it the first time. */
 static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
 {
@@ -300,28 +328,23 @@ static silk_status find_triangles(silk_sil_frame *f)
     f->nsil = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = 0;
+        silk_index e[3];
         f->tri_state[t] = SILK_TS_BROKEN;   /* tested once here, read by lay_out_edges */
-        if (!silk_sil_tri_ok(m, t)) continue;
+        if (!tri_edges(m, t, e)) continue;
         const silk_index *tn = &m->tri_normal[3 * t];
         uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
         if (v0 != v1 || v1 != v2) {
             uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
             st |= (uint8_t)(SILK_TS_SIL | lone);
             f->nsil++;
-            mark_edge(f, silk_mesh_tri_edge(m, t, lone), &nwork);
-            mark_edge(f, silk_mesh_tri_edge(m, t, (lone + 2) % 3), &nwork);
+            mark_edge(f, e[lone], &nwork);
+            mark_edge(f, e[(lone + 2) % 3], &nwork);
         }
-        if (features) {
-            int has_feature = 0;
+        if (features && ((m->edge[e[0]].flags | m->edge[e[1]].flags | m->edge[e[2]].flags) & SILK_EDGE_FEATURE) &&
+            silk_sil_tri_front(m, v, t)) {
+            st |= SILK_TS_FRONT;
             for (int k = 0; k < 3; k++)
-                if (m->edge[silk_mesh_tri_edge(m, t, k)].flags & SILK_EDGE_FEATURE) has_feature = 1;
-            if (has_feature && silk_sil_tri_front(m, v, t)) {
-                st |= SILK_TS_FRONT;
-                for (int k = 0; k < 3; k++) {
-                    silk_index e = silk_mesh_tri_edge(m, t, k);
-                    if (m->edge[e].flags & SILK_EDGE_FEATURE) mark_edge(f, e, &nwork);
-                }
-            }
+                if (m->edge[e[k]].flags & SILK_EDGE_FEATURE) mark_edge(f, e[k], &nwork);
         }
         f->tri_state[t] = st;
     }
@@ -333,7 +356,7 @@ static silk_status find_triangles(silk_sil_frame *f)
     size_t free0 = silk_arena_free_bytes(a), peak = a->top_peak;
     size_t want = bits * sizeof *f->carry_rank + SILK_ARENA_ALIGN;
     if (want <= f->keep_room && silk_sil_keep_fits(want, free0) &&
-        (f->carry_rank = silk_arena_array_top(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
+        (f->carry_rank = silk_arena_scratch_top(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
         for (size_t i = 0, r = 0; i < bits; i++) {
             f->carry_rank[i] = (uint32_t)r;
             for (unsigned b = f->carrying[i]; b; b &= b - 1) r++;
@@ -376,6 +399,54 @@ static int pair_seen(const silk_sil_frame *f, uint32_t t, uint32_t k, silk_index
     return 0;
 }
 
+/* Side k of triangle t lies on carrying edge we: counted, and with it
+ * its silhouette point unless the triangle across gave the same one;
+ * 0 when the edge has more sides than it can count. */
+static int count_side(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *we)
+{
+    uint8_t st = f->tri_state[t];
+    if (we->nsides == SILK_SIL_SIDES_MAX) return 0;
+    f->tri_state[t] |= (uint8_t)(SILK_TS_CARRY0 << k);
+    we->nsides++;
+    if (st & SILK_TS_SIL) {
+        uint32_t lone = st & SILK_TS_LONE;
+        if ((k == lone || k == (lone + 2) % 3) && !pair_seen(f, t, k, we->edge)) we->npairs++;
+    }
+    if ((st & SILK_TS_FRONT) && we->is_feature) we->sampled = 1;
+    return 1;
+}
+
+#ifndef SILK_NO_VERTEX_CACHE
+/* Whether the sides on the carrying edges may be found from the edges'
+ * triangles instead of a pass over every triangle: with listed edges
+ * (tri_edge) and no edge of more than two triangles, edge.t names every
+ * triangle with a side on the edge (silk_mesh_build), so the work is the
+ * silhouette's, not the mesh's.  A host's shortcut: a board's packed mesh
+ * has no tri_edge. */
+static int by_edges(const silk_mesh *m)
+{
+    return m->tri_edge && !m->nnonmanifold_edges;
+}
+
+/* Whether triangle t is whole (find_triangles tested it). */
+static int tri_whole(const silk_sil_frame *f, uint32_t t)
+{
+    return t < f->m->ntris && (f->tri_state[t] & (SILK_TS_SIL | SILK_TS_LONE)) != SILK_TS_BROKEN;
+}
+
+/* The whole triangles on edge e, ascending (the order a pass over every
+ * triangle meets them in): tt[0 .. n). */
+static uint32_t edge_tris(const silk_sil_frame *f, silk_index e, uint32_t tt[2])
+{
+    const silk_edge *ed = &f->m->edge[e];
+    uint32_t a = ed->t[0], b = ed->t[1], n = 0;
+    if (b < a) { uint32_t x = a; a = b; b = x; }
+    if (tri_whole(f, a)) tt[n++] = a;
+    if (b != a && tri_whole(f, b)) tt[n++] = b;
+    return n;
+}
+#endif
+
 /* The carrying edges, and room for their sides and silhouette points:
  * each edge's run of sides and of points laid out edge by edge. */
 static silk_status lay_out_edges(silk_sil_frame *f)
@@ -386,6 +457,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
     for (uint32_t e = 0, w = 0; e < m->nedges; e++) {
+        if (!f->carrying[e >> 3]) { e |= 7; continue; }   /* most bytes: none of their eight */
         if (!(f->carrying[e >> 3] & (1u << (e & 7)))) continue;
         f->edges[w].edge = (silk_index)e;
         f->edges[w++].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
@@ -393,23 +465,25 @@ static silk_status lay_out_edges(silk_sil_frame *f)
 
     /* Count the sides (every triangle side on a carrying edge) and the
      * silhouette sides of each edge, then lay them out edge by edge. */
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        uint8_t st = f->tri_state[t];
-        if ((st & (SILK_TS_SIL | SILK_TS_LONE)) == SILK_TS_BROKEN) continue;
-        for (uint32_t k = 0; k < 3; k++) {
-            uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
-            if (w == SILK_SIL_NONE) continue;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (by_edges(m)) {
+        for (uint32_t w = 0; w < nwork; w++) {
             silk_sil_edge *we = &f->edges[w];
-            if (we->nsides == SILK_SIL_SIDES_MAX) return SILK_ERR_NOMEM;
-            f->tri_state[t] |= (uint8_t)(SILK_TS_CARRY0 << k);
-            we->nsides++;
-            if (st & SILK_TS_SIL) {
-                uint32_t lone = st & SILK_TS_LONE;
-                if ((k == lone || k == (lone + 2) % 3) && !pair_seen(f, t, k, we->edge)) we->npairs++;
-            }
-            if ((st & SILK_TS_FRONT) && we->is_feature) we->sampled = 1;
+            uint32_t tt[2];
+            for (uint32_t i = 0, n = edge_tris(f, we->edge, tt); i < n; i++)
+                for (uint32_t k = 0; k < 3; k++)
+                    if (m->tri_edge[3 * (size_t)tt[i] + k] == we->edge && !count_side(f, tt[i], k, we))
+                        return SILK_ERR_NOMEM;
         }
-    }
+    } else
+#endif
+        for (uint32_t t = 0; t < m->ntris; t++) {
+            if ((f->tri_state[t] & (SILK_TS_SIL | SILK_TS_LONE)) == SILK_TS_BROKEN) continue;
+            for (uint32_t k = 0; k < 3; k++) {
+                uint32_t w = silk_sil_slot(f, silk_mesh_tri_edge(m, t, k));
+                if (w != SILK_SIL_NONE && !count_side(f, t, k, &f->edges[w])) return SILK_ERR_NOMEM;
+            }
+        }
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
         nsides += f->edges[w].nsides;
@@ -422,30 +496,51 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     return f->pairs ? SILK_OK : SILK_ERR_NOMEM;
 }
 
+/* The silhouette point of silhouette side k of t on its edge we, unless
+ * the edge has one of the same normal pair. */
+static void add_pair(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *we)
+{
+    const silk_mesh *m = f->m;
+    silk_sil_side s;
+    silk_sil_side_attrs(m, t, k, &m->edge[we->edge], &s);
+    for (uint32_t j = 0; j < we->npairs; j++) {
+        const silk_sil_pair *p = &f->pairs[we->pair0 + j];
+        if (p->n0 == s.n0 && p->n1 == s.n1) return;
+    }
+    silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
+    p->n0 = s.n0;
+    p->n1 = s.n1;
+}
+
 /* One silhouette point per distinct normal pair on each edge a silhouette
  * triangle's silhouette side lies on. */
 static void fill_pairs(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (by_edges(m)) {   /* the same points in the same order, edge by edge */
+        for (uint32_t w = 0; w < f->nedges; w++) {
+            silk_sil_edge *we = &f->edges[w];
+            uint32_t tt[2];
+            for (uint32_t i = 0, n = edge_tris(f, we->edge, tt); i < n; i++) {
+                uint8_t st = f->tri_state[tt[i]];
+                if (!(st & SILK_TS_SIL)) continue;
+                uint32_t lone = st & SILK_TS_LONE;
+                for (uint32_t k = 0; k < 3; k++)
+                    if ((k == lone || k == (lone + 2) % 3) && m->tri_edge[3 * (size_t)tt[i] + k] == we->edge)
+                        add_pair(f, tt[i], k, we);
+            }
+        }
+        return;
+    }
+#endif
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = f->tri_state[t];
         if (!(st & SILK_TS_SIL)) continue;
         uint32_t lone = st & SILK_TS_LONE;
         for (uint32_t k = 0; k < 3; k++) {
             if (k != lone && k != (lone + 2) % 3) continue;
-            silk_index e = silk_mesh_tri_edge(m, t, k);
-            silk_sil_edge *we = &f->edges[silk_sil_slot(f, e)];
-            silk_sil_side s;
-            silk_sil_side_attrs(m, t, k, &m->edge[e], &s);
-            uint32_t j;
-            for (j = 0; j < we->npairs; j++) {
-                const silk_sil_pair *p = &f->pairs[we->pair0 + j];
-                if (p->n0 == s.n0 && p->n1 == s.n1) break;
-            }
-            if (j < we->npairs) continue;
-            silk_sil_pair *p = &f->pairs[we->pair0 + we->npairs++];
-            p->n0 = s.n0;
-            p->n1 = s.n1;
+            add_pair(f, t, k, &f->edges[silk_sil_slot(f, silk_mesh_tri_edge(m, t, k))]);
         }
     }
 }

@@ -46,6 +46,15 @@ static void to_eye_d(const silk_view *v, silk_vec3 p, double d[3])
     for (int i = 0; i < 3; i++) d[i] = e[i] - q[i];
 }
 
+/* View i of a test's random ones: a random direction, 1.2 to 6.2 radii
+ * away, perspective and orthographic in turn; 0 when it cannot be made. */
+static int random_view(const silk_mesh *m, int i, silk_view *v)
+{
+    double dir[3];
+    random_dir(dir);
+    return tf_view_around(m, dir, 1.2 + check_uniform(0, 5), i & 1, v);
+}
+
 /* ---- references ------------------------------------------------------------ */
 
 /* Eqs. 2-5: tangents of the bridge over p0 -> p1, with the bulge bound. */
@@ -101,10 +110,8 @@ static void silhouette_triangles(const char *name, int nviews)
     if (!load_shared(&a, name, &m)) { CHECK(0); return; }
     uint32_t wrong_tri = 0, wrong_lone = 0, wrong_count = 0, total = 0;
     for (int i = 0; i < nviews; i++) {
-        double d[3];
-        random_dir(d);
         silk_view v;
-        if (!tf_view_around(&m, d, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!random_view(&m, i, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
@@ -151,10 +158,8 @@ static void tri_front_as_normalised(const char *name, int nviews)
     if (!load_shared(&a, name, &m)) { CHECK(0); return; }
     uint32_t wrong = 0, grazing = 0;
     for (int i = 0; i < nviews; i++) {
-        double d[3];
-        random_dir(d);
         silk_view v;
-        if (!tf_view_around(&m, d, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!random_view(&m, i, &v)) { CHECK(0); return; }
         for (uint32_t t = 0; t < m.ntris; t++) {
             silk_vec3 e = silk_view_to_eye(&v, m.pos[m.tri[3 * t]]);
             int want = silk_v3_dot64(silk_mesh_face_normal(&m, t), e) > 0;
@@ -188,10 +193,8 @@ static void bridges_vs_reference(const char *name, int nviews)
     double worst_t = 0, worst_u = 0, worst_p = 0;
     uint32_t n_bridges = 0, n_points = 0, bad_in_range = 0;
     for (int i = 0; i < nviews; i++) {
-        double dir[3];
-        random_dir(dir);
         silk_view v;
-        if (!tf_view_around(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!random_view(&m, i, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
@@ -277,10 +280,8 @@ static void shared_points(const char *name, int nviews, int want_split)
     if (!load_shared(&a, name, &m)) { CHECK(0); return; }
     uint32_t compared = 0, mismatched = 0, split_normals = 0, edges_two_sides = 0, bad_sides = 0;
     for (int i = 0; i < nviews; i++) {
-        double dir[3];
-        random_dir(dir);
         silk_view v;
-        if (!tf_view_around(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!random_view(&m, i, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
@@ -322,6 +323,57 @@ static void shared_points(const char *name, int nviews, int want_split)
     CHECKF(mismatched == 0, "%u points differ between the two sides of an edge", mismatched);
     CHECKF(bad_sides == 0, "%u edges not walked by all their triangles", bad_sides);
     if (want_split) CHECKF(split_normals > 0, "no crease with different normals on its two sides");
+}
+
+/* The sides on the carrying edges found edge by edge (a mesh with its
+ * listed edges, tri_edge) and by a pass over every triangle (the same mesh
+ * without them, as a packed one finds its edges): the same plan, bit for
+ * bit, in the same order. */
+static void plan_by_edges(const char *name, int nviews)
+{
+    silk_arena a;
+    silk_mesh m;
+    if (!load_shared(&a, name, &m)) { CHECK(0); return; }
+    silk_mesh packed = m;
+    packed.tri_edge = NULL;
+    uint32_t differ = 0, edges = 0;
+    for (int i = 0; i < nviews; i++) {
+        silk_view v;
+        if (!random_view(&m, i, &v)) { CHECK(0); return; }
+        silk_arena_mark mk = silk_arena_top_mark(&a);
+        silk_sil_frame f[2];
+        for (int j = 0; j < 2; j++) {
+            memset(&f[j], 0, sizeof f[j]);
+            f[j].a = &a; f[j].m = j ? &packed : &m; f[j].v = &v; f[j].tol = SILK_FX_HALF; f[j].vis = SILK_VIS_BRUTE;
+            if (silk_sil_find(&f[j]) != SILK_OK) { CHECK(0); return; }
+        }
+        const silk_sil_frame *x = &f[0], *y = &f[1];
+        if (x->nedges != y->nedges || x->npairs != y->npairs || x->nsides != y->nsides || x->nchain != y->nchain ||
+            memcmp(x->tri_state, y->tri_state, m.ntris) || memcmp(x->pairs, y->pairs, x->npairs * sizeof *x->pairs) ||
+            memcmp(x->chain, y->chain, x->nchain * sizeof *x->chain)) {
+            differ++;
+        } else {
+            for (uint32_t w = 0; w < x->nedges; w++) {
+                const silk_sil_edge *ex = &x->edges[w], *ey = &y->edges[w];
+                differ += ex->edge != ey->edge || ex->nsides != ey->nsides || ex->npairs != ey->npairs ||
+                          ex->pair0 != ey->pair0 || ex->chain0 != ey->chain0 || ex->nchain != ey->nchain ||
+                          ex->nfeat != ey->nfeat || ex->sampled != ey->sampled;
+            }
+        }
+        edges += x->nedges;
+        silk_arena_top_release(&a, &mk);
+    }
+    printf("  %s: %u carrying edges in %d views\n", name, edges, nviews);
+    CHECK(edges > 0);
+    CHECKF(differ == 0, "%u differences between the plans found edge by edge and triangle by triangle", differ);
+}
+
+TEST(plan_by_edges_as_by_triangles)
+{
+    plan_by_edges("sphere-200.obj", 20);
+    plan_by_edges("fandisk-128.obj", 20);
+    plan_by_edges("cone-70.obj", 20);
+    plan_by_edges("bunny-500.obj", 20);
 }
 
 TEST(shared_points_bit_identical_sphere) { shared_points("sphere-200.obj", 30, 0); }
@@ -409,10 +461,8 @@ static void sample_counts(const char *name, int nviews, silk_fx tol)
     uint32_t segs = 0, feats = 0, off = 0, multi = 0, zero = 0;
     double e = fx2d(tol);
     for (int i = 0; i < nviews; i++) {
-        double dir[3];
-        random_dir(dir);
         silk_view v;
-        if (!tf_view_around(&m, dir, 1.2 + check_uniform(0, 5), i & 1, &v)) { CHECK(0); return; }
+        if (!random_view(&m, i, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f;
         silk_frame_geom g;
@@ -633,6 +683,7 @@ int main(void)
     RUN(uvs_interpolate_linearly_across_seams);
     RUN(point_keys_sphere);
     RUN(point_keys_creases);
+    RUN(plan_by_edges_as_by_triangles);   /* last: its random views leave the other tests' as they were */
     free(arena_buf);
     return check_done();
 }
