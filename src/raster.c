@@ -315,6 +315,13 @@ static int64_t screen_y(const silk_vec4 *c, int height)
     return round_div(((int64_t)c->w - c->y) * height * SUB, 2 * (int64_t)c->w);
 }
 
+/* x' = (x/w + 1) W/2 in subpixels: with the guard band the products stay
+ * below 2^50 */
+static int64_t screen_x(const silk_vec4 *c, int width)
+{
+    return round_div(((int64_t)c->x + c->w) * width * SUB, 2 * (int64_t)c->w);
+}
+
 int64_t silk_raster_row(const silk_vec4 *c, int height) { return floor_div(screen_y(c, height), SUB); }
 
 static void project(const silk_target *t, const silk_vertex_out *v, svert *s);
@@ -332,9 +339,7 @@ void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *
 static void project_xy(const silk_target *t, const silk_vertex_out *v, svert *s)
 {
     const silk_vec4 *c = &v->clip;
-    /* ndc -> pixels: x' = (x/w + 1) W/2, y' = (1 - y/w) H/2; with the guard band
-     * the products stay below 2^50 */
-    s->x = round_div(((int64_t)c->x + c->w) * t->width * SUB, 2 * (int64_t)c->w);
+    s->x = screen_x(c, t->width);
     s->y = screen_y(c, t->height);
     s->w = c->w;
     s->var = v->var;
@@ -891,31 +896,42 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-int silk_raster_place(const silk_target *t, const silk_vertex_out *v, int32_t xy[2])
+int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2])
 {
-    if (!inside(&v->clip)) return 0;
-    svert s;
-    project_xy(t, v, &s);   /* within the guard band: |x|, |y| below 2 SILK_MAX_DIM SUB */
-    xy[0] = (int32_t)s.x;
-    xy[1] = (int32_t)s.y;
+    if (!inside(clip)) return 0;
+    /* within the guard band: |x|, |y| below 2 SILK_MAX_DIM SUB */
+    xy[0] = (int32_t)screen_x(clip, t->width);
+    xy[1] = (int32_t)screen_y(clip, t->height);
     return 1;
+}
+
+static void placed_xy(const int32_t *const xy[3], svert sv[3])
+{
+    for (int i = 0; i < 3; i++) {
+        sv[i].x = xy[i][0];
+        sv[i].y = xy[i][1];
+    }
+}
+
+int silk_raster_reaches(const silk_target *t, const int32_t *const xy[3])
+{
+    /* silk_raster_triangle's own test, culled or not: raster_tri draws
+     * nothing for a triangle it fails (tri_reaches).  The cheapest part
+     * first: half of a closed mesh faces away. */
+    svert sv[3];
+    placed_xy(xy, sv);
+    int64_t area = orient(&sv[0], &sv[1], &sv[2]);
+    int lo, hi;
+    return area != 0 && !(t->cull_back && area > 0) && band_rows(t, &lo, &hi) && tri_reaches(t, lo, hi, sv, area);
 }
 
 void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
                         const int32_t *const xy[3])
 {
     svert sv[3];
-    for (int i = 0; i < 3; i++) {
-        sv[i].x = xy[i][0];
-        sv[i].y = xy[i][1];
-    }
-    /* silk_raster_triangle's own test, culled or not: raster_tri draws
-     * nothing for a triangle it fails (tri_reaches).  The cheapest part
-     * first: half of a closed mesh faces away. */
-    int64_t area = orient(&sv[0], &sv[1], &sv[2]);
     int lo, hi;
-    if (area == 0 || (t->cull_back && area > 0) || !band_rows(t, &lo, &hi) || !tri_reaches(t, lo, hi, sv, area))
-        return;
+    placed_xy(xy, sv);
+    if (!band_rows(t, &lo, &hi)) return;   /* (silk_raster_reaches: it is usable) */
     for (int i = 0; i < 3; i++) {
         sv[i].w = v[i]->clip.w;
         sv[i].var = v[i]->var;
