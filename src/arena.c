@@ -58,16 +58,22 @@ void *silk_arena_alloc(silk_arena *a, size_t n, silk_purpose p)
     return r;
 }
 
+/* n bytes from the top, as they are; *m the bytes taken */
+static uint8_t *take_top(silk_arena *a, size_t n, silk_purpose p, size_t *m)
+{
+    if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, m)) return NULL;
+    a->top += *m;
+    a->top_used[p] += *m;
+    if (a->top > a->top_peak) a->top_peak = a->top;
+    account(a, *m, p);
+    return a->base + a->size - a->top;
+}
+
 void *silk_arena_alloc_top(silk_arena *a, size_t n, silk_purpose p)
 {
     size_t m;
-    if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, &m)) return NULL;
-    a->top += m;
-    a->top_used[p] += m;
-    if (a->top > a->top_peak) a->top_peak = a->top;
-    uint8_t *r = a->base + a->size - a->top;
-    account(a, m, p);
-    memset(r, 0, m);
+    uint8_t *r = take_top(a, n, p, &m);
+    if (r) memset(r, 0, m);
     return r;
 }
 
@@ -91,6 +97,15 @@ void *silk_arena_array_top(silk_arena *a, size_t count, size_t size, silk_purpos
     if (!mul_ok(count, size, &n)) { a->failed_request = (size_t)-1; return NULL; }
     return silk_arena_alloc_top(a, n, p);
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+void *silk_arena_array_top_unfilled(silk_arena *a, size_t count, size_t size, silk_purpose p)
+{
+    size_t n, m;
+    if (!mul_ok(count, size, &n)) { a->failed_request = (size_t)-1; return NULL; }
+    return take_top(a, n, p, &m);
+}
+#endif
 
 silk_arena_mark silk_arena_top_mark(const silk_arena *a)
 {

@@ -147,12 +147,13 @@ typedef struct frame {
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
     /* FLAT: where the rasterizer places the mesh's vertex p (position
-     * index), vc_xy[2p .. 2p+1] (silk_raster_place), or VC_UNPLACED, or
-     * VC_OUTSIDE (clipped); NULL when the triangles are not drawn straight
-     * from the cache (draw_direct); vc_clip[p] the vertex stage's clip
-     * coordinates of a vertex placed */
+     * index), vc_xy[2p .. 2p+1] (silk_raster_place), or VC_OUTSIDE
+     * (clipped), and the vertex stage's clip coordinates of it, vc_clip[p],
+     * once xy_ready (place_vertices); NULL when the triangles are not drawn
+     * straight from the cache (draw_direct) */
     int32_t *vc_xy;
     silk_vec4 *vc_clip;
+    uint8_t xy_ready;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -266,7 +267,6 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
  * it), UINT32_MAX for a corner without a usable normal (not cached).
  * With clip not NULL, a miss takes the corner's clip coordinates from
  * there (draw_direct's, placed) and runs only the rest of the stage. */
-#define VC_UNPLACED (-0x7f7f7f80)   /* vc_xy: not placed yet this frame (bytes 0x80, as memset leaves them) */
 #define VC_OUTSIDE INT32_MIN         /* vc_xy: outside a clip plane */
 #if defined(__GNUC__)
 __attribute__((always_inline))   /* every corner of a streamed frame: inline in share_part, as a call it costs a tenth more */
@@ -423,12 +423,12 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     uint32_t n = 64;
     while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
-    f->vc = silk_arena_array_top(a, n, sizeof *f->vc, SILK_MEM_FRAME);
-    f->vc_tag = silk_arena_array_top(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
-    if (xy && (f->vc_xy = silk_arena_array_top(a, 2 * (size_t)m->nverts, sizeof *f->vc_xy, SILK_MEM_FRAME)) &&
-        (f->vc_clip = silk_arena_array_top(a, m->nverts, sizeof *f->vc_clip, SILK_MEM_FRAME)))
-        memset(f->vc_xy, 0x80, 2 * (size_t)m->nverts * sizeof *f->vc_xy);   /* VC_UNPLACED */
-    else
+    /* unfilled: a slot is read only once its tag says it is written, a
+     * vertex's place only once place_vertices has written every one */
+    f->vc = silk_arena_array_top_unfilled(a, n, sizeof *f->vc, SILK_MEM_FRAME);
+    f->vc_tag = silk_arena_array_top_unfilled(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
+    if (!xy || !(f->vc_xy = silk_arena_array_top_unfilled(a, 2 * (size_t)m->nverts, sizeof *f->vc_xy, SILK_MEM_FRAME)) ||
+        !(f->vc_clip = silk_arena_array_top_unfilled(a, m->nverts, sizeof *f->vc_clip, SILK_MEM_FRAME)))
         f->vc_xy = NULL;
     if (!f->vc || !f->vc_tag) {
         f->vc = NULL;
@@ -834,11 +834,26 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
+/* FLAT: every vertex of the mesh placed on the screen of t (vc_xy), once a
+ * frame, before its first triangle is drawn (vertices that only
+ * triangles outside the band use are so few it is cheaper than asking). */
+static void place_vertices(frame *f, const silk_target *t)
+{
+    const silk_mesh *m = f->geom.mesh;
+    uint32_t t0 = silk_stage_start(f->clock);
+    for (uint32_t p = 0; p < m->nverts; p++) {
+        f->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
+        if (!silk_raster_place(t, &f->vc_clip[p], &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
+    }
+    f->xy_ready = 1;
+    silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
+}
+
 /* FLAT through the vertex cache: input triangle k drawn straight from the
  * cache's slots (shade: the fragment stage, or NULL for depth alone), its
  * share never built.  Each vertex of the mesh is placed on the screen once
- * a frame (silk_raster_place of the vertex stage's clip position alone,
- * vc_xy), so that the triangles the rasterizer would draw nothing of -
+ * a frame (place_vertices: silk_raster_place of the vertex stage's clip
+ * position alone), so that the triangles the rasterizer would draw nothing of -
  * seen from behind, zero area, between pixel centres or outside the band,
  * most of a fine mesh's - cost a few comparisons and no vertex stage; the
  * others go to silk_raster_triangle with the bits the share would give
@@ -854,13 +869,8 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
     for (uint32_t i = 0; i < 3; i++) {
         uint32_t p = m->tri[3 * k + i];
         if (p >= m->nverts) return 0;
-        int32_t *q = &f->vc_xy[2 * p];
-        if (q[0] == VC_UNPLACED) {
-            f->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
-            if (!silk_raster_place(t, &f->vc_clip[p], q)) q[0] = VC_OUTSIDE;
-        }
-        placed &= q[0] != VC_OUTSIDE;
-        xy[i] = q;
+        xy[i] = &f->vc_xy[2 * p];
+        placed &= xy[i][0] != VC_OUTSIDE;
     }
     t->cull_back = f->cull;   /* FLAT: frame_draw's rule */
     if (placed && !silk_raster_reaches(t, xy)) return 1;
@@ -902,6 +912,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
                       !f->siltex && (f->part != share_part || t->rows >= t->height);
+#ifndef SILK_NO_VERTEX_CACHE
+    if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
+#endif
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
