@@ -607,9 +607,8 @@ static void edge_init(rstep *e, const svert *a, const svert *b, int row)
 
 static int edge_x(const rstep *e) { return (int)(e->q + (e->r != 0)); }
 
-static int first_row(int64_t y) { return (int)ceil_div(y - SUB / 2, SUB); }
-
-/* The first pixel centre at or after subpixel position v (first_row). */
+/* The first pixel centre at or after subpixel position v:
+ * ceil((v - SUB/2) / SUB). */
 static int64_t first_centre(int64_t v)
 {
     /* floor by a shift where right shifts of negative values are
@@ -617,6 +616,8 @@ static int64_t first_centre(int64_t v)
     int64_t n = SUB / 2 - v;
     return -((-1 >> 1) == -1 ? n >> SUB_BITS : floor_div(n, SUB));
 }
+
+static int first_row(int64_t y) { return (int)first_centre(y); }
 
 /* Whether triangle p[0] p[1] p[2], twice its signed area `area`, can cover
  * a pixel centre of rows [lo, hi): not degenerate, not culled, and a pixel
