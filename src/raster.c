@@ -919,20 +919,6 @@ static void placed_xy(const int32_t *const xy[3], svert sv[3])
     }
 }
 
-/* Whether centre (cx, cy) is on the inner side of edge a -> b of a
- * triangle of twice the signed area `area`, or on the edge and it is a
- * left edge or a horizontal top one. */
-static inline int edge_in(const svert *a, const svert *b, int64_t area, int64_t cx, int64_t cy)
-{
-    int64_t dx = b->x - a->x, dy = b->y - a->y;
-    if (area < 0) {   /* the inside on the positive side */
-        dx = -dx;
-        dy = -dy;
-    }
-    int64_t f = dx * (cy - a->y) - (cx - a->x) * dy;
-    return f > 0 || (f == 0 && (dy < 0 || (dy == 0 && dx > 0)));
-}
-
 /* Whether triangle p, twice its signed area `area`, covers one of the
  * pixel centres in box (tri_reaches') by raster_tri's rule, when the box
  * holds at most COVER_ASK of them (else 1: it may).  raster_tri draws the
@@ -947,11 +933,25 @@ static inline int edge_in(const svert *a, const svert *b, int64_t area, int64_t 
 static int covers_centre(const svert *p, int64_t area, int64_t box[2][2])
 {
     if ((box[0][1] - box[0][0]) * (box[1][1] - box[1][0]) > COVER_ASK) return 1;
+    /* edge i, a -> b: the centre is in where ex y - ey x + e0 > 0 (the
+     * inside positive, a centre on it in by one for a left or top edge) */
+    int64_t ex[3], ey[3], e0[3];
+    for (int i = 0; i < 3; i++) {
+        const svert *a = &p[i], *b = &p[i == 2 ? 0 : i + 1];
+        int64_t dx = b->x - a->x, dy = b->y - a->y;
+        if (area < 0) {
+            dx = -dx;
+            dy = -dy;
+        }
+        ex[i] = dx;
+        ey[i] = dy;
+        e0[i] = dy * a->x - dx * a->y + (dy < 0 || (dy == 0 && dx > 0));
+    }
     for (int64_t y = box[0][0]; y < box[0][1]; y++)
         for (int64_t x = box[1][0]; x < box[1][1]; x++) {
             int64_t cx = x * SUB + SUB / 2, cy = y * SUB + SUB / 2;
-            if (edge_in(&p[0], &p[1], area, cx, cy) && edge_in(&p[1], &p[2], area, cx, cy) &&
-                edge_in(&p[2], &p[0], area, cx, cy))
+            if (ex[0] * cy - ey[0] * cx + e0[0] > 0 && ex[1] * cy - ey[1] * cx + e0[1] > 0 &&
+                ex[2] * cy - ey[2] * cx + e0[2] > 0)
                 return 1;
         }
     return 0;
