@@ -836,7 +836,9 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
 #ifndef SILK_NO_VERTEX_CACHE
 /* FLAT: every vertex of the mesh placed on the screen of t (vc_xy), once a
  * frame, before its first triangle is drawn (vertices that only
- * triangles outside the band use are so few it is cheaper than asking). */
+ * triangles outside the band use are so few it is cheaper than asking).
+ * The stage clock counts it as the rasterizer's, as draw_direct's vertex
+ * stage: the vertex stage's pieces are the shares emitted. */
 static void place_vertices(frame *f, const silk_target *t)
 {
     const silk_mesh *m = f->geom.mesh;
@@ -846,7 +848,7 @@ static void place_vertices(frame *f, const silk_target *t)
         if (!silk_raster_place(t, &f->vc_clip[p], &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
     }
     f->xy_ready = 1;
-    silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
+    silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
 }
 
 /* FLAT through the vertex cache: input triangle k drawn straight from the
