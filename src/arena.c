@@ -77,15 +77,6 @@ void *silk_arena_alloc_top(silk_arena *a, size_t n, silk_purpose p)
     return r;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
-void *silk_arena_scratch_top(silk_arena *a, size_t count, size_t size, silk_purpose p)
-{
-    size_t m;
-    if (size && count > (size_t)-1 / size) { a->failed_request = (size_t)-1; return NULL; }
-    return take_top(a, count * size, p, &m);
-}
-#endif
-
 static int mul_ok(size_t count, size_t size, size_t *out)
 {
     if (size && count > (size_t)-1 / size) return 0;
@@ -106,6 +97,15 @@ void *silk_arena_array_top(silk_arena *a, size_t count, size_t size, silk_purpos
     if (!mul_ok(count, size, &n)) { a->failed_request = (size_t)-1; return NULL; }
     return silk_arena_alloc_top(a, n, p);
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+void *silk_arena_array_top_unfilled(silk_arena *a, size_t count, size_t size, silk_purpose p)
+{
+    size_t n, m;
+    if (!mul_ok(count, size, &n)) { a->failed_request = (size_t)-1; return NULL; }
+    return take_top(a, n, p, &m);
+}
+#endif
 
 silk_arena_mark silk_arena_top_mark(const silk_arena *a)
 {

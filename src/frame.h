@@ -55,13 +55,17 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
 void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *x, int64_t *y, uint32_t *d);
 
 /* raster.c, for a renderer that places each vertex once a frame
- * (render.c's vertex cache; not in a build with -DSILK_NO_VERTEX_CACHE):
- * silk_raster_place puts v where silk_raster_triangle does (xy in
- * 1/SILK_RASTER_SUB pixels) and returns 1, or returns 0 when v lies
- * outside a clip plane (then the triangles at v are clipped);
- * silk_raster_placed is silk_raster_triangle for a triangle of three
- * vertices so placed at xy, the same pixels without placing them again. */
-int silk_raster_place(const silk_target *t, const silk_vertex_out *v, int32_t xy[2]);
+ * (render.c's FLAT frames; not in a build with -DSILK_NO_VERTEX_CACHE):
+ * silk_raster_place puts a vertex at clip coordinates clip where
+ * silk_raster_triangle does (xy in 1/SILK_RASTER_SUB pixels) and returns
+ * 1, or returns 0 when it lies outside a clip plane (then the triangles at
+ * it are clipped); silk_raster_reaches says from three vertices so placed
+ * alone whether silk_raster_triangle could draw a pixel of their triangle
+ * (0: it draws none, whatever the rest of the vertices' output); for one
+ * that could, silk_raster_placed is silk_raster_triangle, the same pixels
+ * without placing them again. */
+int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2]);
+int silk_raster_reaches(const silk_target *t, const int32_t *const xy[3]);
 void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
                         const int32_t *const xy[3]);
 
@@ -71,6 +75,12 @@ void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out
  * them once (render.c's vertex cache).  A stage of the caller's own may
  * read anything in the record, so it is never assumed to. */
 int silk_hal_vertex_by_attrs(const silk_hal *h);
+/* phong.c, with silk_hal_vertex_by_attrs (not with -DSILK_NO_VERTEX_CACHE):
+ * the default vertex stage in two parts, the same bits - the clip
+ * coordinates it gives a vertex at position pos (a CORNER record's), and
+ * its output for record r but the clip coordinates (left as they are). */
+silk_vec4 silk_hal_vertex_clip(const silk_hal *h, silk_vec3 pos);
+void silk_hal_vertex_varyings(const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
 /* phong.c: the view the default vertex stage projects with, or NULL (a
  * stage of the caller's own, or none). */
 const silk_view *silk_hal_vertex_view(const silk_hal *h);

@@ -56,7 +56,7 @@ int silk_perturb_alloc(silk_sil_frame *f)
     if (listed) {
         while (j < f->nseg_kept && !f->seg_kept[j].concave) j++;
         if (j == f->nseg_kept) return 1;   /* no concave segment: nothing moves */
-        f->vert_slot = silk_arena_scratch_top(a, m->nverts, sizeof *f->vert_slot, SILK_MEM_FRAME);   /* set below */
+        f->vert_slot = silk_arena_array_top_unfilled(a, m->nverts, sizeof *f->vert_slot, SILK_MEM_FRAME);   /* set below */
     } else
 #endif
     {

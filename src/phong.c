@@ -27,31 +27,37 @@ static silk_fx byte_to_fx(uint32_t c)
     return (silk_fx)(c * 257 + (c + 127) / 255);
 }
 
+/* Where the vertex stage puts position pos: its clip coordinates. */
+static silk_vec4 clip_of(const silk_phong *p, silk_vec3 pos)
+{
+    if (p->view) return silk_view_clip(p->view, pos);
+    /* no camera: positions are taken as clip coordinates already */
+    silk_vec4 c = { pos.x, pos.y, pos.z, SILK_FX_ONE };
+    return c;
+}
+
+/* The vertex stage's varyings for attributes a. */
+static inline void varyings_of(const silk_vertex_attr *a, silk_vertex_out *out)
+{
+    out->var[VAR_POS + 0] = a->pos.x;
+    out->var[VAR_POS + 1] = a->pos.y;
+    out->var[VAR_POS + 2] = a->pos.z;
+    out->var[VAR_NORMAL + 0] = a->normal.x;
+    out->var[VAR_NORMAL + 1] = a->normal.y;
+    out->var[VAR_NORMAL + 2] = a->normal.z;
+    out->var[VAR_UV] = a->uv.x;
+    out->var[VAR_UV + 1] = a->uv.y;
+    for (int k = 0; k < 3; k++) out->var[VAR_RGB + k] = byte_to_fx(a->rgb >> (16 - 8 * k));
+    for (int k = VAR_RGB_COUNT; k < SILK_MAX_VARYINGS; k++) out->var[k] = 0;   /* not interpolated */
+}
+
 static void phong_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r,
                          silk_vertex_out *out)
 {
-    const silk_phong *p = (const silk_phong *)h->uniforms;
     silk_vertex_attr a;
     silk_vrec_eval(g, r, &a);
-    if (p->view) {
-        out->clip = silk_view_clip(p->view, a.pos);
-    } else {
-        /* no camera: positions are taken as clip coordinates already */
-        out->clip.x = a.pos.x;
-        out->clip.y = a.pos.y;
-        out->clip.z = a.pos.z;
-        out->clip.w = SILK_FX_ONE;
-    }
-    out->var[VAR_POS + 0] = a.pos.x;
-    out->var[VAR_POS + 1] = a.pos.y;
-    out->var[VAR_POS + 2] = a.pos.z;
-    out->var[VAR_NORMAL + 0] = a.normal.x;
-    out->var[VAR_NORMAL + 1] = a.normal.y;
-    out->var[VAR_NORMAL + 2] = a.normal.z;
-    out->var[VAR_UV] = a.uv.x;
-    out->var[VAR_UV + 1] = a.uv.y;
-    for (int k = 0; k < 3; k++) out->var[VAR_RGB + k] = byte_to_fx(a.rgb >> (16 - 8 * k));
-    for (int k = VAR_RGB_COUNT; k < SILK_MAX_VARYINGS; k++) out->var[k] = 0;   /* not interpolated */
+    out->clip = clip_of((const silk_phong *)h->uniforms, a.pos);
+    varyings_of(&a, out);
 }
 
 /* x^n for x in [0, 1] (Q16.16) by repeated squaring: at most 2 log2(n)
@@ -264,6 +270,20 @@ int silk_hal_vertex_by_attrs(const silk_hal *h)
 {
     return h->vertex == phong_vertex;
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+silk_vec4 silk_hal_vertex_clip(const silk_hal *h, silk_vec3 pos)
+{
+    return clip_of((const silk_phong *)h->uniforms, pos);
+}
+
+void silk_hal_vertex_varyings(const silk_geom *g, const silk_vrec *r, silk_vertex_out *out)
+{
+    silk_vertex_attr a;
+    silk_vrec_eval(g, r, &a);
+    varyings_of(&a, out);
+}
+#endif
 
 const silk_view *silk_hal_vertex_view(const silk_hal *h)
 {

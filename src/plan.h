@@ -171,12 +171,6 @@ typedef struct silk_sil_frame {
 } silk_sil_frame;
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* arena.c: count * size bytes from the top as silk_arena_array_top takes
- * them, but not zero-filled: for what a frame keeps for speed, every byte
- * of it written before it is read (megabytes a frame on a large mesh,
- * where zeroing them would cost more than some of the stages). */
-void *silk_arena_scratch_top(silk_arena *a, size_t count, size_t size, silk_purpose p);
-
 /* Counts what the plan took from the arena since it had free0 bytes free
  * and the high-water peak as kept for speed (kept_bytes, kept_need). */
 void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak);

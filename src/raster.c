@@ -315,6 +315,13 @@ static int64_t screen_y(const silk_vec4 *c, int height)
     return round_div(((int64_t)c->w - c->y) * height * SUB, 2 * (int64_t)c->w);
 }
 
+/* x' = (x/w + 1) W/2 in subpixels: with the guard band the products stay
+ * below 2^50 */
+static int64_t screen_x(const silk_vec4 *c, int width)
+{
+    return round_div(((int64_t)c->x + c->w) * width * SUB, 2 * (int64_t)c->w);
+}
+
 int64_t silk_raster_row(const silk_vec4 *c, int height) { return floor_div(screen_y(c, height), SUB); }
 
 static void project(const silk_target *t, const silk_vertex_out *v, svert *s);
@@ -332,9 +339,7 @@ void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *
 static void project_xy(const silk_target *t, const silk_vertex_out *v, svert *s)
 {
     const silk_vec4 *c = &v->clip;
-    /* ndc -> pixels: x' = (x/w + 1) W/2, y' = (1 - y/w) H/2; with the guard band
-     * the products stay below 2^50 */
-    s->x = round_div(((int64_t)c->x + c->w) * t->width * SUB, 2 * (int64_t)c->w);
+    s->x = screen_x(c, t->width);
     s->y = screen_y(c, t->height);
     s->w = c->w;
     s->var = v->var;
@@ -602,9 +607,8 @@ static void edge_init(rstep *e, const svert *a, const svert *b, int row)
 
 static int edge_x(const rstep *e) { return (int)(e->q + (e->r != 0)); }
 
-static int first_row(int64_t y) { return (int)ceil_div(y - SUB / 2, SUB); }
-
-/* The first pixel centre at or after subpixel position v (first_row). */
+/* The first pixel centre at or after subpixel position v:
+ * ceil((v - SUB/2) / SUB). */
 static int64_t first_centre(int64_t v)
 {
     /* floor by a shift where right shifts of negative values are
@@ -613,14 +617,18 @@ static int64_t first_centre(int64_t v)
     return -((-1 >> 1) == -1 ? n >> SUB_BITS : floor_div(n, SUB));
 }
 
+static int first_row(int64_t y) { return (int)first_centre(y); }
+
 /* Whether triangle p[0] p[1] p[2], twice its signed area `area`, can cover
  * a pixel centre of rows [lo, hi): not degenerate, not culled, and a pixel
  * centre row and column within its bounding box.  raster_tri draws nothing
- * for one that cannot. */
+ * for one that cannot.  box: the rows and then the columns of those pixel
+ * centres, [box[0][0], box[0][1]) and [box[1][0], box[1][1]) (when it
+ * can: its bounding box's). */
 #if defined(__GNUC__)
 __attribute__((noinline))   /* its locals stay off the stack under every span */
 #endif
-static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p, int64_t area)
+static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p, int64_t area, int64_t box[2][2])
 {
     if (area == 0 || (t->cull_back && area > 0)) return 0;
     const int64_t lim[2][2] = { { lo, hi }, { 0, t->width } };
@@ -632,7 +640,9 @@ static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p, int
             if (v > hi_v) hi_v = v;
         }
         int64_t c0 = first_centre(lo_v), c1 = first_centre(hi_v);
-        if ((c0 > lim[a][0] ? c0 : lim[a][0]) >= (c1 < lim[a][1] ? c1 : lim[a][1])) return 0;
+        box[a][0] = c0 > lim[a][0] ? c0 : lim[a][0];
+        box[a][1] = c1 < lim[a][1] ? c1 : lim[a][1];
+        if (box[a][0] >= box[a][1]) return 0;
     }
     return 1;
 }
@@ -869,7 +879,8 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     /* Where back faces are culled, most triangles of a fine mesh are
      * culled or fall between pixel centres: those are known from the
      * positions alone.  (Elsewhere raster_tri finds the few that do.) */
-    if (n == 3 && t->cull_back && !tri_reaches(t, lo, hi, sv, orient(&sv[0], &sv[1], &sv[2]))) return;
+    int64_t box[2][2];
+    if (n == 3 && t->cull_back && !tri_reaches(t, lo, hi, sv, orient(&sv[0], &sv[1], &sv[2]), box)) return;
     for (int i = 0; i < n; i++) project_depth(poly ? &poly[i] : in3[i], &sv[i]);
     if (n == 3) raster_tri(t, h, nvar, lo, hi, &sv[0], &sv[1], &sv[2]);
     else raster_polygon(t, h, nvar, lo, hi, sv, n);
@@ -891,31 +902,83 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-int silk_raster_place(const silk_target *t, const silk_vertex_out *v, int32_t xy[2])
+int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2])
 {
-    if (!inside(&v->clip)) return 0;
-    svert s;
-    project_xy(t, v, &s);   /* within the guard band: |x|, |y| below 2 SILK_MAX_DIM SUB */
-    xy[0] = (int32_t)s.x;
-    xy[1] = (int32_t)s.y;
+    if (!inside(clip)) return 0;
+    /* within the guard band: |x|, |y| below 2 SILK_MAX_DIM SUB */
+    xy[0] = (int32_t)screen_x(clip, t->width);
+    xy[1] = (int32_t)screen_y(clip, t->height);
     return 1;
+}
+
+static void placed_xy(const int32_t *const xy[3], svert sv[3])
+{
+    for (int i = 0; i < 3; i++) {
+        sv[i].x = xy[i][0];
+        sv[i].y = xy[i][1];
+    }
+}
+
+/* Whether triangle p, twice its signed area `area`, covers one of the
+ * pixel centres in box (tri_reaches') by raster_tri's rule, when the box
+ * holds at most COVER_ASK of them (else 1: it may).  raster_tri draws the
+ * centres of a row from the first at or right of its left edge to the last
+ * left of its right edge, the rows from the first centre at or below the
+ * top to the last above the bottom: the top-left rule, a centre on a left
+ * or a horizontal top edge in, on a right or bottom one out.  (On a row,
+ * the edge raster_tri walks on either side is the nearest of the
+ * triangle's edges on that side, and it meets the other at the middle
+ * vertex's row, so asking every edge is asking the walked one.) */
+#define COVER_ASK 4
+static int covers_centre(const svert *p, int64_t area, int64_t box[2][2])
+{
+    if ((box[0][1] - box[0][0]) * (box[1][1] - box[1][0]) > COVER_ASK) return 1;
+    /* edge i, a -> b: the centre is in where ex y - ey x + e0 > 0 (the
+     * inside positive, a centre on it in by one for a left or top edge) */
+    int64_t ex[3], ey[3], e0[3];
+    for (int i = 0; i < 3; i++) {
+        const svert *a = &p[i], *b = &p[i == 2 ? 0 : i + 1];
+        int64_t dx = b->x - a->x, dy = b->y - a->y;
+        if (area < 0) {
+            dx = -dx;
+            dy = -dy;
+        }
+        ex[i] = dx;
+        ey[i] = dy;
+        e0[i] = dy * a->x - dx * a->y + (dy < 0 || (dy == 0 && dx > 0));
+    }
+    for (int64_t y = box[0][0]; y < box[0][1]; y++)
+        for (int64_t x = box[1][0]; x < box[1][1]; x++) {
+            int64_t cx = x * SUB + SUB / 2, cy = y * SUB + SUB / 2;
+            if (ex[0] * cy - ey[0] * cx + e0[0] > 0 && ex[1] * cy - ey[1] * cx + e0[1] > 0 &&
+                ex[2] * cy - ey[2] * cx + e0[2] > 0)
+                return 1;
+        }
+    return 0;
+}
+
+int silk_raster_reaches(const silk_target *t, const int32_t *const xy[3])
+{
+    /* silk_raster_triangle's own test, culled or not: raster_tri draws
+     * nothing for a triangle it fails (tri_reaches).  The cheapest part
+     * first: half of a closed mesh faces away.  Then, where its bounding
+     * box holds few pixel centres, whether it covers one: of those that
+     * reach a row, a third of a fine mesh's at 320x240 cover none. */
+    svert sv[3];
+    placed_xy(xy, sv);
+    int64_t area = orient(&sv[0], &sv[1], &sv[2]), box[2][2];
+    int lo, hi;
+    return area != 0 && !(t->cull_back && area > 0) && band_rows(t, &lo, &hi) &&
+           tri_reaches(t, lo, hi, sv, area, box) && covers_centre(sv, area, box);
 }
 
 void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
                         const int32_t *const xy[3])
 {
     svert sv[3];
-    for (int i = 0; i < 3; i++) {
-        sv[i].x = xy[i][0];
-        sv[i].y = xy[i][1];
-    }
-    /* silk_raster_triangle's own test, culled or not: raster_tri draws
-     * nothing for a triangle it fails (tri_reaches).  The cheapest part
-     * first: half of a closed mesh faces away. */
-    int64_t area = orient(&sv[0], &sv[1], &sv[2]);
     int lo, hi;
-    if (area == 0 || (t->cull_back && area > 0) || !band_rows(t, &lo, &hi) || !tri_reaches(t, lo, hi, sv, area))
-        return;
+    placed_xy(xy, sv);
+    if (!band_rows(t, &lo, &hi)) return;   /* (silk_raster_reaches: it is usable) */
     for (int i = 0; i < 3; i++) {
         sv[i].w = v[i]->clip.w;
         sv[i].var = v[i]->var;

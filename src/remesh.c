@@ -199,7 +199,7 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
                   3 * SILK_ARENA_ALIGN;
     if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
-    f->seg_kept = silk_arena_scratch_top(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);   /* written as made */
+    f->seg_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);   /* written as made */
     f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
     if (!f->seg_kept || !f->seg_tri || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
         f->seg_kept = NULL;

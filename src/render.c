@@ -146,10 +146,14 @@ typedef struct frame {
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
-    /* FLAT: where the rasterizer places slot s's vertex, vc_xy[2s .. 2s+1]
-     * (silk_raster_place), or VC_UNPLACED, or VC_OUTSIDE (clipped); NULL
-     * when the triangles are not drawn straight from the cache (draw_direct) */
+    /* FLAT: where the rasterizer places the mesh's vertex p (position
+     * index), vc_xy[2p .. 2p+1] (silk_raster_place), or VC_OUTSIDE
+     * (clipped), and the vertex stage's clip coordinates of it, vc_clip[p],
+     * once xy_ready (place_vertices); NULL when the triangles are not drawn
+     * straight from the cache (draw_direct) */
     int32_t *vc_xy;
+    silk_vec4 *vc_clip;
+    uint8_t xy_ready;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -260,13 +264,14 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
  * together in a mesh, and a miss only costs the evaluation.  corner_slot
  * returns the slot holding the output for corner a (record r, or when r is
  * NULL the corner's own CORNER record, as silk_frame_flat_emit_tri makes
- * it), UINT32_MAX for a corner without a usable normal (not cached). */
-#define VC_UNPLACED INT32_MIN        /* vc_xy: not placed yet this frame */
-#define VC_OUTSIDE (INT32_MIN + 1)   /* vc_xy: outside a clip plane */
+ * it), UINT32_MAX for a corner without a usable normal (not cached).
+ * With clip not NULL, a miss takes the corner's clip coordinates from
+ * there (draw_direct's, placed) and runs only the rest of the stage. */
+#define VC_OUTSIDE INT32_MIN         /* vc_xy: outside a clip plane */
 #if defined(__GNUC__)
 __attribute__((always_inline))   /* every corner of a streamed frame: inline in share_part, as a call it costs a tenth more */
 #endif
-static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *r)
+static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *r, const silk_vec4 *clip)
 {
     const silk_mesh *m = f->geom.mesh;
     uint32_t n;
@@ -275,20 +280,25 @@ static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *
     uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
     if (tag[0] != n || tag[1] != v || tag[2] != uv) {
         const silk_vrec own = { SILK_VREC_CORNER, a, 0, 0 };
+#ifndef SILK_NO_VERTEX_CACHE
+        if (clip) {
+            f->vc[s].clip = *clip;
+            silk_hal_vertex_varyings(&f->geom, &own, &f->vc[s]);
+        } else
+#else
+        (void)clip;
+#endif
         f->hal->vertex(f->hal, &f->geom, r ? r : &own, &f->vc[s]);
         tag[0] = n;
         tag[1] = v;
         tag[2] = uv;
-#ifndef SILK_NO_VERTEX_CACHE
-        if (f->vc_xy) f->vc_xy[2 * s] = VC_UNPLACED;
-#endif
     }
     return s;
 }
 
 static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
 {
-    uint32_t s = corner_slot(f, r->a, r);
+    uint32_t s = corner_slot(f, r->a, r, NULL);
     if (s != UINT32_MAX) *out = f->vc[s];
     else f->hal->vertex(f->hal, &f->geom, r, out);
 }
@@ -403,16 +413,24 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
     const int direct = !f->smooth;   /* FLAT (and CLIP's hull): draw_direct, which places the vertices too */
-    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag + (direct ? 2 * sizeof *f->vc_xy : 0),
-                 half = silk_arena_free_bytes(a) / 2,
-                 room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes, free0 = silk_arena_free_bytes(a);
+    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
+                 free0 = silk_arena_free_bytes(a);
+    size_t room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
+    /* FLAT: where each vertex of the mesh is placed, when that fits with the least cache */
+    size_t xy = direct ? (size_t)m->nverts * (2 * sizeof *f->vc_xy + sizeof *f->vc_clip) + 2 * SILK_ARENA_ALIGN : 0;
+    if (xy + 64 * slot + 2 * SILK_ARENA_ALIGN > room) xy = 0;
+    room -= xy;
     uint32_t n = 64;
     while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
-    f->vc = silk_arena_array_top(a, n, sizeof *f->vc, SILK_MEM_FRAME);
-    f->vc_tag = silk_arena_array_top(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
-    if (direct) f->vc_xy = silk_arena_array_top(a, 2 * (size_t)n, sizeof *f->vc_xy, SILK_MEM_FRAME);
-    if (!f->vc || !f->vc_tag || (direct && !f->vc_xy)) {
+    /* unfilled: a slot is read only once its tag says it is written, a
+     * vertex's place only once place_vertices has written every one */
+    f->vc = silk_arena_array_top_unfilled(a, n, sizeof *f->vc, SILK_MEM_FRAME);
+    f->vc_tag = silk_arena_array_top_unfilled(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
+    if (!xy || !(f->vc_xy = silk_arena_array_top_unfilled(a, 2 * (size_t)m->nverts, sizeof *f->vc_xy, SILK_MEM_FRAME)) ||
+        !(f->vc_clip = silk_arena_array_top_unfilled(a, m->nverts, sizeof *f->vc_clip, SILK_MEM_FRAME)))
+        f->vc_xy = NULL;
+    if (!f->vc || !f->vc_tag) {
         f->vc = NULL;
         f->vc_xy = NULL;
         return;
@@ -502,7 +520,7 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
                    (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris + 20 * (uint64_t)n;
     size_t cap = all < room ? (size_t)all : room;
     f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);
-    f->ks = silk_arena_scratch_top(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
+    f->ks = silk_arena_array_top_unfilled(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
     if (!f->ks_at || !f->ks) {
         f->ks = NULL;
         return;
@@ -816,33 +834,55 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
+/* FLAT: every vertex of the mesh placed on the screen of t (vc_xy), once a
+ * frame, before its first triangle is drawn (vertices that only
+ * triangles outside the band use are so few it is cheaper than asking).
+ * The stage clock counts it as the rasterizer's, as draw_direct's vertex
+ * stage: the vertex stage's pieces are the shares emitted. */
+static void place_vertices(frame *f, const silk_target *t)
+{
+    const silk_mesh *m = f->geom.mesh;
+    uint32_t t0 = silk_stage_start(f->clock);
+    for (uint32_t p = 0; p < m->nverts; p++) {
+        f->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
+        if (!silk_raster_place(t, &f->vc_clip[p], &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
+    }
+    f->xy_ready = 1;
+    silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+}
+
 /* FLAT through the vertex cache: input triangle k drawn straight from the
  * cache's slots (shade: the fragment stage, or NULL for depth alone), its
- * share never built.  Each vertex is placed on the screen once a frame
- * (silk_raster_place, vc_xy), so that the triangles the rasterizer would
- * draw nothing of - seen from behind, zero area, between pixel centres or
- * outside the band, most of a fine mesh's - cost a few comparisons; the
+ * share never built.  Each vertex of the mesh is placed on the screen once
+ * a frame (place_vertices: silk_raster_place of the vertex stage's clip
+ * position alone), so that the triangles the rasterizer would draw nothing of -
+ * seen from behind, zero area, between pixel centres or outside the band,
+ * most of a fine mesh's - cost a few comparisons and no vertex stage; the
  * others go to silk_raster_triangle with the bits the share would give
- * it.  0 when a corner is not cached (no usable normal, or two corners in
- * one slot): the caller then builds the share as usual.  (The stage clock
- * counts the vertex stage run here as the rasterizer's: a clock per
- * corner would cost more than the look-up.) */
+ * it.  0 when a corner has no usable vertex or is not cached (no usable
+ * normal, or two corners in one slot): the caller then builds the share
+ * as usual.  (The stage clock counts the vertex stage run here as the
+ * rasterizer's: a clock per corner would cost more than the look-up.) */
 static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
 {
-    const silk_vertex_out *v[3];
+    const silk_mesh *m = f->geom.mesh;
     const int32_t *xy[3];
-    uint32_t s[3];
     int placed = 1;
     for (uint32_t i = 0; i < 3; i++) {
-        if ((s[i] = corner_slot(f, 3 * k + i, NULL)) == UINT32_MAX) return 0;
-        int32_t *p = &f->vc_xy[2 * s[i]];
+        uint32_t p = m->tri[3 * k + i];
+        if (p >= m->nverts) return 0;
+        xy[i] = &f->vc_xy[2 * p];
+        placed &= xy[i][0] != VC_OUTSIDE;
+    }
+    t->cull_back = f->cull;   /* FLAT: frame_draw's rule */
+    if (placed && !silk_raster_reaches(t, xy)) return 1;
+    const silk_vertex_out *v[3];
+    uint32_t s[3];
+    for (uint32_t i = 0; i < 3; i++) {
+        if ((s[i] = corner_slot(f, 3 * k + i, NULL, &f->vc_clip[m->tri[3 * k + i]])) == UINT32_MAX) return 0;
         v[i] = &f->vc[s[i]];
-        if (p[0] == VC_UNPLACED && !silk_raster_place(t, v[i], p)) p[0] = VC_OUTSIDE;
-        placed &= p[0] != VC_OUTSIDE;
-        xy[i] = p;
     }
     if (s[0] == s[1] || s[1] == s[2] || s[2] == s[0]) return 0;   /* a later corner may have taken an earlier's slot */
-    t->cull_back = f->cull;   /* FLAT: frame_draw's rule */
     if (placed) silk_raster_placed(t, shade, v, xy);
     else silk_raster_triangle(t, shade, v[0], v[1], v[2]);
     return 1;
@@ -874,6 +914,9 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
                       !f->siltex && (f->part != share_part || t->rows >= t->height);
+#ifndef SILK_NO_VERTEX_CACHE
+    if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
+#endif
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;

@@ -217,7 +217,7 @@ size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
     uint32_t n = fit < f->nedges ? (uint32_t)fit : f->nedges;
     if (f->tan_kept || n == 0) return 0;
 #ifndef SILK_NO_VERTEX_CACHE
-    silk_vec3 *t = silk_arena_scratch_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);   /* every one written below */
+    silk_vec3 *t = silk_arena_array_top_unfilled(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);   /* every one written below */
 #else
     silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
 #endif
@@ -356,7 +356,7 @@ static silk_status find_triangles(silk_sil_frame *f)
     size_t free0 = silk_arena_free_bytes(a), peak = a->top_peak;
     size_t want = bits * sizeof *f->carry_rank + SILK_ARENA_ALIGN;
     if (want <= f->keep_room && silk_sil_keep_fits(want, free0) &&
-        (f->carry_rank = silk_arena_scratch_top(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
+        (f->carry_rank = silk_arena_array_top_unfilled(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
         for (size_t i = 0, r = 0; i < bits; i++) {
             f->carry_rank[i] = (uint32_t)r;
             for (unsigned b = f->carrying[i]; b; b &= b - 1) r++;

@@ -13,6 +13,7 @@
 #include <string.h>
 #include "check.h"
 #include "silk/silk.h"
+#include "../src/frame.h"   /* silk_raster_place, _reaches, _placed */
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -940,6 +941,65 @@ TEST(wild_triangles)
     CHECKF(checked > 10000, "only %d pixels of unclipped triangles checked", checked);
 }
 
+/* A renderer that places each vertex once (silk_raster_place) learns from
+ * silk_raster_reaches which triangles silk_raster_triangle would draw no
+ * pixel of, and silk_raster_placed draws the others the same: random
+ * triangles a pixel or two across, their corners often on pixel centres
+ * and their edges often through them (the top-left rule's ties), culled or
+ * not.  Below two pixels each way it asks every pixel centre: then it
+ * reaches exactly the triangles that draw a pixel. */
+TEST(placed_triangles_reach_what_they_draw)
+{
+    const int W = 32, H = 24;
+    silk_hal h = hal_flat();
+    int bad = 0, small = 0, drawn = 0;
+    for (int trial = 0; trial < 20000 && bad < 5; trial++) {
+        silk_vertex_out v[3];
+        int64_t big = (trial % 3 ? 2 : 6) * SUB, X0 = rnd(-SUB, W * SUB), Y0 = rnd(-SUB, H * SUB);
+        for (int i = 0; i < 3; i++) {
+            int64_t X = X0 + rnd(0, big), Y = Y0 + rnd(0, big);
+            if (rnd(0, 2) == 0) X = X / SUB * SUB + SUB / 2;   /* on a centre's column */
+            if (rnd(0, 2) == 0) Y = Y / SUB * SUB + SUB / 2;
+            v[i] = vat(W, H, X, Y, (int)rnd(1, 3));
+        }
+        img a, b;
+        img_new(&a, W, H, SILK_PIX_RGB888, 0, H, 1);
+        img_new(&b, W, H, SILK_PIX_RGB888, 0, H, 1);
+        a.t.cull_back = b.t.cull_back = (int)rnd(0, 1);
+        int32_t xy[3][2];
+        const int32_t *p[3] = { xy[0], xy[1], xy[2] };
+        const silk_vertex_out *pv[3] = { &v[0], &v[1], &v[2] };
+        int placed = 1;
+        int64_t lo[2] = { INT64_MAX, INT64_MAX }, hi[2] = { INT64_MIN, INT64_MIN };
+        for (int i = 0; i < 3; i++) {
+            placed &= silk_raster_place(&a.t, &v[i].clip, xy[i]);
+            for (int k = 0; k < 2; k++) {
+                if (xy[i][k] < lo[k]) lo[k] = xy[i][k];
+                if (xy[i][k] > hi[k]) hi[k] = xy[i][k];
+            }
+        }
+        silk_raster_triangle(&a.t, &h, &v[0], &v[1], &v[2]);
+        int n = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) n += cnt(&a, x, y);
+        drawn += n > 0;
+        if (placed) {
+            int reaches = silk_raster_reaches(&b.t, p);
+            if (reaches) silk_raster_placed(&b.t, &h, pv, p);
+            int tiny = hi[0] - lo[0] < 2 * SUB && hi[1] - lo[1] < 2 * SUB;
+            small += tiny;
+            if ((n > 0 && !reaches) || (tiny && reaches && n == 0) ||
+                memcmp(a.color, b.color, (size_t)W * H * 3) || memcmp(a.depth, b.depth, (size_t)W * H * 4)) {
+                bad++;
+                CHECKF(0, "trial %d: %d pixels drawn, reaches %d", trial, n, reaches);
+            }
+        }
+        img_free(&a);
+        img_free(&b);
+    }
+    CHECKF(small > 2000 && drawn > 2000, "%d tiny triangles, %d drawn", small, drawn);
+}
+
 /* A star-shaped fan cut by the far plane along a line passing near its rim
  * vertices: the cut makes new vertices that snapping can dent, which is the
  * hard case for exact coverage of clipped polygons.  No pixel twice; pixels
@@ -1336,6 +1396,7 @@ int main(void)
     RUN(eye_inside_box_every_pixel_once);
     RUN(ground_plane_through_near_plane);
     RUN(wild_triangles);
+    RUN(placed_triangles_reach_what_they_draw);
     RUN(clipped_fans_exactly_once);
     RUN(degenerate_input);
     RUN(depth_order);
