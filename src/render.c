@@ -150,6 +150,9 @@ typedef struct frame {
      * (silk_raster_place), or VC_UNPLACED, or VC_OUTSIDE (clipped); NULL
      * when the triangles are not drawn straight from the cache (draw_direct) */
     int32_t *vc_xy;
+    /* SMOOTH with a depth pass: per part, which of its triangles wrote a
+     * depth in it (depth_wins), or NULL */
+    uint32_t *won;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -519,6 +522,37 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
 #endif
 }
 
+/* SMOOTH: which triangles of each part wrote a depth in the depth pass,
+ * bit j of won[k] for triangle j of part k (bit 31 for triangle 31 and
+ * every later one), so that the shading pass skips those that did not:
+ * a pixel is shaded by the first triangle drawn that is as near as its
+ * depth, which wrote that depth when the depth pass drew it (the depth
+ * test passes only the strictly nearer), so a triangle that wrote none
+ * shades none (docs/raster.md).  Most are faces seen from behind - the
+ * silhouette triangles' re-meshed parts are drawn both ways (frame_draw)
+ * - and faces hidden behind others; a part none of whose triangles wrote
+ * is not even rebuilt.  (A fragment stage that discards could show a
+ * triangle behind the discarded fragment at equal depth; none of silk's
+ * stages that the depth pass draws with discards.)  4 bytes an input
+ * triangle under the vertex cache's budget, only where frame_draw makes a
+ * depth pass; without the room every triangle is shaded as before. */
+static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    uint64_t n = f->geom.mesh->ntris;
+    size_t free0 = silk_arena_free_bytes(a), bytes = (size_t)n * sizeof *f->won + SILK_ARENA_ALIGN,
+           budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
+    if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
+    f->won = silk_arena_array_top(a, n, sizeof *f->won, SILK_MEM_FRAME);   /* each written in the depth pass */
+    f->vc_bytes += free0 - silk_arena_free_bytes(a);
+#else
+    (void)f;
+    (void)a;
+    (void)o;
+    (void)t;
+#endif
+}
+
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
  * lowest row; one row more on each side covers the rasterizer's rounding to
@@ -790,7 +824,7 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
 
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
-static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass)
+static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass, uint32_t *won)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
@@ -800,9 +834,19 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];
         int added = g->tri_added && g->tri_added[k];
+#ifndef SILK_NO_VERTEX_CACHE
+        uint32_t bit = 1u << (k < 31 ? k : 31);   /* depth_wins */
+        if (won && pass == 0 && !(*won & bit)) continue;
+        t->drew = 0;
+#else
+        (void)won;
+#endif
         if (pass <= 0)
             silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
                                  vertex_out(f, c[2], &tmp[2]));
+#ifndef SILK_NO_VERTEX_CACHE
+        if (won && pass < 0 && t->drew) *won |= bit;
+#endif
 #ifndef SILK_NO_LINES
         else if (added == pass - 1)
             for (int e = 0; e < 3; e++)
@@ -878,6 +922,14 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
+            uint32_t *won = NULL;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (depth_first && pass <= 0 && f->won) {
+                won = &f->won[k];
+                if (pass < 0) *won = 0;
+                else if (!*won) continue;   /* no pixel to shade: not rebuilt */
+            }
+#endif
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
 #ifndef SILK_NO_VERTEX_CACHE
             if (pass <= 0 && f->vc_xy) {
@@ -893,7 +945,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
              * no visibility function was made: hull behind shows instead */
             t->cull_back |= pass <= 0 && f->siltex;
             t0 = silk_stage_start(f->clock);
-            draw_tris(f, o, t, pass);
+            draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
     t->depth_equal = t->cull_back = 0;
@@ -995,6 +1047,7 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
     vertex_cache(f, a, o);
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
+    depth_wins(f, a, o, t);
     keep_shares(f, a, o, t);
 }
 
