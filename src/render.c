@@ -146,7 +146,8 @@ typedef struct frame {
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
-    /* FLAT: where the rasterizer places slot s's vertex, vc_xy[2s .. 2s+1]
+    /* FLAT, and SMOOTH's input triangles drawn as they are (direct_ok):
+     * where the rasterizer places slot s's vertex, vc_xy[2s .. 2s+1]
      * (silk_raster_place), or VC_UNPLACED, or VC_OUTSIDE (clipped); NULL
      * when the triangles are not drawn straight from the cache (draw_direct) */
     int32_t *vc_xy;
@@ -405,7 +406,7 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 #else
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const int direct = !f->smooth;   /* FLAT (and CLIP's hull): draw_direct, which places the vertices too */
+    const int direct = 1;   /* draw_direct, which places the vertices too (SMOOTH: away from the silhouette) */
     const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag + (direct ? 2 * sizeof *f->vc_xy : 0),
                  half = silk_arena_free_bytes(a) / 2,
                  room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes, free0 = silk_arena_free_bytes(a);
@@ -806,7 +807,8 @@ static int sphere_before_near(const silk_mesh *m, const silk_view *v)
  * mirror it).  FLAT, and in SMOOTH frames drawn share by share only the
  * input triangles drawn as they are (frame_draw): SMOOTH re-meshes and
  * moves vertices near the silhouette, where the outline is made of both
- * sides, so those triangles are all drawn; PN and BLEND bulge. */
+ * sides, so those triangles are all drawn, but for a host's re-meshed
+ * part seen wholly from behind (part_faces_away); PN and BLEND bulge. */
 static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
 {
     const silk_view *v = silk_hal_vertex_view(h);
@@ -893,6 +895,37 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
 }
 #endif
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* Whether input triangle k may be drawn by draw_direct: in FLAT every one;
+ * in SMOOTH one away from the silhouette, neither on it nor carrying its
+ * points, with no vertex moved, whose share is its three CORNER records
+ * (silk_remesh_emit_tri), drawn with back faces culled (frame_draw) as
+ * draw_direct does. */
+static int direct_ok(const frame *f, uint32_t k)
+{
+    if (!f->smooth) return 1;
+    const silk_sil_frame *s = &f->sil;
+    if (s->tri_state[k] & (SILK_TS_SIL | SILK_TS_CARRY)) return 0;
+    const silk_index *tv = &f->geom.mesh->tri[3 * (size_t)k], *vo = s->vert_offset;
+    return !vo || (vo[tv[0]] == SILK_NO_INDEX && vo[tv[1]] == SILK_NO_INDEX && vo[tv[2]] == SILK_NO_INDEX);
+}
+
+/* Whether every triangle of the part just built is seen from behind (or
+ * lies outside the view, silk_raster_culled): then frame_draw skips a
+ * re-meshed part as it culls a plain one.  Its triangles' fold along the
+ * silhouette can put one of them nearest (culled one by one, one pixel
+ * of one of test_shortcuts' bunny-500 frames changes), but a part of the back alone lies
+ * behind the front parts next to it, as the back faces of the input mesh
+ * do: test_shortcuts holds the frames to those drawn without culling. */
+static int part_faces_away(const frame *f, const silk_target *t)
+{
+    const uint32_t *c = f->g.tri;
+    for (uint32_t i = 0; i < f->g.ntri; i++, c += 3)
+        if (!silk_raster_culled(t, &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]])) return 0;
+    return 1;
+}
+#endif
+
 /* The frame's triangles part by part (only the parts that reach into the
  * band), then the lines. */
 static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
@@ -932,10 +965,12 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #endif
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
 #ifndef SILK_NO_VERTEX_CACHE
-            if (pass <= 0 && f->vc_xy) {
+            if (pass <= 0 && f->vc_xy && direct_ok(f, k)) {
                 t0 = silk_stage_start(f->clock);
+                t->drew = 0;
                 int drawn = draw_direct(f, t, pass < 0 ? NULL : f->hal, k);
                 silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+                if (drawn && won && pass < 0 && t->drew) *won = 1;   /* depth_wins: one triangle */
                 if (drawn) continue;
             }
 #endif
@@ -944,6 +979,10 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             /* SILTEX: a back face of the hull is seen from inside it, where
              * no visibility function was made: hull behind shows instead */
             t->cull_back |= pass <= 0 && f->siltex;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (pass <= 0 && f->cull && f->smooth && !f->plain && !(won && pass == 0) && part_faces_away(f, t))
+                continue;
+#endif
             t0 = silk_stage_start(f->clock);
             draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);

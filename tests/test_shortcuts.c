@@ -5,7 +5,8 @@
  * With the default vertex stage silk_render evaluates each corner's vertex
  * once per frame instead of once per triangle (the vertex cache), and on a
  * closed, outward-wound mesh seen from outside it skips the triangles seen
- * from behind in FLAT mode (render.c, back_faces_hidden).  A vertex stage of
+ * from behind in FLAT mode and SMOOTH's re-meshed parts seen wholly from
+ * behind (render.c, back_faces_hidden, part_faces_away).  A vertex stage of
  * the caller's own takes neither shortcut, so the same default stage behind
  * a wrapper draws the reference.  Shared meshes from views all round, near
  * and far, perspective and orthographic, FLAT and SMOOTH, whole frames and
