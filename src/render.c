@@ -32,7 +32,10 @@
  * arena or a host's code size affords: what the SMOOTH plan keeps
  * (silk_remesh_keep, the carrying edges' rank), the kept shares
  * (keep_shares), the emitter's skip of triangles with nothing on their
- * sides.
+ * sides, SMOOTH's plain triangles drawn straight from the cache, its
+ * re-meshed parts seen from behind culled and its shading pass's skip of
+ * the triangles that won no depth (draw_direct, part_faces_away,
+ * depth_wins).
  */
 #include <string.h>
 #include "smooth.h"
@@ -140,9 +143,9 @@ typedef struct frame {
     silk_siltex_stage siltex_stage;
 #endif
 #ifndef SILK_NO_VERTEX_CACHE
-    /* SMOOTH: the shares of silhouette triangles as first built (keep_shares):
-     * share k of the plan's kept segments (sil.seg_tri) at ks + ks_at[k] - 1,
-     * ks_at[k] 0 until it is built */
+    /* SMOOTH: the shares that draw_direct does not draw as first built
+     * (keep_shares): input triangle t's at ks + ks_at[t] - 1, ks_at[t] 0
+     * until it is built */
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
@@ -343,10 +346,13 @@ static void share_copy(frame *f, uint8_t *p, int out)
     }
 }
 
-/* Which of the kept shares input triangle t's is (SILK_SIL_NONE: none). */
+static int direct_ok(const frame *f, uint32_t k);
+
+/* Where input triangle t's share is kept: t, for every share draw_direct
+ * does not draw (SILK_SIL_NONE: none). */
 static uint32_t share_kept(const frame *f, uint32_t t)
 {
-    return f->ks && (f->sil.tri_state[t] & SILK_TS_SIL) ? silk_remesh_kept_index(&f->sil, t) : SILK_SIL_NONE;
+    return f->ks && !direct_ok(f, t) ? t : SILK_SIL_NONE;
 }
 #endif
 
@@ -476,8 +482,8 @@ static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
     if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
 }
 
-/* SMOOTH: room for the shares of the silhouette triangles as they are
- * first built (share_part), which a frame builds again for the depth pass
+/* SMOOTH: room for the shares of the triangles on, carrying or moved by
+ * the silhouette as they are first built (share_part), which a frame builds again for the depth pass
  * and for the anti-aliased outline: under the vertex cache's budget, from
  * half of what the arena has left beyond what the outline of a band of t
  * takes (silk_aa_begin: its room is unchanged), as many as fit.  Not part
@@ -485,7 +491,7 @@ static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
 static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
 #ifndef SILK_NO_VERTEX_CACHE
-    uint32_t n = f->smooth ? f->sil.nseg_kept : 0;
+    uint32_t n = f->smooth ? f->geom.mesh->ntris : 0;   /* ks_at: per input triangle (share_kept) */
     if (!n || n >= UINT32_MAX / 4) return;
     size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN;
 #ifndef SILK_NO_AA
@@ -501,9 +507,14 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     if (room > budget) room = budget;
     if (room < (size_t)n * sizeof *f->ks_at + per + 2 * SILK_ARENA_ALIGN) return;
     room -= (size_t)n * sizeof *f->ks_at + 2 * SILK_ARENA_ALIGN;
-    /* all of them (the plan counted what they hold; each adds its counts and padding), or what fits */
+    /* all of them (the plan counted what the kept segments' hold; each adds
+     * its counts and padding; the others' a few records each, on a side
+     * or two carrying silhouette points or with a vertex moved), or what fits */
     uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out)) * f->sil.kept_recs +
-                   (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris + 20 * (uint64_t)n;
+                   (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris +
+                   20 * (uint64_t)f->sil.nseg_kept;
+    for (uint32_t k = 0; k < n; k++)
+        if (!(f->sil.tri_state[k] & SILK_TS_SIL) && !direct_ok(f, k)) all += share_bytes(8, 6, 2);
     size_t cap = all < room ? (size_t)all : room;
     f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);
     f->ks = silk_arena_scratch_top(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
