@@ -142,7 +142,7 @@ TEST(shortcuts_draw_the_plain_pixels)
  * (the facing memo; in a FLAT frame of a closed mesh the candidates found
  * once a frame from the edges, aa.c silk_aa_candidates) and the FLAT
  * triangles drawn straight from the cache: the pixels of a frame without
- * them (budget 0), FLAT and SMOOTH, whole frames and bands, outlines with
+ * them (budget 0) and of one through the wrapped stage (aa.c place), FLAT and SMOOTH, whole frames and bands, outlines with
  * and without creases, closed meshes and an open one. */
 TEST(outline_shortcuts_draw_the_plain_pixels)
 {
@@ -185,6 +185,9 @@ TEST(outline_shortcuts_draw_the_plain_pixels)
                     CHECK(draw_with(&a, &m, &v, md, 0, rows, aa, SIZE_MAX, fast, NULL));
                     CHECK(draw_with(&a, &m, &v, md, 0, rows, aa, 0, plain, NULL));
                     long n = differ(fast, plain);
+                    /* and the wrapped stage's, whose curve points are not placed from their positions alone */
+                    CHECK(draw_with(&a, &m, &v, md, 1, rows, aa, SIZE_MAX, plain, NULL));
+                    n += differ(fast, plain);
                     cases++;
                     CHECKF(n == 0, "%s dir %zu dist %g %s: %ld pixels differ",
                            i < sizeof meshes / sizeof *meshes ? meshes[i] : "open sphere", d, dists[k],
