@@ -548,22 +548,17 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
  * stages that the depth pass draws with discards.)  4 bytes an input
  * triangle under the vertex cache's budget, only where frame_draw makes a
  * depth pass; without the room every triangle is shaded as before. */
+#ifndef SILK_NO_VERTEX_CACHE
 static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
-#ifndef SILK_NO_VERTEX_CACHE
     uint64_t n = f->geom.mesh->ntris;
     size_t free0 = silk_arena_free_bytes(a), bytes = (size_t)n * sizeof *f->won + SILK_ARENA_ALIGN,
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
     f->won = silk_arena_array_top(a, n, sizeof *f->won, SILK_MEM_FRAME);   /* each written in the depth pass */
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
-#else
-    (void)f;
-    (void)a;
-    (void)o;
-    (void)t;
-#endif
 }
+#endif
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
@@ -1097,7 +1092,9 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
     vertex_cache(f, a, o);
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
+#ifndef SILK_NO_VERTEX_CACHE
     depth_wins(f, a, o, t);
+#endif
     keep_shares(f, a, o, t);
 }
 
