@@ -957,27 +957,31 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
                       !f->siltex && (f->part != share_part || t->rows >= t->height);
+    uint32_t *wins = NULL;   /* depth_wins, where there is a depth pass */
+#ifndef SILK_NO_VERTEX_CACHE
+    if (depth_first) wins = f->won;
+#endif
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
             uint32_t *won = NULL;
-#ifndef SILK_NO_VERTEX_CACHE
-            if (depth_first && pass <= 0 && f->won) {
-                won = &f->won[k];
+            if (wins && pass <= 0) {
+                won = &wins[k];
                 if (pass < 0) *won = 0;
                 else if (!*won) continue;   /* no pixel to shade: not rebuilt */
             }
-#endif
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
 #ifndef SILK_NO_VERTEX_CACHE
-            if (pass <= 0 && f->vc_xy && direct_ok(f, k)) {
+            if (pass <= 0 && f->vc_xy && (!f->smooth || direct_ok(f, k))) {
                 t0 = silk_stage_start(f->clock);
                 t->drew = 0;
                 int drawn = draw_direct(f, t, pass < 0 ? NULL : f->hal, k);
                 silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
-                if (drawn && won && pass < 0 && t->drew) *won = 1;   /* depth_wins: one triangle */
-                if (drawn) continue;
+                if (drawn) {
+                    if (won) *won |= (uint32_t)t->drew;   /* depth_wins: one triangle (shading pass: set already) */
+                    continue;
+                }
             }
 #endif
             f->part(f, k);
