@@ -98,6 +98,24 @@ static silk_aa_pt point(const silk_target *t, const silk_vertex_out *o)
     return p;
 }
 
+/* Record r of geometry g on screen, through the vertex stage.  Only the
+ * position of the stage's output counts here, and the default stage's is
+ * the record's position through its view (phong.c): for a point of a
+ * curve (eq. 5) that alone is worked out, not its normal, uv and colour
+ * (a host's shortcut, the same bits). */
+static silk_aa_pt place(silk_aa *aa, const silk_geom *g, const silk_vrec *r)
+{
+#ifndef SILK_NO_VERTEX_CACHE
+    const silk_view *v = silk_hal_vertex_view(aa->hal);
+    if (v && r->kind == SILK_VREC_CURVE && g->curves) {   /* silk_vrec_eval's position */
+        aa->out->clip = silk_view_clip(v, silk_hermite_point(&g->curves[r->a], silk_fx_clamp(r->t, 0, SILK_FX_ONE)));
+        return point(aa->t, aa->out);
+    }
+#endif
+    aa->hal->vertex(aa->hal, g, r, aa->out);
+    return point(aa->t, aa->out);
+}
+
 /* (b - a) x (c - a) on screen */
 static int64_t area2(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt *c)
 {
@@ -409,8 +427,7 @@ static silk_aa_pt crease_point(silk_aa *aa, const silk_curve *c, silk_fx u, uint
         og.curves = aa->curve;
         r.kind = SILK_VREC_CURVE, r.a = 0, r.t = u;
     }
-    aa->hal->vertex(aa->hal, &og, &r, aa->out);
-    return point(aa->t, aa->out);
+    return place(aa, &og, &r);
 }
 
 /* Crease side k of input triangle t: the chords the two faces are drawn
@@ -551,8 +568,7 @@ static int seg_points(silk_aa *aa, const seg_at *s, const silk_frame_geom *g, ui
     if (!s || !seg_param(s, g, ra, &ua) || !seg_param(s, g, rb, &ub) || ua == ub) return 0;
     for (int j = 1; j < SUBDIV; j++) {
         silk_vrec r = { SILK_VREC_CURVE, s->curve, 0, ua + (silk_fx)(((int64_t)ub - ua) * j / SUBDIV) };
-        aa->hal->vertex(aa->hal, aa->geom, &r, aa->out);
-        mid[j - 1] = point(aa->t, aa->out);
+        mid[j - 1] = place(aa, aa->geom, &r);
         if (!mid[j - 1].ok) return 0;
     }
     return 1;
@@ -571,8 +587,7 @@ static int seg_outward(silk_aa *aa, const silk_frame_geom *g, const seg_at *s, i
     silk_geom og = *aa->geom;
     og.curves = o;
     silk_vrec r = { SILK_VREC_CURVE, 0, 0, 0 };
-    aa->hal->vertex(aa->hal, &og, &r, aa->out);
-    silk_aa_pt n = point(aa->t, aa->out);
+    silk_aa_pt n = place(aa, &og, &r);
     const silk_aa_pt *m = &aa->pt[s->a];
     *ox = n.x - m->x;
     *oy = n.y - m->y;

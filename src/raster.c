@@ -545,6 +545,9 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
         if (rgb == SILK_FRAGMENT_DISCARD) return;
     }
     if (zrow) zrow[x] = z;
+#ifndef SILK_NO_VERTEX_CACHE
+    c->t->drew = 1;
+#endif
     if (c->wrow) c->wrow[x]++;
     if (c->crow && h && h->fragment) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
 }
@@ -582,6 +585,9 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
             if (z > zrow[x] - eq) {
                 if (call) fragment_at(&c, x, z, zrow);
                 else zrow[x] = z;
+#ifndef SILK_NO_VERTEX_CACHE
+                t->drew = 1;
+#endif
             }
             q += sq;                    /* rstep_next */
             dr += dsr;

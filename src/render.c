@@ -32,7 +32,10 @@
  * arena or a host's code size affords: what the SMOOTH plan keeps
  * (silk_remesh_keep, the carrying edges' rank), the kept shares
  * (keep_shares), the emitter's skip of triangles with nothing on their
- * sides.
+ * sides, SMOOTH's plain triangles drawn straight from the cache, its
+ * re-meshed parts seen from behind culled and its shading pass's skip of
+ * the triangles that won no depth (draw_direct, part_faces_away,
+ * depth_wins).
  */
 #include <string.h>
 #include "smooth.h"
@@ -140,20 +143,24 @@ typedef struct frame {
     silk_siltex_stage siltex_stage;
 #endif
 #ifndef SILK_NO_VERTEX_CACHE
-    /* SMOOTH: the shares of silhouette triangles as first built (keep_shares):
-     * share k of the plan's kept segments (sil.seg_tri) at ks + ks_at[k] - 1,
-     * ks_at[k] 0 until it is built */
+    /* SMOOTH: the shares that draw_direct does not draw as first built
+     * (keep_shares): input triangle t's at ks + ks_at[t] - 1, ks_at[t] 0
+     * until it is built */
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
-    /* FLAT: where the rasterizer places the mesh's vertex p (position
-     * index), vc_xy[2p .. 2p+1] (silk_raster_place), or VC_OUTSIDE
-     * (clipped), and the vertex stage's clip coordinates of it, vc_clip[p],
-     * once xy_ready (place_vertices); NULL when the triangles are not drawn
-     * straight from the cache (draw_direct) */
+    /* FLAT, and SMOOTH's input triangles drawn as they are (direct_ok):
+     * where the rasterizer places the mesh's vertex p (position index),
+     * vc_xy[2p .. 2p+1] (silk_raster_place), or VC_OUTSIDE (clipped), and
+     * the vertex stage's clip coordinates of it, vc_clip[p], once xy_ready
+     * (place_vertices); NULL when the triangles are not drawn straight from
+     * the cache (draw_direct) */
     int32_t *vc_xy;
     silk_vec4 *vc_clip;
     uint8_t xy_ready;
+    /* SMOOTH with a depth pass: per part, which of its triangles wrote a
+     * depth in it (depth_wins), or NULL */
+    uint32_t *won;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -349,10 +356,13 @@ static void share_copy(frame *f, uint8_t *p, int out)
     }
 }
 
-/* Which of the kept shares input triangle t's is (SILK_SIL_NONE: none). */
+static int direct_ok(const frame *f, uint32_t k);
+
+/* Where input triangle t's share is kept: t, for every share draw_direct
+ * does not draw (SILK_SIL_NONE: none). */
 static uint32_t share_kept(const frame *f, uint32_t t)
 {
-    return f->ks && (f->sil.tri_state[t] & SILK_TS_SIL) ? silk_remesh_kept_index(&f->sil, t) : SILK_SIL_NONE;
+    return f->ks && !direct_ok(f, t) ? t : SILK_SIL_NONE;
 }
 #endif
 
@@ -412,12 +422,13 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 #else
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const int direct = !f->smooth;   /* FLAT (and CLIP's hull): draw_direct, which places the vertices too */
     const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
                  free0 = silk_arena_free_bytes(a);
     size_t room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
-    /* FLAT: where each vertex of the mesh is placed, when that fits with the least cache */
-    size_t xy = direct ? (size_t)m->nverts * (2 * sizeof *f->vc_xy + sizeof *f->vc_clip) + 2 * SILK_ARENA_ALIGN : 0;
+    /* where each vertex of the mesh is placed (draw_direct: FLAT's
+     * triangles, SMOOTH's away from the silhouette), when that fits with
+     * the least cache */
+    size_t xy = (size_t)m->nverts * (2 * sizeof *f->vc_xy + sizeof *f->vc_clip) + 2 * SILK_ARENA_ALIGN;
     if (xy + 64 * slot + 2 * SILK_ARENA_ALIGN > room) xy = 0;
     room -= xy;
     uint32_t n = 64;
@@ -490,8 +501,8 @@ static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
     if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
 }
 
-/* SMOOTH: room for the shares of the silhouette triangles as they are
- * first built (share_part), which a frame builds again for the depth pass
+/* SMOOTH: room for the shares of the triangles on, carrying or moved by
+ * the silhouette as they are first built (share_part), which a frame builds again for the depth pass
  * and for the anti-aliased outline: under the vertex cache's budget, from
  * half of what the arena has left beyond what the outline of a band of t
  * takes (silk_aa_begin: its room is unchanged), as many as fit.  Not part
@@ -499,7 +510,7 @@ static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
 static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
 #ifndef SILK_NO_VERTEX_CACHE
-    uint32_t n = f->smooth ? f->sil.nseg_kept : 0;
+    uint32_t n = f->smooth ? f->geom.mesh->ntris : 0;   /* ks_at: per input triangle (share_kept) */
     if (!n || n >= UINT32_MAX / 4) return;
     size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN;
 #ifndef SILK_NO_AA
@@ -515,9 +526,14 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     if (room > budget) room = budget;
     if (room < (size_t)n * sizeof *f->ks_at + per + 2 * SILK_ARENA_ALIGN) return;
     room -= (size_t)n * sizeof *f->ks_at + 2 * SILK_ARENA_ALIGN;
-    /* all of them (the plan counted what they hold; each adds its counts and padding), or what fits */
+    /* all of them (the plan counted what the kept segments' hold; each adds
+     * its counts and padding; the others' a few records each, on a side
+     * or two carrying silhouette points or with a vertex moved), or what fits */
     uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out)) * f->sil.kept_recs +
-                   (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris + 20 * (uint64_t)n;
+                   (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris +
+                   20 * (uint64_t)f->sil.nseg_kept;
+    for (uint32_t k = 0; k < n; k++)
+        if (!(f->sil.tri_state[k] & SILK_TS_SIL) && !direct_ok(f, k)) all += share_bytes(8, 6, 2);
     size_t cap = all < room ? (size_t)all : room;
     f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);
     f->ks = silk_arena_array_top_unfilled(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
@@ -536,6 +552,32 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     (void)t;
 #endif
 }
+
+/* SMOOTH: which triangles of each part wrote a depth in the depth pass,
+ * bit j of won[k] for triangle j of part k (bit 31 for triangle 31 and
+ * every later one), so that the shading pass skips those that did not:
+ * a pixel is shaded by the first triangle drawn that is as near as its
+ * depth, which wrote that depth when the depth pass drew it (the depth
+ * test passes only the strictly nearer), so a triangle that wrote none
+ * shades none (docs/raster.md).  Most are faces seen from behind - the
+ * silhouette triangles' re-meshed parts are drawn both ways (frame_draw)
+ * - and faces hidden behind others; a part none of whose triangles wrote
+ * is not even rebuilt.  (A fragment stage that discards could show a
+ * triangle behind the discarded fragment at equal depth; none of silk's
+ * stages that the depth pass draws with discards.)  4 bytes an input
+ * triangle under the vertex cache's budget, only where frame_draw makes a
+ * depth pass; without the room every triangle is shaded as before. */
+#ifndef SILK_NO_VERTEX_CACHE
+static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
+{
+    uint64_t n = f->geom.mesh->ntris;
+    size_t free0 = silk_arena_free_bytes(a), bytes = (size_t)n * sizeof *f->won + SILK_ARENA_ALIGN,
+           budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
+    if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
+    f->won = silk_arena_array_top(a, n, sizeof *f->won, SILK_MEM_FRAME);   /* each written in the depth pass */
+    f->vc_bytes += free0 - silk_arena_free_bytes(a);
+}
+#endif
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
@@ -790,7 +832,8 @@ static int sphere_before_near(const silk_mesh *m, const silk_view *v)
  * mirror it).  FLAT, and in SMOOTH frames drawn share by share only the
  * input triangles drawn as they are (frame_draw): SMOOTH re-meshes and
  * moves vertices near the silhouette, where the outline is made of both
- * sides, so those triangles are all drawn; PN and BLEND bulge. */
+ * sides, so those triangles are all drawn, but for a host's re-meshed
+ * part seen wholly from behind (part_faces_away); PN and BLEND bulge. */
 static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
 {
     const silk_view *v = silk_hal_vertex_view(h);
@@ -808,7 +851,7 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
 
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
-static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass)
+static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass, uint32_t *won)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
@@ -818,9 +861,19 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];
         int added = g->tri_added && g->tri_added[k];
+#ifndef SILK_NO_VERTEX_CACHE
+        uint32_t bit = 1u << (k < 31 ? k : 31);   /* depth_wins */
+        if (won && pass == 0 && !(*won & bit)) continue;
+        t->drew = 0;
+#else
+        (void)won;
+#endif
         if (pass <= 0)
             silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
                                  vertex_out(f, c[2], &tmp[2]));
+#ifndef SILK_NO_VERTEX_CACHE
+        if (won && pass < 0 && t->drew) *won |= bit;
+#endif
 #ifndef SILK_NO_LINES
         else if (added == pass - 1)
             for (int e = 0; e < 3; e++)
@@ -834,9 +887,10 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* FLAT: every vertex of the mesh placed on the screen of t (vc_xy), once a
- * frame, before its first triangle is drawn (vertices that only
- * triangles outside the band use are so few it is cheaper than asking).
+/* Every vertex of the mesh placed on the screen of t (vc_xy) for
+ * draw_direct, once a frame, before its first triangle is drawn (vertices
+ * that only triangles outside the band use are so few it is cheaper than
+ * asking).
  * The stage clock counts it as the rasterizer's, as draw_direct's vertex
  * stage: the vertex stage's pieces are the shares emitted. */
 static void place_vertices(frame *f, const silk_target *t)
@@ -851,9 +905,10 @@ static void place_vertices(frame *f, const silk_target *t)
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
 }
 
-/* FLAT through the vertex cache: input triangle k drawn straight from the
- * cache's slots (shade: the fragment stage, or NULL for depth alone), its
- * share never built.  Each vertex of the mesh is placed on the screen once
+/* Through the vertex cache (FLAT; SMOOTH away from the silhouette,
+ * direct_ok): input triangle k drawn straight from the cache's slots
+ * (shade: the fragment stage, or NULL for depth alone), its share never
+ * built.  Each vertex of the mesh is placed on the screen once
  * a frame (place_vertices: silk_raster_place of the vertex stage's clip
  * position alone), so that the triangles the rasterizer would draw nothing of -
  * seen from behind, zero area, between pixel centres or outside the band,
@@ -874,7 +929,7 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
         xy[i] = &f->vc_xy[2 * p];
         placed &= xy[i][0] != VC_OUTSIDE;
     }
-    t->cull_back = f->cull;   /* FLAT: frame_draw's rule */
+    t->cull_back = f->cull;   /* frame_draw's rule for triangles drawn as they are */
     if (placed && !silk_raster_reaches(t, xy)) return 1;
     const silk_vertex_out *v[3];
     uint32_t s[3];
@@ -885,6 +940,37 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
     if (s[0] == s[1] || s[1] == s[2] || s[2] == s[0]) return 0;   /* a later corner may have taken an earlier's slot */
     if (placed) silk_raster_placed(t, shade, v, xy);
     else silk_raster_triangle(t, shade, v[0], v[1], v[2]);
+    return 1;
+}
+#endif
+
+#ifndef SILK_NO_VERTEX_CACHE
+/* Whether input triangle k may be drawn by draw_direct: in FLAT every one;
+ * in SMOOTH one away from the silhouette, neither on it nor carrying its
+ * points, with no vertex moved, whose share is its three CORNER records
+ * (silk_remesh_emit_tri), drawn with back faces culled (frame_draw) as
+ * draw_direct does. */
+static int direct_ok(const frame *f, uint32_t k)
+{
+    if (!f->smooth) return 1;
+    const silk_sil_frame *s = &f->sil;
+    if (s->tri_state[k] & (SILK_TS_SIL | SILK_TS_CARRY)) return 0;
+    const silk_index *tv = &f->geom.mesh->tri[3 * (size_t)k], *vo = s->vert_offset;
+    return !vo || (vo[tv[0]] == SILK_NO_INDEX && vo[tv[1]] == SILK_NO_INDEX && vo[tv[2]] == SILK_NO_INDEX);
+}
+
+/* Whether every triangle of the part just built is seen from behind (or
+ * lies outside the view, silk_raster_culled): then frame_draw skips a
+ * re-meshed part as it culls a plain one.  Its triangles' fold along the
+ * silhouette can put one of them nearest (culled one by one, one pixel
+ * of one of test_shortcuts' bunny-500 frames changes), but a part of the back alone lies
+ * behind the front parts next to it, as the back faces of the input mesh
+ * do: test_shortcuts holds the frames to those drawn without culling. */
+static int part_faces_away(const frame *f, const silk_target *t)
+{
+    const uint32_t *c = f->g.tri;
+    for (uint32_t i = 0; i < f->g.ntri; i++, c += 3)
+        if (!silk_raster_culled(t, &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]])) return 0;
     return 1;
 }
 #endif
@@ -914,20 +1000,32 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
                       !f->siltex && (f->part != share_part || t->rows >= t->height);
+    uint32_t *wins = NULL;   /* depth_wins, where there is a depth pass */
 #ifndef SILK_NO_VERTEX_CACHE
     if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
+    if (depth_first) wins = f->won;
 #endif
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
+            uint32_t *won = NULL;
+            if (wins && pass <= 0) {
+                won = &wins[k];
+                if (pass < 0) *won = 0;
+                else if (!*won) continue;   /* no pixel to shade: not rebuilt */
+            }
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
 #ifndef SILK_NO_VERTEX_CACHE
-            if (pass <= 0 && f->vc_xy) {
+            if (pass <= 0 && f->vc_xy && (!f->smooth || direct_ok(f, k))) {
                 t0 = silk_stage_start(f->clock);
+                t->drew = 0;
                 int drawn = draw_direct(f, t, pass < 0 ? NULL : f->hal, k);
                 silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
-                if (drawn) continue;
+                if (drawn) {
+                    if (won) *won |= (uint32_t)t->drew;   /* depth_wins: one triangle (shading pass: set already) */
+                    continue;
+                }
             }
 #endif
             f->part(f, k);
@@ -935,8 +1033,12 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             /* SILTEX: a back face of the hull is seen from inside it, where
              * no visibility function was made: hull behind shows instead */
             t->cull_back |= pass <= 0 && f->siltex;
+#ifndef SILK_NO_VERTEX_CACHE
+            if (pass <= 0 && f->cull && f->smooth && !f->plain && !(won && pass == 0) && part_faces_away(f, t))
+                continue;
+#endif
             t0 = silk_stage_start(f->clock);
-            draw_tris(f, o, t, pass);
+            draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
     t->depth_equal = t->cull_back = 0;
@@ -1038,6 +1140,9 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
     vertex_cache(f, a, o);
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
+#ifndef SILK_NO_VERTEX_CACHE
+    depth_wins(f, a, o, t);
+#endif
     keep_shares(f, a, o, t);
 }
 

@@ -5,7 +5,8 @@
  * With the default vertex stage silk_render evaluates each corner's vertex
  * once per frame instead of once per triangle (the vertex cache), and on a
  * closed, outward-wound mesh seen from outside it skips the triangles seen
- * from behind in FLAT mode (render.c, back_faces_hidden).  A vertex stage of
+ * from behind in FLAT mode and SMOOTH's re-meshed parts seen wholly from
+ * behind (render.c, back_faces_hidden, part_faces_away).  A vertex stage of
  * the caller's own takes neither shortcut, so the same default stage behind
  * a wrapper draws the reference.  Shared meshes from views all round, near
  * and far, perspective and orthographic, FLAT and SMOOTH, whole frames and
@@ -141,7 +142,7 @@ TEST(shortcuts_draw_the_plain_pixels)
  * (the facing memo; in a FLAT frame of a closed mesh the candidates found
  * once a frame from the edges, aa.c silk_aa_candidates) and the FLAT
  * triangles drawn straight from the cache: the pixels of a frame without
- * them (budget 0), FLAT and SMOOTH, whole frames and bands, outlines with
+ * them (budget 0) and of one through the wrapped stage (aa.c place), FLAT and SMOOTH, whole frames and bands, outlines with
  * and without creases, closed meshes and an open one. */
 TEST(outline_shortcuts_draw_the_plain_pixels)
 {
@@ -184,6 +185,9 @@ TEST(outline_shortcuts_draw_the_plain_pixels)
                     CHECK(draw_with(&a, &m, &v, md, 0, rows, aa, SIZE_MAX, fast, NULL));
                     CHECK(draw_with(&a, &m, &v, md, 0, rows, aa, 0, plain, NULL));
                     long n = differ(fast, plain);
+                    /* and the wrapped stage's, whose curve points are not placed from their positions alone */
+                    CHECK(draw_with(&a, &m, &v, md, 1, rows, aa, SIZE_MAX, plain, NULL));
+                    n += differ(fast, plain);
                     cases++;
                     CHECKF(n == 0, "%s dir %zu dist %g %s: %ld pixels differ",
                            i < sizeof meshes / sizeof *meshes ? meshes[i] : "open sphere", d, dists[k],
@@ -230,6 +234,48 @@ TEST(back_faces_are_skipped)
     CHECK(draw(&a, &m, &v, SILK_MODE_FLAT, 1, H, plain, &wp));
     CHECK(differ(fast, plain) == 0);
     CHECKF(wf > 0 && wf < wp, "%ld fragment writes with the shortcut, %ld without", wf, wp);
+    free(fast);
+    free(plain);
+}
+
+/* SMOOTH whole frames with a depth pass: the shading pass skips the
+ * triangles that wrote no depth in it (render.c, depth_wins) under the
+ * vertex cache's budget.  The pixels of frames without (budget 0), meshes
+ * closed and open (cone-70), from all round, near and far, perspective
+ * and orthographic, with and without the outline; and never more
+ * fragments written (fewer where a skipped triangle met the depth of one
+ * that overwrote it). */
+TEST(unshaded_triangles_are_skipped)
+{
+    static const char *meshes[] = { "bunny-500.obj", "sphere-200.obj", "knot-480.obj", "torus-576.obj",
+                                    "fandisk-128.obj", "cow-500.obj", "cone-70.obj" };
+    static const double dirs[][3] = { { 1, 0.4, 0.8 }, { -1, -0.3, 0.2 }, { 0.1, 1, 0.2 }, { 0.3, -1, -0.5 },
+                                      { -0.4, 0.2, -1 } };
+    static const double dists[] = { 3, 1.6, 0.7 };
+    uint8_t *fast = malloc((size_t)W * H * 3), *plain = malloc((size_t)W * H * 3);
+    long cases = 0, fewer = 0;
+    for (size_t i = 0; i < sizeof meshes / sizeof *meshes; i++) {
+        silk_arena a;
+        silk_mesh m;
+        silk_view v;
+        if (!mesh_and_view(&a, meshes[i], dirs[0], 3, &m, &v)) break;
+        for (size_t d = 0; d < sizeof dirs / sizeof *dirs; d++)
+            for (size_t k = 0; k < sizeof dists / sizeof *dists; k++)
+                for (int ortho = 0; ortho < 2; ortho++) {
+                    CHECK(tf_view_around_size(&m, dirs[d], dists[k], ortho, W, H, &v));
+                    int aa = (int)((d + k) % 3);   /* none, with creases, without */
+                    long wf = 0, wp = 0;
+                    CHECK(draw_with(&a, &m, &v, SILK_MODE_SMOOTH, 0, H, aa, SIZE_MAX, fast, aa ? NULL : &wf));
+                    CHECK(draw_with(&a, &m, &v, SILK_MODE_SMOOTH, 0, H, aa, 0, plain, aa ? NULL : &wp));
+                    long n = differ(fast, plain);
+                    cases++;
+                    fewer += wf < wp;
+                    CHECKF(n == 0 && wf <= wp, "%s dir %zu dist %g %s: %ld pixels differ, %ld writes against %ld",
+                           meshes[i], d, dists[k], ortho ? "ortho" : "persp", n, wf, wp);
+                }
+    }
+    printf("  %ld frames, %ld with fewer fragments written\n", cases, fewer);
+    CHECK(check_cur_skipped || fewer > 0);
     free(fast);
     free(plain);
 }
@@ -297,6 +343,7 @@ int main(void)
     RUN(shortcuts_draw_the_plain_pixels);
     RUN(outline_shortcuts_draw_the_plain_pixels);
     RUN(back_faces_are_skipped);
+    RUN(unshaded_triangles_are_skipped);
     RUN(cache_sized_by_the_arena);
     free(arena_buf);
     return check_done();

@@ -43,6 +43,9 @@ typedef struct silk_target {
                                 bit x & 7 of byte x >> 3; triangles draw only where the bit is set */
     int cull_back;           /* 1: skip triangles seen from behind (clockwise on the screen after
                                 snapping), set by silk_render where they cannot show */
+    int drew;                /* set to 1 by every depth the rasterizer writes (builds with the vertex
+                                cache): silk_render clears and reads it to learn which triangles of
+                                its depth pass hold a pixel */
 } silk_target;
 
 /* Output of the vertex stage. */
