@@ -237,6 +237,9 @@ static void crease_px(silk_aa *aa, int steep, int c, int64_t r, int64_t ri, int 
     int x = steep ? (int)r : c, y = steep ? c : (int)r;
     if (cov == ((r - ri) * dir >= 0 ? FRAC : 0) || y < t->y0 || y >= t->y0 + t->rows || x < 0 || x >= t->width)
         return;   /* as drawn, or not the band's */
+    /* across rows, only where both colour pixels are next to it: a band
+     * reads one row past its own, and a frame must not depend on its bands */
+    if (!steep && (r - ri > 1 || ri - r > 1 || r - (ri - dir) > 1 || (ri - dir) - r > 1)) return;
     for (int i = 0; i < 3; i++)
         if (!fetch(aa, steep ? (int)rr[i] : c, steep ? c : (int)rr[i], &rgb[i], &d) || !d ||
             (int64_t)d > ds + tol || (int64_t)d + tol < ds)
