@@ -32,9 +32,8 @@
  * arena or a host's code size affords: what the SMOOTH plan keeps
  * (silk_remesh_keep, the carrying edges' rank), the kept shares
  * (keep_shares), the emitter's skip of triangles with nothing on their
- * sides, SMOOTH's plain triangles drawn straight from the cache, its
- * re-meshed parts seen from behind culled and its shading pass's skip of
- * the triangles that won no depth (draw_direct, part_faces_away,
+ * sides, SMOOTH's plain triangles drawn straight from the cache and its
+ * shading pass's skip of the triangles that won no depth (draw_direct,
  * depth_wins).
  */
 #include <string.h>
@@ -832,8 +831,9 @@ static int sphere_before_near(const silk_mesh *m, const silk_view *v)
  * mirror it).  FLAT, and in SMOOTH frames drawn share by share only the
  * input triangles drawn as they are (frame_draw): SMOOTH re-meshes and
  * moves vertices near the silhouette, where the outline is made of both
- * sides, so those triangles are all drawn, but for a host's re-meshed
- * part seen wholly from behind (part_faces_away); PN and BLEND bulge. */
+ * sides, so those triangles are all drawn (skipping a re-meshed part seen
+ * wholly from behind changed pixels of self-intersecting meshes, which a
+ * board must draw as the host does); PN and BLEND bulge. */
 static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o)
 {
     const silk_view *v = silk_hal_vertex_view(h);
@@ -959,20 +959,6 @@ static int direct_ok(const frame *f, uint32_t k)
     return !vo || (vo[tv[0]] == SILK_NO_INDEX && vo[tv[1]] == SILK_NO_INDEX && vo[tv[2]] == SILK_NO_INDEX);
 }
 
-/* Whether every triangle of the part just built is seen from behind (or
- * lies outside the view, silk_raster_culled): then frame_draw skips a
- * re-meshed part as it culls a plain one.  Its triangles' fold along the
- * silhouette can put one of them nearest (culled one by one, one pixel
- * of one of test_shortcuts' bunny-500 frames changes), but a part of the back alone lies
- * behind the front parts next to it, as the back faces of the input mesh
- * do: test_shortcuts holds the frames to those drawn without culling. */
-static int part_faces_away(const frame *f, const silk_target *t)
-{
-    const uint32_t *c = f->g.tri;
-    for (uint32_t i = 0; i < f->g.ntri; i++, c += 3)
-        if (!silk_raster_culled(t, &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]])) return 0;
-    return 1;
-}
 #endif
 
 /* The frame's triangles part by part (only the parts that reach into the
@@ -1033,10 +1019,6 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             /* SILTEX: a back face of the hull is seen from inside it, where
              * no visibility function was made: hull behind shows instead */
             t->cull_back |= pass <= 0 && f->siltex;
-#ifndef SILK_NO_VERTEX_CACHE
-            if (pass <= 0 && f->cull && f->smooth && !f->plain && !(won && pass == 0) && part_faces_away(f, t))
-                continue;
-#endif
             t0 = silk_stage_start(f->clock);
             draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
