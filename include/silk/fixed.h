@@ -232,6 +232,21 @@ static inline uint32_t silk_rsqrt_ss(uint64_t ss, int *rs)
  * pixel.  Returns 0 (and a zero vector) for the zero vector. */
 static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
 {
+#if !SILK_CPU32
+    /* The same bits without the sign-magnitude detour: squares of the
+     * components as they are (modulo 2^64, as the magnitudes' would be),
+     * and for c < 0, (c r + 2^(rs-1) - 1) >> rs (arithmetic shift: the
+     * floor) is -((|c| r + 2^(rs-1)) >> rs), the magnitude's rounding
+     * mirrored.  |c r| is about 2^rs: no overflow. */
+    uint64_t ss = (uint64_t)x * (uint64_t)x + (uint64_t)y * (uint64_t)y + (uint64_t)z * (uint64_t)z;
+    if (ss == 0) { out[0] = out[1] = out[2] = 0; return 0; }
+    int rs;
+    int64_t r = silk_rsqrt_ss(ss, &rs), half = (int64_t)1 << (rs - 1);
+    out[0] = (x * r + half - (x < 0)) >> rs;
+    out[1] = (y * r + half - (y < 0)) >> rs;
+    out[2] = (z * r + half - (z < 0)) >> rs;
+    return 1;
+#else
     uint64_t ux = (uint64_t)(x < 0 ? -x : x), uy = (uint64_t)(y < 0 ? -y : y), uz = (uint64_t)(z < 0 ? -z : z);
     uint64_t ss = ux * ux + uy * uy + uz * uz;
     if (ss == 0) { out[0] = out[1] = out[2] = 0; return 0; }
@@ -244,6 +259,7 @@ static inline int silk_unit64(int64_t x, int64_t y, int64_t z, int64_t out[3])
     out[1] = y < 0 ? -ny : ny;
     out[2] = z < 0 ? -nz : nz;
     return 1;
+#endif
 }
 
 /* silk_unit64 of a silk_fx vector, the same bits from 32-by-32-bit
