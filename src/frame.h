@@ -81,6 +81,16 @@ int silk_hal_vertex_by_attrs(const silk_hal *h);
  * its output for record r but the clip coordinates (left as they are). */
 silk_vec4 silk_hal_vertex_clip(const silk_hal *h, silk_vec3 pos);
 void silk_hal_vertex_varyings(const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
+/* phong.c (not with -DSILK_NO_VERTEX_CACHE): p when h is the default
+ * stages (silk_hal_phong) of p in their usual case - a perspective camera,
+ * two directional lights, no texture or vertex colours, SILK_PHONG_PLAIN_NVAR
+ * varyings and every material term below 16 - else NULL; then
+ * silk_phong_plain_fragment(p, var) is h->fragment(h, var), the same bits,
+ * with the tests that case settles made once (the rasterizer asks per
+ * triangle) rather than per pixel.  It never discards. */
+#define SILK_PHONG_PLAIN_NVAR 6
+const silk_phong *silk_hal_phong_plain(const silk_hal *h);
+uint32_t silk_phong_plain_fragment(const silk_phong *p, const silk_fx *var);
 /* phong.c: the view the default vertex stage projects with, or NULL (a
  * stage of the caller's own, or none). */
 const silk_view *silk_hal_vertex_view(const silk_hal *h);

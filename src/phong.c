@@ -18,6 +18,9 @@
 #include "silk/texture.h"
 
 enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_COUNT = 6, VAR_UV = 6, VAR_RGB = 8, VAR_UV_COUNT = 8, VAR_RGB_COUNT = 11 };
+#ifndef SILK_NO_VERTEX_CACHE
+_Static_assert(VAR_COUNT == SILK_PHONG_PLAIN_NVAR, "the rasterizer's plain case interpolates the default stage's varyings");
+#endif
 
 /* Channel c (the low 8 bits) to Q16.16 in [0, 1]: c * 65536 / 255 rounded
  * is c * 257 + (c + 127) / 255, exact at 0 and 255. */
@@ -151,6 +154,7 @@ static uint32_t channel(const silk_material *m, silk_fx base, silk_fx spec, int6
  * (tests/test_phong.c compares with a double-precision Phong).  R.V is
  * 2 (N.L)(N.V) - L.V, so the mirror direction R is never formed. */
 static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base);
+static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const int64_t *base, int plain);
 
 static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
 {
@@ -185,10 +189,29 @@ uint32_t silk_hal_phong_tinted(const silk_hal *h, const silk_fx *var, uint32_t r
 /* Phong at position and normal var[0..5] with ambient and diffuse colour base. */
 static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base)
 {
+    return shade_in(p, var, base, 0);
+}
+
+/* shade's work; plain: the caller knows that p is in the usual case
+ * silk_hal_phong_plain describes, so the tests that case settles fold away
+ * (the same bits: each test's other branch is one the case never takes). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const int64_t *base, int plain)
+{
     const silk_material *m = &p->mat;
     ucomp v[3], n[3];                    /* unit vectors: components within +-2^16 (and a little) */
-    if (p->view && !p->view->cam.ortho) {
-        silk_vec3 d = silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
+    if (plain || (p->view && !p->view->cam.ortho)) {
+        silk_vec3 d;
+        const silk_vec3 eye = p->view->cam.eye;
+        int64_t dx = (int64_t)eye.x - var[VAR_POS], dy = (int64_t)eye.y - var[VAR_POS + 1],
+                dz = (int64_t)eye.z - var[VAR_POS + 2];
+        const int64_t q = (int64_t)1 << 30;   /* all within [-2^30, 2^30): silk_v3_sub's bits, unsaturated */
+        if (plain && ((uint64_t)(dx + q) | (uint64_t)(dy + q) | (uint64_t)(dz + q)) >> 31 == 0)
+            d = silk_v3((silk_fx)dx, (silk_fx)dy, (silk_fx)dz);
+        else
+            d = silk_v3_sub(eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
         if (!unit_fx(d.x, d.y, d.z, v)) {
             v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
         }
@@ -215,11 +238,11 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
 
     /* light reaching the surface, per channel: diffuse and specular parts */
     int64_t dr = 0, dg = 0, db = 0, sr = 0, sg = 0, sb = 0;
-    int nl = p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights);
+    int nl = plain ? 2 : (p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights));
     for (int i = 0; i < nl; i++) {
         const silk_light *li = &p->lights[i];
         ucomp l[3] = { li->vec.x, li->vec.y, li->vec.z };
-        if (li->kind == SILK_LIGHT_POINT) {
+        if (!plain && li->kind == SILK_LIGHT_POINT) {
             silk_vec3 d = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
             if (!unit_fx(d.x, d.y, d.z, l)) continue;
         }
@@ -242,9 +265,10 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
      * then every product has factors below 2^21, no sum can leave the
      * range, and only the final clamp to 1 remains.  The material terms
      * and base are silk_fx values, so their low 32 bits tell. */
-    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb) |
-                   (uint32_t)(spec | m->ambient | m->diffuse | base[0] | base[1] | base[2] | m->specular_color.x |
-                              m->specular_color.y | m->specular_color.z);
+    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb);
+    if (!plain)
+        all |= (uint32_t)(spec | m->ambient | m->diffuse | base[0] | base[1] | base[2] | m->specular_color.x |
+                          m->specular_color.y | m->specular_color.z);
     if (all < ((uint64_t)1 << 20)) {
         /* every sum below is under 2^30: 32-bit arithmetic */
         int32_t amb = m->ambient, dif = m->diffuse, hr = 0, hg = 0, hb = 0;
@@ -265,6 +289,31 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
            channel(m, (silk_fx)base[1], silk_fx_mul(m->specular, m->specular_color.y), dg, sg) << 8 |
            channel(m, (silk_fx)base[2], silk_fx_mul(m->specular, m->specular_color.z), db, sb);
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+const silk_phong *silk_hal_phong_plain(const silk_hal *h)
+{
+    if (h->fragment != phong_fragment || h->nvaryings != VAR_COUNT) return NULL;
+    const silk_phong *p = (const silk_phong *)h->uniforms;
+    const silk_material *m = &p->mat;
+#ifndef SILK_NO_TEXTURE
+    if (p->texture) return NULL;
+#endif
+    if (!p->view || p->view->cam.ortho || p->nlights != 2 || p->lights[0].kind == SILK_LIGHT_POINT ||
+        p->lights[1].kind == SILK_LIGHT_POINT)
+        return NULL;
+    /* shade's usual-case test, the part that does not change from pixel to pixel */
+    uint32_t all = (uint32_t)(m->specular | m->ambient | m->diffuse | m->color.x | m->color.y | m->color.z |
+                              m->specular_color.x | m->specular_color.y | m->specular_color.z);
+    return all < ((uint32_t)1 << 20) ? p : NULL;
+}
+
+uint32_t silk_phong_plain_fragment(const silk_phong *p, const silk_fx *var)
+{
+    const int64_t base[3] = { p->mat.color.x, p->mat.color.y, p->mat.color.z };
+    return shade_in(p, var, base, 1);
+}
+#endif
 
 int silk_hal_vertex_by_attrs(const silk_hal *h)
 {

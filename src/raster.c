@@ -408,6 +408,9 @@ typedef struct tri_setup {
      * keep the sum below 2^63.  vbase holds a0 in Q30 plus the rounding half. */
     int64_t vbase[SILK_MAX_VARYINGS], vd1[SILK_MAX_VARYINGS], vd2[SILK_MAX_VARYINGS];
     int vnarrow;           /* a 32-bit processor and every vd1, vd2 within 32 bits */
+#ifndef SILK_NO_VERTEX_CACHE
+    const silk_phong *plain;   /* silk_hal_phong_plain of the stages, when shading */
+#endif
 } tri_setup;
 
 /* Depth at subpixel point (X, Y): D0 + (e1 dD1 + e2 dD2) / area, floored,
@@ -503,6 +506,15 @@ static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
         var[k] = (silk_fx)((base[k] + (int64_t)(int32_t)d1[k] * b1 + (int64_t)(int32_t)d2[k] * b2) >> 30);
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* varyings() of the default stage's usual case: a known count, no loop. */
+static inline void varyings_plain(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
+{
+    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
+    for (int k = 0; k < SILK_PHONG_PLAIN_NVAR; k++) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+}
+#endif
+
 /* var_k = a0 + (a1 - a0) b1 + (a2 - a0) b2 in Q30, rounded (tri_setup). */
 static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
 {
@@ -535,14 +547,22 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
         silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
         int64_t b1, b2;
         bary(s, U, V, T, &b1, &b2);
-        varyings(s, b1, b2, var);
-#ifndef SILK_NO_TEXTURE
-        if (h->footprint_var > 0 && h->footprint_var < s->nvar)
-            footprint(s, h->footprint_var - 1, U, V, T, b1, b2, var);
+#ifndef SILK_NO_VERTEX_CACHE
+        if (s->plain) {   /* the default stage, with its per-frame tests made per triangle */
+            varyings_plain(s, b1, b2, var);
+            rgb = silk_phong_plain_fragment(s->plain, var);
+        } else
 #endif
-        rgb = h->fragment(h, var);
-        /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
-        if (rgb == SILK_FRAGMENT_DISCARD) return;
+        {
+            varyings(s, b1, b2, var);
+#ifndef SILK_NO_TEXTURE
+            if (h->footprint_var > 0 && h->footprint_var < s->nvar)
+                footprint(s, h->footprint_var - 1, U, V, T, b1, b2, var);
+#endif
+            rgb = h->fragment(h, var);
+            /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
+            if (rgb == SILK_FRAGMENT_DISCARD) return;
+        }
     }
     if (zrow) zrow[x] = z;
 #ifndef SILK_NO_VERTEX_CACHE
@@ -663,9 +683,9 @@ static int64_t orient(const svert *a, const svert *b, const svert *c)
  * at pixel 0 of row y, stepped from there row by row by additions only
  * (the same exact values as stepped from the triangle's first row).  Most
  * triangles of a fine mesh that reach a row cover no pixel centre at all. */
-static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
+static void tri_pixels(tri_setup *s, const silk_hal *h, int y, int64_t uvt[3])
 {
-    if (shading) {
+    if (h && h->fragment) {
         s->vnarrow = SILK_CPU32;
         for (int k = 0; k < s->nvar; k++) {
             const silk_fx *a0 = s->v[0]->var, *a1 = s->v[1]->var, *a2 = s->v[2]->var;
@@ -674,6 +694,9 @@ static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
             s->vd2[k] = (int64_t)a2[k] - a0[k];
             if (s->vd1[k] != (int32_t)s->vd1[k] || s->vd2[k] != (int32_t)s->vd2[k]) s->vnarrow = 0;
         }
+#ifndef SILK_NO_VERTEX_CACHE
+        s->plain = s->nvar == SILK_PHONG_PLAIN_NVAR ? silk_hal_phong_plain(h) : NULL;
+#endif
         silk_fx wmin = s->v[0]->w;
         for (int i = 1; i < 3; i++) if (s->v[i]->w < wmin) wmin = s->v[i]->w;
         for (int i = 0; i < 3; i++) {
@@ -742,10 +765,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     /* The weights and varyings only where fragments are shaded: a depth
      * pass needs the depth alone.  Both at the first pixel (tri_pixels):
      * until then the planes' steps are 0. */
-    const int shading = h && h->fragment;
     s.qn[0] = s.qn[1] = s.qn[2] = 0;
     s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
     s.affine = 0;
+#ifndef SILK_NO_VERTEX_CACHE
+    s.plain = NULL;
+#endif
     int ready = 0;
 
     /* Is the middle vertex right of the long edge o0 -> o2? */
@@ -765,7 +790,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             if (xl < 0) xl = 0;
             if (xr > t->width) xr = t->width;
             if (xl < xr) {
-                if (!ready) tri_pixels(&s, shading, y, uvt);
+                if (!ready) tri_pixels(&s, h, y, uvt);
                 ready = 1;
                 span(t, h, &s, y, xl, xr, uvt);
             }
