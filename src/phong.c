@@ -250,7 +250,11 @@ static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const i
         if (ndl <= 0) continue;
         if (ndl > SILK_FX_MAX) ndl = SILK_FX_MAX;
         int64_t rdv = ((2 * mul32(ndl, ndv)) >> 16) - (dot32(l, v) >> 16);
-        int64_t s = rdv > 0 ? pow_unit(rdv < SILK_FX_ONE ? rdv : SILK_FX_ONE, m->shininess) : 0;
+        int64_t s = 0;
+        if (plain && rdv <= SILK_FX_HALF && m->shininess > 16)
+            s = 0;   /* pow_unit's first test, without the call */
+        else if (rdv > 0)
+            s = pow_unit(rdv < SILK_FX_ONE ? rdv : SILK_FX_ONE, m->shininess);
         dr += mul32(ndl, li->color.x) >> 16;
         dg += mul32(ndl, li->color.y) >> 16;
         db += mul32(ndl, li->color.z) >> 16;

@@ -507,11 +507,18 @@ static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* varyings() of the default stage's usual case: a known count, no loop. */
+/* varyings() of the default stage's usual case: a known count, unrolled
+ * (a loop's counting costs as much as the interpolation). */
+static inline silk_fx varying(const tri_setup *s, int k, int64_t b1, int64_t b2)
+{
+    return (silk_fx)((s->vbase[k] + s->vd1[k] * b1 + s->vd2[k] * b2) >> 30);
+}
+
+_Static_assert(SILK_PHONG_PLAIN_NVAR == 6, "varyings_plain interpolates six varyings");
 static inline void varyings_plain(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
 {
-    const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
-    for (int k = 0; k < SILK_PHONG_PLAIN_NVAR; k++) var[k] = (silk_fx)((base[k] + d1[k] * b1 + d2[k] * b2) >> 30);
+    var[0] = varying(s, 0, b1, b2), var[1] = varying(s, 1, b1, b2), var[2] = varying(s, 2, b1, b2);
+    var[3] = varying(s, 3, b1, b2), var[4] = varying(s, 4, b1, b2), var[5] = varying(s, 5, b1, b2);
 }
 #endif
 
