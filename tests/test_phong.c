@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include "silk/silk.h"
 #include "support/scene.h"
+#include "../src/frame.h"   /* silk_hal_phong_plain */
 
 static silk_fx fxd(double v) { return (silk_fx)llround(v * 65536.0); }
 static double dfx(silk_fx v) { return v / 65536.0; }
@@ -463,6 +464,63 @@ TEST(fragment_extremes)
     CHECK(bad == 0);
 }
 
+/* The rasterizer's shortcut for the default stage's usual case gives
+ * h->fragment's bits: random scenes in and out of that case, varyings near
+ * the surface and anywhere (eye distances past silk_fx's range included). */
+TEST(plain_case_same_bits)
+{
+    int plain = 0, other = 0, bad_case = 0, bad_bits = 0;
+    for (int trial = 0; trial < 20000; trial++) {
+        silk_camera c = cam(trial % 5 == 0);
+        c.eye = trial % 7 == 0 ? rv3(-30000, 30000) : rv3(-6, 6);
+        silk_view v;
+        if (silk_view_init(&v, &c, NULL) != SILK_OK) continue;
+        silk_phong p;
+        silk_phong_default(&p, &v);
+        if (trial % 2) {
+            p.nlights = trial % 11 == 0 ? 1 + (int)(check_rand64() % SILK_MAX_LIGHTS) : 2;
+            for (int i = 0; i < p.nlights; i++) {
+                p.lights[i].kind = check_rand64() % 8 == 0 ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
+                p.lights[i].vec = p.lights[i].kind == SILK_LIGHT_POINT ? rv3(-10, 10) : runit();
+                p.lights[i].color = rv3(0, trial % 13 == 0 ? 20 : 1);
+            }
+            p.mat.color = rv3(0, 1);
+            p.mat.ambient = fxd(check_uniform(0, 0.3));
+            p.mat.diffuse = fxd(check_uniform(0, trial % 17 == 0 ? 20 : 1));
+            p.mat.specular = fxd(check_uniform(0, 1));
+            p.mat.shininess = 1 + (int)(check_rand64() % 256);
+            p.mat.specular_color = rv3(0, 1);
+            p.two_sided = (int)(check_rand64() & 1);
+        }
+        silk_hal h;
+        silk_hal_phong(&h, &p);
+        int want = !c.ortho && p.nlights == 2 && p.lights[0].kind == SILK_LIGHT_DIRECTIONAL &&
+                   p.lights[1].kind == SILK_LIGHT_DIRECTIONAL && p.mat.diffuse < 16 * SILK_FX_ONE;
+        const silk_phong *q = silk_hal_phong_plain(&h);
+        bad_case += (q != NULL) != want || (q && q != &p);
+        if (!q) {
+            other++;
+            continue;
+        }
+        plain++;
+        for (int i = 0; i < 8; i++) {
+            silk_fx var[8];
+            if (i < 6) {
+                silk_vec3 pos = rv3(-2, 2), n = silk_v3_scale(runit(), fxd(check_uniform(0.6, 1.0)));
+                silk_fx vv[8] = { pos.x, pos.y, pos.z, n.x, n.y, n.z, 0, 0 };
+                memcpy(var, vv, sizeof vv);
+            } else {
+                for (int k = 0; k < 8; k++) var[k] = check_rand64() & 1 ? (silk_fx)(uint32_t)check_rand64() : 0;
+            }
+            bad_bits += silk_phong_plain_fragment(q, var) != h.fragment(&h, var);
+        }
+    }
+    printf("  plain case: %d scenes in it, %d not\n", plain, other);
+    CHECK(plain > 1000 && other > 1000);
+    CHECK(bad_case == 0);
+    CHECK(bad_bits == 0);
+}
+
 TEST(two_sided_and_saturation)
 {
     silk_camera c = cam(1);
@@ -551,6 +609,7 @@ int main(void)
     RUN(fragment_vs_double);
     RUN(fragment_on_meshes);
     RUN(fragment_extremes);
+    RUN(plain_case_same_bits);
     RUN(two_sided_and_saturation);
     RUN(default_lighting);
     return check_done();

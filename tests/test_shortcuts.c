@@ -6,9 +6,11 @@
  * once per frame instead of once per triangle (the vertex cache), and on a
  * closed, outward-wound mesh seen from outside it skips the triangles seen
  * from behind in FLAT mode and SMOOTH's re-meshed parts seen wholly from
- * behind (render.c, back_faces_hidden, part_faces_away).  A vertex stage of
- * the caller's own takes neither shortcut, so the same default stage behind
- * a wrapper draws the reference.  Shared meshes from views all round, near
+ * behind (render.c, back_faces_hidden, part_faces_away); and on a 64-bit
+ * host the rasterizer shades the default fragment stage's usual case
+ * without its per-pixel tests (silk_hal_phong_plain).  Stages of the
+ * caller's own take none of these shortcuts, so the same default stages
+ * behind wrappers draw the reference.  Shared meshes from views all round, near
  * and far, perspective and orthographic, FLAT and SMOOTH, whole frames and
  * bands; the arena left for the cache from nothing to plenty; the
  * anti-aliased outline with and without its shortcuts (the facing memo, a
@@ -32,11 +34,17 @@
 static uint8_t *arena_buf;
 
 static void (*default_vertex)(const silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
+static uint32_t (*default_fragment)(const silk_hal *h, const silk_fx *var);
 
 /* The default stage, but not known to be: no shortcut applies. */
 static void wrapped_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec *r, silk_vertex_out *out)
 {
     default_vertex(h, g, r, out);
+}
+
+static uint32_t wrapped_fragment(const silk_hal *h, const silk_fx *var)
+{
+    return default_fragment(h, var);
 }
 
 /* One frame into rgb (W x H x 3) in bands of `rows`, with the default
@@ -51,7 +59,8 @@ static int draw_with(silk_arena *a, const silk_mesh *m, const silk_view *v, silk
     silk_phong_default(&ph, v);
     silk_hal_phong(&hal, &ph);
     default_vertex = hal.vertex;
-    if (plain) hal.vertex = wrapped_vertex;
+    default_fragment = hal.fragment;
+    if (plain) hal.vertex = wrapped_vertex, hal.fragment = wrapped_fragment;
     silk_render_opts o;
     silk_render_opts_default(&o);
     o.mode = mode;
