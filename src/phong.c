@@ -186,6 +186,52 @@ uint32_t silk_hal_phong_tinted(const silk_hal *h, const silk_fx *var, uint32_t r
     return shade(p, var, base);
 }
 
+/* silk_v3_sub(eye, position var[0..2]), the same bits, without the
+ * saturation where the differences are within [-2^30, 2^30), as a
+ * camera's always are. */
+static inline silk_vec3 eye_minus(silk_vec3 eye, const silk_fx *var)
+{
+    int64_t dx = (int64_t)eye.x - var[VAR_POS], dy = (int64_t)eye.y - var[VAR_POS + 1],
+            dz = (int64_t)eye.z - var[VAR_POS + 2];
+    const int64_t q = (int64_t)1 << 30;
+    if (((uint64_t)(dx + q) | (uint64_t)(dy + q) | (uint64_t)(dz + q)) >> 31 == 0)
+        return silk_v3((silk_fx)dx, (silk_fx)dy, (silk_fx)dz);
+    return silk_v3_sub(eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
+}
+
+/* Light li's diffuse and specular parts at a pixel (position var[0..2],
+ * unit normal n and view vector v, N.V = ndv), added to the sums of
+ * diffuse (dr, dg, db) and specular (sr, sg, sb) light; plain as for
+ * shade_in. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void light_in(const silk_phong *p, const silk_light *li, const silk_fx *var, const ucomp *n,
+                            const ucomp *v, int64_t ndv, int64_t *dr, int64_t *dg, int64_t *db, int64_t *sr,
+                            int64_t *sg, int64_t *sb, int plain)
+{
+    const silk_material *m = &p->mat;
+    ucomp l[3] = { li->vec.x, li->vec.y, li->vec.z };
+    if (!plain && li->kind == SILK_LIGHT_POINT) {
+        silk_vec3 dl = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
+        if (!unit_fx(dl.x, dl.y, dl.z, l)) return;
+    }
+    int64_t ndl = (dot32(n, l) + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
+    if (ndl <= 0) return;
+    if (ndl > SILK_FX_MAX) ndl = SILK_FX_MAX;
+    int64_t rdv = ((2 * mul32(ndl, ndv)) >> 16) - (dot32(l, v) >> 16);
+    /* plain: pow_unit's first test without the call */
+    int64_t s = rdv > 0 && !(plain && rdv <= SILK_FX_HALF && m->shininess > 16)
+                    ? pow_unit(rdv < SILK_FX_ONE ? rdv : SILK_FX_ONE, m->shininess) : 0;
+    *dr += mul32(ndl, li->color.x) >> 16;
+    *dg += mul32(ndl, li->color.y) >> 16;
+    *db += mul32(ndl, li->color.z) >> 16;
+    if (!s) return;   /* most pixels are outside the highlight (pow_unit) */
+    *sr += mul32(s, li->color.x) >> 16;
+    *sg += mul32(s, li->color.y) >> 16;
+    *sb += mul32(s, li->color.z) >> 16;
+}
+
 /* Phong at position and normal var[0..5] with ambient and diffuse colour base. */
 static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base)
 {
@@ -203,15 +249,8 @@ static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const i
     const silk_material *m = &p->mat;
     ucomp v[3], n[3];                    /* unit vectors: components within +-2^16 (and a little) */
     if (plain || (p->view && !p->view->cam.ortho)) {
-        silk_vec3 d;
-        const silk_vec3 eye = p->view->cam.eye;
-        int64_t dx = (int64_t)eye.x - var[VAR_POS], dy = (int64_t)eye.y - var[VAR_POS + 1],
-                dz = (int64_t)eye.z - var[VAR_POS + 2];
-        const int64_t q = (int64_t)1 << 30;   /* all within [-2^30, 2^30): silk_v3_sub's bits, unsaturated */
-        if (plain && ((uint64_t)(dx + q) | (uint64_t)(dy + q) | (uint64_t)(dz + q)) >> 31 == 0)
-            d = silk_v3((silk_fx)dx, (silk_fx)dy, (silk_fx)dz);
-        else
-            d = silk_v3_sub(eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
+        silk_vec3 d = plain ? eye_minus(p->view->cam.eye, var)
+                            : silk_v3_sub(p->view->cam.eye, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
         if (!unit_fx(d.x, d.y, d.z, v)) {
             v[0] = -p->view->forward.x, v[1] = -p->view->forward.y, v[2] = -p->view->forward.z;
         }
@@ -238,30 +277,12 @@ static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const i
 
     /* light reaching the surface, per channel: diffuse and specular parts */
     int64_t dr = 0, dg = 0, db = 0, sr = 0, sg = 0, sb = 0;
-    int nl = plain ? 2 : (p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights));
-    for (int i = 0; i < nl; i++) {
-        const silk_light *li = &p->lights[i];
-        ucomp l[3] = { li->vec.x, li->vec.y, li->vec.z };
-        if (!plain && li->kind == SILK_LIGHT_POINT) {
-            silk_vec3 d = silk_v3_sub(li->vec, silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]));
-            if (!unit_fx(d.x, d.y, d.z, l)) continue;
-        }
-        int64_t ndl = (dot32(n, l) + SILK_FX_HALF) >> 16;   /* |N| = 1, |l_i| < 2^31 */
-        if (ndl <= 0) continue;
-        if (ndl > SILK_FX_MAX) ndl = SILK_FX_MAX;
-        int64_t rdv = ((2 * mul32(ndl, ndv)) >> 16) - (dot32(l, v) >> 16);
-        int64_t s = 0;
-        if (plain && rdv <= SILK_FX_HALF && m->shininess > 16)
-            s = 0;   /* pow_unit's first test, without the call */
-        else if (rdv > 0)
-            s = pow_unit(rdv < SILK_FX_ONE ? rdv : SILK_FX_ONE, m->shininess);
-        dr += mul32(ndl, li->color.x) >> 16;
-        dg += mul32(ndl, li->color.y) >> 16;
-        db += mul32(ndl, li->color.z) >> 16;
-        if (!s) continue;   /* most pixels are outside the highlight (pow_unit) */
-        sr += mul32(s, li->color.x) >> 16;
-        sg += mul32(s, li->color.y) >> 16;
-        sb += mul32(s, li->color.z) >> 16;
+    if (plain) {   /* two lights: no loop */
+        light_in(p, &p->lights[0], var, n, v, ndv, &dr, &dg, &db, &sr, &sg, &sb, plain);
+        light_in(p, &p->lights[1], var, n, v, ndv, &dr, &dg, &db, &sr, &sg, &sb, plain);
+    } else {
+        int nl = p->nlights < 0 ? 0 : (p->nlights > SILK_MAX_LIGHTS ? SILK_MAX_LIGHTS : p->nlights);
+        for (int i = 0; i < nl; i++) light_in(p, &p->lights[i], var, n, v, ndv, &dr, &dg, &db, &sr, &sg, &sb, plain);
     }
 
     int64_t spec = m->specular;
@@ -269,10 +290,9 @@ static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const i
      * then every product has factors below 2^21, no sum can leave the
      * range, and only the final clamp to 1 remains.  The material terms
      * and base are silk_fx values, so their low 32 bits tell. */
-    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb);
-    if (!plain)
-        all |= (uint32_t)(spec | m->ambient | m->diffuse | base[0] | base[1] | base[2] | m->specular_color.x |
-                          m->specular_color.y | m->specular_color.z);
+    uint64_t all = (uint64_t)(dr | dg | db | sr | sg | sb) |
+                   (plain ? 0u : (uint32_t)(spec | m->ambient | m->diffuse | base[0] | base[1] | base[2] |
+                                            m->specular_color.x | m->specular_color.y | m->specular_color.z));
     if (all < ((uint64_t)1 << 20)) {
         /* every sum below is under 2^30: 32-bit arithmetic */
         int32_t amb = m->ambient, dif = m->diffuse, hr = 0, hg = 0, hb = 0;

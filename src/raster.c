@@ -147,7 +147,15 @@ static int band_rows(const silk_target *t, int *lo, int *hi)
 /* x / 255 for x < 65535, without a division (stores run once per pixel) */
 static uint32_t div255(uint32_t x) { return (x + 1 + (x >> 8)) >> 8; }
 
-static void store(const silk_target *t, uint8_t *p, uint32_t rgb)
+/* Per shaded pixel on a 64-bit host: inline there (a call costs as much as
+ * the work); a 32-bit processor keeps one copy of each. */
+#if !SILK_CPU32 && defined(__GNUC__)
+#define PIXEL_INLINE __attribute__((always_inline)) inline
+#else
+#define PIXEL_INLINE
+#endif
+
+static PIXEL_INLINE void store(const silk_target *t, uint8_t *p, uint32_t rgb)
 {
     uint32_t r = (rgb >> 16) & 255, g = (rgb >> 8) & 255, b = rgb & 255;
     if (t->fmt == SILK_PIX_RGB565) {
@@ -429,7 +437,7 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
 }
 
 /* Perspective-correct weights at the pixel whose planes are U, V, T. */
-static void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
+static PIXEL_INLINE void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
 {
     if (s->affine) {
         *b1 = mul_shr31(U >> s->aff_shift, s->aff_inv);
@@ -690,9 +698,9 @@ static int64_t orient(const svert *a, const svert *b, const svert *c)
  * at pixel 0 of row y, stepped from there row by row by additions only
  * (the same exact values as stepped from the triangle's first row).  Most
  * triangles of a fine mesh that reach a row cover no pixel centre at all. */
-static void tri_pixels(tri_setup *s, const silk_hal *h, int y, int64_t uvt[3])
+static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
 {
-    if (h && h->fragment) {
+    if (shading) {
         s->vnarrow = SILK_CPU32;
         for (int k = 0; k < s->nvar; k++) {
             const silk_fx *a0 = s->v[0]->var, *a1 = s->v[1]->var, *a2 = s->v[2]->var;
@@ -701,9 +709,6 @@ static void tri_pixels(tri_setup *s, const silk_hal *h, int y, int64_t uvt[3])
             s->vd2[k] = (int64_t)a2[k] - a0[k];
             if (s->vd1[k] != (int32_t)s->vd1[k] || s->vd2[k] != (int32_t)s->vd2[k]) s->vnarrow = 0;
         }
-#ifndef SILK_NO_VERTEX_CACHE
-        s->plain = s->nvar == SILK_PHONG_PLAIN_NVAR ? silk_hal_phong_plain(h) : NULL;
-#endif
         silk_fx wmin = s->v[0]->w;
         for (int i = 1; i < 3; i++) if (s->v[i]->w < wmin) wmin = s->v[i]->w;
         for (int i = 0; i < 3; i++) {
@@ -772,6 +777,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     /* The weights and varyings only where fragments are shaded: a depth
      * pass needs the depth alone.  Both at the first pixel (tri_pixels):
      * until then the planes' steps are 0. */
+    const int shading = h && h->fragment;
     s.qn[0] = s.qn[1] = s.qn[2] = 0;
     s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
     s.affine = 0;
@@ -797,7 +803,12 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             if (xl < 0) xl = 0;
             if (xr > t->width) xr = t->width;
             if (xl < xr) {
-                if (!ready) tri_pixels(&s, h, y, uvt);
+                if (!ready) {
+                    tri_pixels(&s, shading, y, uvt);
+#ifndef SILK_NO_VERTEX_CACHE
+                    if (shading && s.nvar == SILK_PHONG_PLAIN_NVAR) s.plain = silk_hal_phong_plain(h);
+#endif
+                }
                 ready = 1;
                 span(t, h, &s, y, xl, xr, uvt);
             }
