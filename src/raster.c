@@ -555,8 +555,9 @@ __attribute__((noinline))
 static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 {
     const silk_hal *h = c->h;
+    const int shading = h && h->fragment;   /* read once: the stage's call may not change it */
     uint32_t rgb = SILK_FRAGMENT_DISCARD;
-    if (h && h->fragment) {
+    if (shading) {
         const tri_setup *s = c->s;
         int64_t U = c->uvt[0] + x * s->du, V = c->uvt[1] + x * s->dv, T = c->uvt[2] + x * s->dt;
         silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
@@ -584,7 +585,7 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
     c->t->drew = 1;
 #endif
     if (c->wrow) c->wrow[x]++;
-    if (c->crow && h && h->fragment) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
+    if (c->crow && shading) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
 }
 
 static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
