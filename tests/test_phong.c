@@ -309,6 +309,25 @@ static int chan_diff(uint32_t a, uint32_t b)
     return d;
 }
 
+/* nlights random lights (one in point_in a point light, colours up to
+ * cmax) and a random material (diffuse up to dmax), one- or two-sided. */
+static void random_lighting(silk_phong *p, int nlights, unsigned point_in, double cmax, double dmax)
+{
+    p->nlights = nlights;
+    for (int i = 0; i < p->nlights; i++) {
+        p->lights[i].kind = check_rand64() % point_in == point_in - 1 ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
+        p->lights[i].vec = p->lights[i].kind == SILK_LIGHT_POINT ? rv3(-10, 10) : runit();
+        p->lights[i].color = rv3(0, cmax);
+    }
+    p->mat.color = rv3(0, 1);
+    p->mat.ambient = fxd(check_uniform(0, 0.3));
+    p->mat.diffuse = fxd(check_uniform(0, dmax));
+    p->mat.specular = fxd(check_uniform(0, 1));
+    p->mat.shininess = 1 + (int)(check_rand64() % 256);
+    p->mat.specular_color = rv3(0, 1);
+    p->two_sided = (int)(check_rand64() & 1);
+}
+
 TEST(fragment_vs_double)
 {
     int worst = 0, hist[4] = { 0, 0, 0, 0 };
@@ -321,19 +340,7 @@ TEST(fragment_vs_double)
         silk_phong_default(&p, &v);
         if (trial % 3) {
             /* random lights and material */
-            p.nlights = 1 + (int)(check_rand64() % SILK_MAX_LIGHTS);
-            for (int i = 0; i < p.nlights; i++) {
-                p.lights[i].kind = check_rand64() & 1 ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
-                p.lights[i].vec = p.lights[i].kind == SILK_LIGHT_POINT ? rv3(-10, 10) : runit();
-                p.lights[i].color = rv3(0, 1);
-            }
-            p.mat.color = rv3(0, 1);
-            p.mat.ambient = fxd(check_uniform(0, 0.3));
-            p.mat.diffuse = fxd(check_uniform(0, 1));
-            p.mat.specular = fxd(check_uniform(0, 1));
-            p.mat.shininess = 1 + (int)(check_rand64() % 256);
-            p.mat.specular_color = rv3(0, 1);
-            p.two_sided = (int)(check_rand64() & 1);
+            random_lighting(&p, 1 + (int)(check_rand64() % SILK_MAX_LIGHTS), 2, 1, 1);
         }
         silk_hal h;
         silk_hal_phong(&h, &p);
@@ -478,19 +485,8 @@ TEST(plain_case_same_bits)
         silk_phong p;
         silk_phong_default(&p, &v);
         if (trial % 2) {
-            p.nlights = trial % 11 == 0 ? 1 + (int)(check_rand64() % SILK_MAX_LIGHTS) : 2;
-            for (int i = 0; i < p.nlights; i++) {
-                p.lights[i].kind = check_rand64() % 8 == 0 ? SILK_LIGHT_POINT : SILK_LIGHT_DIRECTIONAL;
-                p.lights[i].vec = p.lights[i].kind == SILK_LIGHT_POINT ? rv3(-10, 10) : runit();
-                p.lights[i].color = rv3(0, trial % 13 == 0 ? 20 : 1);
-            }
-            p.mat.color = rv3(0, 1);
-            p.mat.ambient = fxd(check_uniform(0, 0.3));
-            p.mat.diffuse = fxd(check_uniform(0, trial % 17 == 0 ? 20 : 1));
-            p.mat.specular = fxd(check_uniform(0, 1));
-            p.mat.shininess = 1 + (int)(check_rand64() % 256);
-            p.mat.specular_color = rv3(0, 1);
-            p.two_sided = (int)(check_rand64() & 1);
+            random_lighting(&p, trial % 11 == 0 ? 1 + (int)(check_rand64() % SILK_MAX_LIGHTS) : 2, 8,
+                            trial % 13 == 0 ? 20 : 1, trial % 17 == 0 ? 20 : 1);
         }
         silk_hal h;
         silk_hal_phong(&h, &p);
