@@ -555,7 +555,11 @@ __attribute__((noinline))
 static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 {
     const silk_hal *h = c->h;
+#if !SILK_CPU32
     const int shading = h && h->fragment;   /* read once: the stage's call may not change it */
+#else
+#define shading (h && h->fragment)   /* read again after the call: fewer registers held across it */
+#endif
     uint32_t rgb = SILK_FRAGMENT_DISCARD;
     if (shading) {
         const tri_setup *s = c->s;
@@ -586,6 +590,7 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 #endif
     if (c->wrow) c->wrow[x]++;
     if (c->crow && shading) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
+#undef shading
 }
 
 static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
