@@ -196,7 +196,8 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
     silk_arena *a = f->a;
     size_t free0 = silk_arena_free_bytes(a),
            want = 2 * (size_t)f->nedges * sizeof(silk_vec3) + (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri) +
-                  3 * SILK_ARENA_ALIGN;
+                  3 * SILK_ARENA_ALIGN,
+           pairs = (size_t)f->npairs * (2 * sizeof *f->pair_pn + 1) + 2 * SILK_ARENA_ALIGN;
     if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
     f->seg_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);   /* written as made */
@@ -204,6 +205,11 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
     if (!f->seg_kept || !f->seg_tri || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
         f->seg_kept = NULL;
         f->seg_tri = NULL;
+    } else if (f->npairs && want + pairs <= room && silk_sil_keep_fits(want + pairs, free0)) {
+        /* the silhouette points, each made once for the two segments that end on it */
+        f->pair_pn = silk_arena_array_top_unfilled(a, 2 * (size_t)f->npairs, sizeof *f->pair_pn, SILK_MEM_FRAME);
+        f->pair_ready = silk_arena_array_top(a, f->npairs, 1, SILK_MEM_FRAME);   /* zeroed: none made */
+        if (!f->pair_ready) f->pair_pn = NULL;
     }
     f->nseg_kept = 0;
     silk_sil_kept(f, free0, peak);
@@ -232,8 +238,13 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     memset(s, 0, sizeof *s);
     s->tri = t;
     silk_vec3 A, B, nA, nB;
+#ifndef SILK_NO_VERTEX_CACHE
+    silk_sil_pair_point(f, ea, &sa, pa, &A, &nA, &s->c.uv0, &s->c.rgb0);
+    silk_sil_pair_point(f, eb, &sb, pb, &B, &nB, &s->c.uv1, &s->c.rgb1);
+#else
     silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0, &s->c.rgb0);
     silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1, &s->c.rgb1);
+#endif
     silk_bridge(A, nA, B, nB, &s->c);
     s->c.p0 = A;
     s->c.p1 = B;
