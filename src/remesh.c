@@ -140,7 +140,8 @@ typedef struct tri_count {
     uint32_t tris, recs, curves, poly;
 } tri_count;
 
-static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, tri_count *c)
+/* seg: t's segment, or NULL; l its layout (with seg only) */
+static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, const sil_layout *lp, tri_count *c)
 {
     uint32_t sum = 0, nchained = 0;
     for (uint32_t k = 0; k < 3; k++) {
@@ -153,8 +154,7 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     c->recs = 3 + sum;
     c->curves = nchained;
     if (seg) {
-        sil_layout l;
-        layout(f, t, &l);
+        sil_layout l = *lp;
         uint32_t n = seg->n;
         c->recs += n - 1;
         c->curves++;
@@ -195,16 +195,18 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
 {
     silk_arena *a = f->a;
     size_t free0 = silk_arena_free_bytes(a),
-           want = 2 * (size_t)f->nedges * sizeof(silk_vec3) + (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri) +
-                  3 * SILK_ARENA_ALIGN,
+           want = 2 * (size_t)f->nedges * sizeof(silk_vec3) +
+                  (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri + sizeof *f->lay_kept) + 4 * SILK_ARENA_ALIGN,
            pairs = (size_t)f->npairs * (2 * sizeof *f->pair_pn + 1) + 2 * SILK_ARENA_ALIGN;
     if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
     f->seg_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);   /* written as made */
     f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
-    if (!f->seg_kept || !f->seg_tri || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
+    f->lay_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->lay_kept, SILK_MEM_FRAME);   /* with seg_kept */
+    if (!f->seg_kept || !f->seg_tri || !f->lay_kept || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
         f->seg_kept = NULL;
         f->seg_tri = NULL;
+        f->lay_kept = NULL;
     } else if (f->npairs && want + pairs <= room && silk_sil_keep_fits(want + pairs, free0)) {
         /* the silhouette points, each made once for the two segments that end on it */
         f->pair_pn = silk_arena_array_top_unfilled(a, 2 * (size_t)f->npairs, sizeof *f->pair_pn, SILK_MEM_FRAME);
@@ -299,9 +301,12 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
 #endif
         }
         tri_count tc;
-        tri_cost(f, t, s, &tc);
+        sil_layout l;
+        if (s) layout(f, t, &l);
+        tri_cost(f, t, s, &l, &tc);
 #ifndef SILK_NO_VERTEX_CACHE
         if (s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t) {
+            f->lay_kept[f->nseg_kept - 1] = l;
             f->kept_recs += tc.recs;
             f->kept_tris += tc.tris;
             f->kept_curves += tc.curves;
@@ -481,14 +486,14 @@ static void fan_closed(silk_frame_geom *g, uint32_t apex, const uint32_t *cyc, u
     for (uint32_t j = 0; j < n; j++) put_tri(g, apex, cyc[j], cyc[(j + 1) % n], 1);
 }
 
-/* Fig. 11: the silhouette triangle cut by its segment. */
-static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s)
+/* Fig. 11: the silhouette triangle cut by its segment s, laid out as lp says. */
+static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s,
+                            const sil_layout *lp)
 {
     const silk_mesh *m = f->m;
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     uint32_t *cyc = f->poly, *list = f->poly + f->max_poly;
-    sil_layout l;
-    layout(f, t, &l);
+    sil_layout l = *lp;
     walk_boundary(f, g, t, cyc);
 
     /* the segment: interior samples as records on its own curve */
@@ -567,9 +572,20 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         return;
     }
 #endif
-    if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &seg)) {
-        emit_silhouette(f, g, t, &seg);     /* Fig. 11 */
-        return;
+    if (f->tri_state[t] & SILK_TS_SIL) {
+#ifndef SILK_NO_VERTEX_CACHE
+        uint32_t i = silk_remesh_kept_index(f, t);   /* as the plan made it and laid it out */
+        if (i != SILK_SIL_NONE) {
+            emit_silhouette(f, g, t, &f->seg_kept[i], &f->lay_kept[i]);   /* Fig. 11 */
+            return;
+        }
+#endif
+        if (silk_remesh_seg(f, t, &seg)) {
+            sil_layout l;
+            layout(f, t, &l);
+            emit_silhouette(f, g, t, &seg, &l);     /* Fig. 11 */
+            return;
+        }
     }
     uint32_t nchained = 0;
 #ifndef SILK_NO_VERTEX_CACHE   /* (the same shortcut) */
