@@ -140,8 +140,8 @@ typedef struct tri_count {
     uint32_t tris, recs, curves, poly;
 } tri_count;
 
-/* seg: t's segment, or NULL; l its layout (with seg only) */
-static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, const sil_layout *lp, tri_count *c)
+/* seg: t's segment, or NULL; its layout also to *lk unless lk is NULL */
+static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, sil_layout *lk, tri_count *c)
 {
     uint32_t sum = 0, nchained = 0;
     for (uint32_t k = 0; k < 3; k++) {
@@ -154,7 +154,13 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     c->recs = 3 + sum;
     c->curves = nchained;
     if (seg) {
-        sil_layout l = *lp;
+        sil_layout l;
+        layout(f, t, &l);
+#ifndef SILK_NO_VERTEX_CACHE
+        if (lk) *lk = l;
+#else
+        (void)lk;
+#endif
         uint32_t n = seg->n;
         c->recs += n - 1;
         c->curves++;
@@ -301,16 +307,16 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
 #endif
         }
         tri_count tc;
-        sil_layout l;
-        if (s) layout(f, t, &l);
-        tri_cost(f, t, s, &l, &tc);
 #ifndef SILK_NO_VERTEX_CACHE
-        if (s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t) {
-            f->lay_kept[f->nseg_kept - 1] = l;
+        int kept = s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t;
+        tri_cost(f, t, s, kept ? &f->lay_kept[f->nseg_kept - 1] : NULL, &tc);
+        if (kept) {
             f->kept_recs += tc.recs;
             f->kept_tris += tc.tris;
             f->kept_curves += tc.curves;
         }
+#else
+        tri_cost(f, t, s, NULL, &tc);
 #endif
         f->store_recs += tc.recs;
         f->store_curves += tc.curves;
@@ -486,14 +492,22 @@ static void fan_closed(silk_frame_geom *g, uint32_t apex, const uint32_t *cyc, u
     for (uint32_t j = 0; j < n; j++) put_tri(g, apex, cyc[j], cyc[(j + 1) % n], 1);
 }
 
-/* Fig. 11: the silhouette triangle cut by its segment s, laid out as lp says. */
+/* Fig. 11: the silhouette triangle cut by its segment s, laid out as lp
+ * says (NULL: laid out here). */
 static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s,
                             const sil_layout *lp)
 {
     const silk_mesh *m = f->m;
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     uint32_t *cyc = f->poly, *list = f->poly + f->max_poly;
-    sil_layout l = *lp;
+    sil_layout l;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (lp) l = *lp;
+    else
+#else
+    (void)lp;
+#endif
+        layout(f, t, &l);
     walk_boundary(f, g, t, cyc);
 
     /* the segment: interior samples as records on its own curve */
@@ -581,9 +595,7 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         }
 #endif
         if (silk_remesh_seg(f, t, &seg)) {
-            sil_layout l;
-            layout(f, t, &l);
-            emit_silhouette(f, g, t, &seg, &l);     /* Fig. 11 */
+            emit_silhouette(f, g, t, &seg, NULL);     /* Fig. 11 */
             return;
         }
     }

@@ -126,11 +126,14 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
     return 1;
 }
 
-/* The point at u on edge e and its normal, as side s sees the edge. */
-static void edge_point_pn(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s, silk_fx u,
-                          silk_vec3 *p, silk_vec3 *n)
+/* The point at u on edge e and its normal, as side s sees the edge.  (It
+ * and edge_point_attrs inline: a board has silk_sil_edge_point alone.) */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void edge_point_pn(const silk_sil_frame *f, const silk_mesh *m, const silk_sil_edge *e,
+                                 const silk_sil_side *s, silk_fx u, silk_vec3 *p, silk_vec3 *n)
 {
-    const silk_mesh *m = f->m;
     silk_curve c;
     silk_sil_edge_curve(f, e, &c);
     *p = silk_hermite_point(&c, u);
@@ -140,8 +143,11 @@ static void edge_point_pn(const silk_sil_frame *f, const silk_sil_edge *e, const
 }
 
 /* The uv and colour at u on edge e, as side s sees the edge. */
-static void edge_point_attrs(const silk_mesh *m, const silk_sil_edge *e, const silk_sil_side *s, silk_fx u,
-                             silk_vec2 *uv, uint32_t *rgb)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void edge_point_attrs(const silk_mesh *m, const silk_sil_edge *e, const silk_sil_side *s, silk_fx u,
+                                    silk_vec2 *uv, uint32_t *rgb)
 {
     if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
         silk_vec2 a = m->uv[s->uv0], b = m->uv[s->uv1];
@@ -156,8 +162,9 @@ static void edge_point_attrs(const silk_mesh *m, const silk_sil_edge *e, const s
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
-    edge_point_pn(f, e, s, u, p, n);
-    edge_point_attrs(f->m, e, s, u, uv, rgb);
+    const silk_mesh *m = f->m;
+    edge_point_pn(f, m, e, s, u, p, n);
+    edge_point_attrs(m, e, s, u, uv, rgb);
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
@@ -166,12 +173,12 @@ void silk_sil_pair_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
 {
     size_t i = (size_t)(pr - f->pairs);
     if (!f->pair_pn) {
-        edge_point_pn(f, e, s, pr->u, p, n);
+        edge_point_pn(f, f->m, e, s, pr->u, p, n);
     } else {
         /* the pair's normals are the side's (side_pair matched them) */
         silk_sil_frame *memo = (silk_sil_frame *)f;
         if (!f->pair_ready[i]) {
-            edge_point_pn(f, e, s, pr->u, &memo->pair_pn[2 * i], &memo->pair_pn[2 * i + 1]);
+            edge_point_pn(f, f->m, e, s, pr->u, &memo->pair_pn[2 * i], &memo->pair_pn[2 * i + 1]);
             memo->pair_ready[i] = 1;
         }
         *p = f->pair_pn[2 * i];
