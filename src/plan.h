@@ -165,6 +165,11 @@ typedef struct silk_sil_frame {
     silk_sil_seg *seg_kept;
     uint32_t *seg_tri;
     uint32_t nseg_kept;
+    struct sil_layout *lay_kept;   /* with them: where their points lie on their triangle's boundary (remesh.c) */
+    /* with the segments: each silhouette point's position and normal, 2
+     * per pair, once pair_ready[i] (silk_sil_pair_point) */
+    silk_vec3 *pair_pn;
+    uint8_t *pair_ready;
     size_t kept_bytes, kept_need, keep_room;
     uint64_t kept_recs, kept_tris, kept_curves;   /* what the kept segments' shares hold in all */
 #endif
@@ -207,6 +212,14 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room);
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */
+#ifndef SILK_NO_VERTEX_CACHE
+/* silk_sil_edge_point at the silhouette point of pair pr (side s's, on
+ * edge e): its position and normal, the same for both sides that share
+ * the point, made once a frame where kept (pair_pn), its uv and colour
+ * the side's. */
+void silk_sil_pair_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
+                         const silk_sil_pair *pr, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb);
+#endif
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb);
 /* Vertex colour at parameter u along mesh edge e (white without colours). */

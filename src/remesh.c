@@ -140,7 +140,8 @@ typedef struct tri_count {
     uint32_t tris, recs, curves, poly;
 } tri_count;
 
-static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, tri_count *c)
+/* seg: t's segment, or NULL; its layout also to *lk unless lk is NULL */
+static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *seg, sil_layout *lk, tri_count *c)
 {
     uint32_t sum = 0, nchained = 0;
     for (uint32_t k = 0; k < 3; k++) {
@@ -155,6 +156,11 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     if (seg) {
         sil_layout l;
         layout(f, t, &l);
+#ifndef SILK_NO_VERTEX_CACHE
+        if (lk) *lk = l;
+#else
+        (void)lk;
+#endif
         uint32_t n = seg->n;
         c->recs += n - 1;
         c->curves++;
@@ -195,15 +201,23 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
 {
     silk_arena *a = f->a;
     size_t free0 = silk_arena_free_bytes(a),
-           want = 2 * (size_t)f->nedges * sizeof(silk_vec3) + (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri) +
-                  3 * SILK_ARENA_ALIGN;
+           want = 2 * (size_t)f->nedges * sizeof(silk_vec3) +
+                  (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri + sizeof *f->lay_kept) + 4 * SILK_ARENA_ALIGN,
+           pairs = (size_t)f->npairs * (2 * sizeof *f->pair_pn + 1) + 2 * SILK_ARENA_ALIGN;
     if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
     f->seg_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);   /* written as made */
     f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
-    if (!f->seg_kept || !f->seg_tri || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
+    f->lay_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->lay_kept, SILK_MEM_FRAME);   /* with seg_kept */
+    if (!f->seg_kept || !f->seg_tri || !f->lay_kept || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
         f->seg_kept = NULL;
         f->seg_tri = NULL;
+        f->lay_kept = NULL;
+    } else if (f->npairs && want + pairs <= room && silk_sil_keep_fits(want + pairs, free0)) {
+        /* the silhouette points, each made once for the two segments that end on it */
+        f->pair_pn = silk_arena_array_top_unfilled(a, 2 * (size_t)f->npairs, sizeof *f->pair_pn, SILK_MEM_FRAME);
+        f->pair_ready = silk_arena_array_top(a, f->npairs, 1, SILK_MEM_FRAME);   /* zeroed: none made */
+        if (!f->pair_ready) f->pair_pn = NULL;
     }
     f->nseg_kept = 0;
     silk_sil_kept(f, free0, peak);
@@ -232,8 +246,13 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     memset(s, 0, sizeof *s);
     s->tri = t;
     silk_vec3 A, B, nA, nB;
+#ifndef SILK_NO_VERTEX_CACHE
+    silk_sil_pair_point(f, ea, &sa, pa, &A, &nA, &s->c.uv0, &s->c.rgb0);
+    silk_sil_pair_point(f, eb, &sb, pb, &B, &nB, &s->c.uv1, &s->c.rgb1);
+#else
     silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0, &s->c.rgb0);
     silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1, &s->c.rgb1);
+#endif
     silk_bridge(A, nA, B, nB, &s->c);
     s->c.p0 = A;
     s->c.p1 = B;
@@ -288,13 +307,16 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
 #endif
         }
         tri_count tc;
-        tri_cost(f, t, s, &tc);
 #ifndef SILK_NO_VERTEX_CACHE
-        if (s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t) {
+        int kept = s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t;
+        tri_cost(f, t, s, kept ? &f->lay_kept[f->nseg_kept - 1] : NULL, &tc);
+        if (kept) {
             f->kept_recs += tc.recs;
             f->kept_tris += tc.tris;
             f->kept_curves += tc.curves;
         }
+#else
+        tri_cost(f, t, s, NULL, &tc);
 #endif
         f->store_recs += tc.recs;
         f->store_curves += tc.curves;
@@ -470,14 +492,22 @@ static void fan_closed(silk_frame_geom *g, uint32_t apex, const uint32_t *cyc, u
     for (uint32_t j = 0; j < n; j++) put_tri(g, apex, cyc[j], cyc[(j + 1) % n], 1);
 }
 
-/* Fig. 11: the silhouette triangle cut by its segment. */
-static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s)
+/* Fig. 11: the silhouette triangle cut by its segment s, laid out as lp
+ * says (NULL: laid out here). */
+static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s,
+                            const sil_layout *lp)
 {
     const silk_mesh *m = f->m;
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     uint32_t *cyc = f->poly, *list = f->poly + f->max_poly;
     sil_layout l;
-    layout(f, t, &l);
+#ifndef SILK_NO_VERTEX_CACHE
+    if (lp) l = *lp;
+    else
+#else
+    (void)lp;
+#endif
+        layout(f, t, &l);
     walk_boundary(f, g, t, cyc);
 
     /* the segment: interior samples as records on its own curve */
@@ -556,9 +586,18 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         return;
     }
 #endif
-    if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &seg)) {
-        emit_silhouette(f, g, t, &seg);     /* Fig. 11 */
-        return;
+    if (f->tri_state[t] & SILK_TS_SIL) {
+#ifndef SILK_NO_VERTEX_CACHE
+        uint32_t i = silk_remesh_kept_index(f, t);   /* as the plan made it and laid it out */
+        if (i != SILK_SIL_NONE) {
+            emit_silhouette(f, g, t, &f->seg_kept[i], &f->lay_kept[i]);   /* Fig. 11 */
+            return;
+        }
+#endif
+        if (silk_remesh_seg(f, t, &seg)) {
+            emit_silhouette(f, g, t, &seg, NULL);     /* Fig. 11 */
+            return;
+        }
     }
     uint32_t nchained = 0;
 #ifndef SILK_NO_VERTEX_CACHE   /* (the same shortcut) */

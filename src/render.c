@@ -851,12 +851,30 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
 
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
+#define PART_XY 64   /* draw_tris: the most records of a share placed once */
 static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass, uint32_t *won)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
     /* Lines alone: the surface is drawn into the depth buffer only, to hide them. */
     const silk_hal *shade = (o->lines == SILK_LINES_ONLY && !f->siltex) || pass < 0 ? NULL : f->hal;   /* SILTEX: its stage draws its lines */
+#ifndef SILK_NO_VERTEX_CACHE
+    /* A share's records placed on the screen once (silk_raster_place), not
+     * once for each of its triangles at them: the triangles that cover no
+     * pixel centre - most of a re-meshed part of a fine mesh - are then
+     * known from the places alone (silk_raster_reaches), all drawn
+     * with the bits silk_raster_triangle would give them
+     * (silk_raster_placed); a triangle at a record outside a clip plane
+     * goes to silk_raster_triangle as before. */
+    int32_t xy[PART_XY][2];
+    int placed = pass <= 0 && f->part == share_part && f->cache && g->nvrec <= PART_XY;
+    /* the test pays where triangles are small (as frame_draw's depth pass
+     * is made only where they are large): elsewhere most of them reach a
+     * pixel, and silk_raster_placed finds the others as cheaply */
+    int ask = (uint64_t)f->geom.mesh->ntris * 16 > (uint64_t)t->width * t->height;
+    for (uint32_t i = 0; placed && i < g->nvrec; i++)
+        if (!silk_raster_place(t, &f->cache[i].clip, xy[i])) xy[i][0] = VC_OUTSIDE;
+#endif
     for (uint32_t i = 0; i < g->ntri; i++) {
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];
@@ -865,6 +883,15 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
         uint32_t bit = 1u << (k < 31 ? k : 31);   /* depth_wins */
         if (won && pass == 0 && !(*won & bit)) continue;
         t->drew = 0;
+        if (placed && xy[c[0]][0] != VC_OUTSIDE && xy[c[1]][0] != VC_OUTSIDE && xy[c[2]][0] != VC_OUTSIDE) {
+            const int32_t *p[3] = { xy[c[0]], xy[c[1]], xy[c[2]] };
+            if (!ask || silk_raster_reaches(t, p)) {
+                const silk_vertex_out *v[3] = { &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]] };
+                silk_raster_placed(t, shade, v, p);
+                if (won && pass < 0 && t->drew) *won |= bit;
+            }
+            continue;
+        }
 #else
         (void)won;
 #endif

@@ -126,16 +126,29 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
     return 1;
 }
 
-void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
-                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
+/* The point at u on edge e and its normal, as side s sees the edge.  (It
+ * and edge_point_attrs inline: a board has silk_sil_edge_point alone.) */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void edge_point_pn(const silk_sil_frame *f, const silk_mesh *m, const silk_sil_edge *e,
+                                 const silk_sil_side *s, silk_fx u, silk_vec3 *p, silk_vec3 *n)
 {
-    const silk_mesh *m = f->m;
     silk_curve c;
     silk_sil_edge_curve(f, e, &c);
     *p = silk_hermite_point(&c, u);
     /* eq. 6: the normal along a bridge is interpolated linearly */
     if (!silk_v3_normalize(silk_v3_lerp(m->normal[s->n0], m->normal[s->n1], u), n))
         *n = m->normal[s->n0];
+}
+
+/* The uv and colour at u on edge e, as side s sees the edge. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void edge_point_attrs(const silk_mesh *m, const silk_sil_edge *e, const silk_sil_side *s, silk_fx u,
+                                    silk_vec2 *uv, uint32_t *rgb)
+{
     if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
         silk_vec2 a = m->uv[s->uv0], b = m->uv[s->uv1];
         uv->x = silk_fx_add(a.x, silk_fx_mul(silk_fx_sub(b.x, a.x), u));
@@ -145,6 +158,35 @@ void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
     }
     *rgb = silk_sil_edge_rgb(m, &m->edge[e->edge], u);
 }
+
+void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
+                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
+{
+    const silk_mesh *m = f->m;
+    edge_point_pn(f, m, e, s, u, p, n);
+    edge_point_attrs(m, e, s, u, uv, rgb);
+}
+
+#ifndef SILK_NO_VERTEX_CACHE
+void silk_sil_pair_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
+                         const silk_sil_pair *pr, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
+{
+    size_t i = (size_t)(pr - f->pairs);
+    if (!f->pair_pn) {
+        edge_point_pn(f, f->m, e, s, pr->u, p, n);
+    } else {
+        /* the pair's normals are the side's (side_pair matched them) */
+        silk_sil_frame *memo = (silk_sil_frame *)f;
+        if (!f->pair_ready[i]) {
+            edge_point_pn(f, f->m, e, s, pr->u, &memo->pair_pn[2 * i], &memo->pair_pn[2 * i + 1]);
+            memo->pair_ready[i] = 1;
+        }
+        *p = f->pair_pn[2 * i];
+        *n = f->pair_pn[2 * i + 1];
+    }
+    edge_point_attrs(f->m, e, s, pr->u, uv, rgb);
+}
+#endif
 
 uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u)
 {
