@@ -125,7 +125,7 @@ typedef struct frame {
     uint32_t vc_mask;
     uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
 #ifndef SILK_NO_VERTEX_CACHE
-    uint8_t *cand;            /* FLAT, closed mesh: silk_aa_candidates' bits, or NULL */
+    uint8_t *cand;            /* closed mesh: silk_aa_candidates' bits, or NULL */
     uint8_t cand_ready;       /* made (by the first band's frame_aa) */
 #endif
     size_t vc_bytes;          /* the arena it and the facing memo take */
@@ -467,10 +467,10 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
     if (!f->facing) return;
     memset(f->facing, 0, n);   /* nothing known yet */
 #ifndef SILK_NO_VERTEX_CACHE
-    /* FLAT of a closed mesh: the outline's candidates for all bands at once
+    /* A closed mesh: the outline's candidates for all bands at once
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
     size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
-    if (!f->smooth && f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
+    if (f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
         n + nc + 2 * SILK_ARENA_ALIGN <= free0 / 2)
         f->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
 #endif
