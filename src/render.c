@@ -1048,6 +1048,27 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #endif
 }
 
+#if !defined(SILK_NO_VERTEX_CACHE) && !defined(SILK_NO_AA)
+/* The outline of input triangle k drawn as it is (direct_ok), from where
+ * place_vertices put its corners (silk_aa_tri), its share not built: 0
+ * when they are not placed or a corner has no vertex (then the share is). */
+static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
+{
+    const silk_mesh *m = f->geom.mesh;
+    if (!f->vc_xy || !f->xy_ready || !direct_ok(f, k)) return 0;
+    const silk_vec4 *clip[3];
+    const int32_t *xy[3];
+    for (uint32_t i = 0; i < 3; i++) {
+        uint32_t p = m->tri[3 * k + i];
+        if (p >= m->nverts) return 0;
+        clip[i] = &f->vc_clip[p];
+        xy[i] = f->vc_xy[2 * p] == VC_OUTSIDE ? NULL : &f->vc_xy[2 * p];
+    }
+    silk_aa_tri(aa, m, v, k, clip, xy);
+    return 1;
+}
+#endif
+
 /* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
  * leaves them out: about 3.0 KiB of Cortex-M3 code and a band's worth of
  * scratch): the frames drawn
@@ -1101,6 +1122,9 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         if (f->cand ? !(f->cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
 #else
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
+#endif
+#ifndef SILK_NO_VERTEX_CACHE
+        if (aa_direct(f, &aa, v, k)) continue;
 #endif
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
