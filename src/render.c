@@ -463,9 +463,8 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
     if (!o->aa || o->wire || f->part != share_part || f->clip || n + SILK_ARENA_ALIGN > budget ||
         n + SILK_ARENA_ALIGN > free0 / 2)
         return;
-    f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);
+    f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);   /* zeroed: nothing known yet */
     if (!f->facing) return;
-    memset(f->facing, 0, n);   /* nothing known yet */
 #ifndef SILK_NO_VERTEX_CACHE
     /* A closed mesh: the outline's candidates for all bands at once
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
@@ -534,13 +533,12 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     for (uint32_t k = 0; k < n; k++)
         if (!(f->sil.tri_state[k] & SILK_TS_SIL) && !direct_ok(f, k)) all += share_bytes(8, 6, 2);
     size_t cap = all < room ? (size_t)all : room;
-    f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);
+    f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);   /* zeroed: none built */
     f->ks = silk_arena_array_top_unfilled(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
     if (!f->ks_at || !f->ks) {
         f->ks = NULL;
         return;
     }
-    memset(f->ks_at, 0, (size_t)n * sizeof *f->ks_at);
     f->ks_cap = cap;
     f->ks_used = 0;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
