@@ -919,14 +919,12 @@ static void place_vertices(frame *f, const silk_target *t)
 static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
 {
     const silk_mesh *m = f->geom.mesh;
-    const int32_t *xy[3];
-    int placed = 1;
-    for (uint32_t i = 0; i < 3; i++) {
-        uint32_t p = m->tri[3 * k + i];
-        if (p >= m->nverts) return 0;
-        xy[i] = &f->vc_xy[2 * p];
-        placed &= xy[i][0] != VC_OUTSIDE;
-    }
+    /* written out (every triangle of the mesh comes here every band) */
+    const silk_index *tv = &m->tri[3 * (size_t)k];
+    const uint32_t nv = m->nverts;
+    if (tv[0] >= nv || tv[1] >= nv || tv[2] >= nv) return 0;
+    const int32_t *xy[3] = { &f->vc_xy[2 * (size_t)tv[0]], &f->vc_xy[2 * (size_t)tv[1]], &f->vc_xy[2 * (size_t)tv[2]] };
+    int placed = (xy[0][0] != VC_OUTSIDE) & (xy[1][0] != VC_OUTSIDE) & (xy[2][0] != VC_OUTSIDE);
     t->cull_back = f->cull;   /* frame_draw's rule for triangles drawn as they are */
     if (placed && !silk_raster_reaches(t, xy)) return 1;
     const silk_vertex_out *v[3];
