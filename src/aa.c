@@ -643,38 +643,22 @@ static void seg_walk(silk_aa *aa, const silk_frame_geom *g, const seg_at *s)
     }
 }
 
-/* Input triangle t's crease sides (every share walks them first). */
-static void crease_sides(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
-{
-#ifndef SILK_NO_AA_CREASE
-    for (int k = 0; aa->creases && k < 3; k++)
-        if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
-#else
-    (void)aa;
-    (void)m;
-    (void)v;
-    (void)t;
-#endif
-}
-
-/* Input triangle t as it is (one triangle is never re-meshed): its outline
- * sides, its corners 0, 1, 2 on screen at aa->pt[tri[0 .. 2]]. */
-static void plain_sides(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, const uint32_t *tri)
-{
-    int front = tri_front(aa, m, v, t);
-    for (int k = 0; k < 3; k++)
-        if (coarse_outline(aa, m, v, t, k, front))
-            tri_side(aa, &aa->pt[tri[k]], &aa->pt[tri[(k + 1) % 3]], &aa->pt[tri[(k + 2) % 3]], NULL);
-}
-
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
                    const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
-    crease_sides(aa, m, v, t);
+#ifndef SILK_NO_AA_CREASE
+    for (int k = 0; aa->creases && k < 3; k++)
+        if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
+#endif
+    const uint32_t *tri = g->tri;
     if (g->ntri == 1) {
+        /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */
         for (uint32_t i = 0; i < g->nvrec; i++) aa->pt[i] = point(aa->t, &out[i]);
-        plain_sides(aa, m, v, t, g->tri);
+        int front = tri_front(aa, m, v, t);
+        for (int k = 0; k < 3; k++)
+            if (coarse_outline(aa, m, v, t, k, front))
+                tri_side(aa, &aa->pt[tri[k]], &aa->pt[tri[(k + 1) % 3]], &aa->pt[tri[(k + 2) % 3]], NULL);
         return;
     }
     seg_at at;
@@ -687,28 +671,6 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         seg_walk(aa, g, &at);
     }
 }
-
-#ifndef SILK_NO_VERTEX_CACHE
-void silk_aa_tri(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, const silk_vec4 *const clip[3],
-                 const int32_t *const xy[3])
-{
-    const uint32_t tri[3] = { 0, 1, 2 };
-    crease_sides(aa, m, v, t);
-    for (int i = 0; i < 3; i++) {   /* point()'s, without the rest of the vertex stage */
-        silk_aa_pt *p = &aa->pt[i];
-        int64_t x, y;
-        *p = (silk_aa_pt){ 0, 0, 0, 0 };
-        if (clip[i]->w <= 0) continue;
-        silk_raster_point_placed(aa->t, clip[i], xy[i], &x, &y, &p->d);
-        p->ok = absl(x) < LIMIT && absl(y) < LIMIT;
-        if (p->ok) {
-            p->x = (int32_t)x;
-            p->y = (int32_t)y;
-        }
-    }
-    plain_sides(aa, m, v, t, tri);
-}
-#endif
 
 void silk_aa_alpha(silk_target *t)
 {

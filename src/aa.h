@@ -71,14 +71,6 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
  * with -DSILK_NO_VERTEX_CACHE. */
 void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand);
 
-/* silk_aa_share of input triangle t whose share is its three CORNER
- * records (FLAT's, SMOOTH's away from the silhouette), from its corners'
- * clip coordinates (the vertex stage's) and, where silk_raster_place put
- * them, their places (else NULL): the share need not be built.  Not in a
- * build with -DSILK_NO_VERTEX_CACHE. */
-void silk_aa_tri(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, const silk_vec4 *const clip[3],
-                 const int32_t *const xy[3]);
-
 /* The outline sides of input triangle t's share g (out: its vertex-stage
  * output per record), walked over the band: a share that is t as it is
  * (FLAT, or untouched by SMOOTH) by the rule of silk_aa_candidate (in

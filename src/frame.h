@@ -68,10 +68,6 @@ int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2]
 int silk_raster_reaches(const silk_target *t, const int32_t *const xy[3]);
 void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
                         const int32_t *const xy[3]);
-/* silk_raster_point of a vertex at clip coordinates clip (w > 0), placed
- * at xy by silk_raster_place (NULL: it was not): the same x, y and d. */
-void silk_raster_point_placed(const silk_target *t, const silk_vec4 *clip, const int32_t *xy, int64_t *x,
-                              int64_t *y, uint32_t *d);
 
 /* phong.c: whether h's vertex stage is the default one, which reads a
  * record only through silk_vrec_eval: then two CORNER records of the same

@@ -917,18 +917,6 @@ int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2]
     return 1;
 }
 
-void silk_raster_point_placed(const silk_target *t, const silk_vec4 *clip, const int32_t *xy, int64_t *x,
-                              int64_t *y, uint32_t *d)
-{
-    silk_vertex_out v;   /* project_depth reads the clip coordinates alone */
-    svert s;
-    v.clip = *clip;
-    *x = xy ? xy[0] : screen_x(clip, t->width);
-    *y = xy ? xy[1] : screen_y(clip, t->height);
-    project_depth(&v, &s);
-    *d = (uint32_t)s.d;
-}
-
 static void placed_xy(const int32_t *const xy[3], svert sv[3])
 {
     /* written out: a loop of three is not unrolled at -O2 (every triangle of a fine mesh comes here) */

@@ -1045,22 +1045,28 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 }
 
 #if !defined(SILK_NO_VERTEX_CACHE) && !defined(SILK_NO_AA)
-/* The outline of input triangle k drawn as it is (direct_ok), from where
- * place_vertices put its corners (silk_aa_tri), its share not built: 0
- * when they are not placed or a corner has no vertex (then the share is). */
+/* The outline of input triangle k drawn as it is (direct_ok) without
+ * building its share: silk_aa_share reads of such a share its one
+ * triangle of three records and their clip coordinates, which
+ * place_vertices has worked out.  0 when they are not placed or a corner
+ * has no vertex (then the share is built). */
 static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
 {
     const silk_mesh *m = f->geom.mesh;
     if (!f->vc_xy || !f->xy_ready || !direct_ok(f, k)) return 0;
-    const silk_vec4 *clip[3];
-    const int32_t *xy[3];
+    silk_vertex_out out[3];   /* the clip coordinates alone: the rest is not read */
+    uint32_t tri[3] = { 0, 1, 2 };
+    silk_frame_geom g;
+    memset(&g, 0, sizeof g);
+    g.tri = tri;
+    g.ntri = 1;
+    g.nvrec = 3;
     for (uint32_t i = 0; i < 3; i++) {
         uint32_t p = m->tri[3 * k + i];
         if (p >= m->nverts) return 0;
-        clip[i] = &f->vc_clip[p];
-        xy[i] = f->vc_xy[2 * p] == VC_OUTSIDE ? NULL : &f->vc_xy[2 * p];
+        out[i].clip = f->vc_clip[p];
     }
-    silk_aa_tri(aa, m, v, k, clip, xy);
+    silk_aa_share(aa, m, v, &g, out, k);
     return 1;
 }
 #endif
