@@ -355,7 +355,7 @@ static void share_copy(frame *f, uint8_t *p, int out)
     }
 }
 
-static int direct_ok(const frame *f, uint32_t k);
+static inline int direct_ok(const frame *f, uint32_t k);
 
 /* Where input triangle t's share is kept: t, for every share draw_direct
  * does not draw (SILK_SIL_NONE: none). */
@@ -946,7 +946,7 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
  * points, with no vertex moved, whose share is its three CORNER records
  * (silk_remesh_emit_tri), drawn with back faces culled (frame_draw) as
  * draw_direct does. */
-static int direct_ok(const frame *f, uint32_t k)
+static inline int direct_ok(const frame *f, uint32_t k)
 {
     if (!f->smooth) return 1;
     const silk_sil_frame *s = &f->sil;
