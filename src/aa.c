@@ -528,17 +528,22 @@ void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uin
 #endif
     /* Closed: each edge is a side of its two triangles and of no other, so
      * silk_aa_candidate's rule per side is a rule per edge, and a
-     * triangle facing away has no outline side. */
+     * triangle facing away has no outline side.  SMOOTH: a silhouette
+     * triangle is one, and a side against one is walked as its segment's
+     * curve instead, unless it is a crease. */
+    const uint8_t *ts = aa->sil ? aa->sil->tri_state : NULL;
     for (uint32_t e = 0; e < m->nedges; e++) {
         const silk_edge *ed = &m->edge[e];
         uint32_t t0 = ed->t[0], t1 = ed->t[1];
         if (t0 >= m->ntris || t1 >= m->ntris) continue;
         int f0 = aa->facing[t0 / 4] >> 2 * (t0 % 4) & 1, f1 = aa->facing[t1 / 4] >> 2 * (t1 % 4) & 1;   /* known */
-        uint32_t mark = f0 != f1 ? (f0 ? t0 : t1)                           /* an outline side */
+        uint32_t mark = f0 != f1 ? (ts && (ts[f0 ? t1 : t0] & SILK_TS_SIL) ? SILK_NO_INDEX : f0 ? t0 : t1)   /* an outline side */
                         : f0 && creases && silk_edge_has_feature(ed) ? (t0 < t1 ? t0 : t1)   /* a crease, from its first triangle */
                         : SILK_NO_INDEX;
         if (mark != SILK_NO_INDEX) cand[mark / 8] = (uint8_t)(cand[mark / 8] | 1u << (mark % 8));
     }
+    for (uint32_t t = 0; ts && t < m->ntris; t++)
+        if (ts[t] & SILK_TS_SIL) cand[t / 8] = (uint8_t)(cand[t / 8] | 1u << (t % 8));
 }
 #endif
 

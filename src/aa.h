@@ -63,8 +63,8 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
  * a SMOOTH plan f) a silhouette triangle, whose segment is an outline. */
 int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t);
 
-/* silk_aa_candidate for every input triangle of a FLAT frame (no plan) of
- * a closed mesh (silk_mesh.closed_outward) at once: bit t of cand (ntris
+/* silk_aa_candidate for every input triangle of a frame (aa->sil: the
+ * SMOOTH plan, or NULL) of a closed mesh (silk_mesh.closed_outward) at once: bit t of cand (ntris
  * bits) set where it says 1, from one pass over the edges instead of three
  * sides a triangle, and aa->facing (which must be there) filled for every
  * triangle.  The answers do not change from band to band.  Not in a build

@@ -125,7 +125,7 @@ typedef struct frame {
     uint32_t vc_mask;
     uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
 #ifndef SILK_NO_VERTEX_CACHE
-    uint8_t *cand;            /* FLAT, closed mesh: silk_aa_candidates' bits, or NULL */
+    uint8_t *cand;            /* closed mesh: silk_aa_candidates' bits, or NULL */
     uint8_t cand_ready;       /* made (by the first band's frame_aa) */
 #endif
     size_t vc_bytes;          /* the arena it and the facing memo take */
@@ -355,7 +355,7 @@ static void share_copy(frame *f, uint8_t *p, int out)
     }
 }
 
-static int direct_ok(const frame *f, uint32_t k);
+static inline int direct_ok(const frame *f, uint32_t k);
 
 /* Where input triangle t's share is kept: t, for every share draw_direct
  * does not draw (SILK_SIL_NONE: none). */
@@ -463,14 +463,13 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
     if (!o->aa || o->wire || f->part != share_part || f->clip || n + SILK_ARENA_ALIGN > budget ||
         n + SILK_ARENA_ALIGN > free0 / 2)
         return;
-    f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);
+    f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);   /* zeroed: nothing known yet */
     if (!f->facing) return;
-    memset(f->facing, 0, n);   /* nothing known yet */
 #ifndef SILK_NO_VERTEX_CACHE
-    /* FLAT of a closed mesh: the outline's candidates for all bands at once
+    /* A closed mesh: the outline's candidates for all bands at once
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
     size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
-    if (!f->smooth && f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
+    if (f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
         n + nc + 2 * SILK_ARENA_ALIGN <= free0 / 2)
         f->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
 #endif
@@ -534,13 +533,12 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     for (uint32_t k = 0; k < n; k++)
         if (!(f->sil.tri_state[k] & SILK_TS_SIL) && !direct_ok(f, k)) all += share_bytes(8, 6, 2);
     size_t cap = all < room ? (size_t)all : room;
-    f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);
+    f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);   /* zeroed: none built */
     f->ks = silk_arena_array_top_unfilled(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
     if (!f->ks_at || !f->ks) {
         f->ks = NULL;
         return;
     }
-    memset(f->ks_at, 0, (size_t)n * sizeof *f->ks_at);
     f->ks_cap = cap;
     f->ks_used = 0;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
@@ -948,14 +946,12 @@ static void place_vertices(frame *f, const silk_target *t)
 static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
 {
     const silk_mesh *m = f->geom.mesh;
-    const int32_t *xy[3];
-    int placed = 1;
-    for (uint32_t i = 0; i < 3; i++) {
-        uint32_t p = m->tri[3 * k + i];
-        if (p >= m->nverts) return 0;
-        xy[i] = &f->vc_xy[2 * p];
-        placed &= xy[i][0] != VC_OUTSIDE;
-    }
+    /* written out (every triangle of the mesh comes here every band) */
+    const silk_index *tv = &m->tri[3 * (size_t)k];
+    const uint32_t nv = m->nverts;
+    if (tv[0] >= nv || tv[1] >= nv || tv[2] >= nv) return 0;
+    const int32_t *xy[3] = { &f->vc_xy[2 * (size_t)tv[0]], &f->vc_xy[2 * (size_t)tv[1]], &f->vc_xy[2 * (size_t)tv[2]] };
+    int placed = (xy[0][0] != VC_OUTSIDE) & (xy[1][0] != VC_OUTSIDE) & (xy[2][0] != VC_OUTSIDE);
     t->cull_back = f->cull;   /* frame_draw's rule for triangles drawn as they are */
     if (placed && !silk_raster_reaches(t, xy)) return 1;
     const silk_vertex_out *v[3];
@@ -977,7 +973,7 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
  * points, with no vertex moved, whose share is its three CORNER records
  * (silk_remesh_emit_tri), drawn with back faces culled (frame_draw) as
  * draw_direct does. */
-static int direct_ok(const frame *f, uint32_t k)
+static inline int direct_ok(const frame *f, uint32_t k)
 {
     if (!f->smooth) return 1;
     const silk_sil_frame *s = &f->sil;
@@ -1075,6 +1071,33 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #endif
 }
 
+#if !defined(SILK_NO_VERTEX_CACHE) && !defined(SILK_NO_AA)
+/* The outline of input triangle k drawn as it is (direct_ok) without
+ * building its share: silk_aa_share reads of such a share its one
+ * triangle of three records and their clip coordinates, which
+ * place_vertices has worked out.  0 when they are not placed or a corner
+ * has no vertex (then the share is built). */
+static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
+{
+    const silk_mesh *m = f->geom.mesh;
+    if (!f->vc_xy || !f->xy_ready || !direct_ok(f, k)) return 0;
+    silk_vertex_out out[3];   /* the clip coordinates alone: the rest is not read */
+    uint32_t tri[3] = { 0, 1, 2 };
+    silk_frame_geom g;
+    memset(&g, 0, sizeof g);
+    g.tri = tri;
+    g.ntri = 1;
+    g.nvrec = 3;
+    for (uint32_t i = 0; i < 3; i++) {
+        uint32_t p = m->tri[3 * k + i];
+        if (p >= m->nverts) return 0;
+        out[i].clip = f->vc_clip[p];
+    }
+    silk_aa_share(aa, m, v, &g, out, k);
+    return 1;
+}
+#endif
+
 /* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
  * leaves them out: about 3.0 KiB of Cortex-M3 code and a band's worth of
  * scratch): the frames drawn
@@ -1128,6 +1151,9 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         if (f->cand ? !(f->cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
 #else
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
+#endif
+#ifndef SILK_NO_VERTEX_CACHE
+        if (aa_direct(f, &aa, v, k)) continue;
 #endif
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
