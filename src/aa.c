@@ -515,11 +515,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
 #ifndef SILK_NO_VERTEX_CACHE
 void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand)
 {
-    for (uint32_t t = 0; t < m->ntris; t += 4) {   /* every facing, in mesh order, the memo a byte at a time */
-        unsigned b = 0;
-        for (uint32_t i = 0; i < 4 && t + i < m->ntris; i++) b |= (2u | (unsigned)silk_sil_tri_front(m, v, t + i)) << 2 * i;
-        aa->facing[t / 4] = (uint8_t)b;
-    }
+    silk_sil_tri_fronts(m, v, aa->facing);   /* every facing, in mesh order */
     memset(cand, 0, ((size_t)m->ntris + 7) / 8);
 #ifdef SILK_NO_AA_CREASE
     const int creases = 0;

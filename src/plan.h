@@ -230,6 +230,13 @@ uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u);
  * zero-area or broken triangle faces nowhere. */
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* silk_sil_tri_front of every triangle into facing, two bits each (2 | front,
+ * four triangles a byte, silk_aa.facing's layout): one loop that keeps the
+ * per-call work out of it. */
+void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing);
+#endif
+
 /* Eq. 8 for curve c: the number of intervals to sample it with, from its
  * projected chord in pixels and cos alpha (see silhouette.c for why the
  * chord). */

@@ -64,7 +64,10 @@ static int cut14(uint64_t v)
 /* silk_view_to_eye and silk_tri_cross64 for triangle t.  A host build has
  * them inline (the outline asks every triangle every frame); a board's
  * (-DSILK_NO_VERTEX_CACHE) calls them and keeps the code bytes. */
-static silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t, int64_t c[3])
+#if defined(__GNUC__) && !defined(SILK_NO_VERTEX_CACHE)
+__attribute__((always_inline))
+#endif
+static inline silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t, int64_t c[3])
 {
 #ifndef SILK_NO_VERTEX_CACHE
     const silk_index *tv = &m->tri[3 * t];
@@ -93,10 +96,11 @@ static silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t
  * outline asks every triangle every frame; a build without it
  * (-DSILK_NO_AA) asks only of feature edges' triangles and keeps the
  * 0.4 KiB of Cortex-M3 code the shortcut takes. */
-int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
+#if defined(__GNUC__) && !defined(SILK_NO_VERTEX_CACHE)
+__attribute__((always_inline))   /* in silk_sil_tri_fronts' loop: every triangle, every frame */
+#endif
+static inline int front_of(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
-    for (int k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] >= m->nverts) return 0;
 #ifndef SILK_NO_AA
     int64_t c[3];
     silk_vec3 e = front_inputs(m, v, t, c);
@@ -114,6 +118,29 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
     silk_vec3 fn = silk_mesh_face_normal(m, t);
     return silk_v3_dot64(fn, e) > 0;
 }
+
+int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
+{
+    for (int k = 0; k < 3; k++)
+        if (m->tri[3 * t + k] >= m->nverts) return 0;
+    return front_of(m, v, t);
+}
+
+#ifndef SILK_NO_VERTEX_CACHE
+void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing)
+{
+    const silk_index *tv = m->tri;
+    for (uint32_t t = 0; t < m->ntris; t += 4) {
+        unsigned b = 0;
+        for (uint32_t i = 0; i < 4 && t + i < m->ntris; i++) {
+            const silk_index *c = &tv[3 * (t + i)];
+            int front = c[0] < m->nverts && c[1] < m->nverts && c[2] < m->nverts && front_of(m, v, t + i);
+            b |= (2u | (unsigned)front) << 2 * i;
+        }
+        facing[t / 4] = (uint8_t)b;
+    }
+}
+#endif
 
 /* Triangles whose three normals and corners are usable; anything else is
  * drawn as it is (never smoothed), so a broken index cannot crash a frame. */
