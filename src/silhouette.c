@@ -104,6 +104,18 @@ static inline int front_of(const silk_mesh *m, const silk_view *v, uint32_t t)
 #ifndef SILK_NO_AA
     int64_t c[3];
     silk_vec3 e = front_inputs(m, v, t, c);
+#ifndef SILK_NO_VERTEX_CACHE
+    /* A 64-bit host first tries the uncut vectors, where their L1 norms
+     * keep every product within 63 bits (a mesh within +-2^3 units of the
+     * eye): |c.e| > cn en / 2^10 >= |c| |e| / 2^10 is an angle with |cos|
+     * above 2^-10, far more than the rounded normal's tilt of a few 2^-16
+     * can turn, so the sign is its. */
+    uint64_t cn = mag(c[0]) + mag(c[1]) + mag(c[2]), en = mag(e.x) + mag(e.y) + mag(e.z);
+    if (cn < ((uint64_t)1 << 40) && en < ((uint64_t)1 << 22)) {
+        int64_t d = c[0] * e.x + c[1] * e.y + c[2] * e.z;   /* |d| <= cn en < 2^62 */
+        if (mag(d) > (cn * en >> 10)) return d > 0;
+    }
+#endif
     int sc = cut14(mag(c[0]) | mag(c[1]) | mag(c[2])), se = cut14(mag(e.x) | mag(e.y) | mag(e.z));
     /* |c_i|, |e_i| < 2^14: d below 2^30; |c| |e| <= n1 e1 < 2^32 (written out: every triangle, every frame) */
     int32_t x0 = (int32_t)(c[0] >> sc), x1 = (int32_t)(c[1] >> sc), x2 = (int32_t)(c[2] >> sc);
