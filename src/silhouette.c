@@ -378,6 +378,82 @@ static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
     f->carrying[e >> 3] |= bit;
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* Whether the sides on the carrying edges may be found from the edges'
+ * triangles instead of a pass over every triangle: with listed edges
+ * (tri_edge) and no edge of more than two triangles, edge.t names every
+ * triangle with a side on the edge (silk_mesh_build), so the work is the
+ * silhouette's, not the mesh's.  A host's shortcut: a board's packed mesh
+ * has no tri_edge. */
+static int by_edges(const silk_mesh *m)
+{
+    return m->tri_edge && !m->nnonmanifold_edges;
+}
+
+/* Whether the n indices x[] are all below lim, 1 <= lim <= 2^31: x < lim
+ * exactly when neither x nor lim - 1 - x has its top bit set.  Or-ed
+ * eight lanes at a time, a loop a compiler vectorises. */
+static int all_below(const silk_index *x, size_t n, uint32_t lim)
+{
+    if (lim == 0 || lim > (uint32_t)1 << 31) return n == 0;
+    uint32_t top = lim - 1, lane[8] = { 0 }, acc = 0;
+    size_t i = 0;
+    for (; i + 8 <= n; i += 8)
+        for (uint32_t j = 0; j < 8; j++) lane[j] |= x[i + j] | (top - x[i + j]);
+    for (; i < n; i++) acc |= x[i] | (top - x[i]);
+    for (uint32_t j = 0; j < 8; j++) acc |= lane[j];
+    return acc >> 31 == 0;
+}
+
+/* Whether every triangle is whole (silk_sil_tri_ok): three passes over
+ * the index lists instead of nine tests for each triangle. */
+static int all_whole(const silk_mesh *m)
+{
+    size_t n = 3 * (size_t)m->ntris;
+    return all_below(m->tri, n, m->nverts) && all_below(m->tri_normal, n, m->nnormals) &&
+           all_below(m->tri_edge, n, m->nedges);
+}
+
+/* find_triangles' loop for a host's mesh of whole triangles and listed
+ * edges, none of more than two triangles (by_edges): the same states and
+ * marks with three reads a triangle, and the feature edges' triangles
+ * found from the edges, instead of three edges' flags read for every
+ * triangle. */
+static void find_whole(silk_sil_frame *f, int features, uint32_t *nwork)
+{
+    const silk_mesh *m = f->m;
+    const uint8_t *vis = f->visible;
+    uint32_t nsil = 0;
+    for (uint32_t t = 0; t < m->ntris; t++) {
+        const silk_index *tn = &m->tri_normal[3 * (size_t)t];
+        uint8_t v0 = vis[tn[0]], v1 = vis[tn[1]], v2 = vis[tn[2]], st = 0;
+        if (v0 != v1 || v1 != v2) {
+            const silk_index *te = &m->tri_edge[3 * (size_t)t];
+            uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
+            st = (uint8_t)(SILK_TS_SIL | lone);
+            nsil++;
+            mark_edge(f, te[lone], nwork);
+            mark_edge(f, te[(lone + 2) % 3], nwork);
+        }
+        f->tri_state[t] = st;
+    }
+    f->nsil = nsil;
+    for (uint32_t e = 0; features && e < m->nedges; e++) {
+        const silk_edge *ed = &m->edge[e];
+        if (!(ed->flags & SILK_EDGE_FEATURE)) continue;
+        for (uint32_t i = 0; i < 2; i++) {
+            uint32_t t = ed->t[i];
+            if (t >= m->ntris || (f->tri_state[t] & SILK_TS_FRONT) || !silk_sil_tri_front(m, f->v, t)) continue;
+            f->tri_state[t] |= SILK_TS_FRONT;
+            for (uint32_t k = 0; k < 3; k++) {
+                silk_index ek = m->tri_edge[3 * (size_t)t + k];
+                if (m->edge[ek].flags & SILK_EDGE_FEATURE) mark_edge(f, ek, nwork);
+            }
+        }
+    }
+}
+#endif
+
 /* Visibility of the normals (III-B), the silhouette triangles and the
  * front-facing triangles next to a feature edge (tri_state), and a slot for
  * every edge that carries points this frame (carrying; f->nedges of them). */
@@ -407,6 +483,10 @@ static silk_status find_triangles(silk_sil_frame *f)
     int features = m->nfeature_edges > 0 || m->nboundary_edges > 0 || m->nnonmanifold_edges > 0;
     uint32_t nwork = 0;
     f->nsil = 0;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (by_edges(m) && all_whole(m)) find_whole(f, features, &nwork);
+    else
+#endif
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = 0;
         silk_index e[3];
@@ -498,17 +578,6 @@ static int count_side(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* Whether the sides on the carrying edges may be found from the edges'
- * triangles instead of a pass over every triangle: with listed edges
- * (tri_edge) and no edge of more than two triangles, edge.t names every
- * triangle with a side on the edge (silk_mesh_build), so the work is the
- * silhouette's, not the mesh's.  A host's shortcut: a board's packed mesh
- * has no tri_edge. */
-static int by_edges(const silk_mesh *m)
-{
-    return m->tri_edge && !m->nnonmanifold_edges;
-}
-
 /* Whether triangle t is whole (find_triangles tested it). */
 static int tri_whole(const silk_sil_frame *f, uint32_t t)
 {

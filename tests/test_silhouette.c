@@ -333,10 +333,11 @@ static void shared_points(const char *name, int nviews, int want_split)
     if (want_split) CHECKF(split_normals > 0, "no crease with different normals on its two sides");
 }
 
-/* The sides on the carrying edges found edge by edge (a mesh with its
- * listed edges, tri_edge) and by a pass over every triangle (the same mesh
- * without them, as a packed one finds its edges): the same plan, bit for
- * bit, in the same order. */
+/* The sides on the carrying edges found edge by edge, and the feature
+ * edges' front triangles from the edges (a mesh with its listed edges,
+ * tri_edge), and both by a pass over every triangle (the same mesh without
+ * them, as a packed one finds its edges): the same plan, bit for bit, in
+ * the same order. */
 static void plan_by_edges(const char *name, int nviews)
 {
     silk_arena a;
