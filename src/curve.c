@@ -126,11 +126,11 @@ static silk_vec3 to_fx(const int64_t c[3], int e)
 }
 
 /* Eq. 4 on wide vectors, both nonzero: dir's direction with length
- * 2|chord| / (1 + cos theta), clamped at SILK_ARC_MAX_RATIO * |chord|.  The
- * mantissas go to out; their scale is that of chord (2^chord->e). */
-static void arc_tangent_wide(const wvec *dir, const wvec *chord, int64_t out[3])
+ * 2|chord| / (1 + cos theta), clamped at SILK_ARC_MAX_RATIO * |chord|, as
+ * Q16.16.  lc is wlen(chord), which a bridge's two ends share. */
+static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, int64_t lc)
 {
-    int64_t ld = wlen(dir), lc = wlen(chord);          /* < 2^31 each */
+    int64_t ld = wlen(dir);                            /* < 2^31, as lc */
     int64_t prod = ld * lc;                            /* |dir||chord|, < 3 * 2^60 */
     /* 1 + cos theta = (prod + dir.chord) / prod: a sum, not a difference,
      * everywhere it is not clamped, so no cancellation. */
@@ -163,7 +163,9 @@ static void arc_tangent_wide(const wvec *dir, const wvec *chord, int64_t out[3])
         if (g > cap) g = cap;
     }
     int64_t len = silk_shr_round64(lc * g, 29);        /* 2|chord| g, in chord's scale */
-    for (int k = 0; k < 3; k++) out[k] = div_round(dir->c[k] * len, ld);
+    int64_t t[3];
+    for (int k = 0; k < 3; k++) t[k] = div_round(dir->c[k] * len, ld);
+    return to_fx(t, chord->e);
 }
 
 silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord)
@@ -172,9 +174,7 @@ silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord)
     if (wide_is_zero(&c)) return silk_v3(0, 0, 0);
     wvec d = wide(dir.x, dir.y, dir.z, 0);
     if (wide_is_zero(&d)) return chord;               /* no direction: theta = 0, L = |chord| */
-    int64_t t[3];
-    arc_tangent_wide(&d, &c, t);
-    return to_fx(t, c.e);
+    return arc_tangent_wide(&d, &c, wlen(&c));
 }
 
 /* Eqs. 2-3: the chord projected onto the plane with normal n, in the
@@ -207,13 +207,11 @@ void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_cu
         out->t0 = out->t1 = silk_v3(0, 0, 0);
         return;
     }
-    int64_t t[3];
+    int64_t lc = wlen(&c);
     wvec d0 = tangent_direction(&c, n0);
-    arc_tangent_wide(&d0, &c, t);
-    out->t0 = to_fx(t, c.e);
+    out->t0 = arc_tangent_wide(&d0, &c, lc);
     wvec d1 = tangent_direction(&c, n1);
-    arc_tangent_wide(&d1, &c, t);
-    out->t1 = to_fx(t, c.e);
+    out->t1 = arc_tangent_wide(&d1, &c, lc);
 }
 
 /* ---- eqs. 6-7: the silhouette parameter ----------------------------------- */
