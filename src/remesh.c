@@ -522,9 +522,20 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
     for (uint32_t j = 1; j <= l.iA; j++) list[n++] = cyc[j];
     for (uint32_t i = 1; i < s->n; i++) list[n++] = SAMPLE(i);
     for (uint32_t j = l.iB; j < l.len; j++) list[n++] = cyc[j];
-    silk_vec3 pl, nl, pab = mid3(s->c.p0, s->c.p1), nab = mean_normal(s->c.n0, s->c.n1);
-    silk_vec2 uvl, uvab = mid2(s->c.uv0, s->c.uv1);
-    uint32_t rgbl, rgbab = silk_rgb_lerp(s->c.rgb0, s->c.rgb1, SILK_FX_HALF);
+    /* the midpoint of A B, for a centre (a host's shortcut: most segments
+     * of a fine mesh need none; a board keeps the code bytes) */
+    silk_vec3 pl, nl, pab, nab;
+    silk_vec2 uvl, uvab;
+    uint32_t rgbl, rgbab = 0;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (l.centre1 || l.centre2)
+#endif
+    {
+        pab = mid3(s->c.p0, s->c.p1);
+        nab = mean_normal(s->c.n0, s->c.n1);
+        uvab = mid2(s->c.uv0, s->c.uv1);
+        rgbab = silk_rgb_lerp(s->c.rgb0, s->c.rgb1, SILK_FX_HALF);
+    }
     if (l.centre1) {
         corner_attrs(m, 3 * t + lone, &pl, &nl, &uvl, &rgbl);
         fan_closed(g, put_centre(g, pl, nl, uvl, rgbl, pab, nab, uvab, rgbab, T_TWO_THIRDS), list, n);
