@@ -157,10 +157,21 @@ static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, int64_t lc
         int64_t q = silk_shr_round64(cr[k], 30);
         cr2 += (uint64_t)(q * q);
     }
-    int64_t cross30 = (int64_t)sqrt_round(cr2);        /* |dir x chord| / 2^30, < 2^33 */
-    if (cross30 > 0) {
-        int64_t cap = div_round(ld * lc, cross30 * 2 * SILK_BULGE_DIV);
-        if (g > cap) g = cap;
+#if !SILK_CPU32
+    /* A 64-bit host skips the square root where the cap cannot bind, as
+     * across a fine mesh's edges: x = round(sqrt(cr2)) <= 2^h for
+     * cr2 < 2^2h, and the cap div_round(ld lc, 2 D x) is at least g exactly
+     * when ld lc >= x D (2g - 1), D = SILK_BULGE_DIV (g > 0 here). */
+    uint64_t gd = (uint64_t)SILK_BULGE_DIV * (uint64_t)(2 * g - 1);
+    int h = (bit_length(cr2) + 1) / 2;
+    if (bit_length(gd) + h > 63 || (gd << h) > (uint64_t)(ld * lc))
+#endif
+    {
+        int64_t cross30 = (int64_t)sqrt_round(cr2);    /* |dir x chord| / 2^30, < 2^33 */
+        if (cross30 > 0) {
+            int64_t cap = div_round(ld * lc, cross30 * 2 * SILK_BULGE_DIV);
+            if (g > cap) g = cap;
+        }
     }
     int64_t len = silk_shr_round64(lc * g, 29);        /* 2|chord| g, in chord's scale */
     int64_t t[3];
