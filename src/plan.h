@@ -164,7 +164,7 @@ typedef struct silk_sil_frame {
     uint32_t *carry_rank;
     silk_sil_seg *seg_kept;
     uint32_t *seg_tri;
-    uint32_t nseg_kept;
+    uint32_t nseg_kept, kept_last;   /* kept_last: memo of silk_remesh_kept_index */
     struct sil_layout *lay_kept;   /* with them: where their points lie on their triangle's boundary (remesh.c) */
     /* with the segments: each silhouette point's position and normal, 2
      * per pair, once pair_ready[i] (silk_sil_pair_point) */

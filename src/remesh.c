@@ -181,13 +181,20 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
 #ifndef SILK_NO_VERTEX_CACHE
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 {
-    uint32_t lo = 0, hi = f->nseg_kept;
+    uint32_t lo = 0, hi = f->nseg_kept, last = f->kept_last;
     if (!hi || f->seg_tri[hi - 1] < t) return SILK_SIL_NONE;   /* past them all: as the plan asks while it keeps them */
-    while (lo < hi) {
-        uint32_t mid = lo + (hi - lo) / 2;
-        if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
+    /* the emitter and the outline ask in triangle order, each share a few times */
+    if (last < hi && f->seg_tri[last] == t) return last;
+    if (last + 1 < hi && f->seg_tri[last + 1] == t) lo = last + 1;
+    else {
+        while (lo < hi) {
+            uint32_t mid = lo + (hi - lo) / 2;
+            if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
+        }
+        if (lo >= f->nseg_kept || f->seg_tri[lo] != t) return SILK_SIL_NONE;
     }
-    return lo < f->nseg_kept && f->seg_tri[lo] == t ? lo : SILK_SIL_NONE;
+    ((silk_sil_frame *)f)->kept_last = lo;
+    return lo;
 }
 
 /* Triangle t's kept segment (silk_remesh_keep), or NULL. */
@@ -683,8 +690,31 @@ void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, ui
     seg_recs(f, t, base, u, rec);
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* The index in side k's chain of the point at position pos of the side's
+ * n, in triangle direction (pair_pos the other way round). */
+static uint32_t chain_at(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t pos, uint32_t n)
+{
+    const silk_sil_edge *e = edge_at(f, t, k);
+    return f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0] ? pos : n - 1 - pos;
+}
+#endif
+
 int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve)
 {
+#ifndef SILK_NO_VERTEX_CACHE
+    uint32_t i = silk_remesh_kept_index(f, t);
+    if (i != SILK_SIL_NONE) {   /* what seg_recs finds, from where the plan laid the points out */
+        const sil_layout *l = &f->lay_kept[i];
+        uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
+        uint32_t na = l->iB1 - 1, nb = l->iB2 - l->iB1 - 1, n2 = l->len - l->iB2 - 1;
+        rec[0] = 1 + chain_at(f, t, lone, l->iA - 1, na);
+        rec[1] = l->iB2 + 1 + chain_at(f, t, (lone + 2) % 3, l->iB - l->iB2 - 1, n2);
+        rec[2] = l->len;
+        *curve = (na > 0) + (nb > 0) + (n2 > 0);
+        return 1;
+    }
+#endif
     /* what silk_remesh_seg needs before it builds anything: both silhouette points */
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     const silk_sil_pair *pa = side_pair_of(f, t, lone), *pb = side_pair_of(f, t, (lone + 2) % 3);

@@ -123,7 +123,7 @@ static int same_attr(const silk_vertex_attr *x, const silk_vertex_attr *y)
 /* ---- shares against the stored frame ------------------------------------------------- */
 
 typedef struct share_stats {
-    uint32_t frames, tris, differ, order, over, counts, flags;
+    uint32_t frames, tris, differ, order, over, counts, flags, seg_at, segs;
 } share_stats;
 
 static void compare_shares(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol, share_stats *ss)
@@ -154,6 +154,19 @@ static void compare_shares(silk_arena *a, const silk_mesh *m, const silk_view *v
     silk_geom gs = { m, g.curve, g.offset, NULL };
     uint32_t k = 0;   /* the stored frame's next triangle */
     for (uint32_t t = 0; t < m->ntris; t++) {
+        if (f.tri_state[t] & SILK_TS_SIL) {
+            /* where the outline (aa.c) finds the segment in the share, from
+             * the kept layout: where seg_recs finds it, after a curve per
+             * side with points */
+            uint32_t rec[3], want[3], curve, sides = 0;
+            for (uint32_t j = 0; j < 3; j++) {
+                const silk_sil_edge *e = silk_sil_side_edge(&f, t, j);
+                sides += e && e->nchain;
+            }
+            silk_remesh_seg_recs(&f, t, 0, want);
+            if (!silk_remesh_seg_at(&f, t, rec, &curve) || memcmp(rec, want, sizeof rec) || curve != sides) ss->seg_at++;
+            ss->segs++;
+        }
         part.nvrec = part.ntri = part.ncurve = 0;
         silk_remesh_emit_tri(&f, &part, t);
         if (part.nvrec > f.max_recs || part.ntri > f.max_tris || part.ncurve > f.max_curves) ss->over++;
@@ -208,6 +221,8 @@ TEST(shares_are_the_stored_frame)
     CHECKF(ss.flags == 0, "%u triangles with a different added flag", ss.flags);
     CHECKF(ss.over == 0, "%u shares beyond the plan's maxima", ss.over);
     CHECKF(ss.counts == 0, "%u frames with different counts", ss.counts);
+    CHECK(ss.segs > 0);
+    CHECKF(ss.seg_at == 0, "%u of %u segments found elsewhere than seg_recs finds them", ss.seg_at, ss.segs);
 }
 
 /* ---- pixels ----------------------------------------------------------------------------- */
