@@ -438,8 +438,8 @@ static void find_whole(silk_sil_frame *f, int features, uint32_t *nwork)
         f->tri_state[t] = st;
     }
     f->nsil = nsil;
-    for (uint32_t e = 0; features && e < m->nedges; e++) {
-        const silk_edge *ed = &m->edge[e];
+    const silk_edge *ed = m->edge, *end = features ? ed + m->nedges : ed;
+    for (; ed < end; ed++) {
         if (!(ed->flags & SILK_EDGE_FEATURE)) continue;
         for (uint32_t i = 0; i < 2; i++) {
             uint32_t t = ed->t[i];
