@@ -127,10 +127,10 @@ static silk_vec3 to_fx(const int64_t c[3], int e)
 
 /* Eq. 4 on wide vectors, both nonzero: dir's direction with length
  * 2|chord| / (1 + cos theta), clamped at SILK_ARC_MAX_RATIO * |chord|, as
- * Q16.16.  lc is wlen(chord), which a bridge's two ends share. */
-static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, int64_t lc)
+ * Q16.16.  *lcp is wlen(chord), which a bridge's two ends share. */
+static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, const int64_t *lcp)
 {
-    int64_t ld = wlen(dir);                            /* < 2^31, as lc */
+    int64_t ld = wlen(dir), lc = *lcp;                 /* < 2^31 each */
     int64_t prod = ld * lc;                            /* |dir||chord|, < 3 * 2^60 */
     /* 1 + cos theta = (prod + dir.chord) / prod: a sum, not a difference,
      * everywhere it is not clamped, so no cancellation. */
@@ -185,7 +185,8 @@ silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord)
     if (wide_is_zero(&c)) return silk_v3(0, 0, 0);
     wvec d = wide(dir.x, dir.y, dir.z, 0);
     if (wide_is_zero(&d)) return chord;               /* no direction: theta = 0, L = |chord| */
-    return arc_tangent_wide(&d, &c, wlen(&c));
+    int64_t lc = wlen(&c);
+    return arc_tangent_wide(&d, &c, &lc);
 }
 
 /* Eqs. 2-3: the chord projected onto the plane with normal n, in the
@@ -220,9 +221,9 @@ void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_cu
     }
     int64_t lc = wlen(&c);
     wvec d0 = tangent_direction(&c, n0);
-    out->t0 = arc_tangent_wide(&d0, &c, lc);
+    out->t0 = arc_tangent_wide(&d0, &c, &lc);
     wvec d1 = tangent_direction(&c, n1);
-    out->t1 = arc_tangent_wide(&d1, &c, lc);
+    out->t1 = arc_tangent_wide(&d1, &c, &lc);
 }
 
 /* ---- eqs. 6-7: the silhouette parameter ----------------------------------- */
