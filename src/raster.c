@@ -611,6 +611,19 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (t->depth_equal == SILK_DEPTH_TIES && zrow && !mrow) {   /* depth alone: render.c's back_draw */
+        for (int x = xl; x < xr; x++) {
+            uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
+            if (z >= zrow[x] && z) {   /* (nothing there is 0: never as near) */
+                zrow[x] = z;
+                t->drew = 1;
+            }
+            rstep_next(&D);
+        }
+        return;
+    }
+#endif
     if (SILK_CPU32 && zrow && !mrow && D.den <= ((int64_t)1 << 31)) {
         /* The usual case on a 32-bit processor, where most of a span's
          * pixels fail the depth test: the loop's values in registers and

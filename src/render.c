@@ -158,8 +158,11 @@ typedef struct frame {
     silk_vec4 *vc_clip;
     uint8_t xy_ready;
     /* SMOOTH with a depth pass: per part, which of its triangles wrote a
-     * depth in it (depth_wins), or NULL */
+     * depth in it (depth_wins), or NULL; and the back faces of its
+     * re-meshed parts it draws last (back_last), room for back_cap */
     uint32_t *won;
+    struct back_tri *back;
+    uint32_t back_cap, nback;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -565,6 +568,16 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
  * triangle under the vertex cache's budget, only where frame_draw makes a
  * depth pass; without the room every triangle is shaded as before. */
 #ifndef SILK_NO_VERTEX_CACHE
+/* A back face of a re-meshed part that the depth pass draws last
+ * (back_last): where the rasterizer places its corners and their clip z
+ * and w (all the depth needs), and which triangle of which part it is. */
+typedef struct back_tri {
+    int32_t xy[3][2];
+    silk_fx z[3], w[3];
+    uint32_t part, bit;
+} back_tri;
+
+#define BACK_MAX 1024   /* back_tri entries at most: a coarse mesh's silhouette has a few hundred */
 static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
     uint64_t n = f->geom.mesh->ntris;
@@ -572,6 +585,12 @@ static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
     f->won = silk_arena_array_top(a, n, sizeof *f->won, SILK_MEM_FRAME);   /* each written in the depth pass */
+    /* the back faces put off, from what is left of the budget and of half the arena */
+    size_t left = budget - bytes, free1 = silk_arena_free_bytes(a) / 2, cap = BACK_MAX;
+    if (left > free1) left = free1;
+    if (cap > left / sizeof *f->back) cap = left / sizeof *f->back;
+    if (f->won && cap > 16 && (f->back = silk_arena_array_top_unfilled(a, cap, sizeof *f->back, SILK_MEM_FRAME)))
+        f->back_cap = (uint32_t)cap;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 }
 #endif
@@ -847,10 +866,69 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
     return 1;
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* The depth pass of a SMOOTH frame (depth_wins) puts off the back faces
+ * of its re-meshed parts, drawn both ways (frame_draw), until every other
+ * triangle has written its depth (back_draw): then most of them are
+ * behind and write none, and the shading pass skips them (and a part
+ * none of whose triangles wrote is not rebuilt), where drawn in their turn
+ * most wrote a depth the front faces took again.  The depth buffer is the
+ * same (the nearest of all, in any order), and so is every pixel
+ * shaded: the one fragment that shades a pixel is the first drawn of
+ * those as near as its depth, so drawn before the others as near, and
+ * each triangle put off notes a win wherever it is as near as what is
+ * there (SILK_DEPTH_TIES), so it notes one wherever it may be that
+ * fragment.  1 when the triangle at records c of part `part` is put off
+ * (placed at p, facing away, and room for it; not where fragment writes
+ * are counted, which putting off can raise). */
+static int back_last(frame *f, const silk_target *t, const int32_t *const p[3], const uint32_t c[3], uint32_t part,
+                     uint32_t bit)
+{
+    const int32_t *a = p[0], *b = p[1], *d = p[2];
+    int64_t area = ((int64_t)b[0] - a[0]) * ((int64_t)d[1] - a[1]) - ((int64_t)d[0] - a[0]) * ((int64_t)b[1] - a[1]);
+    if (area <= 0 || t->cull_back || t->mask || t->writes || f->nback >= f->back_cap) return 0;   /* (y down: > 0 faces away) */
+    back_tri *bt = &f->back[f->nback++];
+    for (int i = 0; i < 3; i++) {
+        bt->xy[i][0] = p[i][0];
+        bt->xy[i][1] = p[i][1];
+        bt->z[i] = f->cache[c[i]].clip.z;
+        bt->w[i] = f->cache[c[i]].clip.w;
+    }
+    bt->part = part;
+    bt->bit = bit;
+    return 1;
+}
+
+/* The back faces back_last put off, into the depth buffer, each noting
+ * its part's win. */
+static void back_draw(frame *f, silk_target *t)
+{
+    silk_vertex_out v[3];
+    memset(v, 0, sizeof v);
+    const silk_vertex_out *pv[3] = { &v[0], &v[1], &v[2] };
+    t->depth_equal = SILK_DEPTH_TIES;
+    t->cull_back = 0;
+    for (uint32_t i = 0; i < f->nback; i++) {
+        const back_tri *bt = &f->back[i];
+        const int32_t *p[3] = { bt->xy[0], bt->xy[1], bt->xy[2] };
+        for (int j = 0; j < 3; j++) {
+            v[j].clip.z = bt->z[j];
+            v[j].clip.w = bt->w[j];
+        }
+        if (!silk_raster_reaches(t, p)) continue;
+        t->drew = 0;
+        silk_raster_placed(t, NULL, pv, p);
+        if (t->drew) f->won[bt->part] |= bt->bit;
+    }
+    t->depth_equal = 0;
+    f->nback = 0;
+}
+#endif
+
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
 #define PART_XY 64   /* draw_tris: the most records of a share placed once */
-static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass, uint32_t *won)
+static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int pass, uint32_t *won)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
@@ -883,6 +961,7 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
         t->drew = 0;
         if (placed && xy[c[0]][0] != VC_OUTSIDE && xy[c[1]][0] != VC_OUTSIDE && xy[c[2]][0] != VC_OUTSIDE) {
             const int32_t *p[3] = { xy[c[0]], xy[c[1]], xy[c[2]] };
+            if (won && pass < 0 && back_last(f, t, p, c, (uint32_t)(won - f->won), bit)) continue;
             if (!ask || silk_raster_reaches(t, p)) {
                 const silk_vertex_out *v[3] = { &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]] };
                 silk_raster_placed(t, shade, v, p);
@@ -1014,7 +1093,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
     if (depth_first) wins = f->won;
 #endif
-    for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
+    for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++) {
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
@@ -1046,6 +1125,14 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->nback) {   /* the depth pass's back faces put off (back_last) */
+            t0 = silk_stage_start(f->clock);
+            back_draw(f, t);
+            silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+        }
+#endif
+    }
     t->depth_equal = t->cull_back = 0;
 #ifndef SILK_NO_CLIP_MODE
     if (f->clip) {
