@@ -418,6 +418,9 @@ typedef struct tri_setup {
     int vnarrow;           /* a 32-bit processor and every vd1, vd2 within 32 bits */
 #ifndef SILK_NO_VERTEX_CACHE
     const silk_phong *plain;   /* silk_hal_phong_plain of the stages, when shading */
+    int64_t ryq, ryr;          /* depth per row: quotient and remainder (span_depth) */
+    rstep dat;                 /* the depth at the centre of pixel (dat_x, dat_y), the last span's first */
+    int dat_x, dat_y;
 #endif
 } tri_setup;
 
@@ -435,6 +438,38 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
     d->q = q <= (uint64_t)INT64_MAX ? (int64_t)q : -(int64_t)(~q) - 1;
     d->r = rem - f * s->area;
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+/* depth_at the centre of pixel (x, row) where a span starts, stepped from
+ * the last span's first pixel where that is the row above and a few
+ * pixels across (most rows of a triangle: the edge moves a pixel or two),
+ * by additions: the same quotient and remainder of the same rational
+ * (the quotient modulo 2^64, as depth_at sums it), without its division. */
+static void span_depth(tri_setup *s, int x, int row, rstep *d)
+{
+    int64_t k = (int64_t)x - s->dat_x;
+    if (row - s->dat_y == 1 && k >= -4 && k <= 4) {
+        uint64_t q = (uint64_t)s->dat.q + (uint64_t)s->ryq + (uint64_t)k * (uint64_t)s->dstep.sq;
+        int64_t r = s->dat.r + s->ryr + k * s->dstep.sr;   /* in [-4 area, 6 area) */
+        while (r < 0) {
+            r += s->area;
+            q--;
+        }
+        while (r >= s->area) {
+            r -= s->area;
+            q++;
+        }
+        d->q = q <= (uint64_t)INT64_MAX ? (int64_t)q : -(int64_t)(~q) - 1;
+        d->r = r;
+    } else {
+        depth_at(s, (int64_t)x * SUB + SUB / 2, (int64_t)row * SUB + SUB / 2, d);
+    }
+    s->dat.q = d->q;
+    s->dat.r = d->r;
+    s->dat_x = x;
+    s->dat_y = row;
+}
+#endif
 
 /* Perspective-correct weights at the pixel whose planes are U, V, T. */
 static PIXEL_INLINE void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
@@ -593,9 +628,8 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 #undef shading
 }
 
-static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
+static void span(silk_target *t, const silk_hal *h, tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
 {
-    int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
     span_ctx c;
     c.t = t;
     c.h = h;
@@ -606,7 +640,11 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     c.crow = t->color ? t->color + r * t->stride : NULL;
     uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
     rstep D = s->dstep;
-    depth_at(s, X, Y, &D);
+#ifndef SILK_NO_VERTEX_CACHE
+    span_depth(s, xl, row, &D);
+#else
+    depth_at(s, (int64_t)xl * SUB + SUB / 2, (int64_t)row * SUB + SUB / 2, &D);
+#endif
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
@@ -759,6 +797,11 @@ static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
     s->gyq = floor_div(gyn, s->area);
     s->gyr = gyn - s->gyq * s->area;
     rstep_init(&s->dstep, 0, s->area, SUB * gxn);
+#ifndef SILK_NO_VERTEX_CACHE
+    s->ryq = floor_div(SUB * gyn, s->area);   /* |gyn| < 2^53 */
+    s->ryr = SUB * gyn - s->ryq * s->area;
+    s->dat_y = -2;   /* rows are >= 0: no span above */
+#endif
 
     int64_t dx = SUB / 2 - s->v[0]->x, dy = (int64_t)y * SUB + SUB / 2 - s->v[0]->y;
     int64_t e1 = s->ea[1] * dx + s->eb[1] * dy, e2 = s->ea[2] * dx + s->eb[2] * dy;

@@ -148,6 +148,10 @@ typedef struct frame {
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
+    /* where g's arrays, the cache and the curves are when a share is built
+     * (a kept share is read where it is kept: share_view) */
+    silk_frame_geom home;
+    silk_vertex_out *home_cache;
     /* FLAT, and SMOOTH's input triangles drawn as they are (direct_ok):
      * where the rasterizer places the mesh's vertex p (position index),
      * vc_xy[2p .. 2p+1] (silk_raster_place), or VC_OUTSIDE (clipped), and
@@ -327,35 +331,50 @@ static size_t share_bytes(uint32_t nvrec, uint32_t ntri, uint32_t ncurve)
            (size_t)ncurve * sizeof(silk_curve) + (size_t)ntri * 3 * sizeof(uint32_t) + (((size_t)ntri + 3) & ~(size_t)3);
 }
 
-/* Copy a share between the frame's (g, cache) and kept memory p: into p
- * when out, else back. */
-static void share_copy(frame *f, uint8_t *p, int out)
+/* Copy the share just built, the frame's (g, cache), into kept memory p
+ * (share_view reads it there). */
+static void share_copy(frame *f, uint8_t *p)
 {
-    silk_frame_geom *g = &f->g;
+    const silk_frame_geom *g = &f->g;
     uint32_t *n = (uint32_t *)(void *)p;
-    if (out) {
-        n[0] = g->nvrec;
-        n[1] = g->ntri;
-        n[2] = g->ncurve;
-        n[3] = f->plain;
-    } else {
-        g->nvrec = n[0];
-        g->ntri = n[1];
-        g->ncurve = n[2];
-        f->plain = (uint8_t)n[3];
-        g->offset = f->sil.offset;
-        g->noffset = f->sil.noffset;
-    }
-    struct { void *at; size_t bytes; } part[5] = {
+    n[0] = g->nvrec;
+    n[1] = g->ntri;
+    n[2] = g->ncurve;
+    n[3] = f->plain;
+    const struct { const void *at; size_t bytes; } part[5] = {
         { g->vrec, g->nvrec * sizeof *g->vrec }, { g->curve, g->ncurve * sizeof *g->curve },
         { f->cache, g->nvrec * sizeof *f->cache }, { g->tri, 3 * (size_t)g->ntri * sizeof *g->tri },
         { g->tri_added, g->ntri } };
     p += 4 * sizeof(uint32_t);
     for (int i = 0; i < 5; i++) {
-        if (out) memcpy(p, part[i].at, part[i].bytes);
-        else memcpy(part[i].at, p, part[i].bytes);
+        memcpy(p, part[i].at, part[i].bytes);
         p += (part[i].bytes + 3) & ~(size_t)3;
     }
+}
+
+/* The share kept at p as the frame's (g, cache) where it is, not copied
+ * back (share_copy): nothing drawn writes them.  share_part points them
+ * home again before it builds one. */
+static void share_view(frame *f, uint8_t *p)
+{
+    silk_frame_geom *g = &f->g;
+    const uint32_t *n = (const uint32_t *)(const void *)p;
+    g->nvrec = n[0];
+    g->ntri = n[1];
+    g->ncurve = n[2];
+    f->plain = (uint8_t)n[3];
+    g->offset = f->sil.offset;
+    g->noffset = f->sil.noffset;
+    /* share_copy's order and padding (its parts hold 4-byte fields) */
+    p += 4 * sizeof(uint32_t);
+    g->vrec = (silk_vrec *)(void *)p;
+    p += (g->nvrec * sizeof *g->vrec + 3) & ~(size_t)3;
+    f->geom.curves = g->curve = (silk_curve *)(void *)p;   /* the vertex stage's and the outline's */
+    p += (g->ncurve * sizeof *g->curve + 3) & ~(size_t)3;
+    f->cache = (silk_vertex_out *)(void *)p;
+    p += (g->nvrec * sizeof *f->cache + 3) & ~(size_t)3;
+    g->tri = (uint32_t *)(void *)p;
+    g->tri_added = p + ((3 * (size_t)g->ntri * sizeof *g->tri + 3) & ~(size_t)3);
 }
 
 static inline int direct_ok(const frame *f, uint32_t k);
@@ -376,9 +395,16 @@ static void share_part(frame *f, uint32_t t)
 #ifndef SILK_NO_VERTEX_CACHE
     uint32_t k = share_kept(f, t);
     if (k != SILK_SIL_NONE && f->ks_at[k]) {   /* built before: the same records, the same output */
-        share_copy(f, f->ks + f->ks_at[k] - 1, 0);
+        share_view(f, f->ks + f->ks_at[k] - 1);
         silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
         return;
+    }
+    if (f->ks && g->vrec != f->home.vrec) {   /* home from a kept share */
+        g->vrec = f->home.vrec;
+        g->tri = f->home.tri;
+        g->tri_added = f->home.tri_added;
+        f->geom.curves = g->curve = f->home.curve;
+        f->cache = f->home_cache;
     }
 #endif
     g->nvrec = g->ntri = g->ncurve = 0;
@@ -402,7 +428,7 @@ static void share_part(frame *f, uint32_t t)
 #ifndef SILK_NO_VERTEX_CACHE
     size_t bytes = share_bytes(g->nvrec, g->ntri, g->ncurve);
     if (k != SILK_SIL_NONE && f->ks_cap - f->ks_used >= bytes) {
-        share_copy(f, f->ks + f->ks_used, 1);
+        share_copy(f, f->ks + f->ks_used);
         f->ks_at[k] = (uint32_t)f->ks_used + 1;
         f->ks_used += bytes;
     }
@@ -544,6 +570,8 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     }
     f->ks_cap = cap;
     f->ks_used = 0;
+    f->home = f->g;
+    f->home_cache = f->cache;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 #else
     (void)f;
