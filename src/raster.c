@@ -57,6 +57,12 @@ static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
  * fast).  The quotient is the same either way. */
 static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
 {
+#if !SILK_CPU32
+    /* a 64-bit host divides in one instruction either way: no test of
+     * the operands' size, and the floor without a branch (both go either
+     * way from one call to the next) */
+    return n / d - ((n % d != 0) & (n < 0));
+#else
     if (d <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
         int32_t n32 = (int32_t)n, d32 = (int32_t)d, q32 = n32 / d32;
         return (n32 % d32 != 0 && n32 < 0) ? q32 - 1 : q32;
@@ -68,6 +74,7 @@ static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
     }
     int64_t q = n / d;
     return (n % d != 0 && n < 0) ? q - 1 : q;
+#endif
 }
 
 /* floor(2^61 / tt), tt > 0: the reciprocal of the perspective weights. */
@@ -111,7 +118,15 @@ static inline void rstep_next(rstep *s)
 {
     s->q += s->sq;
     s->r += s->sr;
+#if !SILK_CPU32
+    /* without a branch on a host: the carry comes pixel by pixel either
+     * way, and a mispredicted branch costs more than the arithmetic */
+    int64_t carry = s->r >= s->den;
+    s->r -= s->den & -carry;
+    s->q += carry;
+#else
     if (s->r >= s->den) { s->r -= s->den; s->q++; }
+#endif
 }
 
 /* ---- targets ------------------------------------------------------------------ */
@@ -449,15 +464,15 @@ static void span_depth(tri_setup *s, int x, int row, rstep *d)
 {
     int64_t k = (int64_t)x - s->dat_x;
     if (row - s->dat_y == 1 && k >= -4 && k <= 4) {
-        uint64_t q = (uint64_t)s->dat.q + (uint64_t)s->ryq + (uint64_t)k * (uint64_t)s->dstep.sq;
-        int64_t r = s->dat.r + s->ryr + k * s->dstep.sr;   /* in [-4 area, 6 area) */
-        while (r < 0) {
-            r += s->area;
-            q--;
-        }
-        while (r >= s->area) {
-            r -= s->area;
-            q++;
+        /* r in [0, 10 area) after the 4 area added: back below area in
+         * four steps of 8, 4, 2 and 1 area, without branches (the carry
+         * goes either way row by row) */
+        uint64_t q = (uint64_t)s->dat.q + (uint64_t)s->ryq + (uint64_t)k * (uint64_t)s->dstep.sq - 4;
+        int64_t r = s->dat.r + s->ryr + k * s->dstep.sr + 4 * s->area;
+        for (int b = 3; b >= 0; b--) {
+            int64_t over = r >= (s->area << b);
+            r -= (s->area << b) & -over;
+            q += (uint64_t)over << b;
         }
         d->q = q <= (uint64_t)INT64_MAX ? (int64_t)q : -(int64_t)(~q) - 1;
         d->r = r;
