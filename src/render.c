@@ -152,6 +152,10 @@ typedef struct frame {
      * (a kept share is read where it is kept: share_view) */
     silk_frame_geom home;
     silk_vertex_out *home_cache;
+    /* the share in g as kept: where its records are placed, once *kxy_ready
+     * (draw_tris); NULL when it is not kept */
+    int32_t (*kxy)[2];
+    uint32_t *kxy_ready;
     /* FLAT, and SMOOTH's input triangles drawn as they are (direct_ok):
      * where the rasterizer places the mesh's vertex p (position index),
      * vc_xy[2p .. 2p+1] (silk_raster_place), or VC_OUTSIDE (clipped), and
@@ -323,11 +327,14 @@ static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *o
 #endif
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* A kept share: its counts, then its records, curves, vertex-stage output,
- * triangles and their flags, each a multiple of 4 bytes. */
+/* A kept share: its counts and whether it is placed, then its records,
+ * curves, vertex-stage output, triangles and their flags, each a multiple
+ * of 4 bytes, then where its records are placed on the screen (draw_tris,
+ * once a frame: the place depends on the frame's size alone). */
+#define KEPT_HEAD 5
 static size_t share_bytes(uint32_t nvrec, uint32_t ntri, uint32_t ncurve)
 {
-    return 4 * sizeof(uint32_t) + (size_t)nvrec * (sizeof(silk_vrec) + sizeof(silk_vertex_out)) +
+    return KEPT_HEAD * sizeof(uint32_t) + (size_t)nvrec * (sizeof(silk_vrec) + sizeof(silk_vertex_out) + 2 * sizeof(int32_t)) +
            (size_t)ncurve * sizeof(silk_curve) + (size_t)ntri * 3 * sizeof(uint32_t) + (((size_t)ntri + 3) & ~(size_t)3);
 }
 
@@ -341,15 +348,18 @@ static void share_copy(frame *f, uint8_t *p)
     n[1] = g->ntri;
     n[2] = g->ncurve;
     n[3] = f->plain;
+    n[4] = 0;   /* not placed yet */
     const struct { const void *at; size_t bytes; } part[5] = {
         { g->vrec, g->nvrec * sizeof *g->vrec }, { g->curve, g->ncurve * sizeof *g->curve },
         { f->cache, g->nvrec * sizeof *f->cache }, { g->tri, 3 * (size_t)g->ntri * sizeof *g->tri },
         { g->tri_added, g->ntri } };
-    p += 4 * sizeof(uint32_t);
+    p += KEPT_HEAD * sizeof(uint32_t);
     for (int i = 0; i < 5; i++) {
         memcpy(p, part[i].at, part[i].bytes);
         p += (part[i].bytes + 3) & ~(size_t)3;
     }
+    f->kxy = (int32_t(*)[2])(void *)p;
+    f->kxy_ready = &n[4];
 }
 
 /* The share kept at p as the frame's (g, cache) where it is, not copied
@@ -358,7 +368,7 @@ static void share_copy(frame *f, uint8_t *p)
 static void share_view(frame *f, uint8_t *p)
 {
     silk_frame_geom *g = &f->g;
-    const uint32_t *n = (const uint32_t *)(const void *)p;
+    uint32_t *n = (uint32_t *)(void *)p;
     g->nvrec = n[0];
     g->ntri = n[1];
     g->ncurve = n[2];
@@ -366,7 +376,7 @@ static void share_view(frame *f, uint8_t *p)
     g->offset = f->sil.offset;
     g->noffset = f->sil.noffset;
     /* share_copy's order and padding (its parts hold 4-byte fields) */
-    p += 4 * sizeof(uint32_t);
+    p += KEPT_HEAD * sizeof(uint32_t);
     g->vrec = (silk_vrec *)(void *)p;
     p += (g->nvrec * sizeof *g->vrec + 3) & ~(size_t)3;
     f->geom.curves = g->curve = (silk_curve *)(void *)p;   /* the vertex stage's and the outline's */
@@ -374,7 +384,10 @@ static void share_view(frame *f, uint8_t *p)
     f->cache = (silk_vertex_out *)(void *)p;
     p += (g->nvrec * sizeof *f->cache + 3) & ~(size_t)3;
     g->tri = (uint32_t *)(void *)p;
-    g->tri_added = p + ((3 * (size_t)g->ntri * sizeof *g->tri + 3) & ~(size_t)3);
+    p += (3 * (size_t)g->ntri * sizeof *g->tri + 3) & ~(size_t)3;
+    g->tri_added = p;
+    f->kxy = (int32_t(*)[2])(void *)(p + ((g->ntri + 3) & ~(size_t)3));
+    f->kxy_ready = &n[4];
 }
 
 static inline int direct_ok(const frame *f, uint32_t k);
@@ -399,6 +412,7 @@ static void share_part(frame *f, uint32_t t)
         silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
         return;
     }
+    f->kxy = NULL;   /* (share_copy: where this one is kept) */
     if (f->ks && g->vrec != f->home.vrec) {   /* home from a kept share */
         g->vrec = f->home.vrec;
         g->tri = f->home.tri;
@@ -556,9 +570,9 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     /* all of them (the plan counted what the kept segments' hold; each adds
      * its counts and padding; the others' a few records each, on a side
      * or two carrying silhouette points or with a vertex moved), or what fits */
-    uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out)) * f->sil.kept_recs +
+    uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out) + 8) * f->sil.kept_recs +
                    (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris +
-                   20 * (uint64_t)f->sil.nseg_kept;
+                   24 * (uint64_t)f->sil.nseg_kept;
     for (uint32_t k = 0; k < n; k++)
         if (!(f->sil.tri_state[k] & SILK_TS_SIL) && !direct_ok(f, k)) all += share_bytes(8, 6, 2);
     size_t cap = all < room ? (size_t)all : room;
@@ -970,14 +984,16 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
      * with the bits silk_raster_triangle would give them
      * (silk_raster_placed); a triangle at a record outside a clip plane
      * goes to silk_raster_triangle as before. */
-    int32_t xy[PART_XY][2];
+    int32_t own[PART_XY][2], (*xy)[2] = own;
     int placed = pass <= 0 && f->part == share_part && f->cache && g->nvrec <= PART_XY;
     /* the test pays where triangles are small (as frame_draw's depth pass
      * is made only where they are large): elsewhere most of them reach a
      * pixel, and silk_raster_placed finds the others as cheaply */
     int ask = (uint64_t)f->geom.mesh->ntris * 16 > (uint64_t)t->width * t->height;
-    for (uint32_t i = 0; placed && i < g->nvrec; i++)
+    if (placed && f->kxy) xy = f->kxy;   /* a kept share: placed there, once a frame */
+    for (uint32_t i = 0; placed && !(f->kxy && *f->kxy_ready) && i < g->nvrec; i++)
         if (!silk_raster_place(t, &f->cache[i].clip, xy[i])) xy[i][0] = VC_OUTSIDE;
+    if (placed && f->kxy) *f->kxy_ready = 1;
 #endif
     for (uint32_t i = 0; i < g->ntri; i++) {
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
