@@ -643,8 +643,16 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 #undef shading
 }
 
-static void span(silk_target *t, const silk_hal *h, tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
+#ifndef SILK_NO_VERTEX_CACHE
+typedef tri_setup span_setup;         /* span_depth keeps the last span's first depth in it */
+#else
+typedef const tri_setup span_setup;
+#endif
+static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int xl, int xr, const int64_t *uvt)
 {
+#ifdef SILK_NO_VERTEX_CACHE
+    int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
+#endif
     span_ctx c;
     c.t = t;
     c.h = h;
@@ -658,7 +666,7 @@ static void span(silk_target *t, const silk_hal *h, tri_setup *s, int row, int x
 #ifndef SILK_NO_VERTEX_CACHE
     span_depth(s, xl, row, &D);
 #else
-    depth_at(s, (int64_t)xl * SUB + SUB / 2, (int64_t)row * SUB + SUB / 2, &D);
+    depth_at(s, X, Y, &D);
 #endif
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
