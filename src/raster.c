@@ -57,6 +57,12 @@ static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
  * fast).  The quotient is the same either way. */
 static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
 {
+#if !SILK_CPU32
+    /* a 64-bit host divides in one instruction either way: no test of
+     * the operands' size, and the floor without a branch (both go either
+     * way from one call to the next) */
+    return n / d - ((n % d != 0) & (n < 0));
+#else
     if (d <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
         int32_t n32 = (int32_t)n, d32 = (int32_t)d, q32 = n32 / d32;
         return (n32 % d32 != 0 && n32 < 0) ? q32 - 1 : q32;
@@ -68,6 +74,7 @@ static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
     }
     int64_t q = n / d;
     return (n % d != 0 && n < 0) ? q - 1 : q;
+#endif
 }
 
 /* floor(2^61 / tt), tt > 0: the reciprocal of the perspective weights. */
@@ -111,7 +118,15 @@ static inline void rstep_next(rstep *s)
 {
     s->q += s->sq;
     s->r += s->sr;
+#if !SILK_CPU32
+    /* without a branch on a host: the carry comes pixel by pixel either
+     * way, and a mispredicted branch costs more than the arithmetic */
+    int64_t carry = s->r >= s->den;
+    s->r -= s->den & -carry;
+    s->q += carry;
+#else
     if (s->r >= s->den) { s->r -= s->den; s->q++; }
+#endif
 }
 
 /* ---- targets ------------------------------------------------------------------ */
@@ -418,6 +433,9 @@ typedef struct tri_setup {
     int vnarrow;           /* a 32-bit processor and every vd1, vd2 within 32 bits */
 #ifndef SILK_NO_VERTEX_CACHE
     const silk_phong *plain;   /* silk_hal_phong_plain of the stages, when shading */
+    int64_t ryq, ryr;          /* depth per row: quotient and remainder (span_depth) */
+    rstep dat;                 /* the depth at the centre of pixel (dat_x, dat_y), the last span's first */
+    int dat_x, dat_y;
 #endif
 } tri_setup;
 
@@ -435,6 +453,38 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
     d->q = q <= (uint64_t)INT64_MAX ? (int64_t)q : -(int64_t)(~q) - 1;
     d->r = rem - f * s->area;
 }
+
+#ifndef SILK_NO_VERTEX_CACHE
+/* depth_at the centre of pixel (x, row) where a span starts, stepped from
+ * the last span's first pixel where that is the row above and a few
+ * pixels across (most rows of a triangle: the edge moves a pixel or two),
+ * by additions: the same quotient and remainder of the same rational
+ * (the quotient modulo 2^64, as depth_at sums it), without its division. */
+static void span_depth(tri_setup *s, int x, int row, rstep *d)
+{
+    int64_t k = (int64_t)x - s->dat_x;
+    if (row - s->dat_y == 1 && k >= -4 && k <= 4) {
+        /* r in [0, 10 area) after the 4 area added: back below area in
+         * four steps of 8, 4, 2 and 1 area, without branches (the carry
+         * goes either way row by row) */
+        uint64_t q = (uint64_t)s->dat.q + (uint64_t)s->ryq + (uint64_t)k * (uint64_t)s->dstep.sq - 4;
+        int64_t r = s->dat.r + s->ryr + k * s->dstep.sr + 4 * s->area;
+        for (int b = 3; b >= 0; b--) {
+            int64_t over = r >= (s->area << b);
+            r -= (s->area << b) & -over;
+            q += (uint64_t)over << b;
+        }
+        d->q = q <= (uint64_t)INT64_MAX ? (int64_t)q : -(int64_t)(~q) - 1;
+        d->r = r;
+    } else {
+        depth_at(s, (int64_t)x * SUB + SUB / 2, (int64_t)row * SUB + SUB / 2, d);
+    }
+    s->dat.q = d->q;
+    s->dat.r = d->r;
+    s->dat_x = x;
+    s->dat_y = row;
+}
+#endif
 
 /* Perspective-correct weights at the pixel whose planes are U, V, T. */
 static PIXEL_INLINE void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
@@ -593,9 +643,16 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 #undef shading
 }
 
-static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
+#ifndef SILK_NO_VERTEX_CACHE
+typedef tri_setup span_setup;         /* span_depth keeps the last span's first depth in it */
+#else
+typedef const tri_setup span_setup;
+#endif
+static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int xl, int xr, const int64_t *uvt)
 {
+#ifdef SILK_NO_VERTEX_CACHE
     int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
+#endif
     span_ctx c;
     c.t = t;
     c.h = h;
@@ -606,11 +663,28 @@ static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row,
     c.crow = t->color ? t->color + r * t->stride : NULL;
     uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
     rstep D = s->dstep;
+#ifndef SILK_NO_VERTEX_CACHE
+    span_depth(s, xl, row, &D);
+#else
     depth_at(s, X, Y, &D);
+#endif
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (t->depth_equal == SILK_DEPTH_TIES && zrow && !mrow) {   /* depth alone: render.c's back_draw */
+        for (int x = xl; x < xr; x++) {
+            uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
+            if (z >= zrow[x] && z) {   /* (nothing there is 0: never as near) */
+                zrow[x] = z;
+                t->drew = 1;
+            }
+            rstep_next(&D);
+        }
+        return;
+    }
+#endif
     if (SILK_CPU32 && zrow && !mrow && D.den <= ((int64_t)1 << 31)) {
         /* The usual case on a 32-bit processor, where most of a span's
          * pixels fail the depth test: the loop's values in registers and
@@ -746,6 +820,11 @@ static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
     s->gyq = floor_div(gyn, s->area);
     s->gyr = gyn - s->gyq * s->area;
     rstep_init(&s->dstep, 0, s->area, SUB * gxn);
+#ifndef SILK_NO_VERTEX_CACHE
+    s->ryq = floor_div(SUB * gyn, s->area);   /* |gyn| < 2^53 */
+    s->ryr = SUB * gyn - s->ryq * s->area;
+    s->dat_y = -2;   /* rows are >= 0: no span above */
+#endif
 
     int64_t dx = SUB / 2 - s->v[0]->x, dy = (int64_t)y * SUB + SUB / 2 - s->v[0]->y;
     int64_t e1 = s->ea[1] * dx + s->eb[1] * dy, e2 = s->ea[2] * dx + s->eb[2] * dy;

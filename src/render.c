@@ -148,6 +148,14 @@ typedef struct frame {
     uint8_t *ks;
     uint32_t *ks_at;
     size_t ks_cap, ks_used;
+    /* where g's arrays, the cache and the curves are when a share is built
+     * (a kept share is read where it is kept: share_view) */
+    silk_frame_geom home;
+    silk_vertex_out *home_cache;
+    /* the share in g as kept: where its records are placed, once *kxy_ready
+     * (draw_tris); NULL when it is not kept */
+    int32_t (*kxy)[2];
+    uint32_t *kxy_ready;
     /* FLAT, and SMOOTH's input triangles drawn as they are (direct_ok):
      * where the rasterizer places the mesh's vertex p (position index),
      * vc_xy[2p .. 2p+1] (silk_raster_place), or VC_OUTSIDE (clipped), and
@@ -158,8 +166,11 @@ typedef struct frame {
     silk_vec4 *vc_clip;
     uint8_t xy_ready;
     /* SMOOTH with a depth pass: per part, which of its triangles wrote a
-     * depth in it (depth_wins), or NULL */
+     * depth in it (depth_wins), or NULL; and the back faces of its
+     * re-meshed parts it draws last (back_last), room for back_cap */
     uint32_t *won;
+    struct back_tri *back;
+    uint32_t back_cap, nback;
 #endif
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
@@ -316,43 +327,67 @@ static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *o
 #endif
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* A kept share: its counts, then its records, curves, vertex-stage output,
- * triangles and their flags, each a multiple of 4 bytes. */
+/* A kept share: its counts and whether it is placed, then its records,
+ * curves, vertex-stage output, triangles and their flags, each a multiple
+ * of 4 bytes, then where its records are placed on the screen (draw_tris,
+ * once a frame: the place depends on the frame's size alone). */
+#define KEPT_HEAD 5
 static size_t share_bytes(uint32_t nvrec, uint32_t ntri, uint32_t ncurve)
 {
-    return 4 * sizeof(uint32_t) + (size_t)nvrec * (sizeof(silk_vrec) + sizeof(silk_vertex_out)) +
+    return KEPT_HEAD * sizeof(uint32_t) + (size_t)nvrec * (sizeof(silk_vrec) + sizeof(silk_vertex_out) + 2 * sizeof(int32_t)) +
            (size_t)ncurve * sizeof(silk_curve) + (size_t)ntri * 3 * sizeof(uint32_t) + (((size_t)ntri + 3) & ~(size_t)3);
 }
 
-/* Copy a share between the frame's (g, cache) and kept memory p: into p
- * when out, else back. */
-static void share_copy(frame *f, uint8_t *p, int out)
+/* Copy the share just built, the frame's (g, cache), into kept memory p
+ * (share_view reads it there). */
+static void share_copy(frame *f, uint8_t *p)
 {
-    silk_frame_geom *g = &f->g;
+    const silk_frame_geom *g = &f->g;
     uint32_t *n = (uint32_t *)(void *)p;
-    if (out) {
-        n[0] = g->nvrec;
-        n[1] = g->ntri;
-        n[2] = g->ncurve;
-        n[3] = f->plain;
-    } else {
-        g->nvrec = n[0];
-        g->ntri = n[1];
-        g->ncurve = n[2];
-        f->plain = (uint8_t)n[3];
-        g->offset = f->sil.offset;
-        g->noffset = f->sil.noffset;
-    }
-    struct { void *at; size_t bytes; } part[5] = {
+    n[0] = g->nvrec;
+    n[1] = g->ntri;
+    n[2] = g->ncurve;
+    n[3] = f->plain;
+    n[4] = 0;   /* not placed yet */
+    const struct { const void *at; size_t bytes; } part[5] = {
         { g->vrec, g->nvrec * sizeof *g->vrec }, { g->curve, g->ncurve * sizeof *g->curve },
         { f->cache, g->nvrec * sizeof *f->cache }, { g->tri, 3 * (size_t)g->ntri * sizeof *g->tri },
         { g->tri_added, g->ntri } };
-    p += 4 * sizeof(uint32_t);
+    p += KEPT_HEAD * sizeof(uint32_t);
     for (int i = 0; i < 5; i++) {
-        if (out) memcpy(p, part[i].at, part[i].bytes);
-        else memcpy(part[i].at, p, part[i].bytes);
+        memcpy(p, part[i].at, part[i].bytes);
         p += (part[i].bytes + 3) & ~(size_t)3;
     }
+    f->kxy = (int32_t(*)[2])(void *)p;
+    f->kxy_ready = &n[4];
+}
+
+/* The share kept at p as the frame's (g, cache) where it is, not copied
+ * back (share_copy): nothing drawn writes them.  share_part points them
+ * home again before it builds one. */
+static void share_view(frame *f, uint8_t *p)
+{
+    silk_frame_geom *g = &f->g;
+    uint32_t *n = (uint32_t *)(void *)p;
+    g->nvrec = n[0];
+    g->ntri = n[1];
+    g->ncurve = n[2];
+    f->plain = (uint8_t)n[3];
+    g->offset = f->sil.offset;
+    g->noffset = f->sil.noffset;
+    /* share_copy's order and padding (its parts hold 4-byte fields) */
+    p += KEPT_HEAD * sizeof(uint32_t);
+    g->vrec = (silk_vrec *)(void *)p;
+    p += (g->nvrec * sizeof *g->vrec + 3) & ~(size_t)3;
+    f->geom.curves = g->curve = (silk_curve *)(void *)p;   /* the vertex stage's and the outline's */
+    p += (g->ncurve * sizeof *g->curve + 3) & ~(size_t)3;
+    f->cache = (silk_vertex_out *)(void *)p;
+    p += (g->nvrec * sizeof *f->cache + 3) & ~(size_t)3;
+    g->tri = (uint32_t *)(void *)p;
+    p += (3 * (size_t)g->ntri * sizeof *g->tri + 3) & ~(size_t)3;
+    g->tri_added = p;
+    f->kxy = (int32_t(*)[2])(void *)(p + ((g->ntri + 3) & ~(size_t)3));
+    f->kxy_ready = &n[4];
 }
 
 static inline int direct_ok(const frame *f, uint32_t k);
@@ -373,9 +408,17 @@ static void share_part(frame *f, uint32_t t)
 #ifndef SILK_NO_VERTEX_CACHE
     uint32_t k = share_kept(f, t);
     if (k != SILK_SIL_NONE && f->ks_at[k]) {   /* built before: the same records, the same output */
-        share_copy(f, f->ks + f->ks_at[k] - 1, 0);
+        share_view(f, f->ks + f->ks_at[k] - 1);
         silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
         return;
+    }
+    f->kxy = NULL;   /* (share_copy: where this one is kept) */
+    if (f->ks && g->vrec != f->home.vrec) {   /* home from a kept share */
+        g->vrec = f->home.vrec;
+        g->tri = f->home.tri;
+        g->tri_added = f->home.tri_added;
+        f->geom.curves = g->curve = f->home.curve;
+        f->cache = f->home_cache;
     }
 #endif
     g->nvrec = g->ntri = g->ncurve = 0;
@@ -399,7 +442,7 @@ static void share_part(frame *f, uint32_t t)
 #ifndef SILK_NO_VERTEX_CACHE
     size_t bytes = share_bytes(g->nvrec, g->ntri, g->ncurve);
     if (k != SILK_SIL_NONE && f->ks_cap - f->ks_used >= bytes) {
-        share_copy(f, f->ks + f->ks_used, 1);
+        share_copy(f, f->ks + f->ks_used);
         f->ks_at[k] = (uint32_t)f->ks_used + 1;
         f->ks_used += bytes;
     }
@@ -527,9 +570,9 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     /* all of them (the plan counted what the kept segments' hold; each adds
      * its counts and padding; the others' a few records each, on a side
      * or two carrying silhouette points or with a vertex moved), or what fits */
-    uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out)) * f->sil.kept_recs +
+    uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out) + 8) * f->sil.kept_recs +
                    (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris +
-                   20 * (uint64_t)f->sil.nseg_kept;
+                   24 * (uint64_t)f->sil.nseg_kept;
     for (uint32_t k = 0; k < n; k++)
         if (!(f->sil.tri_state[k] & SILK_TS_SIL) && !direct_ok(f, k)) all += share_bytes(8, 6, 2);
     size_t cap = all < room ? (size_t)all : room;
@@ -541,6 +584,8 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     }
     f->ks_cap = cap;
     f->ks_used = 0;
+    f->home = f->g;
+    f->home_cache = f->cache;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 #else
     (void)f;
@@ -565,6 +610,16 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
  * triangle under the vertex cache's budget, only where frame_draw makes a
  * depth pass; without the room every triangle is shaded as before. */
 #ifndef SILK_NO_VERTEX_CACHE
+/* A back face of a re-meshed part that the depth pass draws last
+ * (back_last): where the rasterizer places its corners and their clip z
+ * and w (all the depth needs), and which triangle of which part it is. */
+typedef struct back_tri {
+    int32_t xy[3][2];
+    silk_fx z[3], w[3];
+    uint32_t part, bit;
+} back_tri;
+
+#define BACK_MAX 1024   /* back_tri entries at most: a coarse mesh's silhouette has a few hundred */
 static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
     uint64_t n = f->geom.mesh->ntris;
@@ -572,6 +627,12 @@ static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
     f->won = silk_arena_array_top(a, n, sizeof *f->won, SILK_MEM_FRAME);   /* each written in the depth pass */
+    /* the back faces put off, from what is left of the budget and of half the arena */
+    size_t left = budget - bytes, free1 = silk_arena_free_bytes(a) / 2, cap = BACK_MAX;
+    if (left > free1) left = free1;
+    if (cap > left / sizeof *f->back) cap = left / sizeof *f->back;
+    if (f->won && cap > 16 && (f->back = silk_arena_array_top_unfilled(a, cap, sizeof *f->back, SILK_MEM_FRAME)))
+        f->back_cap = (uint32_t)cap;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 }
 #endif
@@ -847,10 +908,69 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
     return 1;
 }
 
+#ifndef SILK_NO_VERTEX_CACHE
+/* The depth pass of a SMOOTH frame (depth_wins) puts off the back faces
+ * of its re-meshed parts, drawn both ways (frame_draw), until every other
+ * triangle has written its depth (back_draw): then most of them are
+ * behind and write none, and the shading pass skips them (and a part
+ * none of whose triangles wrote is not rebuilt), where drawn in their turn
+ * most wrote a depth the front faces took again.  The depth buffer is the
+ * same (the nearest of all, in any order), and so is every pixel
+ * shaded: the one fragment that shades a pixel is the first drawn of
+ * those as near as its depth, so drawn before the others as near, and
+ * each triangle put off notes a win wherever it is as near as what is
+ * there (SILK_DEPTH_TIES), so it notes one wherever it may be that
+ * fragment.  1 when the triangle at records c of part `part` is put off
+ * (placed at p, facing away, and room for it; not where fragment writes
+ * are counted, which putting off can raise). */
+static int back_last(frame *f, const silk_target *t, const int32_t *const p[3], const uint32_t c[3], uint32_t part,
+                     uint32_t bit)
+{
+    const int32_t *a = p[0], *b = p[1], *d = p[2];
+    int64_t area = ((int64_t)b[0] - a[0]) * ((int64_t)d[1] - a[1]) - ((int64_t)d[0] - a[0]) * ((int64_t)b[1] - a[1]);
+    if (area <= 0 || t->cull_back || t->mask || t->writes || f->nback >= f->back_cap) return 0;   /* (y down: > 0 faces away) */
+    back_tri *bt = &f->back[f->nback++];
+    for (int i = 0; i < 3; i++) {
+        bt->xy[i][0] = p[i][0];
+        bt->xy[i][1] = p[i][1];
+        bt->z[i] = f->cache[c[i]].clip.z;
+        bt->w[i] = f->cache[c[i]].clip.w;
+    }
+    bt->part = part;
+    bt->bit = bit;
+    return 1;
+}
+
+/* The back faces back_last put off, into the depth buffer, each noting
+ * its part's win. */
+static void back_draw(frame *f, silk_target *t)
+{
+    silk_vertex_out v[3];
+    memset(v, 0, sizeof v);
+    const silk_vertex_out *pv[3] = { &v[0], &v[1], &v[2] };
+    t->depth_equal = SILK_DEPTH_TIES;
+    t->cull_back = 0;
+    for (uint32_t i = 0; i < f->nback; i++) {
+        const back_tri *bt = &f->back[i];
+        const int32_t *p[3] = { bt->xy[0], bt->xy[1], bt->xy[2] };
+        for (int j = 0; j < 3; j++) {
+            v[j].clip.z = bt->z[j];
+            v[j].clip.w = bt->w[j];
+        }
+        if (!silk_raster_reaches(t, p)) continue;
+        t->drew = 0;
+        silk_raster_placed(t, NULL, pv, p);
+        if (t->drew) f->won[bt->part] |= bt->bit;
+    }
+    t->depth_equal = 0;
+    f->nback = 0;
+}
+#endif
+
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
 #define PART_XY 64   /* draw_tris: the most records of a share placed once */
-static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t, int pass, uint32_t *won)
+static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int pass, uint32_t *won)
 {
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
@@ -864,14 +984,16 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
      * with the bits silk_raster_triangle would give them
      * (silk_raster_placed); a triangle at a record outside a clip plane
      * goes to silk_raster_triangle as before. */
-    int32_t xy[PART_XY][2];
+    int32_t own[PART_XY][2], (*xy)[2] = own;
     int placed = pass <= 0 && f->part == share_part && f->cache && g->nvrec <= PART_XY;
     /* the test pays where triangles are small (as frame_draw's depth pass
      * is made only where they are large): elsewhere most of them reach a
      * pixel, and silk_raster_placed finds the others as cheaply */
     int ask = (uint64_t)f->geom.mesh->ntris * 16 > (uint64_t)t->width * t->height;
-    for (uint32_t i = 0; placed && i < g->nvrec; i++)
+    if (placed && f->kxy) xy = f->kxy;   /* a kept share: placed there, once a frame */
+    for (uint32_t i = 0; placed && !(f->kxy && *f->kxy_ready) && i < g->nvrec; i++)
         if (!silk_raster_place(t, &f->cache[i].clip, xy[i])) xy[i][0] = VC_OUTSIDE;
+    if (placed && f->kxy) *f->kxy_ready = 1;
 #endif
     for (uint32_t i = 0; i < g->ntri; i++) {
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
@@ -883,6 +1005,7 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
         t->drew = 0;
         if (placed && xy[c[0]][0] != VC_OUTSIDE && xy[c[1]][0] != VC_OUTSIDE && xy[c[2]][0] != VC_OUTSIDE) {
             const int32_t *p[3] = { xy[c[0]], xy[c[1]], xy[c[2]] };
+            if (won && pass < 0 && back_last(f, t, p, c, (uint32_t)(won - f->won), bit)) continue;
             if (!ask || silk_raster_reaches(t, p)) {
                 const silk_vertex_out *v[3] = { &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]] };
                 silk_raster_placed(t, shade, v, p);
@@ -1014,7 +1137,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
     if (depth_first) wins = f->won;
 #endif
-    for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
+    for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++) {
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
@@ -1046,6 +1169,14 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
+#ifndef SILK_NO_VERTEX_CACHE
+        if (f->nback) {   /* the depth pass's back faces put off (back_last) */
+            t0 = silk_stage_start(f->clock);
+            back_draw(f, t);
+            silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+        }
+#endif
+    }
     t->depth_equal = t->cull_back = 0;
 #ifndef SILK_NO_CLIP_MODE
     if (f->clip) {

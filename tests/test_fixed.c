@@ -321,6 +321,28 @@ TEST(test_udiv64_32)
     CHECK(bad == 0);
 }
 
+/* silk_shr_round64 (without a branch on a 64-bit host) against the
+ * rounding it states: halves away from zero, -f(x) == f(-x); values of
+ * every length and sign, halves and their neighbours. */
+TEST(test_shr_round64)
+{
+    long bad = 0, n_checked = 0;
+    for (int i = 0; i < N_RANDOM; i++) {
+        unsigned long long r = check_rand64();
+        int s = 1 + (int)(r % 62);
+        int64_t mag = (int64_t)(check_rand64() >> (2 + (r >> 8) % 62)), half = (int64_t)1 << (s - 1);
+        int64_t vs[4] = { mag, -mag, (mag >> s << s) + half, -((mag >> s << s) + half) };
+        for (int k = 0; k < 4; k++) {
+            int64_t v = vs[k] - (k >= 2 && (r >> 20 & 1)), a = v < 0 ? -v : v;
+            int64_t want = (a + half) >> s;   /* a + half < 2^62 */
+            bad += silk_shr_round64(v, s) != (v < 0 ? -want : want);
+            n_checked++;
+        }
+    }
+    printf("  shr_round64: %ld of %ld wrong (bound 0: exact)\n", bad, n_checked);
+    CHECK(bad == 0);
+}
+
 /* silk_udiv64_cpu32 (the 32-bit processor's silk_udiv64) against the plain
  * 64-bit division: divisors of every length up to 64 bits, numerators of
  * every length, quotients above 2^32 (the two-step route) and the edges
@@ -900,6 +922,7 @@ int main(void)
     RUN(test_rsqrt);
     RUN(test_udiv64_32);
     RUN(test_udiv64_cpu32);
+    RUN(test_shr_round64);
     RUN(test_isqrt);
     RUN(test_sqrt_rsqrt_all);
     RUN(test_sincos);

@@ -66,7 +66,15 @@ static inline int32_t silk_fx_floor(silk_fx a) { return (int32_t)(a >> 16); }
 static inline int64_t silk_shr_round64(int64_t v, int s)
 {
     int64_t half = (int64_t)1 << (s - 1);
+#if !SILK_CPU32
+    /* the magnitude's rounding, negated by the sign's mask, without a
+     * branch on a host: the sign goes either way call by call (curve
+     * points, normals) and a mispredicted branch costs more */
+    int64_t m = -(int64_t)(v < 0);
+    return ((((v ^ m) - m + half) >> s) ^ m) - m;
+#else
     return v >= 0 ? (v + half) >> s : -((-v + half) >> s);
+#endif
 }
 
 static inline silk_fx silk_fx_add(silk_fx a, silk_fx b) { return silk_fx_sat((int64_t)a + b); }

@@ -25,6 +25,8 @@ typedef enum silk_pixfmt {
     SILK_PIX_RGB565 = 1    /* 2 bytes per pixel, little-endian 0bRRRRRGGGGGGBBBBB */
 } silk_pixfmt;
 
+#define SILK_DEPTH_TIES 2   /* silk_target.depth_equal */
+
 typedef struct silk_target {
     int width, height;       /* the whole frame */
     int y0, rows;            /* the band these buffers hold */
@@ -38,7 +40,8 @@ typedef struct silk_target {
     uint16_t *writes;        /* optional (tests): rows * width counters of fragment writes */
     int depth_equal;         /* 0: draw where nearer than the depth buffer; 1: where as near, for the
                                 shading pass after a depth-only pass (silk_render), so that each
-                                pixel is shaded once */
+                                pixel is shaded once; SILK_DEPTH_TIES (depth alone, builds with the
+                                vertex cache): write where nearer, set drew where as near too */
     const uint8_t *mask;     /* optional stencil over the band (clip mode): rows of (width + 7) / 8 bytes,
                                 bit x & 7 of byte x >> 3; triangles draw only where the bit is set */
     int cull_back;           /* 1: skip triangles seen from behind (clockwise on the screen after
