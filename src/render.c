@@ -1096,6 +1096,41 @@ static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
     silk_aa_share(aa, m, v, &g, out, k);
     return 1;
 }
+
+/* The first outline candidate (f->cand) after k, or nparts. */
+static uint32_t cand_after(const frame *f, uint32_t k)
+{
+    while (++k < f->nparts)
+        if (!f->cand[k / 8]) k |= 7;   /* eight at once, as frame_aa skips them */
+        else if (f->cand[k / 8] >> (k % 8) & 1) return k;
+    return f->nparts;
+}
+
+/* A host's prefetch for aa_direct, asked at candidate k: the outline's
+ * candidates lie scattered over the mesh, so each reads its corners from
+ * memory no cache holds; the next candidate's clip coordinates and the
+ * one after's corners and sides (silk_aa_share reads the sides' edges) are fetched while k's outline is worked out (some
+ * two thousand instructions).  Reads nothing itself but the next
+ * candidate's corners and sides, fetched the candidate before. */
+static void aa_prefetch(const frame *f, uint32_t k)
+{
+#if defined(__GNUC__)
+    const silk_mesh *m = f->geom.mesh;
+    uint32_t c1 = cand_after(f, k), c2 = c1 < f->nparts ? cand_after(f, c1) : f->nparts;
+    if (c2 < f->nparts) {
+        __builtin_prefetch(&m->tri[3 * (size_t)c2]);
+        if (m->tri_edge) __builtin_prefetch(&m->tri_edge[3 * (size_t)c2]);
+    }
+    for (uint32_t i = 0; c1 < f->nparts && i < 3; i++) {
+        uint32_t p = m->tri[3 * (size_t)c1 + i], e = m->tri_edge ? m->tri_edge[3 * (size_t)c1 + i] : SILK_NO_INDEX;
+        if (p < m->nverts) __builtin_prefetch(&f->vc_clip[p]);
+        if (e < m->nedges) __builtin_prefetch(&m->edge[e]);
+    }
+#else
+    (void)f;
+    (void)k;
+#endif
+}
 #endif
 
 /* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
@@ -1153,6 +1188,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
 #endif
 #ifndef SILK_NO_VERTEX_CACHE
+        if (f->cand && f->vc_xy && f->xy_ready && !f->smooth) aa_prefetch(f, k);
         if (aa_direct(f, &aa, v, k)) continue;
 #endif
         f->part(f, k);
