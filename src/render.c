@@ -1107,12 +1107,16 @@ static uint32_t cand_after(const frame *f, uint32_t k)
 }
 
 /* A host's prefetch for aa_direct, asked at candidate k: the outline's
- * candidates lie scattered over the mesh, so each reads its corners from
- * memory no cache holds; the next candidate's clip coordinates and the
- * one after's corners and sides (silk_aa_share reads the sides' edges) are fetched while k's outline is worked out (some
- * two thousand instructions).  Reads nothing itself but the next
- * candidate's corners and sides, fetched the candidate before. */
-static void aa_prefetch(const frame *f, uint32_t k)
+ * candidates lie scattered over the mesh, so each reads its corners and
+ * sides (silk_aa_share reads the sides' edges) from memory no cache
+ * holds; the next candidate's clip coordinates and edges and the one
+ * after's corners are fetched while k's outline is worked out (some two
+ * thousand instructions).  It reads nothing itself but the next
+ * candidate's corners and sides, fetched at the candidate before. */
+#if defined(__GNUC__)
+__attribute__((always_inline))   /* gcc takes a call that only prefetches for one without effect, and drops it */
+#endif
+static inline void aa_prefetch(const frame *f, uint32_t k)
 {
 #if defined(__GNUC__)
     const silk_mesh *m = f->geom.mesh;
