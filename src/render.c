@@ -157,6 +157,7 @@ typedef struct frame {
     int32_t *vc_xy;
     silk_vec4 *vc_clip;
     uint8_t xy_ready;
+    uint8_t all_before;       /* every vertex so placed lies in front of the near plane (before_near) */
     /* SMOOTH with a depth pass: per part, which of its triangles wrote a
      * depth in it (depth_wins), or NULL */
     uint32_t *won;
@@ -841,7 +842,13 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
         corners_before = before_near(v, silk_v3(i & 1 ? m->bbox_max.x : m->bbox_min.x,
                                                 i & 2 ? m->bbox_max.y : m->bbox_min.y,
                                                 i & 4 ? m->bbox_max.z : m->bbox_min.z));
-    if (corners_before || sphere_before_near(m, v)) return 1;
+    if (corners_before) return 1;
+#ifndef SILK_NO_VERTEX_CACHE
+    /* every vertex placed already (frame_extras): by the same stage, so the
+     * answer of the loop below, without another pass over the mesh */
+    if (f->xy_ready && f->hal == h) return f->all_before;
+#endif
+    if (sphere_before_near(m, v)) return 1;
     for (uint32_t i = 0; i < m->nverts; i++)
         if (!before_near(v, m->pos[i])) return 0;
     return 1;
@@ -915,17 +922,22 @@ static void draw_tris(const frame *f, const silk_render_opts *o, silk_target *t,
 /* Every vertex of the mesh placed on the screen of t (vc_xy) for
  * draw_direct, once a frame, before its first triangle is drawn (vertices
  * that only triangles outside the band use are so few it is cheaper than
- * asking).
+ * asking), and whether all lie in front of the near plane (all_before),
+ * which back_faces_hidden would otherwise ask in a pass of its own.
  * The stage clock counts it as the rasterizer's, as draw_direct's vertex
  * stage: the vertex stage's pieces are the shares emitted. */
 static void place_vertices(frame *f, const silk_target *t)
 {
     const silk_mesh *m = f->geom.mesh;
     uint32_t t0 = silk_stage_start(f->clock);
+    int before = 1;
     for (uint32_t p = 0; p < m->nverts; p++) {
+        const silk_vec4 *c = &f->vc_clip[p];
         f->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
-        if (!silk_raster_place(t, &f->vc_clip[p], &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
+        before &= c->w > 0 && (int64_t)c->z + c->w > 0;   /* before_near's test */
+        if (!silk_raster_place(t, c, &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
     }
+    f->all_before = (uint8_t)before;
     f->xy_ready = 1;
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
 }
@@ -1112,15 +1124,18 @@ static uint32_t cand_after(const frame *f, uint32_t k)
  * holds; the next candidate's clip coordinates and edges and the one
  * after's corners are fetched while k's outline is worked out (some two
  * thousand instructions).  It reads nothing itself but the next
- * candidate's corners and sides, fetched at the candidate before. */
+ * candidate's corners and sides, fetched at the candidate before; next
+ * keeps the two candidates after the last k asked (none: UINT32_MAX). */
 #if defined(__GNUC__)
 __attribute__((always_inline))   /* gcc takes a call that only prefetches for one without effect, and drops it */
 #endif
-static inline void aa_prefetch(const frame *f, uint32_t k)
+static inline void aa_prefetch(const frame *f, uint32_t k, uint32_t next[2])
 {
 #if defined(__GNUC__)
     const silk_mesh *m = f->geom.mesh;
-    uint32_t c1 = cand_after(f, k), c2 = c1 < f->nparts ? cand_after(f, c1) : f->nparts;
+    if (next[0] == k) next[0] = next[1];   /* found at the candidate before */
+    else next[0] = cand_after(f, k);
+    uint32_t c1 = next[0], c2 = next[1] = c1 < f->nparts ? cand_after(f, c1) : f->nparts;
     if (c2 < f->nparts) {
         __builtin_prefetch(&m->tri[3 * (size_t)c2]);
         if (m->tri_edge) __builtin_prefetch(&m->tri_edge[3 * (size_t)c2]);
@@ -1133,6 +1148,7 @@ static inline void aa_prefetch(const frame *f, uint32_t k)
 #else
     (void)f;
     (void)k;
+    (void)next;
 #endif
 }
 #endif
@@ -1177,6 +1193,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         silk_aa_candidates(&aa, f->geom.mesh, v, f->cand);
         f->cand_ready = 1;
     }
+    uint32_t next[2] = { UINT32_MAX, UINT32_MAX };   /* aa_prefetch's */
 #endif
     for (uint32_t k = 0; k < f->nparts; k++) {
 #ifndef SILK_NO_VERTEX_CACHE
@@ -1192,7 +1209,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
 #endif
 #ifndef SILK_NO_VERTEX_CACHE
-        if (f->cand && f->vc_xy && f->xy_ready && !f->smooth) aa_prefetch(f, k);
+        if (f->cand && f->vc_xy && f->xy_ready && !f->smooth) aa_prefetch(f, k, next);
         if (aa_direct(f, &aa, v, k)) continue;
 #endif
         f->part(f, k);
@@ -1210,9 +1227,15 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o,
                          const silk_target *t)
 {
+#ifdef SILK_NO_VERTEX_CACHE
     f->cull = back_faces_hidden(f, m, h, o);
+#endif
     f->peak_before = a->top_peak;
     vertex_cache(f, a, o);
+#ifndef SILK_NO_VERTEX_CACHE
+    if (f->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
+    f->cull = back_faces_hidden(f, m, h, o);
+#endif
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
 #ifndef SILK_NO_VERTEX_CACHE
