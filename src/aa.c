@@ -513,9 +513,9 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand, int fronts_known)
+void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand)
 {
-    if (!fronts_known) silk_sil_tri_fronts(m, v, aa->facing);   /* every facing, in mesh order */
+    silk_sil_tri_fronts(m, v, aa->facing);   /* every facing, in mesh order */
     memset(cand, 0, ((size_t)m->ntris + 7) / 8);
 #ifdef SILK_NO_AA_CREASE
     const int creases = 0;

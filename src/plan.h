@@ -235,9 +235,6 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
  * four triangles a byte, silk_aa.facing's layout): one loop that keeps the
  * per-call work out of it. */
 void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing);
-/* The same for triangles t .. t + 3 alone (t a multiple of 4): for a loop
- * over the triangles that reads them anyway (render.c frame_draw). */
-void silk_sil_tri_fronts4(const silk_mesh *m, const silk_view *v, uint8_t *facing, uint32_t t);
 #endif
 
 /* Eq. 8 for curve c: the number of intervals to sample it with, from its

@@ -127,7 +127,6 @@ typedef struct frame {
 #ifndef SILK_NO_VERTEX_CACHE
     uint8_t *cand;            /* closed mesh: silk_aa_candidates' bits, or NULL */
     uint8_t cand_ready;       /* made (by the first band's frame_aa) */
-    const silk_view *fronts_view;   /* the view frame_draw filled facing for, or NULL (not filled) */
 #endif
     size_t vc_bytes;          /* the arena it and the facing memo take */
     size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
@@ -1026,21 +1025,11 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #ifndef SILK_NO_VERTEX_CACHE
     if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
     if (depth_first) wins = f->won;
-    /* FLAT whose outline's candidates are still to be made: every
-     * triangle's facing (silk_sil_tri_fronts4) in the first pass, which
-     * reads the triangles in mesh order anyway, so that
-     * silk_aa_candidates need not read them all again */
-    const silk_view *fv = f->cand && !f->cand_ready && !f->fronts_view && !f->smooth && !f->rows && f->vc_xy
-                              ? silk_hal_vertex_view(f->hal)
-                              : NULL;
 #endif
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++)
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
             uint32_t k = t->depth_equal ? f->nparts - 1 - i : i;
-#ifndef SILK_NO_VERTEX_CACHE
-            if (fv && pass == (depth_first ? -1 : 0) && k % 4 == 0) silk_sil_tri_fronts4(f->geom.mesh, fv, f->facing, k);
-#endif
             uint32_t *won = NULL;
             if (wins && pass <= 0) {
                 won = &wins[k];
@@ -1070,9 +1059,6 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
     t->depth_equal = t->cull_back = 0;
-#ifndef SILK_NO_VERTEX_CACHE
-    if (fv) f->fronts_view = fv;
-#endif
 #ifndef SILK_NO_CLIP_MODE
     if (f->clip) {
         t->mask = NULL;
@@ -1204,7 +1190,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.geom = &f->geom;
 #ifndef SILK_NO_VERTEX_CACHE
     if (f->cand && !f->cand_ready) {
-        silk_aa_candidates(&aa, f->geom.mesh, v, f->cand, f->fronts_view == v);
+        silk_aa_candidates(&aa, f->geom.mesh, v, f->cand);
         f->cand_ready = 1;
     }
     uint32_t next[2] = { UINT32_MAX, UINT32_MAX };   /* aa_prefetch's */

@@ -139,30 +139,18 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 }
 
 #ifndef SILK_NO_VERTEX_CACHE
-/* The facing byte of triangles t .. t + 3 (t a multiple of 4). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline uint8_t fronts4(const silk_mesh *m, const silk_view *v, uint32_t t)
-{
-    const silk_index *tv = m->tri;
-    unsigned b = 0;
-    for (uint32_t i = 0; i < 4 && t + i < m->ntris; i++) {
-        const silk_index *c = &tv[3 * (t + i)];
-        int front = c[0] < m->nverts && c[1] < m->nverts && c[2] < m->nverts && front_of(m, v, t + i);
-        b |= (2u | (unsigned)front) << 2 * i;
-    }
-    return (uint8_t)b;
-}
-
 void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing)
 {
-    for (uint32_t t = 0; t < m->ntris; t += 4) facing[t / 4] = fronts4(m, v, t);
-}
-
-void silk_sil_tri_fronts4(const silk_mesh *m, const silk_view *v, uint8_t *facing, uint32_t t)
-{
-    facing[t / 4] = fronts4(m, v, t);
+    const silk_index *tv = m->tri;
+    for (uint32_t t = 0; t < m->ntris; t += 4) {
+        unsigned b = 0;
+        for (uint32_t i = 0; i < 4 && t + i < m->ntris; i++) {
+            const silk_index *c = &tv[3 * (t + i)];
+            int front = c[0] < m->nverts && c[1] < m->nverts && c[2] < m->nverts && front_of(m, v, t + i);
+            b |= (2u | (unsigned)front) << 2 * i;
+        }
+        facing[t / 4] = (uint8_t)b;
+    }
 }
 #endif
 
