@@ -528,11 +528,15 @@ void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uin
      * triangle is one, and a side against one is walked as its segment's
      * curve instead, unless it is a crease. */
     const uint8_t *ts = aa->sil ? aa->sil->tri_state : NULL;
-    for (uint32_t e = 0; e < m->nedges; e++) {
-        const silk_edge *ed = &m->edge[e];
+    /* in locals: a byte stored into cand could alias them all */
+    const uint8_t *facing = aa->facing;
+    const silk_edge *edge = m->edge;
+    const uint32_t ntris = m->ntris, nedges = m->nedges;
+    for (uint32_t e = 0; e < nedges; e++) {
+        const silk_edge *ed = &edge[e];
         uint32_t t0 = ed->t[0], t1 = ed->t[1];
-        if (t0 >= m->ntris || t1 >= m->ntris) continue;
-        int f0 = aa->facing[t0 / 4] >> 2 * (t0 % 4) & 1, f1 = aa->facing[t1 / 4] >> 2 * (t1 % 4) & 1;   /* known */
+        if (t0 >= ntris || t1 >= ntris) continue;
+        int f0 = facing[t0 / 4] >> 2 * (t0 % 4) & 1, f1 = facing[t1 / 4] >> 2 * (t1 % 4) & 1;   /* known */
         uint32_t mark = f0 != f1 ? (ts && (ts[f0 ? t1 : t0] & SILK_TS_SIL) ? SILK_NO_INDEX : f0 ? t0 : t1)   /* an outline side */
                         : f0 && creases && silk_edge_has_feature(ed) ? (t0 < t1 ? t0 : t1)   /* a crease, from its first triangle */
                         : SILK_NO_INDEX;

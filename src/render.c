@@ -165,6 +165,7 @@ typedef struct frame {
     int32_t *vc_xy;
     silk_vec4 *vc_clip;
     uint8_t xy_ready;
+    uint8_t all_before;       /* every vertex so placed lies in front of the near plane (before_near) */
     /* SMOOTH with a depth pass: per part, which of its triangles wrote a
      * depth in it (depth_wins), or NULL; and the back faces of its
      * re-meshed parts it draws last (back_last), room for back_cap */
@@ -902,7 +903,13 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
         corners_before = before_near(v, silk_v3(i & 1 ? m->bbox_max.x : m->bbox_min.x,
                                                 i & 2 ? m->bbox_max.y : m->bbox_min.y,
                                                 i & 4 ? m->bbox_max.z : m->bbox_min.z));
-    if (corners_before || sphere_before_near(m, v)) return 1;
+    if (corners_before) return 1;
+#ifndef SILK_NO_VERTEX_CACHE
+    /* every vertex placed already (frame_extras): by the same stage, so the
+     * answer of the loop below, without another pass over the mesh */
+    if (f->xy_ready && f->hal == h) return f->all_before;
+#endif
+    if (sphere_before_near(m, v)) return 1;
     for (uint32_t i = 0; i < m->nverts; i++)
         if (!before_near(v, m->pos[i])) return 0;
     return 1;
@@ -1038,17 +1045,22 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
 /* Every vertex of the mesh placed on the screen of t (vc_xy) for
  * draw_direct, once a frame, before its first triangle is drawn (vertices
  * that only triangles outside the band use are so few it is cheaper than
- * asking).
+ * asking), and whether all lie in front of the near plane (all_before),
+ * which back_faces_hidden would otherwise ask in a pass of its own.
  * The stage clock counts it as the rasterizer's, as draw_direct's vertex
  * stage: the vertex stage's pieces are the shares emitted. */
 static void place_vertices(frame *f, const silk_target *t)
 {
     const silk_mesh *m = f->geom.mesh;
     uint32_t t0 = silk_stage_start(f->clock);
+    int before = 1;
     for (uint32_t p = 0; p < m->nverts; p++) {
+        const silk_vec4 *c = &f->vc_clip[p];
         f->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
-        if (!silk_raster_place(t, &f->vc_clip[p], &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
+        before &= c->w > 0 && (int64_t)c->z + c->w > 0;   /* before_near's test */
+        if (!silk_raster_place(t, c, &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
     }
+    f->all_before = (uint8_t)before;
     f->xy_ready = 1;
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
 }
@@ -1227,6 +1239,49 @@ static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
     silk_aa_share(aa, m, v, &g, out, k);
     return 1;
 }
+
+/* The first outline candidate (f->cand) after k, or nparts. */
+static uint32_t cand_after(const frame *f, uint32_t k)
+{
+    while (++k < f->nparts)
+        if (!f->cand[k / 8]) k |= 7;   /* eight at once, as frame_aa skips them */
+        else if (f->cand[k / 8] >> (k % 8) & 1) return k;
+    return f->nparts;
+}
+
+/* A host's prefetch for aa_direct, asked at candidate k: the outline's
+ * candidates lie scattered over the mesh, so each reads its corners and
+ * sides (silk_aa_share reads the sides' edges) from memory no cache
+ * holds; the next candidate's clip coordinates and edges and the one
+ * after's corners are fetched while k's outline is worked out (some two
+ * thousand instructions).  It reads nothing itself but the next
+ * candidate's corners and sides, fetched at the candidate before; next
+ * keeps the two candidates after the last k asked (none: UINT32_MAX). */
+#if defined(__GNUC__)
+__attribute__((always_inline))   /* gcc takes a call that only prefetches for one without effect, and drops it */
+#endif
+static inline void aa_prefetch(const frame *f, uint32_t k, uint32_t next[2])
+{
+#if defined(__GNUC__)
+    const silk_mesh *m = f->geom.mesh;
+    if (next[0] == k) next[0] = next[1];   /* found at the candidate before */
+    else next[0] = cand_after(f, k);
+    uint32_t c1 = next[0], c2 = next[1] = c1 < f->nparts ? cand_after(f, c1) : f->nparts;
+    if (c2 < f->nparts) {
+        __builtin_prefetch(&m->tri[3 * (size_t)c2]);
+        if (m->tri_edge) __builtin_prefetch(&m->tri_edge[3 * (size_t)c2]);
+    }
+    for (uint32_t i = 0; c1 < f->nparts && i < 3; i++) {
+        uint32_t p = m->tri[3 * (size_t)c1 + i], e = m->tri_edge ? m->tri_edge[3 * (size_t)c1 + i] : SILK_NO_INDEX;
+        if (p < m->nverts) __builtin_prefetch(&f->vc_clip[p]);
+        if (e < m->nedges) __builtin_prefetch(&m->edge[e]);
+    }
+#else
+    (void)f;
+    (void)k;
+    (void)next;
+#endif
+}
 #endif
 
 /* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
@@ -1269,6 +1324,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         silk_aa_candidates(&aa, f->geom.mesh, v, f->cand);
         f->cand_ready = 1;
     }
+    uint32_t next[2] = { UINT32_MAX, UINT32_MAX };   /* aa_prefetch's */
 #endif
     for (uint32_t k = 0; k < f->nparts; k++) {
 #ifndef SILK_NO_VERTEX_CACHE
@@ -1284,6 +1340,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
 #endif
 #ifndef SILK_NO_VERTEX_CACHE
+        if (f->cand && f->vc_xy && f->xy_ready && !f->smooth) aa_prefetch(f, k, next);
         if (aa_direct(f, &aa, v, k)) continue;
 #endif
         f->part(f, k);
@@ -1301,9 +1358,15 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o,
                          const silk_target *t)
 {
+#ifdef SILK_NO_VERTEX_CACHE
     f->cull = back_faces_hidden(f, m, h, o);
+#endif
     f->peak_before = a->top_peak;
     vertex_cache(f, a, o);
+#ifndef SILK_NO_VERTEX_CACHE
+    if (f->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
+    f->cull = back_faces_hidden(f, m, h, o);
+#endif
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
 #ifndef SILK_NO_VERTEX_CACHE
