@@ -6,7 +6,7 @@ AR       ?= ar
 PREFIX   ?= /usr/local
 BUILD    ?= build
 OPT      ?= -O2
-WARN     := -Wall -Wextra -Wpedantic
+WARN     := -Wall -Wextra -Wpedantic -Wundef
 CFLAGS_BASE := -std=c11 $(WARN) $(OPT) -g -Iinclude
 SAN      ?=
 ifeq ($(SAN),1)
@@ -14,7 +14,7 @@ ifeq ($(SAN),1)
   SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
 CFLAGS   ?=
-ALL_CFLAGS = $(CFLAGS_BASE) $(SANFLAGS) $(CFLAGS)
+ALL_CFLAGS = $(CFLAGS_BASE) $(HOST_CONFIG) $(SANFLAGS) $(CFLAGS)
 LDFLAGS  ?=
 # The board: the silk tool's defaults for this target (boards/*/board.mk).
 BOARD    ?= host
@@ -22,6 +22,14 @@ BOARD    ?= host
 # the tests go on without them.
 MESHES_DIR := $(or $(SILK_MESHES),../shared/meshes)
 include boards/$(BOARD)/board.mk
+# The core's build options (include/silk/config.h) are the board's header,
+# boards/NAME/config.h, named by -DSILK_CONFIG_FILE.  A firmware board's
+# build directory also holds the host-side tool that packs its models,
+# built with the host's options; its firmware and the firmware's host build
+# take the board's (platform/mps2/firmware.mk).
+BOARD_CONFIG ?= boards/$(BOARD)/config.h
+config_flag = -DSILK_CONFIG_FILE='"$(abspath $(1))"'
+HOST_CONFIG := $(call config_flag,$(if $(BOARD_RULES),boards/host/config.h,$(BOARD_CONFIG)))
 PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 

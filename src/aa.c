@@ -105,7 +105,7 @@ static silk_aa_pt point(const silk_target *t, const silk_vertex_out *o)
  * (a host's shortcut, the same bits). */
 static silk_aa_pt place(silk_aa *aa, const silk_geom *g, const silk_vrec *r)
 {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     const silk_view *v = silk_hal_vertex_view(aa->hal);
     if (v && r->kind == SILK_VREC_CURVE && g->curves) {   /* silk_vrec_eval's position */
         aa->out->clip = silk_view_clip(v, silk_hermite_point(&g->curves[r->a], silk_fx_clamp(r->t, 0, SILK_FX_ONE)));
@@ -221,7 +221,7 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int dir, uint32_t cov
     else blend(aa, x, y, cov, cn, cr, 255, dr ? 255 : 0);
 }
 
-#ifndef SILK_NO_AA_CREASE
+#if SILK_AA_CREASES
 /* Pixel r of column c next to a crease (see side()), which the face on
  * the inside (towards r + dir) covers by cov / FRAC.  Both faces are
  * drawn up to the chord: the pixel the chord leaves inside, ri, holds the
@@ -349,7 +349,7 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
             cov = cov < snap ? 0 : cov > FRAC - snap ? FRAC : cov;
-#ifndef SILK_NO_AA_CREASE
+#if SILK_AA_CREASES
             if (curve == 2) {
                 crease_px(aa, steep, (int)c, r, ri, dir, cov, ds, tol);
                 continue;
@@ -408,7 +408,7 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
     return front && !tri_front(aa, m, v, nb);
 }
 
-#ifndef SILK_NO_AA_CREASE
+#if SILK_AA_CREASES
 /* Whether side k of input triangle t is a visible crease walked from t: a
  * feature edge between t and a triangle after it, both facing the eye. */
 static int crease(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
@@ -468,7 +468,7 @@ static void crease_walk(silk_aa *aa, uint32_t t, int k)
 }
 #endif
 
-#ifndef SILK_NO_AA_CREASE
+#if SILK_AA_CREASES
 /* tri_front with the memo's answer read in place (the candidate test asks
  * it of every triangle and its neighbours every band). */
 static inline int tri_front_known(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
@@ -481,7 +481,7 @@ static inline int tri_front_known(silk_aa *aa, const silk_mesh *m, const silk_vi
 int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t)
 {
     if (f && f->tri_state && (f->tri_state[t] & SILK_TS_SIL)) return 1;
-#ifdef SILK_NO_AA_CREASE
+#if !SILK_AA_CREASES
     int front = tri_front(aa, m, v, t);
     for (int k = 0; k < 3; k++)
         if (coarse_outline(aa, m, v, t, k, front)) return 1;
@@ -490,7 +490,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
     /* A triangle facing away from the eye has an outline side only against
      * nothing, which a closed mesh has none of (orient.c): half of such a
      * mesh is done with here. */
-#ifndef SILK_NO_VERTEX_CACHE   /* a host's shortcut: a board keeps the code bytes */
+#if SILK_SHORTCUTS   /* a host's shortcut: a board keeps the code bytes */
     if (!front && m->closed_outward) return 0;
 #endif
     /* coarse_outline's and crease's rules at once (asked of every triangle
@@ -512,12 +512,12 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
     return 0;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand)
 {
     silk_sil_tri_fronts(m, v, aa->facing);   /* every facing, in mesh order */
     memset(cand, 0, ((size_t)m->ntris + 7) / 8);
-#ifdef SILK_NO_AA_CREASE
+#if !SILK_AA_CREASES
     const int creases = 0;
 #else
     const int creases = aa->creases;
@@ -647,7 +647,7 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                    const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
-#ifndef SILK_NO_AA_CREASE
+#if SILK_AA_CREASES
     for (int k = 0; aa->creases && k < 3; k++)
         if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
 #endif

@@ -8,6 +8,7 @@
  */
 #include <string.h>
 #include "silk/arena.h"
+#include "compiler.h"
 
 static size_t align_up(size_t n)
 {
@@ -29,7 +30,7 @@ void silk_arena_init(silk_arena *a, void *buf, size_t size)
     a->size = (size - skip) & ~(size_t)(SILK_ARENA_ALIGN - 1);
 }
 
-static void account(silk_arena *a, size_t n, silk_purpose p)
+SILK_ALWAYS_INLINE static inline void account(silk_arena *a, size_t n, silk_purpose p)
 {
     a->used[p] += n;
     if (a->used[p] > a->peak_used[p]) a->peak_used[p] = a->used[p];
@@ -38,7 +39,7 @@ static void account(silk_arena *a, size_t n, silk_purpose p)
 
 /* Every allocation gets at least one aligned unit, so a zero-size request
  * still returns a distinct, valid pointer. */
-static int reserve(silk_arena *a, size_t n, size_t *out)
+SILK_ALWAYS_INLINE static inline int reserve(silk_arena *a, size_t n, size_t *out)
 {
     if (n > a->size) { a->failed_request = n; return 0; }
     size_t m = align_up(n ? n : 1);
@@ -58,8 +59,10 @@ void *silk_arena_alloc(silk_arena *a, size_t n, silk_purpose p)
     return r;
 }
 
-/* n bytes from the top, m of them taken; not zero-filled. */
-static uint8_t *take_top(silk_arena *a, size_t n, silk_purpose p, size_t *m)
+/* n bytes from the top, m of them taken; not zero-filled.  (It and the
+ * two above inline in every caller, as with one caller each: a board links
+ * silk_arena_alloc_top alone of take_top's callers.) */
+SILK_ALWAYS_INLINE static inline uint8_t *take_top(silk_arena *a, size_t n, silk_purpose p, size_t *m)
 {
     if ((unsigned)p >= SILK_MEM_COUNT || !reserve(a, n, m)) return NULL;
     a->top += *m;
@@ -98,14 +101,12 @@ void *silk_arena_array_top(silk_arena *a, size_t count, size_t size, silk_purpos
     return silk_arena_alloc_top(a, n, p);
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
 void *silk_arena_array_top_unfilled(silk_arena *a, size_t count, size_t size, silk_purpose p)
 {
     size_t n, m;
     if (!mul_ok(count, size, &n)) { a->failed_request = (size_t)-1; return NULL; }
     return take_top(a, n, p, &m);
 }
-#endif
 
 silk_arena_mark silk_arena_top_mark(const silk_arena *a)
 {

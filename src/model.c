@@ -212,7 +212,7 @@ static silk_status mesh_check(const silk_model_section *s, const char *sec, cons
 }
 
 static silk_status smap_check(const silk_model_section *sp, const char *name, silk_silmap *out, silk_error *err);
-#ifndef SILK_NO_SILTEX_MODE
+#if SILK_SILTEX_MODE
 static silk_status stex_of(const silk_model *m, const silk_model_section *s, const char *name, silk_siltex *out,
                            silk_error *err);
 #endif
@@ -253,7 +253,7 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
     silk_model_section ms;
     silk_silmap map;
     if (silk_model_find(&m, SILK_SECTION_SMAP, &ms) && (st = smap_check(&ms, name, &map, err))) return st;
-#ifndef SILK_NO_SILTEX_MODE
+#if SILK_SILTEX_MODE
     silk_siltex tex;
     if (silk_model_find(&m, SILK_SECTION_STEX, &ms) && (st = stex_of(&m, &ms, name, &tex, err))) return st;
 #endif
@@ -433,7 +433,7 @@ silk_status silk_model_silmap(const void *data, size_t len, const char *name, si
 
 /* ---- STEX: the silhouette texture ------------------------------------------------ */
 
-#ifndef SILK_NO_SILTEX_MODE
+#if SILK_SILTEX_MODE
 /* |v|^2 of a Q1.14 vector within (1 +- 1/64)^2, in Q2.28. */
 static int unit14(const uint8_t *p)
 {
@@ -556,6 +556,6 @@ silk_status silk_model_siltex(const void *data, size_t len, const char *name, si
     (void)len;
     if (!name) name = "model";
     memset(out, 0, sizeof *out);
-    return BAD("silhouette textures are not built in (SILK_NO_SILTEX_MODE)");
+    return BAD("silhouette textures are not built in (SILK_SILTEX_MODE 0)");
 }
 #endif

@@ -48,7 +48,7 @@ int silk_perturb_alloc(silk_sil_frame *f)
     f->offset = NULL;
     f->noffset = f->nslots = f->near_bound = 0;
     uint32_t t = 0;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* every segment kept, in triangle order (silk_remesh_keep): the concave
      * ones read from there, not sought among every triangle */
     int listed = f->seg_kept && f->nseg_kept == f->nsegs;
@@ -67,7 +67,7 @@ int silk_perturb_alloc(silk_sil_frame *f)
     if (!f->vert_slot) return 0;
     /* Exactly the vertices visit_near will visit: one slot each. */
     memset(f->vert_slot, 0xFF, (size_t)m->nverts * sizeof *f->vert_slot);   /* SILK_NO_INDEX */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (listed) {
         for (; j < f->nseg_kept; j++)
             if (f->seg_kept[j].concave) visit_near(f, f->seg_tri[j], NULL, 0, -1);
@@ -172,7 +172,7 @@ int silk_perturb(silk_sil_frame *f)
     if (!f->lift || !f->slot_vert || !f->slot_stamp) return 0;
     uint32_t ns = f->nsegs;
     for (int pass = 0; pass < 2; pass++) {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (f->seg_kept && f->nseg_kept == ns) {
             /* every segment kept, in triangle order (silk_remesh_keep): the
              * concave ones read from there, not sought among every triangle */

@@ -18,7 +18,7 @@
 #include "silk/texture.h"
 
 enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_COUNT = 6, VAR_UV = 6, VAR_RGB = 8, VAR_UV_COUNT = 8, VAR_RGB_COUNT = 11 };
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 _Static_assert(VAR_COUNT == SILK_PHONG_PLAIN_NVAR, "the rasterizer's plain case interpolates the default stage's varyings");
 #endif
 
@@ -162,7 +162,7 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
     const silk_material *m = &p->mat;
     /* the material colour times the texel and the vertex colour */
     int64_t base[3] = { m->color.x, m->color.y, m->color.z };
-#ifndef SILK_NO_TEXTURE   /* a build without textures draws textured models in their material colour */
+#if SILK_TEXTURES   /* a build without textures draws textured models in their material colour */
     if (p->texture) {
         uint32_t tex = silk_texture_sample(p->texture, var[VAR_UV], var[VAR_UV + 1], var[h->nvaryings],
                                            var[h->nvaryings + 1]);
@@ -314,13 +314,13 @@ static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const i
            channel(m, (silk_fx)base[2], silk_fx_mul(m->specular, m->specular_color.z), db, sb);
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 const silk_phong *silk_hal_phong_plain(const silk_hal *h)
 {
     if (h->fragment != phong_fragment || h->nvaryings != VAR_COUNT) return NULL;
     const silk_phong *p = (const silk_phong *)h->uniforms;
     const silk_material *m = &p->mat;
-#ifndef SILK_NO_TEXTURE
+#if SILK_TEXTURES
     if (p->texture) return NULL;
 #endif
     if (!p->view || p->view->cam.ortho || p->nlights != 2 || p->lights[0].kind == SILK_LIGHT_POINT ||
@@ -344,7 +344,7 @@ int silk_hal_vertex_by_attrs(const silk_hal *h)
     return h->vertex == phong_vertex;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 silk_vec4 silk_hal_vertex_clip(const silk_hal *h, silk_vec3 pos)
 {
     return clip_of((const silk_phong *)h->uniforms, pos);
@@ -369,7 +369,7 @@ void silk_hal_phong(silk_hal *h, const silk_phong *p)
     h->fragment = phong_fragment;
     h->nvaryings = p->vertex_colors ? VAR_RGB_COUNT : (p->texture ? VAR_UV_COUNT : VAR_COUNT);
     h->uniforms = p;
-#ifdef SILK_NO_TEXTURE
+#if !SILK_TEXTURES
     h->footprint_var = 0;
 #else
     h->footprint_var = p->texture ? VAR_UV + 1 : 0;

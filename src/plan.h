@@ -152,7 +152,7 @@ typedef struct silk_sil_frame {
     const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
     silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
     uint32_t tan_next;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* What the plan keeps for speed where the arena has room, none of it
      * part of the frame's need (silk_sil_kept): carry_rank, per byte of
      * carrying the carrying edges before it (silk_sil_slot without a
@@ -175,7 +175,7 @@ typedef struct silk_sil_frame {
 #endif
 } silk_sil_frame;
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* Counts what the plan took from the arena since it had free0 bytes free
  * and the high-water peak as kept for speed (kept_bytes, kept_need). */
 void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak);
@@ -212,7 +212,7 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room);
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* silk_sil_edge_point at the silhouette point of pair pr (side s's, on
  * edge e): its position and normal, the same for both sides that share
  * the point, made once a frame where kept (pair_pn), its uv and colour
@@ -230,7 +230,7 @@ uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u);
  * zero-area or broken triangle faces nowhere. */
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* silk_sil_tri_front of every triangle into facing, two bits each (2 | front,
  * four triangles a byte, silk_aa.facing's layout): one loop that keeps the
  * per-call work out of it. */
@@ -249,7 +249,7 @@ uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos
 static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 {
     if (!(f->carrying[edge >> 3] & (1u << (edge & 7)))) return SILK_SIL_NONE;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (f->carry_rank) {
         unsigned below = f->carrying[edge >> 3] & ((1u << (edge & 7)) - 1);
         /* the bits of a byte by nibbles (__builtin_popcount is a library call without a popcount instruction) */

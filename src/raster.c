@@ -259,7 +259,7 @@ static unsigned outcode(const silk_vec4 *c)
            (unsigned)(w < W_MIN) << 6;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* Whether c is inside every plane (outcode 0), in four tests: most corners
  * are, and those need no more (a board keeps the code bytes instead). */
 static int inside(const silk_vec4 *c)
@@ -431,7 +431,7 @@ typedef struct tri_setup {
      * keep the sum below 2^63.  vbase holds a0 in Q30 plus the rounding half. */
     int64_t vbase[SILK_MAX_VARYINGS], vd1[SILK_MAX_VARYINGS], vd2[SILK_MAX_VARYINGS];
     int vnarrow;           /* a 32-bit processor and every vd1, vd2 within 32 bits */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     const silk_phong *plain;   /* silk_hal_phong_plain of the stages, when shading */
     int64_t ryq, ryr;          /* depth per row: quotient and remainder (span_depth) */
     rstep dat;                 /* the depth at the centre of pixel (dat_x, dat_y), the last span's first */
@@ -454,7 +454,7 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
     d->r = rem - f * s->area;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* depth_at the centre of pixel (x, row) where a span starts, stepped from
  * the last span's first pixel where that is the row above and a few
  * pixels across (most rows of a triangle: the edge moves a pixel or two),
@@ -504,7 +504,7 @@ static PIXEL_INLINE void bary(const tri_setup *s, int64_t U, int64_t V, int64_t 
  * interpolation, per pixel.  A neighbour past the triangle's horizon
  * (T <= 0) counts as no movement; the weight steps are clamped to 2^29
  * (one half) so every product stays far inside 64 bits. */
-#ifndef SILK_NO_TEXTURE
+#if SILK_TEXTURES
 static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T, int64_t b1, int64_t b2,
                       silk_fx *var)
 {
@@ -564,7 +564,7 @@ static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
         var[k] = (silk_fx)((base[k] + (int64_t)(int32_t)d1[k] * b1 + (int64_t)(int32_t)d2[k] * b2) >> 30);
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* varyings() of the default stage's usual case: a known count, unrolled
  * (a loop's counting costs as much as the interpolation). */
 static inline silk_fx varying(const tri_setup *s, int k, int64_t b1, int64_t b2)
@@ -617,7 +617,7 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
         silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
         int64_t b1, b2;
         bary(s, U, V, T, &b1, &b2);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (s->plain) {   /* the default stage, with its per-frame tests made per triangle */
             varyings_plain(s, b1, b2, var);
             rgb = silk_phong_plain_fragment(s->plain, var);
@@ -625,7 +625,7 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 #endif
         {
             varyings(s, b1, b2, var);
-#ifndef SILK_NO_TEXTURE
+#if SILK_TEXTURES
             if (h->footprint_var > 0 && h->footprint_var < s->nvar)
                 footprint(s, h->footprint_var - 1, U, V, T, b1, b2, var);
 #endif
@@ -635,7 +635,7 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
         }
     }
     if (zrow) zrow[x] = z;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     c->t->drew = 1;
 #endif
     if (c->wrow) c->wrow[x]++;
@@ -643,14 +643,14 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 #undef shading
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 typedef tri_setup span_setup;         /* span_depth keeps the last span's first depth in it */
 #else
 typedef const tri_setup span_setup;
 #endif
 static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int xl, int xr, const int64_t *uvt)
 {
-#ifdef SILK_NO_VERTEX_CACHE
+#if !SILK_SHORTCUTS
     int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
 #endif
     span_ctx c;
@@ -663,7 +663,7 @@ static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int 
     c.crow = t->color ? t->color + r * t->stride : NULL;
     uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
     rstep D = s->dstep;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     span_depth(s, xl, row, &D);
 #else
     depth_at(s, X, Y, &D);
@@ -672,7 +672,7 @@ static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int 
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (t->depth_equal == SILK_DEPTH_TIES && zrow && !mrow) {   /* depth alone: render.c's back_draw */
         for (int x = xl; x < xr; x++) {
             uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
@@ -700,7 +700,7 @@ static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int 
             if (z > zrow[x] - eq) {
                 if (call) fragment_at(&c, x, z, zrow);
                 else zrow[x] = z;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
                 t->drew = 1;
 #endif
             }
@@ -820,7 +820,7 @@ static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
     s->gyq = floor_div(gyn, s->area);
     s->gyr = gyn - s->gyq * s->area;
     rstep_init(&s->dstep, 0, s->area, SUB * gxn);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     s->ryq = floor_div(SUB * gyn, s->area);   /* |gyn| < 2^53 */
     s->ryr = SUB * gyn - s->ryq * s->area;
     s->dat_y = -2;   /* rows are >= 0: no span above */
@@ -866,7 +866,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     s.qn[0] = s.qn[1] = s.qn[2] = 0;
     s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
     s.affine = 0;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     s.plain = NULL;
 #endif
     int ready = 0;
@@ -890,7 +890,7 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             if (xl < xr) {
                 if (!ready) {
                     tri_pixels(&s, shading, y, uvt);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
                     if (shading && s.nvar == SILK_PHONG_PLAIN_NVAR) s.plain = silk_hal_phong_plain(h);
 #endif
                 }
@@ -977,7 +977,7 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     if (!t || !a || !b || !c || !band_rows(t, &lo, &hi)) return;
     int nvar = varying_count(h);
     unsigned oa = 0, ob = 0, oc = 0;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (!inside(&a->clip) || !inside(&b->clip) || !inside(&c->clip))
 #endif
     {
@@ -1035,7 +1035,7 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
     return orient(&sv[0], &sv[1], &sv[2]) >= 0;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2])
 {
     if (!inside(clip)) return 0;

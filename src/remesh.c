@@ -156,7 +156,7 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     if (seg) {
         sil_layout l;
         layout(f, t, &l);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (lk) *lk = l;
 #else
         (void)lk;
@@ -178,7 +178,7 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     }
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 {
     uint32_t lo = 0, hi = f->nseg_kept, last = f->kept_last;
@@ -234,7 +234,7 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
 
 int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
 {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     const silk_sil_seg *kept = seg_kept(f, t);
     if (kept) {
         *s = *kept;
@@ -253,7 +253,7 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     memset(s, 0, sizeof *s);
     s->tri = t;
     silk_vec3 A, B, nA, nB;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     silk_sil_pair_point(f, ea, &sa, pa, &A, &nA, &s->c.uv0, &s->c.rgb0);
     silk_sil_pair_point(f, eb, &sb, pb, &B, &nB, &s->c.uv1, &s->c.rgb1);
 #else
@@ -296,7 +296,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     f->seg_samples = 0;
     f->out_tris = m->ntris;
     for (uint32_t t = 0; t < m->ntris; t++) {
-#ifndef SILK_NO_VERTEX_CACHE   /* (a host's shortcut: a small part keeps the code bytes) */
+#if SILK_SHORTCUTS   /* (a host's shortcut: a small part keeps the code bytes) */
         if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {   /* most: as it is (tri_cost's three corners) */
             f->store_recs += 3;
             continue;
@@ -306,7 +306,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
         if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &tmp)) {
             s = &tmp;
             f->nsegs++;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
             if (f->seg_kept && f->nseg_kept < f->nsil) {   /* ascending: t is past every kept one */
                 f->seg_tri[f->nseg_kept] = t;
                 f->seg_kept[f->nseg_kept++] = tmp;
@@ -314,7 +314,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
 #endif
         }
         tri_count tc;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         int kept = s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t;
         tri_cost(f, t, s, kept ? &f->lay_kept[f->nseg_kept - 1] : NULL, &tc);
         if (kept) {
@@ -508,7 +508,7 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     uint32_t *cyc = f->poly, *list = f->poly + f->max_poly;
     sil_layout l;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (lp) l = *lp;
     else
 #else
@@ -534,7 +534,7 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
     silk_vec3 pl, nl, pab, nab;
     silk_vec2 uvl, uvab;
     uint32_t rgbl, rgbab = 0;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (l.centre1 || l.centre2)
 #endif
     {
@@ -585,7 +585,7 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
     silk_sil_seg seg;
     g->offset = f->offset;
     g->noffset = f->noffset;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {
         /* most triangles, as they are: put_corner's three records written
          * out (a host's shortcut; a small part keeps the code bytes) */
@@ -605,7 +605,7 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
     }
 #endif
     if (f->tri_state[t] & SILK_TS_SIL) {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         uint32_t i = silk_remesh_kept_index(f, t);   /* as the plan made it and laid it out */
         if (i != SILK_SIL_NONE) {
             emit_silhouette(f, g, t, &f->seg_kept[i], &f->lay_kept[i]);   /* Fig. 11 */
@@ -618,7 +618,7 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         }
     }
     uint32_t nchained = 0;
-#ifndef SILK_NO_VERTEX_CACHE   /* (the same shortcut) */
+#if SILK_SHORTCUTS   /* (the same shortcut) */
     if (f->tri_state[t] & SILK_TS_CARRY)
 #endif
         for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
@@ -690,7 +690,7 @@ void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, ui
     seg_recs(f, t, base, u, rec);
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* The index in side k's chain of the point at position pos of the side's
  * n, in triangle direction (pair_pos the other way round). */
 static uint32_t chain_at(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t pos, uint32_t n)
@@ -702,7 +702,7 @@ static uint32_t chain_at(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32
 
 int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve)
 {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     uint32_t i = silk_remesh_kept_index(f, t);
     if (i != SILK_SIL_NONE) {   /* what seg_recs finds, from where the plan laid the points out */
         const sil_layout *l = &f->lay_kept[i];

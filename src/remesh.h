@@ -15,7 +15,7 @@ silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments counted, costs 
  * keeps as it makes them and silk_remesh_seg then reads instead of
  * rebuilding (the same bits).  Returns the bytes taken (0: none; counted
  * in f->kept_bytes).  Not in a build with -DSILK_NO_VERTEX_CACHE. */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 size_t silk_remesh_keep(silk_sil_frame *f, size_t room);
 /* Where silhouette triangle t's segment is kept (seg_tri), or SILK_SIL_NONE. */
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t);

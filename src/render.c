@@ -42,9 +42,6 @@
 #include "lines.h"
 #include "stages.h"
 
-#if defined(SILK_NO_LINES) && defined(SILK_NO_REFERENCE_MODES)
-#define STREAMED_ONLY 1       /* every frame this build can draw is drawn share by share */
-#endif
 #include "clip.h"
 #include "aa.h"
 #include "silk/siltex.h"
@@ -124,7 +121,7 @@ typedef struct frame {
     uint32_t *vc_tag;
     uint32_t vc_mask;
     uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     uint8_t *cand;            /* closed mesh: silk_aa_candidates' bits, or NULL */
     uint8_t cand_ready;       /* made (by the first band's frame_aa) */
 #endif
@@ -137,11 +134,11 @@ typedef struct frame {
     /* SILTEX: the hull drawn through the silhouette texture by these stages
      * (siltex.c), which kill the pixels where the detailed model is not seen */
     uint8_t siltex;
-#ifndef SILK_NO_SILTEX_MODE
+#if SILK_SILTEX_MODE
     silk_hal siltex_hal;
     silk_siltex_stage siltex_stage;
 #endif
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* SMOOTH: the shares that draw_direct does not draw as first built
      * (keep_shares): input triangle t's at ks + ks_at[t] - 1, ks_at[t] 0
      * until it is built */
@@ -187,7 +184,7 @@ static const silk_vertex_out *vertex_out(const frame *f, uint32_t i, silk_vertex
 }
 
 /* Vertex i of the lines, lifted off the triangles it lies on. */
-#ifndef SILK_NO_LINES
+#if SILK_LINES
 static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 {
     if (f->line_cache) *out = f->line_cache[i];
@@ -234,14 +231,14 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         silk_arena_mark mark = silk_arena_top_mark(a);
         /* the plan's time without the visibility test's, which is inside it */
         uint32_t vis0 = f->clock ? f->clock->ticks[SILK_STAGE_VISIBILITY] : 0, t0 = silk_stage_start(f->clock);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         size_t peak0 = a->top_peak;
         f->sil.keep_room = o->vertex_cache_bytes;   /* silk_remesh_keep's budget: the vertex cache's */
 #endif
         for (;;) {
             f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, f->clock, &f->sil, &f->g) &&
                         (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
             if (!f->smooth && f->sil.kept_bytes) {
                 /* what the plan kept for speed took room the frame needs: again without */
                 silk_arena_top_release(a, &mark);
@@ -298,7 +295,7 @@ static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *
     uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
     if (tag[0] != n || tag[1] != v || tag[2] != uv) {
         const silk_vrec own = { SILK_VREC_CORNER, a, 0, 0 };
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (clip) {
             f->vc[s].clip = *clip;
             silk_hal_vertex_varyings(&f->geom, &own, &f->vc[s]);
@@ -321,13 +318,13 @@ static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *o
     else f->hal->vertex(f->hal, &f->geom, r, out);
 }
 
-#ifdef SILK_NO_VERTEX_CACHE
+#if !SILK_SHORTCUTS
 #define VERTEX_CACHED(f) 0
 #else
 #define VERTEX_CACHED(f) ((f)->vc != NULL)
 #endif
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* A kept share: its counts and whether it is placed, then its records,
  * curves, vertex-stage output, triangles and their flags, each a multiple
  * of 4 bytes, then where its records are placed on the screen (draw_tris,
@@ -406,7 +403,7 @@ static void share_part(frame *f, uint32_t t)
 {
     silk_frame_geom *g = &f->g;
     uint32_t t0 = silk_stage_start(f->clock);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     uint32_t k = share_kept(f, t);
     if (k != SILK_SIL_NONE && f->ks_at[k]) {   /* built before: the same records, the same output */
         share_view(f, f->ks + f->ks_at[k] - 1);
@@ -440,7 +437,7 @@ static void share_part(frame *f, uint32_t t)
     }
     f->plain = (uint8_t)plain;
     silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     size_t bytes = share_bytes(g->nvrec, g->ntri, g->ncurve);
     if (k != SILK_SIL_NONE && f->ks_cap - f->ks_used >= bytes) {
         share_copy(f, f->ks + f->ks_used);
@@ -458,7 +455,7 @@ static void share_part(frame *f, uint32_t t)
 #define VCACHE_MAX 4096
 static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 {
-#ifdef SILK_NO_VERTEX_CACHE
+#if !SILK_SHORTCUTS
     (void)f;
     (void)a;
     (void)o;
@@ -501,7 +498,7 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
  * worked out up to four times a band, with the same answers. */
 static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 {
-#ifndef SILK_NO_AA
+#if SILK_AA
     size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a),
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!o->aa || o->wire || f->part != share_part || f->clip || n + SILK_ARENA_ALIGN > budget ||
@@ -509,7 +506,7 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
         return;
     f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);   /* zeroed: nothing known yet */
     if (!f->facing) return;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* A closed mesh: the outline's candidates for all bands at once
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
     size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
@@ -535,7 +532,7 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
 {
     size_t room = silk_arena_free_bytes(a);
-#ifndef SILK_NO_AA
+#if SILK_AA
     if (o->aa && !o->wire) room /= 2;
 #else
     (void)o;
@@ -551,11 +548,11 @@ static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
  * of the frame's need either. */
 static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     uint32_t n = f->smooth ? f->geom.mesh->ntris : 0;   /* ks_at: per input triangle (share_kept) */
     if (!n || n >= UINT32_MAX / 4) return;
     size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN;
-#ifndef SILK_NO_AA
+#if SILK_AA
     reserve += 2 * (3 * ((size_t)t->width + (size_t)t->rows) * sizeof(silk_aa_px)) +
                2 * (size_t)t->width * (silk_pixfmt_bytes(t->fmt) + sizeof(uint32_t)) +
                ((size_t)f->sil.max_recs + SILK_AA_WALK) * sizeof(silk_aa_pt) + sizeof(silk_vertex_out);
@@ -610,7 +607,7 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
  * stages that the depth pass draws with discards.)  4 bytes an input
  * triangle under the vertex cache's budget, only where frame_draw makes a
  * depth pass; without the room every triangle is shaded as before. */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* A back face of a re-meshed part that the depth pass draws last
  * (back_last): where the rasterizer places its corners and their clip z
  * and w (all the depth needs), and which triangle of which part it is. */
@@ -690,7 +687,7 @@ static void share_rows(frame *f, const silk_render_opts *o, const silk_target *b
  * band need not rebuild it. */
 static int part_hidden(const frame *f, const silk_render_opts *o, const silk_target *band)
 {
-#ifdef SILK_NO_AA
+#if !SILK_AA
     int aa = 0;   /* built without it: o->aa draws nothing */
 #else
     int aa = o->aa;
@@ -709,7 +706,7 @@ static int part_misses(const frame *f, uint32_t k, int y0, int y1)
     return f->rows[2 * k] * u > y1 || f->rows[2 * k + 1] * u + u - 1 < y0;
 }
 
-#ifndef STREAMED_ONLY
+#if SILK_STORED_FRAMES
 /* A stored frame's one part is there already. */
 static void stored_part(frame *f, uint32_t k)
 {
@@ -733,15 +730,15 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         return silk_fail(err, SILK_ERR_ARG, NULL, 0,
                          "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
                          "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
-#ifdef SILK_NO_LINES
+#if !SILK_LINES
     if (o->lines || o->wire)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: lines and wire are not built in (SILK_NO_LINES)");
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: lines and wire are not built in (SILK_LINES 0)");
 #endif
     f->clock = o->clock;
     (void)band_rows;   /* the stencil's height: clip mode's only */
     if (o->mode == SILK_MODE_CLIP) {
-#ifdef SILK_NO_CLIP_MODE
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode is not built in (SILK_NO_CLIP_MODE)");
+#if !SILK_CLIP_MODE
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode is not built in (SILK_CLIP_MODE 0)");
 #else
         /* the hull drawn as flat draws a mesh, through the stencil */
         if (!o->silmap)
@@ -761,8 +758,8 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
 #endif
     }
     if (o->mode == SILK_MODE_SILTEX) {
-#ifdef SILK_NO_SILTEX_MODE
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode is not built in (SILK_NO_SILTEX_MODE)");
+#if !SILK_SILTEX_MODE
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode is not built in (SILK_SILTEX_MODE 0)");
 #else
         /* the hull drawn as flat draws a mesh, each pixel through eq. 4 */
         if (!o->siltex)
@@ -787,9 +784,9 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
 #endif
     }
     if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
-#ifdef STREAMED_ONLY
+#if !SILK_STORED_FRAMES
     if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_NO_REFERENCE_MODES)",
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_REFERENCE_MODES 0)",
                          silk_mode_name(o->mode));
     return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
 }
@@ -804,14 +801,14 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
         st = silk_frame_smooth_lines(a, m, v, o->tolerance_px, o->visibility, smooth_lines, &f->g, stats, err);
     else if (o->mode == SILK_MODE_FLAT)
         st = silk_frame_flat(a, m, &f->g, err);
-#ifndef SILK_NO_REFERENCE_MODES
+#if SILK_REFERENCE_MODES
     else if (o->mode == SILK_MODE_PN)
         st = silk_frame_pn(a, m, o->level, o->pn_normals, &f->g, stats, err);
     else if (o->mode == SILK_MODE_BLEND)
         st = silk_frame_blend(a, m, v, o->blend_beta, o->tolerance_px, &f->g, stats, err);
 #endif
     else if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
-        st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_NO_REFERENCE_MODES)",
+        st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_REFERENCE_MODES 0)",
                        silk_mode_name(o->mode));
     else
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
@@ -904,7 +901,7 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
                                                 i & 2 ? m->bbox_max.y : m->bbox_min.y,
                                                 i & 4 ? m->bbox_max.z : m->bbox_min.z));
     if (corners_before) return 1;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* every vertex placed already (frame_extras): by the same stage, so the
      * answer of the loop below, without another pass over the mesh */
     if (f->xy_ready && f->hal == h) return f->all_before;
@@ -915,7 +912,7 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
     return 1;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* The depth pass of a SMOOTH frame (depth_wins) puts off the back faces
  * of its re-meshed parts, drawn both ways (frame_draw), until every other
  * triangle has written its depth (back_draw): then most of them are
@@ -983,7 +980,7 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
     silk_vertex_out tmp[3];
     /* Lines alone: the surface is drawn into the depth buffer only, to hide them. */
     const silk_hal *shade = (o->lines == SILK_LINES_ONLY && !f->siltex) || pass < 0 ? NULL : f->hal;   /* SILTEX: its stage draws its lines */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* A share's records placed on the screen once (silk_raster_place), not
      * once for each of its triangles at them: the triangles that cover no
      * pixel centre - most of a re-meshed part of a fine mesh - are then
@@ -1006,7 +1003,7 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];
         int added = g->tri_added && g->tri_added[k];
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         uint32_t bit = 1u << (k < 31 ? k : 31);   /* depth_wins */
         if (won && pass == 0 && !(*won & bit)) continue;
         t->drew = 0;
@@ -1026,10 +1023,10 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
         if (pass <= 0)
             silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
                                  vertex_out(f, c[2], &tmp[2]));
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (won && pass < 0 && t->drew) *won |= bit;
 #endif
-#ifndef SILK_NO_LINES
+#if SILK_LINES
         else if (added == pass - 1)
             for (int e = 0; e < 3; e++)
                 silk_raster_line(t, vertex_out(f, c[e], &tmp[0]), vertex_out(f, c[(e + 1) % 3], &tmp[1]),
@@ -1041,7 +1038,7 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
     }
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* Every vertex of the mesh placed on the screen of t (vc_xy) for
  * draw_direct, once a frame, before its first triangle is drawn (vertices
  * that only triangles outside the band use are so few it is cheaper than
@@ -1102,7 +1099,7 @@ static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t
 }
 #endif
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* Whether input triangle k may be drawn by draw_direct: in FLAT every one;
  * in SMOOTH one away from the silhouette, neither on it nor carrying its
  * points, with no vertex moved, whose share is its three CORNER records
@@ -1128,7 +1125,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     uint32_t t0 = silk_stage_start(f->clock);
     silk_target_clear(t, o->bg_rgb);
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
-#ifndef SILK_NO_CLIP_MODE
+#if SILK_CLIP_MODE
     if (f->clip) silk_clip_stencil(f->clip, t);
 #endif
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
@@ -1145,7 +1142,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
                       !f->siltex && (f->part != share_part || t->rows >= t->height);
     uint32_t *wins = NULL;   /* depth_wins, where there is a depth pass */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
     if (depth_first) wins = f->won;
 #endif
@@ -1160,7 +1157,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
                 else if (!*won) continue;   /* no pixel to shade: not rebuilt */
             }
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
             if (pass <= 0 && f->vc_xy && (!f->smooth || direct_ok(f, k))) {
                 t0 = silk_stage_start(f->clock);
                 t->drew = 0;
@@ -1181,7 +1178,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
             draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (f->nback) {   /* the depth pass's back faces put off (back_last) */
             t0 = silk_stage_start(f->clock);
             back_draw(f, t);
@@ -1190,13 +1187,13 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #endif
     }
     t->depth_equal = t->cull_back = 0;
-#ifndef SILK_NO_CLIP_MODE
+#if SILK_CLIP_MODE
     if (f->clip) {
         t->mask = NULL;
         silk_clip_antialias(f->clip, t, o->bg_rgb);
     }
 #endif
-#ifndef SILK_NO_LINES
+#if SILK_LINES
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
         uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
         uint32_t j = g->line_start[i], end = g->line_start[i + 1];
@@ -1214,7 +1211,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 #endif
 }
 
-#if !defined(SILK_NO_VERTEX_CACHE) && !defined(SILK_NO_AA)
+#if SILK_SHORTCUTS && SILK_AA
 /* The outline of input triangle k drawn as it is (direct_ok) without
  * building its share: silk_aa_share reads of such a share its one
  * triangle of three records and their clip coordinates, which
@@ -1294,7 +1291,7 @@ static inline void aa_prefetch(const frame *f, uint32_t k, uint32_t next[2])
 static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
                      silk_frame_stats *stats)
 {
-#ifdef SILK_NO_AA
+#if !SILK_AA
     (void)f;
     (void)a;
     (void)v;
@@ -1319,7 +1316,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.sil = f->smooth ? &f->sil : NULL;
     aa.hal = f->hal;
     aa.geom = &f->geom;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (f->cand && !f->cand_ready) {
         silk_aa_candidates(&aa, f->geom.mesh, v, f->cand);
         f->cand_ready = 1;
@@ -1327,19 +1324,19 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     uint32_t next[2] = { UINT32_MAX, UINT32_MAX };   /* aa_prefetch's */
 #endif
     for (uint32_t k = 0; k < f->nparts; k++) {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (f->cand && !f->cand[k / 8]) {   /* eight triangles at once: most have no outline side */
             k |= 7;
             continue;
         }
 #endif
         if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (f->cand ? !(f->cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
 #else
         if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
 #endif
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
         if (f->cand && f->vc_xy && f->xy_ready && !f->smooth) aa_prefetch(f, k, next);
         if (aa_direct(f, &aa, v, k)) continue;
 #endif
@@ -1358,18 +1355,18 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o,
                          const silk_target *t)
 {
-#ifdef SILK_NO_VERTEX_CACHE
+#if !SILK_SHORTCUTS
     f->cull = back_faces_hidden(f, m, h, o);
 #endif
     f->peak_before = a->top_peak;
     vertex_cache(f, a, o);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (f->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
     f->cull = back_faces_hidden(f, m, h, o);
 #endif
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     depth_wins(f, a, o, t);
 #endif
     keep_shares(f, a, o, t);
@@ -1384,7 +1381,7 @@ static size_t frame_need(const frame *f, const silk_arena *a, const silk_arena_m
 {
     size_t after = a->top_peak - f->vc_bytes - f->tan_bytes;   /* >= mark->top */
     size_t need = after > f->peak_before ? after : f->peak_before;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* what the plan kept lies under everything taken after it (silk_remesh_keep) */
     if (f->sil.kept_bytes) {
         need -= f->sil.kept_bytes;

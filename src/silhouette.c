@@ -43,7 +43,7 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     else { s->uv0 = SILK_NO_INDEX; s->uv1 = SILK_NO_INDEX; }
 }
 
-#ifndef SILK_NO_AA
+#if SILK_AA
 static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 
 static int32_t abs32(int32_t v) { return v < 0 ? -v : v; }   /* |v| < 2^31 here */
@@ -64,12 +64,12 @@ static int cut14(uint64_t v)
 /* silk_view_to_eye and silk_tri_cross64 for triangle t.  A host build has
  * them inline (the outline asks every triangle every frame); a board's
  * (-DSILK_NO_VERTEX_CACHE) calls them and keeps the code bytes. */
-#if defined(__GNUC__) && !defined(SILK_NO_VERTEX_CACHE)
+#if defined(__GNUC__) && SILK_SHORTCUTS
 __attribute__((always_inline))
 #endif
 static inline silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t, int64_t c[3])
 {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     const silk_index *tv = &m->tri[3 * t];
     silk_vec3 p0 = m->pos[tv[0]], p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
     int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
@@ -96,15 +96,15 @@ static inline silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uin
  * outline asks every triangle every frame; a build without it
  * (-DSILK_NO_AA) asks only of feature edges' triangles and keeps the
  * 0.4 KiB of Cortex-M3 code the shortcut takes. */
-#if defined(__GNUC__) && !defined(SILK_NO_VERTEX_CACHE)
+#if defined(__GNUC__) && SILK_SHORTCUTS
 __attribute__((always_inline))   /* in silk_sil_tri_fronts' loop: every triangle, every frame */
 #endif
 static inline int front_of(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
-#ifndef SILK_NO_AA
+#if SILK_AA
     int64_t c[3];
     silk_vec3 e = front_inputs(m, v, t, c);
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* A 64-bit host first tries the uncut vectors, where their L1 norms
      * keep every product within 63 bits (a mesh within +-2^3 units of the
      * eye): |c.e| > cn en / 2^10 >= |c| |e| / 2^10 is an angle with |cos|
@@ -138,7 +138,7 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
     return front_of(m, v, t);
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing)
 {
     const silk_index *tv = m->tri;
@@ -206,7 +206,7 @@ void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
     edge_point_attrs(m, e, s, u, uv, rgb);
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 void silk_sil_pair_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          const silk_sil_pair *pr, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
@@ -297,7 +297,7 @@ size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
     size_t fit = room > SILK_ARENA_ALIGN ? (room - SILK_ARENA_ALIGN) / (2 * sizeof *f->tan_kept) : 0;
     uint32_t n = fit < f->nedges ? (uint32_t)fit : f->nedges;
     if (f->tan_kept || n == 0) return 0;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     silk_vec3 *t = silk_arena_array_top_unfilled(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);   /* every one written below */
 #else
     silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
@@ -353,7 +353,7 @@ static void chain_insert(silk_fx *c, uint32_t *n, silk_fx u)
  * keeps the code bytes). */
 static int tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
 {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (m->tri_edge) {
         const silk_index *tv = &m->tri[3 * (size_t)t], *tn = &m->tri_normal[3 * (size_t)t],
                          *te = &m->tri_edge[3 * (size_t)t];
@@ -378,7 +378,7 @@ static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
     f->carrying[e >> 3] |= bit;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* Whether the sides on the carrying edges may be found from the edges'
  * triangles instead of a pass over every triangle: with listed edges
  * (tri_edge) and no edge of more than two triangles, edge.t names every
@@ -483,7 +483,7 @@ static silk_status find_triangles(silk_sil_frame *f)
     int features = m->nfeature_edges > 0 || m->nboundary_edges > 0 || m->nnonmanifold_edges > 0;
     uint32_t nwork = 0;
     f->nsil = 0;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (by_edges(m) && all_whole(m)) find_whole(f, features, &nwork);
     else
 #endif
@@ -512,7 +512,7 @@ static silk_status find_triangles(silk_sil_frame *f)
     f->nedges = nwork;
     silk_arena_top_release(a, &mark);
     f->visible = NULL;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     /* the carrying edges ranked, where there is room (silk_sil_slot) */
     size_t free0 = silk_arena_free_bytes(a), peak = a->top_peak;
     size_t want = bits * sizeof *f->carry_rank + SILK_ARENA_ALIGN;
@@ -528,7 +528,7 @@ static silk_status find_triangles(silk_sil_frame *f)
     return SILK_OK;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak)
 {
     size_t need = peak - f->kept_bytes;   /* the high-water so far without what was kept before */
@@ -577,7 +577,7 @@ static int count_side(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *
     return 1;
 }
 
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
 /* Whether triangle t is whole (find_triangles tested it). */
 static int tri_whole(const silk_sil_frame *f, uint32_t t)
 {
@@ -615,7 +615,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
 
     /* Count the sides (every triangle side on a carrying edge) and the
      * silhouette sides of each edge, then lay them out edge by edge. */
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (by_edges(m)) {
         for (uint32_t w = 0; w < nwork; w++) {
             silk_sil_edge *we = &f->edges[w];
@@ -667,7 +667,7 @@ static void add_pair(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *w
 static void fill_pairs(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     if (by_edges(m)) {   /* the same points in the same order, edge by edge */
         for (uint32_t w = 0; w < f->nedges; w++) {
             silk_sil_edge *we = &f->edges[w];

@@ -406,7 +406,7 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
         shade_var[3 + k] = (silk_fx)n[k];
     }
     uint32_t rgb = 0xFFFFFF;
-#ifndef SILK_NO_TEXTURE
+#if SILK_TEXTURES
     if (st->color)   /* the texture's v runs upwards, the atlas's downwards */
         rgb = silk_texture_sample(&s->color_map, (silk_fx)(u / (int32_t)st->w),
                                   (silk_fx)(SILK_FX_ONE - v / (int32_t)st->h), 0, 0);
@@ -422,7 +422,7 @@ void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s)
     h->nvaryings = VAR_COUNT;
     h->uniforms = s;
     h->footprint_var = 0;
-#ifndef SILK_NO_TEXTURE
+#if SILK_TEXTURES
     /* the colour map as a texture, described once here rather than per pixel */
     const silk_siltex *st = s->tex;
     memset(&s->color_map, 0, sizeof s->color_map);

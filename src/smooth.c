@@ -31,7 +31,7 @@ silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view
 static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                      silk_fx tolerance_px, silk_vis_method vis, silk_stage_clock *clock)
 {
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     size_t keep_room = f->keep_room;   /* the caller's, the one field it sets */
 #endif
     memset(f, 0, sizeof *f);
@@ -41,11 +41,11 @@ static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const
     f->v = v;
     f->tol = tolerance_px;
     f->vis = vis;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     f->keep_room = keep_room;
 #endif
     if (silk_sil_find(f) != SILK_OK) return 0;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     silk_remesh_keep(f, keep_room > f->kept_bytes ? keep_room - f->kept_bytes : 0);
 #endif
     return silk_remesh_plan(f) == SILK_OK && silk_perturb_alloc(f) && silk_perturb(f);
@@ -64,7 +64,7 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_sil_frame f;
-#ifndef SILK_NO_VERTEX_CACHE
+#if SILK_SHORTCUTS
     f.keep_room = 0;   /* a stored frame keeps nothing for speed */
 #endif
     if (!make_plan(&f, a, m, v, tolerance_px, vis, NULL) || !silk_remesh_store(&f, g)) {

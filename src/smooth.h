@@ -12,7 +12,7 @@
  * share in local, all from the top of the arena (the caller releases it;
  * silk_remesh_stats gives the frame's counts).  tolerance_px > 0 (the
  * caller checks it).  clock, when not NULL, times the visibility test.
- * The caller sets f->keep_room (unless built with -DSILK_NO_VERTEX_CACHE):
+ * The caller sets f->keep_room (in a build with SILK_SHORTCUTS):
  * the most the plan may take to keep its segments and edge tangents for
  * speed (silk_remesh_keep; 0: nothing kept).  Returns 0 when it does not
  * fit: then nothing is left allocated and the caller draws the coarse

@@ -122,7 +122,7 @@ void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *ou
         if (g->offsets) out->pos = silk_v3_add(out->pos, g->offsets[r->b]);
         break;
     case SILK_VREC_PATCH:   /* PN and BLEND modes (pn.c) */
-#ifndef SILK_NO_REFERENCE_MODES   /* render.c makes no patches then */
+#if SILK_REFERENCE_MODES   /* render.c makes no patches then */
         if (g->patches) silk_patch_eval(&g->patches[r->a], r->b, out);
 #endif
         break;

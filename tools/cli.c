@@ -595,7 +595,7 @@ int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
         if (!o->bg_none) r = cli_parse_rgb(opt, v, &o->render.bg_rgb);
     } else if (cli_is(arg, "--aa")) {
         VALUE();
-        if (strcmp(v, "outline") == 0) o->render.aa = 2;   /* what a board built with -DSILK_NO_AA_CREASE draws */
+        if (strcmp(v, "outline") == 0) o->render.aa = 2;   /* what a board built with SILK_AA_CREASES 0 draws */
         else if (strcmp(v, "on") == 0 || strcmp(v, "off") == 0) o->render.aa = strcmp(v, "on") == 0;
         else r = cli_fail(-1, "%s must be on, off or outline (got \"%s\")", opt, v);
     } else if (strcmp(arg, "--wire") == 0) {

@@ -34,16 +34,16 @@ BOARD_ARENA_BYTES := 10624
 
 BOARD_CROSS := arm-none-eabi-
 BOARD_ARCH  := -mcpu=cortex-m0 -mthumb
-# Flat and smooth only, as on the Cortex-M3 board: PN, blend, clip mode,
-# pen-and-ink lines, --wire, anti-aliased outlines and textures stay in the
-# host library.  Thumb-1 code is larger than the Cortex-M3's Thumb-2: the
-# core's budget is 48 KiB of the part's 256 KiB of flash.
+# Flat and smooth only, as on the Cortex-M3 board (boards/microbit/config.h):
+# PN, blend, clip mode, pen-and-ink lines, --wire, anti-aliased outlines and
+# textures stay in the host library.  Thumb-1 code is larger than the
+# Cortex-M3's Thumb-2: the core's budget is 48 KiB of the part's 256 KiB of
+# flash.
 BOARD_OPT   := -Os
 BOARD_CODE_BYTES := 49152
 # 16-bit mesh indices and no visibility hierarchy in flash, as on the
 # Cortex-M3 board (boards/mps2-an385/board.mk says why).
-BOARD_CORE_DEFS := -DSILK_INDEX_T=uint16_t -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE \
-                   -DSILK_NO_SILTEX_MODE -DSILK_NO_AA -DSILK_NO_TEXTURE -DSILK_NO_VERTEX_CACHE
+BOARD_CORE_DEFS := -DSILK_INDEX_T=uint16_t
 BOARD_PACK_ARGS := --visibility brute
 # The tick counter: TIMER0 of the nRF51 at 16 MHz.  -icount shift=0: one
 # instruction is 1 ns of virtual time, so a tick is 62.5 instructions.

@@ -16,9 +16,9 @@ BOARD_RAM_BYTES   := 65536
 # than the 6 144 it had, taken from the arena, whose peak is 42 688.
 BOARD_STACK_BYTES := 6656
 BOARD_ARENA_BYTES := 58624
-# Anti-aliased creases (about 1 KiB) do not fit the code budget: outlines only.
-BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE -DSILK_NO_SILTEX_MODE \
-                  -DSILK_NO_VERTEX_CACHE -DSILK_NO_AA_CREASE
+# The core's options are in boards/mps2-an385-full/config.h: those of
+# boards/mps2-an385 with anti-aliased outlines (not creases: they do not fit
+# the code budget) and textures.
 BOARD_CODE_BYTES := 49152
 BUILD := build-mps2-an385-full
 BOARD_MESHES := $(MESHES_DIR)/bunny-500.obj $(BUILD)/models/globe.obj

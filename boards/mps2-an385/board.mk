@@ -34,26 +34,18 @@ BOARD_ARENA_BYTES := 26880
 # Toolchain and flags (`make deps` installs them on Debian/Ubuntu)
 BOARD_CROSS := arm-none-eabi-
 BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
-# The firmware draws flat and smooth only; the reference methods (PN,
-# blend) stay in the host library, where they are measured against, and so
-# do the pen-and-ink lines and --wire, clip mode (11 KiB of code; its
-# per-frame outline does not fit the board's RAM yet), siltex mode (its
-# texture is far larger than the flash), anti-aliased
-# outlines (2.4 KiB of code and about 12 KiB of scratch a band) and
-# textures (3 KiB): boards/mps2-an385-full is the same part with 64 KiB of
-# RAM and those two.  The vertex cache's code goes too: the firmware gives
-# it no arena (FW_VERTEX_CACHE_BYTES), so it would never run.
-BOARD_FEATURES := -DSILK_NO_REFERENCE_MODES -DSILK_NO_LINES -DSILK_NO_CLIP_MODE -DSILK_NO_SILTEX_MODE -DSILK_NO_AA -DSILK_NO_TEXTURE \
-                  -DSILK_NO_VERTEX_CACHE
+# The core's build options are in boards/mps2-an385/config.h (flat and
+# smooth frames only: no PN or blend, lines, --wire, clip or siltex mode,
+# anti-aliased outlines or textures, and none of the host's shortcuts).
 BOARD_OPT   := -Os
 # The core's code budget (`make profile` checks it)
 BOARD_CODE_BYTES := 40960
 # Mesh indices in 16 bits: the packed model's index arrays and the frame's
 # plan records take half the bytes (`silk pack` refuses a model with more
 # than 65 534 vertices, normals, triangles or edges for it).  The host build
-# of the scene (fw-host) uses the same type and features, so its arena and
+# of the scene (fw-host) uses the same type and options, so its arena and
 # pixels match byte for byte.
-BOARD_CORE_DEFS = -DSILK_INDEX_T=uint16_t $(BOARD_FEATURES)
+BOARD_CORE_DEFS = -DSILK_INDEX_T=uint16_t
 # -icount shift=0: virtual time advances exactly 1 ns per instruction, so
 # the firmware's timer (25 MHz, 40 ns a tick) counts instructions.
 BOARD_RUN   := qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none \

@@ -60,13 +60,11 @@ void *silk_arena_alloc_top(silk_arena *a, size_t n, silk_purpose p);
 /* count*size with overflow check */
 void *silk_arena_array(silk_arena *a, size_t count, size_t size, silk_purpose p);
 void *silk_arena_array_top(silk_arena *a, size_t count, size_t size, silk_purpose p);
-#ifndef SILK_NO_VERTEX_CACHE
 /* silk_arena_array_top without the zero fill: for a table whose user
  * writes each byte before reading it (render.c's vertex cache, what the
  * plan keeps for speed: megabytes a frame on a fine mesh, where the fill
  * would cost as much as a tenth of its frame) */
 void *silk_arena_array_top_unfilled(silk_arena *a, size_t count, size_t size, silk_purpose p);
-#endif
 silk_arena_mark silk_arena_top_mark(const silk_arena *a);
 void  silk_arena_top_release(silk_arena *a, const silk_arena_mark *m);
 size_t silk_arena_free_bytes(const silk_arena *a);

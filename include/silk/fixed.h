@@ -12,19 +12,13 @@
 #define SILK_FIXED_H
 
 #include <stdint.h>
+#include "config.h"   /* SILK_CPU32 */
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 typedef int32_t silk_fx;                   /* Q16.16 */
-
-/* 1 on a processor with 32-bit registers (Cortex-M): there a 64-bit
- * product takes three multiply instructions and a 64-bit division a
- * library call, so the hot paths take 32-bit routes where their operands
- * allow, with the same results; 0 on a 64-bit host, where either is one
- * instruction. */
-#define SILK_CPU32 (UINTPTR_MAX <= UINT32_MAX)
 
 #define SILK_FX_SHIFT 16
 #define SILK_FX_ONE   ((silk_fx)65536)

@@ -11,8 +11,8 @@
  * triangle's records are rebuilt and evaluated when a band needs them (same
  * pixels, a fraction of the memory: docs/small-devices.md).  Per-frame
  * memory comes from the top of the arena and is released before it returns.
- * A device build may leave PN and BLEND out with -DSILK_NO_REFERENCE_MODES,
- * and the pen-and-ink lines and wire with -DSILK_NO_LINES (src/render.c).
+ * A device build may leave PN and BLEND out (SILK_REFERENCE_MODES 0), and
+ * the pen-and-ink lines and wire (SILK_LINES 0): silk/config.h.
  */
 #ifndef SILK_RENDER_H
 #define SILK_RENDER_H
@@ -120,7 +120,7 @@ typedef struct silk_render_opts {
      * candidates (1 bit per triangle) come out of the same budget.
      * Default SIZE_MAX; a device whose RAM budget is
      * tight sets what it can spare, 0 for none (and may leave the code
-     * out: -DSILK_NO_VERTEX_CACHE, src/render.c). */
+     * out: SILK_VERTEX_CACHE 0, silk/config.h). */
     size_t vertex_cache_bytes;
     /* CLIP: the model's silhouette map (silk_model_silmap), the polytope
      * triangle to start looking for the eye from (the last frame's

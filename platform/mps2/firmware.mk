@@ -37,7 +37,11 @@ FW_DIR   := $(BUILD)/fw
 # Per-model outputs; a variant (FW_VARIANT=ram256k) gets its own directory.
 FW_VARIANT ?=
 FW_OUT   := $(FW_DIR)$(if $(FW_VARIANT),/$(FW_VARIANT))
-FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) $(BOARD_CORE_DEFS) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
+# The board's build options (BOARD_CONFIG, include/silk/config.h), for the
+# firmware and for its host build alike.
+FW_CONFIG := $(call config_flag,$(BOARD_CONFIG)) $(BOARD_CORE_DEFS)
+FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) $(FW_CONFIG) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
+FW_HOST_CFLAGS = $(CFLAGS_BASE) $(FW_CONFIG) $(SANFLAGS) $(CFLAGS)
 FW_DEFS  := -DFW_BOARD='"$(BOARD)"' -DFW_BAND_ROWS=$(BOARD_BAND_ROWS) -DFW_ARENA_BYTES=$(BOARD_ARENA_BYTES) \
             -DFW_FORMAT=$(BOARD_FORMAT)
 FW_LDFLAGS := $(BOARD_ARCH) -nostartfiles -specs=nano.specs -specs=nosys.specs -Wl,--gc-sections \
@@ -88,13 +92,13 @@ $(FW_DIR)/obj/%.o: %.c boards/$(BOARD)/board.mk
 $(FW_DIR)/libsilk.a: $(FW_CORE_OBJ)
 	rm -f $@ && $(FW_AR) rcs $@ $^
 
-# The core for the host with the board's core settings (index type): what
+# The core for the host with the board's options and index type: what
 # fw-host links, so that its mesh and plan records are the firmware's.
 FW_HOST_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/host-obj/%.o)
 FW_HOST_LIB := $(FW_DIR)/host-obj/libsilk.a
 $(FW_DIR)/host-obj/%.o: %.c boards/$(BOARD)/board.mk
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) -MMD -MP -c $< -o $@
+	$(CC) $(FW_HOST_CFLAGS) -MMD -MP -c $< -o $@
 
 $(FW_HOST_LIB): $(FW_HOST_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
@@ -134,7 +138,7 @@ $(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk
 
 $(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
                         $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
-	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) \
+	$(CC) $(FW_HOST_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) \
 	    -o $$@ platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
 
 run-$(1): $(FW_OUT)/$(1)/fw.elf

@@ -58,9 +58,9 @@
 #define FW_BAND_ROWS 8
 #endif
 /* Whether the core draws anti-aliased outlines (silk render's --aa) */
-#ifdef SILK_NO_AA
+#if !SILK_AA
 #define FW_AA "off"
-#elif defined SILK_NO_AA_CREASE
+#elif !SILK_AA_CREASES
 #define FW_AA "outline"
 #else
 #define FW_AA "on"
