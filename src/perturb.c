@@ -66,7 +66,7 @@ int silk_perturb_alloc(silk_sil_frame *f)
     }
     if (!f->vert_slot) return 0;
     /* Exactly the vertices visit_near will visit: one slot each. */
-    memset(f->vert_slot, 0xFF, (size_t)m->nverts * sizeof *f->vert_slot);   /* SILK_NO_INDEX */
+    memset(f->vert_slot, 0xFF, (size_t)m->nverts * sizeof *f->vert_slot);   /* SILK_PLAN_NONE */
 #if SILK_SHORTCUTS
     if (listed) {
         for (; j < f->nseg_kept; j++)
@@ -90,15 +90,15 @@ static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint
 {
     uint32_t sl = f->vert_slot[vtx];
     if (pass < 0) {
-        if (sl == SILK_NO_INDEX) f->nslots++;
+        if (sl == SILK_PLAN_NONE) f->nslots++;
         f->vert_slot[vtx] = 0;
         return;
     }
-    if (sl == SILK_NO_INDEX) {
+    if (sl == SILK_PLAN_NONE) {
         if (f->nslots >= f->near_bound) return;   /* cannot happen: the bound counts every visit */
         sl = f->nslots++;
-        f->vert_slot[vtx] = (silk_index)sl;       /* < near_bound <= nverts */
-        f->slot_vert[sl] = vtx;
+        f->vert_slot[vtx] = (silk_plan_index)sl;  /* < near_bound <= nverts */
+        f->slot_vert[sl] = (silk_plan_index)vtx;
         f->acc[sl] = silk_v3(0, 0, 0);
         f->lift[sl] = 0;
         f->slot_stamp[sl] = 0;
@@ -198,9 +198,9 @@ int silk_perturb(silk_sil_frame *f)
         silk_index vtx = f->slot_vert[sl];
         if (f->lift[sl] > 0 && !silhouette_at(f, vtx)) {
             f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);   /* noffset <= sl */
-            f->vert_slot[vtx] = (silk_index)f->noffset++;
+            f->vert_slot[vtx] = (silk_plan_index)f->noffset++;
         } else {
-            f->vert_slot[vtx] = SILK_NO_INDEX;
+            f->vert_slot[vtx] = SILK_PLAN_NONE;
         }
     }
     f->vert_offset = f->vert_slot;

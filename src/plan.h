@@ -36,6 +36,17 @@
 
 #define SILK_SIL_NONE UINT32_MAX
 
+/* A mesh index (vertex, normal, uv, edge) or a count the plan keeps: 16
+ * bits where the build keeps the plan small (SILK_PLAN_INDEX16, a board's:
+ * a plan of a mesh with more than it holds fails, and the frame falls
+ * back), else silk_index.  SILK_PLAN_NONE is its SILK_NO_INDEX. */
+#if SILK_PLAN_INDEX16
+typedef uint16_t silk_plan_index;
+#else
+typedef silk_index silk_plan_index;
+#endif
+#define SILK_PLAN_NONE ((silk_plan_index)~(silk_plan_index)0)
+
 /* tri_state bits */
 enum {
     SILK_TS_LONE = 3,       /* mask: the corner whose visibility differs (silhouette triangles) */
@@ -51,7 +62,7 @@ enum {
  * in the edge's chain is found by u (silk_sil_chain_index) rather than
  * stored: 8 bytes a point with 16-bit indices. */
 typedef struct silk_sil_pair {
-    silk_index n0, n1;       /* normals at edge.v[0] and edge.v[1] */
+    silk_plan_index n0, n1;  /* normals at edge.v[0] and edge.v[1] */
     silk_fx u;               /* parameter from edge.v[0] */
 } silk_sil_pair;
 
@@ -61,8 +72,8 @@ typedef struct silk_sil_pair {
 typedef struct silk_sil_side {
     uint32_t tri;
     uint32_t k;              /* side k joins corners k and (k+1)%3 */
-    silk_index n0, n1;       /* normals at edge.v[0], edge.v[1] */
-    silk_index uv0, uv1;     /* uvs there, or SILK_NO_INDEX */
+    silk_plan_index n0, n1;  /* normals at edge.v[0], edge.v[1] */
+    silk_plan_index uv0, uv1; /* uvs there, or SILK_PLAN_NONE */
 } silk_sil_side;
 
 /* An edge that carries points this frame.  Its curve runs from edge.v[0] to
@@ -72,13 +83,13 @@ typedef struct silk_sil_side {
  * the curve when it is asked for instead of keeping 24 bytes of tangents
  * per edge.  The per-edge counts are 16 bits (an edge with more sides than
  * SILK_SIL_SIDES_MAX makes the plan fail, and the frame falls back), the
- * frame's points and parameters are counted in silk_index (more of them
- * than the index type holds fails the same way) and nfeat is at most
+ * frame's points and parameters are counted in silk_plan_index (more of
+ * them than it holds fails the same way) and nfeat is at most
  * SILK_MAX_SAMPLES: 14 bytes an edge with 16-bit indices, 20 with 32-bit. */
 typedef struct silk_sil_edge {
-    silk_index pair0;        /* its silhouette points: pairs[pair0 .. pair0 + npairs) */
-    silk_index chain0;       /* its interior parameters, ascending, distinct: chain[chain0 .. chain0 + nchain) */
-    silk_index edge;         /* mesh edge index */
+    silk_plan_index pair0;   /* its silhouette points: pairs[pair0 .. pair0 + npairs) */
+    silk_plan_index chain0;  /* its interior parameters, ascending, distinct: chain[chain0 .. chain0 + nchain) */
+    silk_plan_index edge;    /* mesh edge index */
     uint16_t npairs, nchain;
     uint16_t nsides;         /* triangle sides on this edge */
     uint8_t nfeat;           /* feature sampling intervals (0: not sampled) */
@@ -133,12 +144,12 @@ typedef struct silk_sil_frame {
 
     /* perturbation (perturb.c) */
     uint32_t near_bound;     /* vertices next to a concave segment: one slot each */
-    silk_index *vert_slot;   /* nverts: perturbation slot, or SILK_NO_INDEX */
+    silk_plan_index *vert_slot;   /* nverts: perturbation slot, or SILK_PLAN_NONE */
     silk_vec3 *acc;          /* per slot: sum of plane normals, then the unit R */
     silk_fx *lift;           /* per slot: how far to move down along R (silk_perturb only, then NULL) */
-    silk_index *slot_vert;   /* per slot: its vertex (the same) */
+    silk_plan_index *slot_vert;   /* per slot: its vertex (the same) */
     uint32_t *slot_stamp, nslots;   /* (the same) */
-    silk_index *vert_offset; /* nverts view of vert_slot after perturbation: offset index, or SILK_NO_INDEX */
+    silk_plan_index *vert_offset; /* nverts view of vert_slot after perturbation: offset index, or SILK_PLAN_NONE */
     silk_vec3 *offset;     uint32_t noffset;   /* the offsets, in acc's memory */
 
     silk_stage_clock *clock; /* per-stage timing (include/silk/render.h), or NULL */

@@ -385,10 +385,10 @@ static uint32_t put_curve_rec(silk_frame_geom *g, uint32_t curve, silk_fx t)
 static uint32_t put_corner(const silk_sil_frame *f, silk_frame_geom *g, uint32_t c)
 {
     silk_vrec *r = &g->vrec[g->nvrec];
-    silk_index off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_NO_INDEX;
-    r->kind = off == SILK_NO_INDEX ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+    silk_plan_index off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_PLAN_NONE;
+    r->kind = off == SILK_PLAN_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
     r->a = c;
-    r->b = off == SILK_NO_INDEX ? 0 : off;
+    r->b = off == SILK_PLAN_NONE ? 0 : off;
     r->t = 0;
     return g->nvrec++;
 }
@@ -400,7 +400,7 @@ static void side_curve(const silk_sil_frame *f, const silk_sil_edge *e, const si
     silk_sil_edge_curve(f, e, c);
     c->n0 = m->normal[s->n0];
     c->n1 = m->normal[s->n1];
-    if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
+    if (s->uv0 != SILK_PLAN_NONE && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
         c->uv0 = m->uv[s->uv0];
         c->uv1 = m->uv[s->uv1];
     }
@@ -590,13 +590,14 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         /* most triangles, as they are: put_corner's three records written
          * out (a host's shortcut; a small part keeps the code bytes) */
         silk_vrec *r = &g->vrec[g->nvrec];
-        const silk_index *tv = &f->m->tri[3 * (size_t)t], *vo = f->vert_offset;
+        const silk_index *tv = &f->m->tri[3 * (size_t)t];
+        const silk_plan_index *vo = f->vert_offset;
         uint32_t n = g->nvrec;
         for (uint32_t k = 0; k < 3; k++) {
-            silk_index off = vo ? vo[tv[k]] : SILK_NO_INDEX;
-            r[k].kind = off == SILK_NO_INDEX ? SILK_VREC_CORNER : SILK_VREC_MOVED;
+            silk_plan_index off = vo ? vo[tv[k]] : SILK_PLAN_NONE;
+            r[k].kind = off == SILK_PLAN_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
             r[k].a = 3 * t + k;
-            r[k].b = off == SILK_NO_INDEX ? 0 : off;
+            r[k].b = off == SILK_PLAN_NONE ? 0 : off;
             r[k].t = 0;
         }
         g->nvrec = n + 3;

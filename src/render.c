@@ -1110,8 +1110,9 @@ static inline int direct_ok(const frame *f, uint32_t k)
     if (!f->smooth) return 1;
     const silk_sil_frame *s = &f->sil;
     if (s->tri_state[k] & (SILK_TS_SIL | SILK_TS_CARRY)) return 0;
-    const silk_index *tv = &f->geom.mesh->tri[3 * (size_t)k], *vo = s->vert_offset;
-    return !vo || (vo[tv[0]] == SILK_NO_INDEX && vo[tv[1]] == SILK_NO_INDEX && vo[tv[2]] == SILK_NO_INDEX);
+    const silk_index *tv = &f->geom.mesh->tri[3 * (size_t)k];
+    const silk_plan_index *vo = s->vert_offset;
+    return !vo || (vo[tv[0]] == SILK_PLAN_NONE && vo[tv[1]] == SILK_PLAN_NONE && vo[tv[2]] == SILK_PLAN_NONE);
 }
 
 #endif

@@ -37,10 +37,10 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     if (!side_forward(m, t, k, e)) { uint32_t x = ca; ca = cb; cb = x; }
     s->tri = t;
     s->k = k;
-    s->n0 = m->tri_normal[ca];
-    s->n1 = m->tri_normal[cb];
-    if (m->tri_uv && m->uv) { s->uv0 = m->tri_uv[ca]; s->uv1 = m->tri_uv[cb]; }
-    else { s->uv0 = SILK_NO_INDEX; s->uv1 = SILK_NO_INDEX; }
+    s->n0 = (silk_plan_index)m->tri_normal[ca];   /* (silk_sil_find: every count fits) */
+    s->n1 = (silk_plan_index)m->tri_normal[cb];
+    if (m->tri_uv && m->uv) { s->uv0 = (silk_plan_index)m->tri_uv[ca]; s->uv1 = (silk_plan_index)m->tri_uv[cb]; }
+    else { s->uv0 = SILK_PLAN_NONE; s->uv1 = SILK_PLAN_NONE; }
 }
 
 #if SILK_AA
@@ -188,7 +188,7 @@ __attribute__((always_inline))
 static inline void edge_point_attrs(const silk_mesh *m, const silk_sil_edge *e, const silk_sil_side *s, silk_fx u,
                                     silk_vec2 *uv, uint32_t *rgb)
 {
-    if (s->uv0 != SILK_NO_INDEX && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
+    if (s->uv0 != SILK_PLAN_NONE && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
         silk_vec2 a = m->uv[s->uv0], b = m->uv[s->uv1];
         uv->x = silk_fx_add(a.x, silk_fx_mul(silk_fx_sub(b.x, a.x), u));
         uv->y = silk_fx_add(a.y, silk_fx_mul(silk_fx_sub(b.y, a.y), u));
@@ -609,7 +609,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     for (uint32_t e = 0, w = 0; e < m->nedges; e++) {
         if (!f->carrying[e >> 3]) { e |= 7; continue; }   /* most bytes: none of their eight */
         if (!(f->carrying[e >> 3] & (1u << (e & 7)))) continue;
-        f->edges[w].edge = (silk_index)e;
+        f->edges[w].edge = (silk_plan_index)e;
         f->edges[w++].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
     }
 
@@ -637,8 +637,8 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
         nsides += f->edges[w].nsides;
-        f->edges[w].pair0 = (silk_index)npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
-        if (npairs >= SILK_NO_INDEX) return SILK_ERR_NOMEM;   /* pair0 could not index them */
+        f->edges[w].pair0 = (silk_plan_index)npairs; npairs += f->edges[w].npairs; f->edges[w].npairs = 0;
+        if (npairs >= SILK_PLAN_NONE) return SILK_ERR_NOMEM;   /* pair0 could not index them */
     }
     f->nsides = nsides;
     f->npairs = npairs;
@@ -723,7 +723,7 @@ static silk_status chain_points(silk_sil_frame *f)
         }
         nchain += (we->nfeat > 1 ? we->nfeat - 1 : 0) + we->npairs;
     }
-    if (nchain >= SILK_NO_INDEX) return SILK_ERR_NOMEM;   /* chain0 could not index them */
+    if (nchain >= SILK_PLAN_NONE) return SILK_ERR_NOMEM;   /* chain0 could not index them */
     f->chain = silk_arena_array_top(a, nchain, sizeof *f->chain, SILK_MEM_FRAME);
     if (!f->chain) return SILK_ERR_NOMEM;
     nchain = 0;
@@ -734,7 +734,7 @@ static silk_status chain_points(silk_sil_frame *f)
         for (uint32_t i = 1; i < we->nfeat; i++)
             c[n++] = silk_sample_param(i, we->nfeat);
         for (uint32_t i = 0; i < we->npairs; i++) chain_insert(c, &n, f->pairs[we->pair0 + i].u);
-        we->chain0 = (silk_index)nchain;
+        we->chain0 = (silk_plan_index)nchain;
         we->nchain = (uint16_t)n;
         nchain += n;
     }
@@ -744,6 +744,11 @@ static silk_status chain_points(silk_sil_frame *f)
 
 silk_status silk_sil_find(silk_sil_frame *f)
 {
+    /* the plan keeps vertex, normal, uv and edge indices in 16 bits
+     * (SILK_PLAN_INDEX16): at most 65 535 of each, so that none is
+     * SILK_PLAN_NONE */
+    const silk_mesh *m = f->m;
+    if (SILK_PLAN_INDEX16 && (m->nverts | m->nnormals | m->nuvs | m->nedges) >> 16) return SILK_ERR_NOMEM;
     silk_status st = find_triangles(f);
     if (st == SILK_OK) st = lay_out_edges(f);
     if (st != SILK_OK) return st;

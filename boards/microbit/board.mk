@@ -41,9 +41,8 @@ BOARD_ARCH  := -mcpu=cortex-m0 -mthumb
 # flash.
 BOARD_OPT   := -Os
 BOARD_CODE_BYTES := 49152
-# 16-bit mesh indices and no visibility hierarchy in flash, as on the
-# Cortex-M3 board (boards/mps2-an385/board.mk says why).
-BOARD_CORE_DEFS := -DSILK_INDEX_T=uint16_t
+# No visibility hierarchy in flash, as on the Cortex-M3 board
+# (boards/mps2-an385/board.mk says why).
 BOARD_PACK_ARGS := --visibility brute
 # The tick counter: TIMER0 of the nRF51 at 16 MHz.  -icount shift=0: one
 # instruction is 1 ns of virtual time, so a tick is 62.5 instructions.

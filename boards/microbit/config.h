@@ -11,5 +11,6 @@
 #define SILK_SILTEX_MODE 0
 #define SILK_AA 0
 #define SILK_TEXTURES 0
+#define SILK_PLAN_INDEX16 1
 #define SILK_SHORTCUTS 0
 #define SILK_CPU32 1

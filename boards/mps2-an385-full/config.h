@@ -10,5 +10,6 @@
 #define SILK_CLIP_MODE 0
 #define SILK_SILTEX_MODE 0
 #define SILK_AA_CREASES 0        /* anti-aliased creases (about 1 KiB) do not fit the code budget: outlines only */
+#define SILK_PLAN_INDEX16 1
 #define SILK_SHORTCUTS 0
 #define SILK_CPU32 1

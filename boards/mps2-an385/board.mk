@@ -40,12 +40,6 @@ BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 BOARD_OPT   := -Os
 # The core's code budget (`make profile` checks it)
 BOARD_CODE_BYTES := 40960
-# Mesh indices in 16 bits: the packed model's index arrays and the frame's
-# plan records take half the bytes (`silk pack` refuses a model with more
-# than 65 534 vertices, normals, triangles or edges for it).  The host build
-# of the scene (fw-host) uses the same type and options, so its arena and
-# pixels match byte for byte.
-BOARD_CORE_DEFS = -DSILK_INDEX_T=uint16_t
 # -icount shift=0: virtual time advances exactly 1 ns per instruction, so
 # the firmware's timer (25 MHz, 40 ns a tick) counts instructions.
 BOARD_RUN   := qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none \

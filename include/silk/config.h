@@ -31,6 +31,9 @@
     defined(SILK_NO_TEXTURE) || defined(SILK_NO_VERTEX_CACHE)
 #error "the -DSILK_NO_... flags are options of silk/config.h now: set SILK_AA to 0 instead of SILK_NO_AA, and so on"
 #endif
+#ifdef SILK_INDEX_T
+#error "silk_index is 32 bits in every build now; SILK_PLAN_INDEX16 keeps a small board's plan in 16 (silk/config.h)"
+#endif
 
 /* ---- what the core draws ---------------------------------------------------- */
 
@@ -71,6 +74,13 @@
 
 /* Frames stored whole, which lines, PN and BLEND need (derived, not set): without them every frame is drawn share by share */
 #define SILK_STORED_FRAMES (SILK_LINES || SILK_REFERENCE_MODES)
+
+/* ---- memory ------------------------------------------------------------------- */
+
+/* The per-frame plan's mesh indices in 16 bits (half its RAM); a mesh with 65 535 or more vertices, normals, uvs or edges then falls back */
+#ifndef SILK_PLAN_INDEX16
+#define SILK_PLAN_INDEX16 0
+#endif
 
 /* ---- shortcuts: code bytes or spare arena for instructions, the same bits ---- */
 

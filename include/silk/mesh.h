@@ -21,10 +21,10 @@
 extern "C" {
 #endif
 
-#ifndef SILK_INDEX_T
-#define SILK_INDEX_T uint32_t
-#endif
-typedef SILK_INDEX_T silk_index;
+/* An index into one of the mesh's arrays: 32 bits in every build, so that
+ * a mesh's layout is the same for every program and core (a small board's
+ * plan keeps its own indices in 16 bits: SILK_PLAN_INDEX16, silk/config.h). */
+typedef uint32_t silk_index;
 #define SILK_NO_INDEX ((silk_index)~(silk_index)0)
 
 /* Model coordinates (after --scale) must satisfy |c| <= SILK_COORD_MAX, and
@@ -47,8 +47,7 @@ typedef struct silk_edge {
     silk_index v[2];          /* v[0] < v[1] (equal only on a zero-length DEGENERATE edge) */
     silk_index t[2];          /* incident triangles; t[1] == SILK_NO_INDEX on a boundary.
                                  On a non-manifold edge the first two found. */
-    uint8_t flags;            /* enum silk_edge_flag (all fit 8 bits: 10 bytes an edge in flash
-                                 with 16-bit indices) */
+    uint8_t flags;            /* enum silk_edge_flag (all fit 8 bits) */
 } silk_edge;
 
 /* A feature segment (paper III-A): the Hermite tangents of one feature edge,

@@ -39,7 +39,7 @@ FW_VARIANT ?=
 FW_OUT   := $(FW_DIR)$(if $(FW_VARIANT),/$(FW_VARIANT))
 # The board's build options (BOARD_CONFIG, include/silk/config.h), for the
 # firmware and for its host build alike.
-FW_CONFIG := $(call config_flag,$(BOARD_CONFIG)) $(BOARD_CORE_DEFS)
+FW_CONFIG := $(call config_flag,$(BOARD_CONFIG))
 FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) $(FW_CONFIG) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
 FW_HOST_CFLAGS = $(CFLAGS_BASE) $(FW_CONFIG) $(SANFLAGS) $(CFLAGS)
 FW_DEFS  := -DFW_BOARD='"$(BOARD)"' -DFW_BAND_ROWS=$(BOARD_BAND_ROWS) -DFW_ARENA_BYTES=$(BOARD_ARENA_BYTES) \
@@ -92,8 +92,8 @@ $(FW_DIR)/obj/%.o: %.c boards/$(BOARD)/board.mk
 $(FW_DIR)/libsilk.a: $(FW_CORE_OBJ)
 	rm -f $@ && $(FW_AR) rcs $@ $^
 
-# The core for the host with the board's options and index type: what
-# fw-host links, so that its mesh and plan records are the firmware's.
+# The core for the host with the board's options: what fw-host links, so
+# that its plan records and arena are the firmware's.
 FW_HOST_OBJ := $(CORE_SRC:%.c=$(FW_DIR)/host-obj/%.o)
 FW_HOST_LIB := $(FW_DIR)/host-obj/libsilk.a
 $(FW_DIR)/host-obj/%.o: %.c boards/$(BOARD)/board.mk

@@ -21,9 +21,8 @@
  * rendering camera k with the packed mesh must produce the bytes
  * `silk render` writes (tests/cli_qemu.sh checks it).
  *
- * Indices are written as silk_index and SILK_NO_INDEX, so the header works
- * with a narrower SILK_INDEX_T when the model fits (a static assertion says
- * when it does not).
+ * Indices are written as silk_index (32 bits in every build) and
+ * SILK_NO_INDEX, so the header compiles with any of the core's options.
  */
 #include <ctype.h>
 #include <math.h>
@@ -265,18 +264,6 @@ static void put_look(writer *w, const cli_scene *s)
             p.texture ? "&" : "NULL", p.texture ? w->name : "", p.texture ? "_texture" : "", p.vertex_colors);
 }
 
-/* The largest index value stored anywhere, for the SILK_INDEX_T check. */
-static unsigned long max_index(const silk_mesh *m)
-{
-    unsigned long mx = m->nverts;
-    if (m->nnormals > mx) mx = m->nnormals;
-    if (m->ntris > mx) mx = m->ntris;
-    if (m->nedges > mx) mx = m->nedges;
-    if (m->nuvs > mx) mx = m->nuvs;
-    if (m->vert_edge_start[m->nverts] > mx) mx = m->vert_edge_start[m->nverts];
-    return mx;
-}
-
 static void put_mesh_fn(writer *w, const silk_mesh *m)
 {
     const char *n = w->name;
@@ -340,9 +327,6 @@ static int write_header(writer *w, const char *mesh_path, const char *texture, c
     fprintf(f, "#ifndef SILK_PACK_%s_H\n#define SILK_PACK_%s_H\n\n#include <string.h>\n#include \"silk/silk.h\"\n\n",
             w->name, w->name);
     fprintf(f, "#define %s_NCAMERAS %d\n\n", w->name, ncams);
-    fprintf(f,
-            "_Static_assert(SILK_NO_INDEX > %luu, \"%s: this model needs a wider SILK_INDEX_T\");\n\n",
-            max_index(m), w->name);
 
     put_vec3_array(w, "pos", m->pos, m->nverts, K_POS);
     put_vec3_array(w, "normal", m->normal, m->nnormals, K_NORMAL);
