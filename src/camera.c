@@ -142,7 +142,15 @@ static void eye_coords(const silk_view *v, silk_vec3 p, silk_fx e[3])
 {
     int64_t d[3] = { (int64_t)p.x - v->cam.eye.x, (int64_t)p.y - v->cam.eye.y,
                      (int64_t)p.z - v->cam.eye.z };
-#if SILK_CPU32
+    if (!SILK_CPU32) {
+        /* the loop below written out on a 64-bit host (once per vertex a
+         * frame, where its counting and indexing cost as much as the products) */
+        const int32_t(*r)[3] = v->rot24;
+        e[0] = silk_fx_sat(silk_shr_round64(r[0][0] * d[0] + r[0][1] * d[1] + r[0][2] * d[2], 24));
+        e[1] = silk_fx_sat(silk_shr_round64(r[1][0] * d[0] + r[1][1] * d[1] + r[1][2] * d[2], 24));
+        e[2] = silk_fx_sat(silk_shr_round64(r[2][0] * d[0] + r[2][1] * d[1] + r[2][2] * d[2], 24));
+        return;
+    }
     /* d within 32 bits, as it is for any point nearer the eye than 2^15
      * units: 32-by-32-bit products, one multiply-accumulate instruction each
      * on a 32-bit processor instead of three; the same sums */
@@ -161,14 +169,6 @@ static void eye_coords(const silk_view *v, silk_vec3 p, silk_fx e[3])
                     (int64_t)v->rot24[i][2] * d[2];
         e[i] = silk_fx_sat(silk_shr_round64(s, 24));
     }
-#else
-    /* the loop above written out on a 64-bit host (once per vertex a frame,
-     * where its counting and indexing cost as much as the products) */
-    const int32_t(*r)[3] = v->rot24;
-    e[0] = silk_fx_sat(silk_shr_round64(r[0][0] * d[0] + r[0][1] * d[1] + r[0][2] * d[2], 24));
-    e[1] = silk_fx_sat(silk_shr_round64(r[1][0] * d[0] + r[1][1] * d[1] + r[1][2] * d[2], 24));
-    e[2] = silk_fx_sat(silk_shr_round64(r[2][0] * d[0] + r[2][1] * d[1] + r[2][2] * d[2], 24));
-#endif
 }
 
 /* Orthographic clip z: (-2 ez - (far + near)) / (far - near), one rounding. */

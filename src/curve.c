@@ -28,6 +28,7 @@
  * fit Q16.16 is shortened as a whole, keeping its direction.
  */
 #include "curve.h"
+#include "compiler.h"
 
 #define W_BITS 30
 
@@ -39,18 +40,6 @@ typedef struct wvec {
     int e;
 } wvec;
 
-
-static int bit_length(uint64_t v)
-{
-#if defined(__GNUC__)
-    return v ? 64 - __builtin_clzll(v) : 0;
-#else
-    int n = 0;
-    while (v >= 256) { v >>= 8; n += 8; }
-    while (v) { v >>= 1; n++; }
-    return n;
-#endif
-}
 
 static uint64_t max3_abs(const int64_t c[3])
 {
@@ -86,7 +75,7 @@ static wvec wide(int64_t x, int64_t y, int64_t z, int e)
     wvec w = { { x, y, z }, e };
     uint64_t m = max3_abs(w.c);
     if (m == 0) { w.e = 0; return w; }
-    int s = bit_length(m) - W_BITS;
+    int s = silk_bitlen64(m) - W_BITS;
     for (int k = 0; k < 3; k++)
         w.c[k] = s > 0 ? silk_shr_round64(w.c[k], s) : mul_pow2(w.c[k], -s);
     w.e = e + s;
@@ -115,7 +104,7 @@ static silk_vec3 to_fx(const int64_t c[3], int e)
         r[k] = e >= 0 ? mul_pow2(c[k], e) : silk_shr_round64(c[k], -e > 62 ? 62 : -e);
     uint64_t m = max3_abs(r);
     if (m > (uint64_t)SILK_FX_MAX) {
-        int s = bit_length(m) - 31;                    /* so that r * SILK_FX_MAX fits */
+        int s = silk_bitlen64(m) - 31;                    /* so that r * SILK_FX_MAX fits */
         if (s > 0) {
             for (int k = 0; k < 3; k++) r[k] = silk_shr_round64(r[k], s);
             m = max3_abs(r);
@@ -139,7 +128,7 @@ static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, const int6
     if (den < den_min) den = den_min;
     /* g = 1 / (1 + cos theta) in Q30, from 31-bit operands so that
      * prod << 30 fits. */
-    int s = bit_length((uint64_t)den) - 31;
+    int s = silk_bitlen64((uint64_t)den) - 31;
     if (s > 0) {
         den = silk_shr_round64(den, s);
         prod = silk_shr_round64(prod, s);
@@ -157,16 +146,13 @@ static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, const int6
         int64_t q = silk_shr_round64(cr[k], 30);
         cr2 += (uint64_t)(q * q);
     }
-#if !SILK_CPU32
     /* A 64-bit host skips the square root where the cap cannot bind, as
      * across a fine mesh's edges: x = round(sqrt(cr2)) <= 2^h for
      * cr2 < 2^2h, and the cap div_round(ld lc, 2 D x) is at least g exactly
      * when ld lc >= x D (2g - 1), D = SILK_BULGE_DIV (g > 0 here). */
     uint64_t gd = (uint64_t)SILK_BULGE_DIV * (uint64_t)(2 * g - 1);
-    int h = (bit_length(cr2) + 1) / 2;
-    if (bit_length(gd) + h > 63 || (gd << h) > (uint64_t)(ld * lc))
-#endif
-    {
+    int h = (silk_bitlen64(cr2) + 1) / 2;
+    if (SILK_CPU32 || silk_bitlen64(gd) + h > 63 || (gd << h) > (uint64_t)(ld * lc)) {
         int64_t cross30 = (int64_t)sqrt_round(cr2);    /* |dir x chord| / 2^30, < 2^33 */
         if (cross30 > 0) {
             int64_t cap = div_round(ld * lc, cross30 * 2 * SILK_BULGE_DIV);
@@ -248,7 +234,7 @@ static int common_shift(silk_vec3 a, silk_vec3 b)
     int64_t ca[3] = { a.x, a.y, a.z }, cb[3] = { b.x, b.y, b.z };
     uint64_t m = max3_abs(ca);
     if (max3_abs(cb) > m) m = max3_abs(cb);
-    int s = bit_length(m) - W_BITS;
+    int s = silk_bitlen64(m) - W_BITS;
     return s > 0 ? s : 0;
 }
 
@@ -293,7 +279,7 @@ silk_fx silk_silhouette_param(silk_vec3 n0, silk_vec3 d0, silk_vec3 n1, silk_vec
     uint64_t m = silk_abs64(A);
     if (silk_abs64(B) > m) m = silk_abs64(B);
     if (silk_abs64(C) > m) m = silk_abs64(C);
-    int s = bit_length(m) - COEF_BITS;
+    int s = silk_bitlen64(m) - COEF_BITS;
     if (s > 0) {
         A = silk_shr_round64(A, s);
         B = silk_shr_round64(B, s);

@@ -12,23 +12,13 @@
  */
 #include <stddef.h>
 #include "silk/fixed.h"
+#include "compiler.h"
 
 /* ---- small integer helpers -------------------------------------------------- */
 
-static int clz32(uint32_t x)            /* x != 0 */
-{
-#if defined(__GNUC__)
-    return __builtin_clz(x);
-#else
-    int n = 0;
-    while (!(x & 0x80000000u)) { x <<= 1; n++; }
-    return n;
-#endif
-}
-
 static int clz64(uint64_t x)            /* x != 0 */
 {
-    return (x >> 32) ? clz32((uint32_t)(x >> 32)) : 32 + clz32((uint32_t)x);
+    return (x >> 32) ? silk_clz32((uint32_t)(x >> 32)) : 32 + silk_clz32((uint32_t)x);
 }
 
 
@@ -64,7 +54,7 @@ static silk_fx div_round_sat(int64_t n, int64_t d)
  * estimated from the top digit of d and corrected at most twice. */
 uint32_t silk_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
 {
-    int s = clz32(d);
+    int s = silk_clz32(d);
     d <<= s;
     uint64_t ns = n << s;                        /* n < d 2^32: nothing leaves the top */
     uint32_t hi = (uint32_t)(ns >> 32), lo = (uint32_t)ns;
@@ -141,7 +131,7 @@ static uint32_t rsqrt_q31(uint32_t m)
 uint32_t silk_isqrt32(uint32_t v)
 {
     if (v == 0) return 0;
-    int e = clz32(v) & ~1;              /* even, so sqrt(2^e) is a shift */
+    int e = silk_clz32(v) & ~1;              /* even, so sqrt(2^e) is a shift */
     uint32_t m = v << e;
     /* sqrt(v) = 2^15 sqrt(M) / 2^(e/2) and sqrt(M) = M / sqrt(M) */
     uint64_t r = ((uint64_t)m * rsqrt_q31(m)) >> (46 + e / 2);
@@ -180,7 +170,7 @@ static uint32_t isqrt64_round(uint64_t v)
 silk_fx silk_fx_sqrt(silk_fx a)
 {
     if (a <= 0) return 0;
-    int e = clz32((uint32_t)a) & ~1;
+    int e = silk_clz32((uint32_t)a) & ~1;
     uint32_t m = (uint32_t)a << e;
     uint64_t v = (uint64_t)a << 16;     /* sqrt(a / 2^16) * 2^16 = sqrt(a * 2^16) */
     int sh = 38 + e / 2;
@@ -195,7 +185,7 @@ silk_fx silk_fx_sqrt(silk_fx a)
 silk_fx silk_fx_rsqrt(silk_fx a)
 {
     if (a <= 0) return SILK_FX_MAX;
-    int e = clz32((uint32_t)a) & ~1;
+    int e = silk_clz32((uint32_t)a) & ~1;
     uint32_t m = (uint32_t)a << e;
     /* result 2^24 / sqrt(a) = 2^(9 + e/2) / sqrt(M) */
     int sh = 22 - e / 2;
