@@ -212,10 +212,35 @@ static silk_status mesh_check(const silk_model_section *s, const char *sec, cons
 }
 
 static silk_status smap_check(const silk_model_section *sp, const char *name, silk_silmap *out, silk_error *err);
-#if SILK_SILTEX_MODE
 static silk_status stex_of(const silk_model *m, const silk_model_section *s, const char *name, silk_siltex *out,
                            silk_error *err);
-#endif
+
+/* The section of opened model m that opts->part draws, laid out and
+ * checked into *s and *l, and the model's map and texture checked: a
+ * damaged one fails the model however it is drawn, as a damaged mesh does. */
+static silk_status mesh_section(const silk_model *m, const silk_load_opts *opts, const char *name,
+                                silk_model_section *s, mesh_layout *l, silk_error *err)
+{
+    /* clip mode draws the hull; the other modes the coarse mesh, or the hull when that is all there is */
+    const char *sec = "HULL";
+    if (opts->part == SILK_PART_HULL) {
+        if (!silk_model_find(m, SILK_SECTION_HULL, s))
+            return BAD("no HULL section (prepared without the outer hull clip mode draws)");
+    } else if (silk_model_find(m, SILK_SECTION_MESH, s)) {
+        sec = "MESH";
+    } else if (!silk_model_find(m, SILK_SECTION_HULL, s)) {
+        return BAD("no MESH or HULL section (no mesh to draw)");
+    }
+    silk_status st;
+    if ((st = mesh_layout_of(s, sec, name, l, err)) || (st = mesh_check(s, sec, l, name, err))) return st;
+    silk_model_section ms;
+    silk_silmap map;
+    if (silk_model_find(m, SILK_SECTION_SMAP, &ms) && (st = smap_check(&ms, name, &map, err))) return st;
+    silk_siltex tex;
+    if (SILK_SILTEX_MODE && silk_model_find(m, SILK_SECTION_STEX, &ms) && (st = stex_of(m, &ms, name, &tex, err)))
+        return st;
+    return SILK_OK;
+}
 
 silk_status silk_load_model(const void *data, size_t len, const char *name, const silk_load_opts *opts,
                             silk_arena *a, silk_mesh *out, silk_error *err)
@@ -237,26 +262,7 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
     silk_model_section s;
     mesh_layout l = { 0, 0, 0, 0, 0, 0, 0 };
     silk_status st = silk_model_open(data, len, name, &m, err);
-    if (st) return st;
-    /* clip mode draws the hull; the other modes the coarse mesh, or the hull when that is all there is */
-    const char *sec = "HULL";
-    if (opts->part == SILK_PART_HULL) {
-        if (!silk_model_find(&m, SILK_SECTION_HULL, &s))
-            return BAD("no HULL section (prepared without the outer hull clip mode draws)");
-    } else if (silk_model_find(&m, SILK_SECTION_MESH, &s)) {
-        sec = "MESH";
-    } else if (!silk_model_find(&m, SILK_SECTION_HULL, &s)) {
-        return BAD("no MESH or HULL section (no mesh to draw)");
-    }
-    if ((st = mesh_layout_of(&s, sec, name, &l, err)) || (st = mesh_check(&s, sec, &l, name, err))) return st;
-    /* a damaged map fails the model however it is drawn, as a damaged mesh does */
-    silk_model_section ms;
-    silk_silmap map;
-    if (silk_model_find(&m, SILK_SECTION_SMAP, &ms) && (st = smap_check(&ms, name, &map, err))) return st;
-#if SILK_SILTEX_MODE
-    silk_siltex tex;
-    if (silk_model_find(&m, SILK_SECTION_STEX, &ms) && (st = stex_of(&m, &ms, name, &tex, err))) return st;
-#endif
+    if (st || (st = mesh_section(&m, opts, name, &s, &l, err))) return st;
 
     int want_n = opts->normals != SILK_NORMALS_COMPUTE;
     size_t need = 0;
@@ -433,7 +439,6 @@ silk_status silk_model_silmap(const void *data, size_t len, const char *name, si
 
 /* ---- STEX: the silhouette texture ------------------------------------------------ */
 
-#if SILK_SILTEX_MODE
 /* |v|^2 of a Q1.14 vector within (1 +- 1/64)^2, in Q2.28. */
 static int unit14(const uint8_t *p)
 {
@@ -540,6 +545,7 @@ silk_status silk_model_siltex(const void *data, size_t len, const char *name, si
 {
     if (!name) name = "model";
     memset(out, 0, sizeof *out);
+    if (!SILK_SILTEX_MODE) return BAD("silhouette textures are not built in (SILK_SILTEX_MODE 0)");
     silk_model m;
     silk_model_section s;
     silk_status st = silk_model_open(data, len, name, &m, err);
@@ -549,13 +555,3 @@ silk_status silk_model_siltex(const void *data, size_t len, const char *name, si
     if ((st = stex_of(&m, &s, name, out, err))) memset(out, 0, sizeof *out);
     return st;
 }
-#else
-silk_status silk_model_siltex(const void *data, size_t len, const char *name, silk_siltex *out, silk_error *err)
-{
-    (void)data;
-    (void)len;
-    if (!name) name = "model";
-    memset(out, 0, sizeof *out);
-    return BAD("silhouette textures are not built in (SILK_SILTEX_MODE 0)");
-}
-#endif

@@ -406,11 +406,9 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
         shade_var[3 + k] = (silk_fx)n[k];
     }
     uint32_t rgb = 0xFFFFFF;
-#if SILK_TEXTURES
-    if (st->color)   /* the texture's v runs upwards, the atlas's downwards */
+    if (SILK_TEXTURES && st->color)   /* the texture's v runs upwards, the atlas's downwards */
         rgb = silk_texture_sample(&s->color_map, (silk_fx)(u / (int32_t)st->w),
                                   (silk_fx)(SILK_FX_ONE - v / (int32_t)st->h), 0, 0);
-#endif
     return silk_hal_phong_tinted(s->shade, shade_var, rgb);
 }
 
@@ -422,9 +420,9 @@ void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s)
     h->nvaryings = VAR_COUNT;
     h->uniforms = s;
     h->footprint_var = 0;
-#if SILK_TEXTURES
     /* the colour map as a texture, described once here rather than per pixel */
     const silk_siltex *st = s->tex;
+    if (!SILK_TEXTURES) return;
     memset(&s->color_map, 0, sizeof s->color_map);
     if (st && st->color) {
         s->color_map.pixels = st->color;
@@ -435,7 +433,6 @@ void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s)
         s->color_map.filter = SILK_TEX_BILINEAR;
         s->color_map.wrap = SILK_TEX_CLAMP;
     }
-#endif
 }
 
 int64_t silk_siltex_line_width(const silk_view *view, silk_fx reach)

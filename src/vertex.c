@@ -121,10 +121,8 @@ void silk_vrec_eval(const silk_geom *g, const silk_vrec *r, silk_vertex_attr *ou
         corner(g->mesh, r->a, out);
         if (g->offsets) out->pos = silk_v3_add(out->pos, g->offsets[r->b]);
         break;
-    case SILK_VREC_PATCH:   /* PN and BLEND modes (pn.c) */
-#if SILK_REFERENCE_MODES   /* render.c makes no patches then */
-        if (g->patches) silk_patch_eval(&g->patches[r->a], r->b, out);
-#endif
+    case SILK_VREC_PATCH:   /* PN and BLEND modes (pn.c; a build without them makes no patches) */
+        if (SILK_REFERENCE_MODES && g->patches) silk_patch_eval(&g->patches[r->a], r->b, out);
         break;
     default:
         break;
