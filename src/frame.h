@@ -55,7 +55,7 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
 void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *x, int64_t *y, uint32_t *d);
 
 /* raster.c, for a renderer that places each vertex once a frame
- * (render.c's FLAT frames; not in a build with -DSILK_NO_VERTEX_CACHE):
+ * (render.c's SILK_DRAW_DIRECT and SILK_PLACE_ONCE):
  * silk_raster_place puts a vertex at clip coordinates clip where
  * silk_raster_triangle does (xy in 1/SILK_RASTER_SUB pixels) and returns
  * 1, or returns 0 when it lies outside a clip plane (then the triangles at
@@ -75,13 +75,13 @@ void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out
  * them once (render.c's vertex cache).  A stage of the caller's own may
  * read anything in the record, so it is never assumed to. */
 int silk_hal_vertex_by_attrs(const silk_hal *h);
-/* phong.c, with silk_hal_vertex_by_attrs (not with -DSILK_NO_VERTEX_CACHE):
+/* phong.c, with silk_hal_vertex_by_attrs (render.c's SILK_DRAW_DIRECT):
  * the default vertex stage in two parts, the same bits - the clip
  * coordinates it gives a vertex at position pos (a CORNER record's), and
  * its output for record r but the clip coordinates (left as they are). */
 silk_vec4 silk_hal_vertex_clip(const silk_hal *h, silk_vec3 pos);
 void silk_hal_vertex_varyings(const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
-/* phong.c (not with -DSILK_NO_VERTEX_CACHE): p when h is the default
+/* phong.c (the rasterizer's SILK_PHONG_PLAIN): p when h is the default
  * stages (silk_hal_phong) of p in their usual case - a perspective camera,
  * two directional lights, no texture or vertex colours, SILK_PHONG_PLAIN_NVAR
  * varyings and every material term below 16 - else NULL; then

@@ -16,10 +16,25 @@
 #include "frame.h"
 #include "silk/hal.h"
 #include "silk/texture.h"
+#include "compiler.h"
 
 enum { VAR_POS = 0, VAR_NORMAL = 3, VAR_COUNT = 6, VAR_UV = 6, VAR_RGB = 8, VAR_UV_COUNT = 8, VAR_RGB_COUNT = 11 };
-#if SILK_SHORTCUTS
 _Static_assert(VAR_COUNT == SILK_PHONG_PLAIN_NVAR, "the rasterizer's plain case interpolates the default stage's varyings");
+
+/* The fragment stage's words on a 32-bit processor, where a 64-bit product
+ * is three instructions (SILK_CPU32), and on a 64-bit host, where nothing
+ * needs widening: ucomp, a unit vector's components (made by silk_unit_fx
+ * there, out of line: the code it takes counts; by silk_unit64 here, the
+ * same bits inline), and uword, pow_unit's (one multiply instruction a
+ * product there). */
+#if SILK_CPU32
+typedef int32_t ucomp;
+typedef uint32_t uword;
+#define unit_fx silk_unit_fx
+#else
+typedef int64_t ucomp;
+typedef uint64_t uword;
+#define unit_fx silk_unit64
 #endif
 
 /* Channel c (the low 8 bits) to Q16.16 in [0, 1]: c * 65536 / 255 rounded
@@ -70,11 +85,7 @@ static int64_t pow_unit(int64_t x, int n)
 {
     /* x^n <= 2^-n rounds to zero for x <= 1/2 and n > 16: most pixels */
     if (x <= SILK_FX_HALF && n > 16) return 0;
-#if SILK_CPU32
-    uint32_t r = SILK_FX_ONE, ux = (uint32_t)x;   /* one multiply instruction a product */
-#else
-    uint64_t r = SILK_FX_ONE, ux = (uint64_t)x;   /* no widening */
-#endif
+    uword r = SILK_FX_ONE, ux = (uword)x;
     while (n > 0) {
         if (n & 1) r = ((uint64_t)r * ux + SILK_FX_HALF) >> 16;
         n >>= 1;
@@ -83,18 +94,14 @@ static int64_t pow_unit(int64_t x, int n)
     return (int64_t)r;
 }
 
-#if SILK_CPU32
 /* v, with the compiler's knowledge of its range forgotten: knowing that a
  * 64-bit value fits 32 bits, gcc drops the narrowing and multiplies in 64
  * bits again (three instructions on a 32-bit processor instead of one). */
 static inline int32_t opaque32(int32_t v)
 {
-#if defined(__GNUC__)
-    __asm__("" : "+r"(v));
-#endif
+    SILK_OPAQUE32(v);
     return v;
 }
-#endif
 
 /* a b for factors within 32 bits (as every one of the fragment stage's is,
  * by the ranges stated where they are formed): one multiply instruction on
@@ -102,29 +109,12 @@ static inline int32_t opaque32(int32_t v)
  * single instruction on a 64-bit host. */
 static inline int64_t mul32(int64_t a, int64_t b)
 {
-#if SILK_CPU32
-    return (int64_t)opaque32((int32_t)a) * opaque32((int32_t)b);
-#else
+    if (SILK_CPU32) return (int64_t)opaque32((int32_t)a) * opaque32((int32_t)b);
     return a * b;
-#endif
 }
 
-/* A unit vector's components: 32 bits on a 32-bit processor, where
- * silk_unit_fx makes them (out of line: the code it takes counts there);
- * 64 bits on a 64-bit host, where silk_unit64 makes the same bits inline
- * and nothing needs widening. */
-#if SILK_CPU32
-typedef int32_t ucomp;
-#define unit_fx silk_unit_fx
-#else
-typedef int64_t ucomp;
-#define unit_fx silk_unit64
-#endif
-
-#if defined(__GNUC__)
-__attribute__((always_inline))   /* three per shaded pixel and light: a call would cost as much */
-#endif
-static inline int64_t dot32(const ucomp *a, const ucomp *b)
+/* (inline: three per shaded pixel and light, a call would cost as much) */
+SILK_ALWAYS_INLINE static inline int64_t dot32(const ucomp *a, const ucomp *b)
 {
     return mul32(a[0], b[0]) + mul32(a[1], b[1]) + mul32(a[2], b[2]);
 }
@@ -162,13 +152,11 @@ static uint32_t phong_fragment(const silk_hal *h, const silk_fx *var)
     const silk_material *m = &p->mat;
     /* the material colour times the texel and the vertex colour */
     int64_t base[3] = { m->color.x, m->color.y, m->color.z };
-#if SILK_TEXTURES   /* a build without textures draws textured models in their material colour */
-    if (p->texture) {
+    if (SILK_TEXTURES && p->texture) {   /* a build without textures draws textured models in their material colour */
         uint32_t tex = silk_texture_sample(p->texture, var[VAR_UV], var[VAR_UV + 1], var[h->nvaryings],
                                            var[h->nvaryings + 1]);
         for (int k = 0; k < 3; k++) base[k] = (base[k] * byte_to_fx(tex >> (16 - 8 * k))) >> 16;
     }
-#endif
     if (p->vertex_colors && h->nvaryings >= VAR_RGB_COUNT)
         for (int k = 0; k < 3; k++) {
             int64_t c = var[VAR_RGB + k];
@@ -203,10 +191,7 @@ static inline silk_vec3 eye_minus(silk_vec3 eye, const silk_fx *var)
  * unit normal n and view vector v, N.V = ndv), added to the sums of
  * diffuse (dr, dg, db) and specular (sr, sg, sb) light; plain as for
  * shade_in. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void light_in(const silk_phong *p, const silk_light *li, const silk_fx *var, const ucomp *n,
+SILK_ALWAYS_INLINE static inline void light_in(const silk_phong *p, const silk_light *li, const silk_fx *var, const ucomp *n,
                             const ucomp *v, int64_t ndv, int64_t *dr, int64_t *dg, int64_t *db, int64_t *sr,
                             int64_t *sg, int64_t *sb, int plain)
 {
@@ -241,10 +226,7 @@ static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *ba
 /* shade's work; plain: the caller knows that p is in the usual case
  * silk_hal_phong_plain describes, so the tests that case settles fold away
  * (the same bits: each test's other branch is one the case never takes). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const int64_t *base, int plain)
+SILK_ALWAYS_INLINE static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const int64_t *base, int plain)
 {
     const silk_material *m = &p->mat;
     ucomp v[3], n[3];                    /* unit vectors: components within +-2^16 (and a little) */
@@ -314,15 +296,13 @@ static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const i
            channel(m, (silk_fx)base[2], silk_fx_mul(m->specular, m->specular_color.z), db, sb);
 }
 
-#if SILK_SHORTCUTS
 const silk_phong *silk_hal_phong_plain(const silk_hal *h)
 {
+    if (!SILK_PHONG_PLAIN) return NULL;   /* (a build without the shortcut has no such case) */
     if (h->fragment != phong_fragment || h->nvaryings != VAR_COUNT) return NULL;
     const silk_phong *p = (const silk_phong *)h->uniforms;
     const silk_material *m = &p->mat;
-#if SILK_TEXTURES
-    if (p->texture) return NULL;
-#endif
+    if (SILK_TEXTURES && p->texture) return NULL;
     if (!p->view || p->view->cam.ortho || p->nlights != 2 || p->lights[0].kind == SILK_LIGHT_POINT ||
         p->lights[1].kind == SILK_LIGHT_POINT)
         return NULL;
@@ -334,29 +314,29 @@ const silk_phong *silk_hal_phong_plain(const silk_hal *h)
 
 uint32_t silk_phong_plain_fragment(const silk_phong *p, const silk_fx *var)
 {
+    if (!SILK_PHONG_PLAIN) return 0;   /* (never called there: silk_hal_phong_plain is NULL) */
     const int64_t base[3] = { p->mat.color.x, p->mat.color.y, p->mat.color.z };
     return shade_in(p, var, base, 1);
 }
-#endif
 
 int silk_hal_vertex_by_attrs(const silk_hal *h)
 {
     return h->vertex == phong_vertex;
 }
 
-#if SILK_SHORTCUTS
 silk_vec4 silk_hal_vertex_clip(const silk_hal *h, silk_vec3 pos)
 {
-    return clip_of((const silk_phong *)h->uniforms, pos);
+    silk_vec4 none = { 0, 0, 0, 0 };
+    return SILK_DRAW_DIRECT ? clip_of((const silk_phong *)h->uniforms, pos) : none;   /* (only its caller's) */
 }
 
 void silk_hal_vertex_varyings(const silk_geom *g, const silk_vrec *r, silk_vertex_out *out)
 {
+    if (!SILK_DRAW_DIRECT) return;   /* (only its caller's) */
     silk_vertex_attr a;
     silk_vrec_eval(g, r, &a);
     varyings_of(&a, out);
 }
-#endif
 
 const silk_view *silk_hal_vertex_view(const silk_hal *h)
 {
@@ -369,11 +349,7 @@ void silk_hal_phong(silk_hal *h, const silk_phong *p)
     h->fragment = phong_fragment;
     h->nvaryings = p->vertex_colors ? VAR_RGB_COUNT : (p->texture ? VAR_UV_COUNT : VAR_COUNT);
     h->uniforms = p;
-#if !SILK_TEXTURES
-    h->footprint_var = 0;
-#else
-    h->footprint_var = p->texture ? VAR_UV + 1 : 0;
-#endif
+    h->footprint_var = SILK_TEXTURES && p->texture ? VAR_UV + 1 : 0;   /* (a build without textures samples none) */
 }
 
 /* Unit direction a*right + b*up + c*back in camera terms (back = towards

@@ -20,6 +20,7 @@
 #include "silk/raster.h"
 #include "silk/hal.h"
 #include "frame.h"
+#include "compiler.h"
 
 #define SUB_BITS 4                  /* subpixel grid: 1/16 pixel */
 #define SUB      (1 << SUB_BITS)
@@ -40,12 +41,9 @@ _Static_assert(SUB == SILK_RASTER_SUB, "frame.h names the subpixel grid");
  * instructions; on a 64-bit host the divide instruction. */
 static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
 {
-#if !SILK_CPU32
+    if (SILK_CPU32) return silk_udiv64_32(n, d, rem);
     *rem = (uint32_t)(n % d);
     return (uint32_t)(n / d);
-#else
-    return silk_udiv64_32(n, d, rem);
-#endif
 }
 
 /* floor(n / d), d > 0.  Most operands here fit in 32 bits (subpixel
@@ -57,24 +55,21 @@ static uint32_t udiv_q32(uint64_t n, uint32_t d, uint32_t *rem)
  * fast).  The quotient is the same either way. */
 static int64_t floor_div(int64_t n, int64_t d)    /* d > 0 */
 {
-#if !SILK_CPU32
     /* a 64-bit host divides in one instruction either way: no test of
      * the operands' size, and the floor without a branch (both go either
      * way from one call to the next) */
-    return n / d - ((n % d != 0) & (n < 0));
-#else
+    if (!SILK_CPU32) return n / d - ((n % d != 0) & (n < 0));
     if (d <= INT32_MAX && n >= -INT32_MAX && n <= INT32_MAX) {
         int32_t n32 = (int32_t)n, d32 = (int32_t)d, q32 = n32 / d32;
         return (n32 % d32 != 0 && n32 < 0) ? q32 - 1 : q32;
     }
     uint64_t un = silk_abs64(n);
-    if (SILK_CPU32 && d <= (int64_t)UINT32_MAX && un >> 32 < (uint64_t)d) {
+    if (d <= (int64_t)UINT32_MAX && un >> 32 < (uint64_t)d) {
         uint32_t r, q = udiv_q32(un, (uint32_t)d, &r);
         return n < 0 ? -(int64_t)q - (r != 0) : (int64_t)q;
     }
     int64_t q = n / d;
     return (n % d != 0 && n < 0) ? q - 1 : q;
-#endif
 }
 
 /* floor(2^61 / tt), tt > 0: the reciprocal of the perspective weights. */
@@ -88,17 +83,6 @@ static int64_t recip61(int64_t tt)
 static int64_t ceil_div(int64_t n, int64_t d)     /* d > 0 */
 {
     return -floor_div(-n, d);
-}
-
-static int bitlen64(uint64_t v)
-{
-#if defined(__GNUC__)
-    return v ? 64 - __builtin_clzll(v) : 0;
-#else
-    int n = 0;
-    while (v) { v >>= 1; n++; }
-    return n;
-#endif
 }
 
 /* An exact rational sequence q + r/den, 0 <= r < den, advanced by a fixed
@@ -118,15 +102,15 @@ static inline void rstep_next(rstep *s)
 {
     s->q += s->sq;
     s->r += s->sr;
-#if !SILK_CPU32
+    if (SILK_CPU32) {
+        if (s->r >= s->den) { s->r -= s->den; s->q++; }
+        return;
+    }
     /* without a branch on a host: the carry comes pixel by pixel either
      * way, and a mispredicted branch costs more than the arithmetic */
     int64_t carry = s->r >= s->den;
     s->r -= s->den & -carry;
     s->q += carry;
-#else
-    if (s->r >= s->den) { s->r -= s->den; s->q++; }
-#endif
 }
 
 /* ---- targets ------------------------------------------------------------------ */
@@ -163,14 +147,8 @@ static int band_rows(const silk_target *t, int *lo, int *hi)
 static uint32_t div255(uint32_t x) { return (x + 1 + (x >> 8)) >> 8; }
 
 /* Per shaded pixel on a 64-bit host: inline there (a call costs as much as
- * the work); a 32-bit processor keeps one copy of each. */
-#if !SILK_CPU32 && defined(__GNUC__)
-#define PIXEL_INLINE __attribute__((always_inline)) inline
-#else
-#define PIXEL_INLINE
-#endif
-
-static PIXEL_INLINE void store(const silk_target *t, uint8_t *p, uint32_t rgb)
+ * the work); a 32-bit processor keeps one copy of each (SILK_HOST_INLINE). */
+static SILK_HOST_INLINE void store(const silk_target *t, uint8_t *p, uint32_t rgb)
 {
     uint32_t r = (rgb >> 16) & 255, g = (rgb >> 8) & 255, b = rgb & 255;
     if (t->fmt == SILK_PIX_RGB565) {
@@ -259,16 +237,15 @@ static unsigned outcode(const silk_vec4 *c)
            (unsigned)(w < W_MIN) << 6;
 }
 
-#if SILK_SHORTCUTS
 /* Whether c is inside every plane (outcode 0), in four tests: most corners
- * are, and those need no more (a board keeps the code bytes instead). */
+ * are, and those need no more (where the usual cases are written out,
+ * SILK_FAST_CASES; a board keeps the code bytes instead). */
 static int inside(const silk_vec4 *c)
 {
     int64_t w = c->w, gw = GUARD * w;
     return w >= W_MIN && (uint64_t)(c->z + w) <= (uint64_t)(2 * w) && (uint64_t)(c->x + gw) <= (uint64_t)(2 * gw) &&
            (uint64_t)(c->y + gw) <= (uint64_t)(2 * gw);
 }
-#endif
 
 static silk_fx lerp30(silk_fx a, silk_fx b, int64_t t30)
 {
@@ -321,14 +298,11 @@ typedef struct svert {
 /* n / d rounded to nearest (halves up), d > 0 */
 static int64_t round_div(int64_t n, int64_t d)
 {
-#if !SILK_CPU32
+    if (SILK_CPU32) return floor_div(2 * n + d, 2 * d);
     /* a 64-bit host divides in one instruction: floor_div's narrowing is
      * for 32-bit processors (every corner of every triangle comes here) */
     int64_t m = 2 * n + d, q = m / (2 * d);
     return q - (m % (2 * d) != 0 && m < 0);
-#else
-    return floor_div(2 * n + d, 2 * d);
-#endif
 }
 
 /* y' = (1 - y/w) H/2 in subpixels (w > 0); below 2^50 within the guard
@@ -406,7 +380,7 @@ static int64_t mul_shr31(int64_t a, int64_t b)
 static inline void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_t *b2)
 {
     if (tt <= 0) { *b1 = *b2 = 0; return; }       /* only outside the triangle */
-    int s = bitlen64((uint64_t)tt) - 31;
+    int s = silk_bitlen64((uint64_t)tt) - 31;
     if (s > 0) { u >>= s; v >>= s; tt >>= s; }
     int64_t inv = recip61(tt);                   /* tt in [1, 2^31): inv in (2^30, 2^61] */
     *b1 = mul_shr31(u, inv);                     /* u <= tt: product <= 2^61 */
@@ -415,10 +389,10 @@ static inline void weights(int64_t u, int64_t v, int64_t tt, int64_t *b1, int64_
 
 typedef struct tri_setup {
     const svert *v[3];     /* ordered so that the area below is positive */
+    int affine;            /* all q equal: one reciprocal for the whole triangle (here: no padding on a 32-bit part) */
     int64_t area;          /* twice the area in subpixels^2, > 0 */
     int64_t ea[3], eb[3];  /* edge function i: ea*(X - Xj) + eb*(Y - Yj), j = i+1 */
     int64_t qn[3];
-    int affine;            /* all q equal: one reciprocal for the whole triangle */
     int64_t aff_inv; int aff_shift;
     int64_t gxq, gxr, gyq, gyr;   /* depth plane per subpixel: quotient and remainder */
     rstep dstep;                  /* depth per pixel in x */
@@ -431,13 +405,18 @@ typedef struct tri_setup {
      * keep the sum below 2^63.  vbase holds a0 in Q30 plus the rounding half. */
     int64_t vbase[SILK_MAX_VARYINGS], vd1[SILK_MAX_VARYINGS], vd2[SILK_MAX_VARYINGS];
     int vnarrow;           /* a 32-bit processor and every vd1, vd2 within 32 bits */
-#if SILK_SHORTCUTS
-    const silk_phong *plain;   /* silk_hal_phong_plain of the stages, when shading */
-    int64_t ryq, ryr;          /* depth per row: quotient and remainder (span_depth) */
+    const silk_phong *plain;   /* silk_hal_phong_plain of the stages, when shading (SILK_PHONG_PLAIN), or NULL */
+    struct span_memo *memo;    /* span_depth's, or NULL (without SILK_SPAN_DEPTH_STEP) */
+} tri_setup;
+
+/* What span_depth keeps of a triangle from span to span: raster_tri's,
+ * only where the build steps the depth (SILK_SPAN_DEPTH_STEP), so that a
+ * small part's stack holds none of it. */
+typedef struct span_memo {
+    int64_t ryq, ryr;          /* depth per row: quotient and remainder */
     rstep dat;                 /* the depth at the centre of pixel (dat_x, dat_y), the last span's first */
     int dat_x, dat_y;
-#endif
-} tri_setup;
+} span_memo;
 
 /* Depth at subpixel point (X, Y): D0 + (e1 dD1 + e2 dD2) / area, floored,
  * exact.  The quotient parts may overflow int64 on their own for slivers, so
@@ -454,21 +433,21 @@ static void depth_at(const tri_setup *s, int64_t X, int64_t Y, rstep *d)
     d->r = rem - f * s->area;
 }
 
-#if SILK_SHORTCUTS
 /* depth_at the centre of pixel (x, row) where a span starts, stepped from
  * the last span's first pixel where that is the row above and a few
  * pixels across (most rows of a triangle: the edge moves a pixel or two),
  * by additions: the same quotient and remainder of the same rational
  * (the quotient modulo 2^64, as depth_at sums it), without its division. */
-static void span_depth(tri_setup *s, int x, int row, rstep *d)
+static void span_depth(const tri_setup *s, int x, int row, rstep *d)
 {
-    int64_t k = (int64_t)x - s->dat_x;
-    if (row - s->dat_y == 1 && k >= -4 && k <= 4) {
+    span_memo *mo = s->memo;
+    int64_t k = (int64_t)x - mo->dat_x;
+    if (row - mo->dat_y == 1 && k >= -4 && k <= 4) {
         /* r in [0, 10 area) after the 4 area added: back below area in
          * four steps of 8, 4, 2 and 1 area, without branches (the carry
          * goes either way row by row) */
-        uint64_t q = (uint64_t)s->dat.q + (uint64_t)s->ryq + (uint64_t)k * (uint64_t)s->dstep.sq - 4;
-        int64_t r = s->dat.r + s->ryr + k * s->dstep.sr + 4 * s->area;
+        uint64_t q = (uint64_t)mo->dat.q + (uint64_t)mo->ryq + (uint64_t)k * (uint64_t)s->dstep.sq - 4;
+        int64_t r = mo->dat.r + mo->ryr + k * s->dstep.sr + 4 * s->area;
         for (int b = 3; b >= 0; b--) {
             int64_t over = r >= (s->area << b);
             r -= (s->area << b) & -over;
@@ -479,15 +458,14 @@ static void span_depth(tri_setup *s, int x, int row, rstep *d)
     } else {
         depth_at(s, (int64_t)x * SUB + SUB / 2, (int64_t)row * SUB + SUB / 2, d);
     }
-    s->dat.q = d->q;
-    s->dat.r = d->r;
-    s->dat_x = x;
-    s->dat_y = row;
+    mo->dat.q = d->q;
+    mo->dat.r = d->r;
+    mo->dat_x = x;
+    mo->dat_y = row;
 }
-#endif
 
 /* Perspective-correct weights at the pixel whose planes are U, V, T. */
-static PIXEL_INLINE void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
+static SILK_HOST_INLINE void bary(const tri_setup *s, int64_t U, int64_t V, int64_t T, int64_t *b1, int64_t *b2)
 {
     if (s->affine) {
         *b1 = mul_shr31(U >> s->aff_shift, s->aff_inv);
@@ -504,7 +482,6 @@ static PIXEL_INLINE void bary(const tri_setup *s, int64_t U, int64_t V, int64_t 
  * interpolation, per pixel.  A neighbour past the triangle's horizon
  * (T <= 0) counts as no movement; the weight steps are clamped to 2^29
  * (one half) so every product stays far inside 64 bits. */
-#if SILK_TEXTURES
 static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T, int64_t b1, int64_t b2,
                       silk_fx *var)
 {
@@ -536,7 +513,6 @@ static void footprint(const tri_setup *s, int k, int64_t U, int64_t V, int64_t T
         var[s->nvar + j] = m > SILK_FX_MAX ? SILK_FX_MAX : (silk_fx)m;
     }
 }
-#endif
 
 /* What a span's fragments share: the triangle, the row's buffers, and the
  * planes U, V, T at the row's pixel 0.  At pixel x they are these plus x
@@ -554,19 +530,15 @@ typedef struct span_ctx {
 /* varyings() where every factor is within 32 bits: two multiply-accumulates
  * each.  Out of line, and the weights as 32-bit arguments: inlined, the
  * compiler sees through the narrowing and multiplies in 64 bits again. */
-#if SILK_CPU32 && defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
+SILK_CPU32_NOINLINE static void varyings32(const tri_setup *s, int32_t b1, int32_t b2, silk_fx *var)
 {
     const int64_t *base = s->vbase, *d1 = s->vd1, *d2 = s->vd2;
     for (int k = 0; k < s->nvar; k++)
         var[k] = (silk_fx)((base[k] + (int64_t)(int32_t)d1[k] * b1 + (int64_t)(int32_t)d2[k] * b2) >> 30);
 }
 
-#if SILK_SHORTCUTS
-/* varyings() of the default stage's usual case: a known count, unrolled
- * (a loop's counting costs as much as the interpolation). */
+/* varyings() of the default stage's usual case (SILK_PHONG_PLAIN): a known
+ * count, unrolled (a loop's counting costs as much as the interpolation). */
 static inline silk_fx varying(const tri_setup *s, int k, int64_t b1, int64_t b2)
 {
     return (silk_fx)((s->vbase[k] + s->vd1[k] * b1 + s->vd2[k] * b2) >> 30);
@@ -578,7 +550,6 @@ static inline void varyings_plain(const tri_setup *s, int64_t b1, int64_t b2, si
     var[0] = varying(s, 0, b1, b2), var[1] = varying(s, 1, b1, b2), var[2] = varying(s, 2, b1, b2);
     var[3] = varying(s, 3, b1, b2), var[4] = varying(s, 4, b1, b2), var[5] = varying(s, 5, b1, b2);
 }
-#endif
 
 /* var_k = a0 + (a1 - a0) b1 + (a2 - a0) b2 in Q30, rounded (tri_setup). */
 static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
@@ -599,17 +570,12 @@ static void varyings(const tri_setup *s, int64_t b1, int64_t b2, silk_fx *var)
 /* The pixel x of a span that passed the depth test at depth z: its
  * fragment, then its depth, write count and colour.  Out of line on a
  * 32-bit processor, so the span's loop keeps its few values in registers. */
-#if SILK_CPU32 && defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
+SILK_CPU32_NOINLINE static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
 {
     const silk_hal *h = c->h;
-#if !SILK_CPU32
-    const int shading = h && h->fragment;   /* read once: the stage's call may not change it */
-#else
-#define shading (h && h->fragment)   /* read again after the call: fewer registers held across it */
-#endif
+    /* read once on a host (the stage's call may not change it); again
+     * after the call on a 32-bit processor: fewer registers held across it */
+    const int shading = h && h->fragment;
     uint32_t rgb = SILK_FRAGMENT_DISCARD;
     if (shading) {
         const tri_setup *s = c->s;
@@ -617,42 +583,27 @@ static void fragment_at(const span_ctx *c, int x, uint32_t z, uint32_t *zrow)
         silk_fx var[SILK_MAX_VARYINGS + 2];   /* + the texture footprint (silk_hal.footprint_var) */
         int64_t b1, b2;
         bary(s, U, V, T, &b1, &b2);
-#if SILK_SHORTCUTS
-        if (s->plain) {   /* the default stage, with its per-frame tests made per triangle */
+        if (SILK_PHONG_PLAIN && s->plain) {   /* the default stage, with its per-frame tests made per triangle */
             varyings_plain(s, b1, b2, var);
             rgb = silk_phong_plain_fragment(s->plain, var);
-        } else
-#endif
-        {
+        } else {
             varyings(s, b1, b2, var);
-#if SILK_TEXTURES
-            if (h->footprint_var > 0 && h->footprint_var < s->nvar)
+            if (SILK_TEXTURES && h->footprint_var > 0 && h->footprint_var < s->nvar)
                 footprint(s, h->footprint_var - 1, U, V, T, b1, b2, var);
-#endif
             rgb = h->fragment(h, var);
             /* a discarded fragment leaves the pixel, depth and all, to what lies behind */
             if (rgb == SILK_FRAGMENT_DISCARD) return;
         }
     }
     if (zrow) zrow[x] = z;
-#if SILK_SHORTCUTS
-    c->t->drew = 1;
-#endif
+    if (SILK_DEPTH_WINS) c->t->drew = 1;
     if (c->wrow) c->wrow[x]++;
-    if (c->crow && shading) store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
-#undef shading
+    if (c->crow && (SILK_CPU32 ? h && h->fragment : shading))
+        store(c->t, c->crow + (size_t)x * silk_pixfmt_bytes(c->t->fmt), rgb);
 }
 
-#if SILK_SHORTCUTS
-typedef tri_setup span_setup;         /* span_depth keeps the last span's first depth in it */
-#else
-typedef const tri_setup span_setup;
-#endif
-static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int xl, int xr, const int64_t *uvt)
+static void span(silk_target *t, const silk_hal *h, const tri_setup *s, int row, int xl, int xr, const int64_t *uvt)
 {
-#if !SILK_SHORTCUTS
-    int64_t X = (int64_t)xl * SUB + SUB / 2, Y = (int64_t)row * SUB + SUB / 2;
-#endif
     span_ctx c;
     c.t = t;
     c.h = h;
@@ -663,17 +614,13 @@ static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int 
     c.crow = t->color ? t->color + r * t->stride : NULL;
     uint32_t *zrow = t->depth ? t->depth + r * (size_t)t->width : NULL;
     rstep D = s->dstep;
-#if SILK_SHORTCUTS
-    span_depth(s, xl, row, &D);
-#else
-    depth_at(s, X, Y, &D);
-#endif
+    if (SILK_SPAN_DEPTH_STEP) span_depth(s, xl, row, &D);
+    else depth_at(s, (int64_t)xl * SUB + SUB / 2, (int64_t)row * SUB + SUB / 2, &D);
     /* depth test z > stored, or z >= stored after a depth pass (stored = 0,
      * nothing there, wraps to the largest value: no pixel passes) */
     uint32_t eq = t->depth_equal ? 1u : 0u;
     const uint8_t *mrow = t->mask ? t->mask + r * (((size_t)t->width + 7) / 8) : NULL;
-#if SILK_SHORTCUTS
-    if (t->depth_equal == SILK_DEPTH_TIES && zrow && !mrow) {   /* depth alone: render.c's back_draw */
+    if (SILK_BACK_FACES_LAST && t->depth_equal == SILK_DEPTH_TIES && zrow && !mrow) {   /* depth alone: render.c's back_draw */
         for (int x = xl; x < xr; x++) {
             uint32_t z = D.q < 0 ? 0 : (D.q > (int64_t)DEPTH_MAX ? DEPTH_MAX : (uint32_t)D.q);
             if (z >= zrow[x] && z) {   /* (nothing there is 0: never as near) */
@@ -684,7 +631,6 @@ static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int 
         }
         return;
     }
-#endif
     if (SILK_CPU32 && zrow && !mrow && D.den <= ((int64_t)1 << 31)) {
         /* The usual case on a 32-bit processor, where most of a span's
          * pixels fail the depth test: the loop's values in registers and
@@ -700,9 +646,7 @@ static void span(silk_target *t, const silk_hal *h, span_setup *s, int row, int 
             if (z > zrow[x] - eq) {
                 if (call) fragment_at(&c, x, z, zrow);
                 else zrow[x] = z;
-#if SILK_SHORTCUTS
-                t->drew = 1;
-#endif
+                if (SILK_DEPTH_WINS) t->drew = 1;
             }
             q += sq;                    /* rstep_next */
             dr += dsr;
@@ -746,9 +690,7 @@ static int first_row(int64_t y) { return (int)first_centre(y); }
  * for one that cannot.  box: the rows and then the columns of those pixel
  * centres, [box[0][0], box[0][1]) and [box[1][0], box[1][1]) (when it
  * can: its bounding box's). */
-#if defined(__GNUC__)
-__attribute__((noinline))   /* its locals stay off the stack under every span */
-#endif
+SILK_NOINLINE   /* its locals stay off the stack under every span */
 static int tri_reaches(const silk_target *t, int lo, int hi, const svert *p, int64_t area, int64_t box[2][2])
 {
     if (area == 0 || (t->cull_back && area > 0)) return 0;
@@ -807,7 +749,7 @@ static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
         s->aff_shift = 0;
         if (s->affine) {
             int64_t tt = s->qn[0] * s->area;
-            s->aff_shift = bitlen64((uint64_t)tt) - 31;
+            s->aff_shift = silk_bitlen64((uint64_t)tt) - 31;
             if (s->aff_shift < 0) s->aff_shift = 0;
             s->aff_inv = recip61(tt >> s->aff_shift);
         }
@@ -820,11 +762,12 @@ static void tri_pixels(tri_setup *s, int shading, int y, int64_t uvt[3])
     s->gyq = floor_div(gyn, s->area);
     s->gyr = gyn - s->gyq * s->area;
     rstep_init(&s->dstep, 0, s->area, SUB * gxn);
-#if SILK_SHORTCUTS
-    s->ryq = floor_div(SUB * gyn, s->area);   /* |gyn| < 2^53 */
-    s->ryr = SUB * gyn - s->ryq * s->area;
-    s->dat_y = -2;   /* rows are >= 0: no span above */
-#endif
+    if (SILK_SPAN_DEPTH_STEP) {
+        span_memo *mo = s->memo;
+        mo->ryq = floor_div(SUB * gyn, s->area);   /* |gyn| < 2^53 */
+        mo->ryr = SUB * gyn - mo->ryq * s->area;
+        mo->dat_y = -2;   /* rows are >= 0: no span above */
+    }
 
     int64_t dx = SUB / 2 - s->v[0]->x, dy = (int64_t)y * SUB + SUB / 2 - s->v[0]->y;
     int64_t e1 = s->ea[1] * dx + s->eb[1] * dy, e2 = s->ea[2] * dx + s->eb[2] * dy;
@@ -837,6 +780,8 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
                        const svert *p0, const svert *p1, const svert *p2)
 {
     tri_setup s;
+    span_memo memo;   /* (a build that does not step the depth has none: s.memo is never read there) */
+    if (SILK_SPAN_DEPTH_STEP) s.memo = &memo;
     s.area = orient(p0, p1, p2);
     if (s.area == 0 || (t->cull_back && s.area > 0)) return;   /* y down: counter-clockwise is negative */
     s.v[0] = p0;
@@ -866,9 +811,6 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
     s.qn[0] = s.qn[1] = s.qn[2] = 0;
     s.du = s.dv = s.dt = s.duy = s.dvy = s.dty = 0;
     s.affine = 0;
-#if SILK_SHORTCUTS
-    s.plain = NULL;
-#endif
     int ready = 0;
 
     /* Is the middle vertex right of the long edge o0 -> o2? */
@@ -890,9 +832,8 @@ static void raster_tri(silk_target *t, const silk_hal *h, int nvar, int lo, int 
             if (xl < xr) {
                 if (!ready) {
                     tri_pixels(&s, shading, y, uvt);
-#if SILK_SHORTCUTS
-                    if (shading && s.nvar == SILK_PHONG_PLAIN_NVAR) s.plain = silk_hal_phong_plain(h);
-#endif
+                    if (SILK_PHONG_PLAIN)   /* (a build without it never reads s.plain) */
+                        s.plain = shading && s.nvar == SILK_PHONG_PLAIN_NVAR ? silk_hal_phong_plain(h) : NULL;
                 }
                 ready = 1;
                 span(t, h, &s, y, xl, xr, uvt);
@@ -977,12 +918,8 @@ void silk_raster_triangle(silk_target *t, const silk_hal *h, const silk_vertex_o
     if (!t || !a || !b || !c || !band_rows(t, &lo, &hi)) return;
     int nvar = varying_count(h);
     unsigned oa = 0, ob = 0, oc = 0;
-#if SILK_SHORTCUTS
-    if (!inside(&a->clip) || !inside(&b->clip) || !inside(&c->clip))
-#endif
-    {
+    if (!SILK_FAST_CASES || !inside(&a->clip) || !inside(&b->clip) || !inside(&c->clip))
         oa = outcode(&a->clip), ob = outcode(&b->clip), oc = outcode(&c->clip);
-    }
     if (oa & ob & oc) return;                      /* wholly outside one plane */
 
     silk_vertex_out buf[2][MAXPOLY];
@@ -1035,10 +972,12 @@ int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const sil
     return orient(&sv[0], &sv[1], &sv[2]) >= 0;
 }
 
-#if SILK_SHORTCUTS
+/* (The three are the shortcuts' alone: a build without them has stubs.) */
+#define RASTER_PLACED (SILK_PLACE_ONCE || SILK_DRAW_DIRECT)
+
 int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2])
 {
-    if (!inside(clip)) return 0;
+    if (!RASTER_PLACED || !inside(clip)) return 0;
     /* within the guard band: |x|, |y| below 2 SILK_MAX_DIM SUB */
     xy[0] = (int32_t)screen_x(clip, t->width);
     xy[1] = (int32_t)screen_y(clip, t->height);
@@ -1103,7 +1042,7 @@ int silk_raster_reaches(const silk_target *t, const int32_t *const xy[3])
      * reach a row, a third of a fine mesh's at 320x240 cover none. */
     const int32_t *a = xy[0], *b = xy[1], *c = xy[2];
     int64_t area = ((int64_t)b[0] - a[0]) * ((int64_t)c[1] - a[1]) - ((int64_t)c[0] - a[0]) * ((int64_t)b[1] - a[1]);
-    if (area == 0 || (t->cull_back && area > 0)) return 0;   /* orient()'s, from the places themselves */
+    if (!RASTER_PLACED || area == 0 || (t->cull_back && area > 0)) return 0;   /* orient()'s, from the places themselves */
     svert sv[3];
     int64_t box[2][2];
     int lo, hi;
@@ -1116,6 +1055,7 @@ void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out
 {
     svert sv[3];
     int lo, hi;
+    if (!RASTER_PLACED) return;
     placed_xy(xy, sv);
     if (!band_rows(t, &lo, &hi)) return;   /* (silk_raster_reaches: it is usable) */
     for (int i = 0; i < 3; i++) {
@@ -1125,7 +1065,6 @@ void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out
     }
     raster_tri(t, h, varying_count(h), lo, hi, &sv[0], &sv[1], &sv[2]);
 }
-#endif
 
 /* ---- lines ----------------------------------------------------------------------- */
 
