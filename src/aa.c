@@ -62,7 +62,8 @@
  * faces: each is drawn up to the chord, so the pixels the chord leaves on
  * either side give the two colours, and a pixel the curve covers otherwise
  * than drawn is blended from them when it and both hold the surface.
- * -DSILK_NO_AA_CREASE (and silk_render_opts.aa = 2) leave creases aliased.
+ * A build with SILK_AA_CREASES 0 (and silk_render_opts.aa = 2) leaves
+ * creases aliased.
  *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
@@ -102,16 +103,16 @@ static silk_aa_pt point(const silk_target *t, const silk_vertex_out *o)
  * position of the stage's output counts here, and the default stage's is
  * the record's position through its view (phong.c): for a point of a
  * curve (eq. 5) that alone is worked out, not its normal, uv and colour
- * (a host's shortcut, the same bits). */
+ * (where the build writes out its usual cases, SILK_FAST_CASES; the same
+ * bits). */
 static silk_aa_pt place(silk_aa *aa, const silk_geom *g, const silk_vrec *r)
 {
-#if SILK_SHORTCUTS
-    const silk_view *v = silk_hal_vertex_view(aa->hal);
-    if (v && r->kind == SILK_VREC_CURVE && g->curves) {   /* silk_vrec_eval's position */
+    const silk_view *v;
+    if (SILK_FAST_CASES && r->kind == SILK_VREC_CURVE && g->curves && (v = silk_hal_vertex_view(aa->hal))) {
+        /* silk_vrec_eval's position */
         aa->out->clip = silk_view_clip(v, silk_hermite_point(&g->curves[r->a], silk_fx_clamp(r->t, 0, SILK_FX_ONE)));
         return point(aa->t, aa->out);
     }
-#endif
     aa->hal->vertex(aa->hal, g, r, aa->out);
     return point(aa->t, aa->out);
 }
@@ -221,7 +222,6 @@ static void crossing(silk_aa *aa, int steep, int c, int r, int dir, uint32_t cov
     else blend(aa, x, y, cov, cn, cr, 255, dr ? 255 : 0);
 }
 
-#if SILK_AA_CREASES
 /* Pixel r of column c next to a crease (see side()), which the face on
  * the inside (towards r + dir) covers by cov / FRAC.  Both faces are
  * drawn up to the chord: the pixel the chord leaves inside, ri, holds the
@@ -246,7 +246,6 @@ static void crease_px(silk_aa *aa, int steep, int c, int64_t r, int64_t ri, int 
             return;
     blend(aa, x, y, cov, rgb[1], rgb[2], 255, 255);
 }
-#endif
 
 /* Where a through b crosses u = uc, in 1/FRAC pixels across (a.x <= uc < b.x). */
 static int64_t cross_at(const silk_aa_pt *a, const silk_aa_pt *b, int32_t uc)
@@ -349,12 +348,10 @@ static void side(silk_aa *aa, silk_aa_pt p, silk_aa_pt q, const silk_aa_pt *in, 
             /* covered: the part of the pixel on the inside */
             uint32_t cov = (uint32_t)(r == rk ? (dir > 0 ? FRAC - fk : fk) : (r - rk) * dir > 0 ? FRAC : 0);
             cov = cov < snap ? 0 : cov > FRAC - snap ? FRAC : cov;
-#if SILK_AA_CREASES
-            if (curve == 2) {
+            if (SILK_AA_CREASES && curve == 2) {
                 crease_px(aa, steep, (int)c, r, ri, dir, cov, ds, tol);
                 continue;
             }
-#endif
             crossing(aa, steep, (int)c, (int)r, dir, cov, ds, tol, curve ? 2 : r == ri);
         }
     }
@@ -408,7 +405,6 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
     return front && !tri_front(aa, m, v, nb);
 }
 
-#if SILK_AA_CREASES
 /* Whether side k of input triangle t is a visible crease walked from t: a
  * feature edge between t and a triangle after it, both facing the eye. */
 static int crease(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
@@ -466,9 +462,7 @@ static void crease_walk(silk_aa *aa, uint32_t t, int k)
         ua = ub;
     }
 }
-#endif
 
-#if SILK_AA_CREASES
 /* tri_front with the memo's answer read in place (the candidate test asks
  * it of every triangle and its neighbours every band). */
 static inline int tri_front_known(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t)
@@ -476,23 +470,22 @@ static inline int tri_front_known(silk_aa *aa, const silk_mesh *m, const silk_vi
     unsigned b = aa->facing ? (unsigned)aa->facing[t / 4] >> 2 * (t % 4) : 0;
     return b & 2 ? (int)(b & 1) : tri_front(aa, m, v, t);
 }
-#endif
 
 int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_sil_frame *f, uint32_t t)
 {
     if (f && f->tri_state && (f->tri_state[t] & SILK_TS_SIL)) return 1;
-#if !SILK_AA_CREASES
-    int front = tri_front(aa, m, v, t);
-    for (int k = 0; k < 3; k++)
-        if (coarse_outline(aa, m, v, t, k, front)) return 1;
-#else
+    if (!SILK_AA_CREASES) {   /* coarse_outline's rule alone */
+        int front = tri_front(aa, m, v, t);
+        for (int k = 0; k < 3; k++)
+            if (coarse_outline(aa, m, v, t, k, front)) return 1;
+        return 0;
+    }
     int front = tri_front_known(aa, m, v, t);
     /* A triangle facing away from the eye has an outline side only against
      * nothing, which a closed mesh has none of (orient.c): half of such a
-     * mesh is done with here. */
-#if SILK_SHORTCUTS   /* a host's shortcut: a board keeps the code bytes */
-    if (!front && m->closed_outward) return 0;
-#endif
+     * mesh is done with here (where the usual cases are written out; a
+     * board keeps the code bytes). */
+    if (SILK_FAST_CASES && !front && m->closed_outward) return 0;
     /* coarse_outline's and crease's rules at once (asked of every triangle
      * every band): each side's edge looked up once, its neighbour's facing
      * asked once, and only where t faces the eye */
@@ -508,20 +501,15 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
         if (walked && !feature) continue;
         if (tri_front_known(aa, m, v, nb) ? feature : !walked) return 1;
     }
-#endif
     return 0;
 }
 
-#if SILK_SHORTCUTS
 void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand)
 {
+    if (!SILK_AA_CANDIDATES) return;   /* (only its caller's) */
     silk_sil_tri_fronts(m, v, aa->facing);   /* every facing, in mesh order */
     memset(cand, 0, ((size_t)m->ntris + 7) / 8);
-#if !SILK_AA_CREASES
-    const int creases = 0;
-#else
-    const int creases = aa->creases;
-#endif
+    const int creases = SILK_AA_CREASES ? aa->creases : 0;
     /* Closed: each edge is a side of its two triangles and of no other, so
      * silk_aa_candidate's rule per side is a rule per edge, and a
      * triangle facing away has no outline side.  SMOOTH: a silhouette
@@ -545,7 +533,6 @@ void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uin
     for (uint32_t t = 0; ts && t < m->ntris; t++)
         if (ts[t] & SILK_TS_SIL) cand[t / 8] = (uint8_t)(cand[t / 8] | 1u << (t % 8));
 }
-#endif
 
 /* Where a share's silhouette segment is: its curve among the share's
  * curves, and the records of its ends A and B (the samples between are
@@ -647,10 +634,8 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
                    const silk_vertex_out *out, uint32_t t)
 {
     if (g->nvrec > aa->npt) return;
-#if SILK_AA_CREASES
-    for (int k = 0; aa->creases && k < 3; k++)
+    for (int k = 0; SILK_AA_CREASES && aa->creases && k < 3; k++)
         if (crease(aa, m, v, t, k, tri_front(aa, m, v, t))) crease_walk(aa, t, k);
-#endif
     const uint32_t *tri = g->tri;
     if (g->ntri == 1) {
         /* t as it is (one triangle is never re-meshed): its records are its corners 0, 1, 2 */

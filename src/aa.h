@@ -67,8 +67,8 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
  * SMOOTH plan, or NULL) of a closed mesh (silk_mesh.closed_outward) at once: bit t of cand (ntris
  * bits) set where it says 1, from one pass over the edges instead of three
  * sides a triangle, and aa->facing (which must be there) filled for every
- * triangle.  The answers do not change from band to band.  Not in a build
- * with -DSILK_NO_VERTEX_CACHE. */
+ * triangle.  The answers do not change from band to band.  Only with
+ * SILK_AA_CANDIDATES. */
 void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint8_t *cand);
 
 /* The outline sides of input triangle t's share g (out: its vertex-stage

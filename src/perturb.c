@@ -48,18 +48,16 @@ int silk_perturb_alloc(silk_sil_frame *f)
     f->offset = NULL;
     f->noffset = f->nslots = f->near_bound = 0;
     uint32_t t = 0;
-#if SILK_SHORTCUTS
     /* every segment kept, in triangle order (silk_remesh_keep): the concave
      * ones read from there, not sought among every triangle */
-    int listed = f->seg_kept && f->nseg_kept == f->nsegs;
+    const silk_sil_keep *k = f->keep;
+    int listed = SILK_KEEP_SEGMENTS && k && k->seg_kept && k->nseg_kept == f->nsegs;
     uint32_t j = 0;
     if (listed) {
-        while (j < f->nseg_kept && !f->seg_kept[j].concave) j++;
-        if (j == f->nseg_kept) return 1;   /* no concave segment: nothing moves */
+        while (j < k->nseg_kept && !k->seg_kept[j].concave) j++;
+        if (j == k->nseg_kept) return 1;   /* no concave segment: nothing moves */
         f->vert_slot = silk_arena_array_top_unfilled(a, m->nverts, sizeof *f->vert_slot, SILK_MEM_FRAME);   /* set below */
-    } else
-#endif
-    {
+    } else {
         for (t = 0; t < m->ntris && !(f->tri_state[t] & SILK_TS_CONCAVE); t++) continue;
         if (t == m->ntris) return 1;   /* no concave segment: nothing moves */
         f->vert_slot = silk_arena_array_top(a, m->nverts, sizeof *f->vert_slot, SILK_MEM_FRAME);
@@ -67,14 +65,13 @@ int silk_perturb_alloc(silk_sil_frame *f)
     if (!f->vert_slot) return 0;
     /* Exactly the vertices visit_near will visit: one slot each. */
     memset(f->vert_slot, 0xFF, (size_t)m->nverts * sizeof *f->vert_slot);   /* SILK_PLAN_NONE */
-#if SILK_SHORTCUTS
     if (listed) {
-        for (; j < f->nseg_kept; j++)
-            if (f->seg_kept[j].concave) visit_near(f, f->seg_tri[j], NULL, 0, -1);
-    } else
-#endif
+        for (; j < k->nseg_kept; j++)
+            if (k->seg_kept[j].concave) visit_near(f, k->seg_tri[j], NULL, 0, -1);
+    } else {
         for (; t < m->ntris; t++)
             if (f->tri_state[t] & SILK_TS_CONCAVE) visit_near(f, t, NULL, 0, -1);
+    }
     memset(f->vert_slot, 0xFF, (size_t)m->nverts * sizeof *f->vert_slot);
     uint32_t b = f->near_bound = f->nslots;
     f->nslots = 0;
@@ -171,23 +168,23 @@ int silk_perturb(silk_sil_frame *f)
     f->slot_stamp = silk_arena_array_top(a, b, sizeof *f->slot_stamp, SILK_MEM_FRAME);
     if (!f->lift || !f->slot_vert || !f->slot_stamp) return 0;
     uint32_t ns = f->nsegs;
+    const silk_sil_keep *k = f->keep;
     for (int pass = 0; pass < 2; pass++) {
-#if SILK_SHORTCUTS
-        if (f->seg_kept && f->nseg_kept == ns) {
+        if (SILK_KEEP_SEGMENTS && k && k->seg_kept && k->nseg_kept == ns) {
             /* every segment kept, in triangle order (silk_remesh_keep): the
              * concave ones read from there, not sought among every triangle */
             for (uint32_t j = 0; j < ns; j++)
-                if (f->seg_kept[j].concave) visit_near(f, f->seg_tri[j], &f->seg_kept[j], pass * ns + j + 1, pass);
-        } else
-#endif
-        /* the segments in triangle order */
-        for (uint32_t t = 0, i = 0; t < f->m->ntris && i < ns; t++) {
-            if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
-            i++;
-            silk_sil_seg tmp;   /* rebuilt only where the plan found it concave */
-            const silk_sil_seg *s = (f->tri_state[t] & SILK_TS_CONCAVE) && silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
-            if (!s || !s->concave) continue;
-            visit_near(f, t, s, pass * ns + i, pass);
+                if (k->seg_kept[j].concave) visit_near(f, k->seg_tri[j], &k->seg_kept[j], pass * ns + j + 1, pass);
+        } else {
+            /* the segments in triangle order */
+            for (uint32_t t = 0, i = 0; t < f->m->ntris && i < ns; t++) {
+                if (!(f->tri_state[t] & SILK_TS_SIL)) continue;
+                i++;
+                silk_sil_seg tmp;   /* rebuilt only where the plan found it concave */
+                const silk_sil_seg *s = (f->tri_state[t] & SILK_TS_CONCAVE) && silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
+                if (!s || !s->concave) continue;
+                visit_near(f, t, s, pass * ns + i, pass);
+            }
         }
         if (pass == 0)
             for (uint32_t sl = 0; sl < f->nslots; sl++)

@@ -116,6 +116,30 @@ typedef struct silk_sil_seg {
  * triangle being emitted. */
 #define SILK_SIL_TAN_MEMO 3
 
+/* What the plan keeps for speed where the arena has room, none of it part
+ * of the frame's need (silk_sil_kept): the carrying edges' rank
+ * (SILK_CARRY_RANK, silk_sil_frame.carry_rank) and the segments
+ * (SILK_KEEP_SEGMENTS, silk_remesh_keep), seg_kept[i] that of silhouette
+ * triangle seg_tri[i], ascending, as silk_remesh_plan made it.  kept_bytes
+ * is the arena they take, kept_need what the frame needed before them (0:
+ * nothing kept); room the most they may take, set by the caller of the
+ * plan, the one field it sets.  The frame that draws share by share owns
+ * it (render.c): a build without those shortcuts has none, and a small
+ * part's stack does not hold it. */
+typedef struct silk_sil_keep {
+    size_t room;
+    silk_sil_seg *seg_kept;
+    uint32_t *seg_tri;
+    uint32_t nseg_kept, kept_last;   /* kept_last: memo of silk_remesh_kept_index */
+    struct sil_layout *lay_kept;   /* with them: where their points lie on their triangle's boundary (remesh.c) */
+    /* with the segments: each silhouette point's position and normal, 2
+     * per pair, once pair_ready[i] (silk_sil_pair_point) */
+    silk_vec3 *pair_pn;
+    uint8_t *pair_ready;
+    size_t kept_bytes, kept_need;
+    uint64_t kept_recs, kept_tris, kept_curves;   /* what the kept segments' shares hold in all */
+} silk_sil_keep;
+
 typedef struct silk_sil_frame {
     silk_arena *a;
     const silk_mesh *m;
@@ -163,32 +187,19 @@ typedef struct silk_sil_frame {
     const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
     silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
     uint32_t tan_next;
-#if SILK_SHORTCUTS
-    /* What the plan keeps for speed where the arena has room, none of it
-     * part of the frame's need (silk_sil_kept): carry_rank, per byte of
-     * carrying the carrying edges before it (silk_sil_slot without a
-     * search); the segments (silk_remesh_keep), seg_kept[i] that of
-     * silhouette triangle seg_tri[i], ascending, as silk_remesh_plan made
-     * it.  kept_bytes is the arena they take, kept_need what the frame
-     * needed before them (0: nothing kept); keep_room the most they may
-     * take, set by the caller of the plan. */
+    /* what it keeps for speed, or NULL: nothing (a stored frame, a build
+     * without the shortcuts); the carrying edges' rank, per byte of
+     * carrying the carrying edges before it, or NULL (silk_sil_slot) */
+    silk_sil_keep *keep;
     uint32_t *carry_rank;
-    silk_sil_seg *seg_kept;
-    uint32_t *seg_tri;
-    uint32_t nseg_kept, kept_last;   /* kept_last: memo of silk_remesh_kept_index */
-    struct sil_layout *lay_kept;   /* with them: where their points lie on their triangle's boundary (remesh.c) */
-    /* with the segments: each silhouette point's position and normal, 2
-     * per pair, once pair_ready[i] (silk_sil_pair_point) */
-    silk_vec3 *pair_pn;
-    uint8_t *pair_ready;
-    size_t kept_bytes, kept_need, keep_room;
-    uint64_t kept_recs, kept_tris, kept_curves;   /* what the kept segments' shares hold in all */
-#endif
 } silk_sil_frame;
 
-#if SILK_SHORTCUTS
+/* Whether the plan keeps anything for speed: a build with SILK_KEEP_SEGMENTS
+ * or SILK_CARRY_RANK whose caller gave it the room (f->keep). */
+#define SILK_SIL_KEEPS (SILK_KEEP_SEGMENTS || SILK_CARRY_RANK)
+
 /* Counts what the plan took from the arena since it had free0 bytes free
- * and the high-water peak as kept for speed (kept_bytes, kept_need). */
+ * and the high-water peak as kept for speed (f->keep: kept_bytes, kept_need). */
 void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak);
 
 /* Whether the plan may keep want more bytes for speed with free0 free: a
@@ -200,7 +211,6 @@ static inline int silk_sil_keep_fits(size_t want, size_t free0)
 {
     return want <= free0 / 16 && free0 - want >= ((size_t)1 << 20);
 }
-#endif
 
 /* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs
  * out. */
@@ -223,16 +233,14 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
 size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room);
 /* Position, normal and uv of point u on edge e as side s sees it (what the
  * HAL computes for the record). */
-#if SILK_SHORTCUTS
+void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
+                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb);
 /* silk_sil_edge_point at the silhouette point of pair pr (side s's, on
  * edge e): its position and normal, the same for both sides that share
  * the point, made once a frame where kept (pair_pn), its uv and colour
  * the side's. */
 void silk_sil_pair_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          const silk_sil_pair *pr, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb);
-#endif
-void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
-                         silk_fx u, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb);
 /* Vertex colour at parameter u along mesh edge e (white without colours). */
 uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u);
 
@@ -241,12 +249,10 @@ uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u);
  * zero-area or broken triangle faces nowhere. */
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t);
 
-#if SILK_SHORTCUTS
 /* silk_sil_tri_front of every triangle into facing, two bits each (2 | front,
  * four triangles a byte, silk_aa.facing's layout): one loop that keeps the
- * per-call work out of it. */
+ * per-call work out of it (SILK_AA_CANDIDATES). */
 void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing);
-#endif
 
 /* Eq. 8 for curve c: the number of intervals to sample it with, from its
  * projected chord in pixels and cos alpha (see silhouette.c for why the
@@ -256,18 +262,16 @@ uint32_t silk_sil_intervals(const silk_view *v, const silk_curve *c, silk_fx cos
 /* The slot of mesh edge `edge` in edges[], or SILK_SIL_NONE: a bit, then a
  * binary search of the carrying edges (a bit per mesh edge instead of a
  * slot index: the plan's RAM), or the count of carrying edges before it
- * where their rank is kept (carry_rank). */
+ * where their rank is kept (carry_rank, SILK_CARRY_RANK). */
 static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 {
     if (!(f->carrying[edge >> 3] & (1u << (edge & 7)))) return SILK_SIL_NONE;
-#if SILK_SHORTCUTS
-    if (f->carry_rank) {
+    if (SILK_CARRY_RANK && f->carry_rank) {
         unsigned below = f->carrying[edge >> 3] & ((1u << (edge & 7)) - 1);
         /* the bits of a byte by nibbles (__builtin_popcount is a library call without a popcount instruction) */
         static const uint8_t bits[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
         return f->carry_rank[edge >> 3] + bits[below & 15] + bits[below >> 4];
     }
-#endif
     uint32_t lo = 0, hi = f->nedges;
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;

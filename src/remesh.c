@@ -156,11 +156,7 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     if (seg) {
         sil_layout l;
         layout(f, t, &l);
-#if SILK_SHORTCUTS
-        if (lk) *lk = l;
-#else
-        (void)lk;
-#endif
+        if (SILK_KEEP_SEGMENTS && lk) *lk = l;
         uint32_t n = seg->n;
         c->recs += n - 1;
         c->curves++;
@@ -178,22 +174,23 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
     }
 }
 
-#if SILK_SHORTCUTS
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 {
-    uint32_t lo = 0, hi = f->nseg_kept, last = f->kept_last;
-    if (!hi || f->seg_tri[hi - 1] < t) return SILK_SIL_NONE;   /* past them all: as the plan asks while it keeps them */
+    silk_sil_keep *k = f->keep;   /* (its memo, kept_last, written through the plan's const) */
+    if (!SILK_KEEP_SEGMENTS || !k) return SILK_SIL_NONE;
+    uint32_t lo = 0, hi = k->nseg_kept, last = k->kept_last;
+    if (!hi || k->seg_tri[hi - 1] < t) return SILK_SIL_NONE;   /* past them all: as the plan asks while it keeps them */
     /* the emitter and the outline ask in triangle order, each share a few times */
-    if (last < hi && f->seg_tri[last] == t) return last;
-    if (last + 1 < hi && f->seg_tri[last + 1] == t) lo = last + 1;
+    if (last < hi && k->seg_tri[last] == t) return last;
+    if (last + 1 < hi && k->seg_tri[last + 1] == t) lo = last + 1;
     else {
         while (lo < hi) {
             uint32_t mid = lo + (hi - lo) / 2;
-            if (f->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
+            if (k->seg_tri[mid] < t) lo = mid + 1; else hi = mid;
         }
-        if (lo >= f->nseg_kept || f->seg_tri[lo] != t) return SILK_SIL_NONE;
+        if (lo >= k->nseg_kept || k->seg_tri[lo] != t) return SILK_SIL_NONE;
     }
-    ((silk_sil_frame *)f)->kept_last = lo;
+    k->kept_last = lo;
     return lo;
 }
 
@@ -201,46 +198,45 @@ uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 static const silk_sil_seg *seg_kept(const silk_sil_frame *f, uint32_t t)
 {
     uint32_t i = silk_remesh_kept_index(f, t);
-    return i == SILK_SIL_NONE ? NULL : &f->seg_kept[i];
+    return i == SILK_SIL_NONE ? NULL : &f->keep->seg_kept[i];
 }
 
 size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
 {
     silk_arena *a = f->a;
+    silk_sil_keep *k = SILK_KEEP_SEGMENTS ? f->keep : NULL;
+    if (!k) return 0;
     size_t free0 = silk_arena_free_bytes(a),
            want = 2 * (size_t)f->nedges * sizeof(silk_vec3) +
-                  (size_t)f->nsil * (sizeof *f->seg_kept + sizeof *f->seg_tri + sizeof *f->lay_kept) + 4 * SILK_ARENA_ALIGN,
-           pairs = (size_t)f->npairs * (2 * sizeof *f->pair_pn + 1) + 2 * SILK_ARENA_ALIGN;
-    if (!f->nsil || f->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
+                  (size_t)f->nsil * (sizeof *k->seg_kept + sizeof *k->seg_tri + sizeof *k->lay_kept) + 4 * SILK_ARENA_ALIGN,
+           pairs = (size_t)f->npairs * (2 * sizeof *k->pair_pn + 1) + 2 * SILK_ARENA_ALIGN;
+    if (!f->nsil || k->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
-    f->seg_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->seg_kept, SILK_MEM_FRAME);   /* written as made */
-    f->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *f->seg_tri, SILK_MEM_FRAME);
-    f->lay_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *f->lay_kept, SILK_MEM_FRAME);   /* with seg_kept */
-    if (!f->seg_kept || !f->seg_tri || !f->lay_kept || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
-        f->seg_kept = NULL;
-        f->seg_tri = NULL;
-        f->lay_kept = NULL;
+    k->seg_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *k->seg_kept, SILK_MEM_FRAME);   /* written as made */
+    k->seg_tri = silk_arena_array_top(a, f->nsil, sizeof *k->seg_tri, SILK_MEM_FRAME);
+    k->lay_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *k->lay_kept, SILK_MEM_FRAME);   /* with seg_kept */
+    if (!k->seg_kept || !k->seg_tri || !k->lay_kept || !silk_sil_keep_tangents(f, free0)) {   /* cannot happen: want fits */
+        k->seg_kept = NULL;
+        k->seg_tri = NULL;
+        k->lay_kept = NULL;
     } else if (f->npairs && want + pairs <= room && silk_sil_keep_fits(want + pairs, free0)) {
         /* the silhouette points, each made once for the two segments that end on it */
-        f->pair_pn = silk_arena_array_top_unfilled(a, 2 * (size_t)f->npairs, sizeof *f->pair_pn, SILK_MEM_FRAME);
-        f->pair_ready = silk_arena_array_top(a, f->npairs, 1, SILK_MEM_FRAME);   /* zeroed: none made */
-        if (!f->pair_ready) f->pair_pn = NULL;
+        k->pair_pn = silk_arena_array_top_unfilled(a, 2 * (size_t)f->npairs, sizeof *k->pair_pn, SILK_MEM_FRAME);
+        k->pair_ready = silk_arena_array_top(a, f->npairs, 1, SILK_MEM_FRAME);   /* zeroed: none made */
+        if (!k->pair_ready) k->pair_pn = NULL;
     }
-    f->nseg_kept = 0;
+    k->nseg_kept = 0;
     silk_sil_kept(f, free0, peak);
     return free0 - silk_arena_free_bytes(a);
 }
-#endif
 
 int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
 {
-#if SILK_SHORTCUTS
     const silk_sil_seg *kept = seg_kept(f, t);
     if (kept) {
         *s = *kept;
         return 1;
     }
-#endif
     const silk_mesh *m = f->m;
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE, kb = (lone + 2) % 3;
     const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, kb);
@@ -253,13 +249,13 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     memset(s, 0, sizeof *s);
     s->tri = t;
     silk_vec3 A, B, nA, nB;
-#if SILK_SHORTCUTS
-    silk_sil_pair_point(f, ea, &sa, pa, &A, &nA, &s->c.uv0, &s->c.rgb0);
-    silk_sil_pair_point(f, eb, &sb, pb, &B, &nB, &s->c.uv1, &s->c.rgb1);
-#else
-    silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0, &s->c.rgb0);
-    silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1, &s->c.rgb1);
-#endif
+    if (SILK_KEEP_SEGMENTS) {   /* each point made once for the two segments that end on it, where kept */
+        silk_sil_pair_point(f, ea, &sa, pa, &A, &nA, &s->c.uv0, &s->c.rgb0);
+        silk_sil_pair_point(f, eb, &sb, pb, &B, &nB, &s->c.uv1, &s->c.rgb1);
+    } else {
+        silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0, &s->c.rgb0);
+        silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1, &s->c.rgb1);
+    }
     silk_bridge(A, nA, B, nB, &s->c);
     s->c.p0 = A;
     s->c.p1 = B;
@@ -295,36 +291,30 @@ silk_status silk_remesh_plan(silk_sil_frame *f)
     f->max_curves = 0;
     f->seg_samples = 0;
     f->out_tris = m->ntris;
+    /* where the segments are kept as they are made (silk_remesh_keep), or NULL */
+    silk_sil_keep *k = SILK_KEEP_SEGMENTS && f->keep && f->keep->seg_kept ? f->keep : NULL;
     for (uint32_t t = 0; t < m->ntris; t++) {
-#if SILK_SHORTCUTS   /* (a host's shortcut: a small part keeps the code bytes) */
-        if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {   /* most: as it is (tri_cost's three corners) */
-            f->store_recs += 3;
+        if (SILK_FAST_CASES && !(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {
+            f->store_recs += 3;   /* most: as it is (tri_cost's three corners), written out */
             continue;
         }
-#endif
         silk_sil_seg tmp, *s = NULL;
         if ((f->tri_state[t] & SILK_TS_SIL) && silk_remesh_seg(f, t, &tmp)) {
             s = &tmp;
             f->nsegs++;
-#if SILK_SHORTCUTS
-            if (f->seg_kept && f->nseg_kept < f->nsil) {   /* ascending: t is past every kept one */
-                f->seg_tri[f->nseg_kept] = t;
-                f->seg_kept[f->nseg_kept++] = tmp;
+            if (k && k->nseg_kept < f->nsil) {   /* ascending: t is past every kept one */
+                k->seg_tri[k->nseg_kept] = t;
+                k->seg_kept[k->nseg_kept++] = tmp;
             }
-#endif
         }
         tri_count tc;
-#if SILK_SHORTCUTS
-        int kept = s && f->nseg_kept && f->seg_tri[f->nseg_kept - 1] == t;
-        tri_cost(f, t, s, kept ? &f->lay_kept[f->nseg_kept - 1] : NULL, &tc);
+        int kept = k && s && k->nseg_kept && k->seg_tri[k->nseg_kept - 1] == t;
+        tri_cost(f, t, s, kept ? &k->lay_kept[k->nseg_kept - 1] : NULL, &tc);
         if (kept) {
-            f->kept_recs += tc.recs;
-            f->kept_tris += tc.tris;
-            f->kept_curves += tc.curves;
+            k->kept_recs += tc.recs;
+            k->kept_tris += tc.tris;
+            k->kept_curves += tc.curves;
         }
-#else
-        tri_cost(f, t, s, NULL, &tc);
-#endif
         f->store_recs += tc.recs;
         f->store_curves += tc.curves;
         f->out_tris += tc.tris - 1;
@@ -508,13 +498,8 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     uint32_t *cyc = f->poly, *list = f->poly + f->max_poly;
     sil_layout l;
-#if SILK_SHORTCUTS
-    if (lp) l = *lp;
-    else
-#else
-    (void)lp;
-#endif
-        layout(f, t, &l);
+    if (SILK_KEEP_SEGMENTS && lp) l = *lp;
+    else layout(f, t, &l);
     walk_boundary(f, g, t, cyc);
 
     /* the segment: interior samples as records on its own curve */
@@ -529,15 +514,13 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
     for (uint32_t j = 1; j <= l.iA; j++) list[n++] = cyc[j];
     for (uint32_t i = 1; i < s->n; i++) list[n++] = SAMPLE(i);
     for (uint32_t j = l.iB; j < l.len; j++) list[n++] = cyc[j];
-    /* the midpoint of A B, for a centre (a host's shortcut: most segments
-     * of a fine mesh need none; a board keeps the code bytes) */
+    /* the midpoint of A B, for a centre (only where one is made, where the
+     * usual cases are written out: most segments of a fine mesh need none;
+     * a board keeps the code bytes) */
     silk_vec3 pl, nl, pab, nab;
     silk_vec2 uvl, uvab;
     uint32_t rgbl, rgbab = 0;
-#if SILK_SHORTCUTS
-    if (l.centre1 || l.centre2)
-#endif
-    {
+    if (!SILK_FAST_CASES || l.centre1 || l.centre2) {
         pab = mid3(s->c.p0, s->c.p1);
         nab = mean_normal(s->c.n0, s->c.n1);
         uvab = mid2(s->c.uv0, s->c.uv1);
@@ -585,10 +568,9 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
     silk_sil_seg seg;
     g->offset = f->offset;
     g->noffset = f->noffset;
-#if SILK_SHORTCUTS
-    if (!(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {
+    if (SILK_FAST_CASES && !(f->tri_state[t] & (SILK_TS_SIL | SILK_TS_CARRY))) {
         /* most triangles, as they are: put_corner's three records written
-         * out (a host's shortcut; a small part keeps the code bytes) */
+         * out (a small part keeps the code bytes) */
         silk_vrec *r = &g->vrec[g->nvrec];
         const silk_index *tv = &f->m->tri[3 * (size_t)t];
         const silk_plan_index *vo = f->vert_offset;
@@ -604,24 +586,19 @@ void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
         put_tri(g, n, n + 1, n + 2, 0);
         return;
     }
-#endif
     if (f->tri_state[t] & SILK_TS_SIL) {
-#if SILK_SHORTCUTS
         uint32_t i = silk_remesh_kept_index(f, t);   /* as the plan made it and laid it out */
         if (i != SILK_SIL_NONE) {
-            emit_silhouette(f, g, t, &f->seg_kept[i], &f->lay_kept[i]);   /* Fig. 11 */
+            emit_silhouette(f, g, t, &f->keep->seg_kept[i], &f->keep->lay_kept[i]);   /* Fig. 11 */
             return;
         }
-#endif
         if (silk_remesh_seg(f, t, &seg)) {
             emit_silhouette(f, g, t, &seg, NULL);     /* Fig. 11 */
             return;
         }
     }
     uint32_t nchained = 0;
-#if SILK_SHORTCUTS   /* (the same shortcut) */
-    if (f->tri_state[t] & SILK_TS_CARRY)
-#endif
+    if (!SILK_FAST_CASES || (f->tri_state[t] & SILK_TS_CARRY))   /* (the same shortcut) */
         for (uint32_t k = 0; k < 3; k++) nchained += side_points(f, t, k) > 0;
     if (nchained == 0) {                            /* as it is: what walk_boundary gives, directly */
         uint32_t c0 = put_corner(f, g, 3 * t), c1 = put_corner(f, g, 3 * t + 1);
@@ -691,7 +668,6 @@ void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, ui
     seg_recs(f, t, base, u, rec);
 }
 
-#if SILK_SHORTCUTS
 /* The index in side k's chain of the point at position pos of the side's
  * n, in triangle direction (pair_pos the other way round). */
 static uint32_t chain_at(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t pos, uint32_t n)
@@ -699,14 +675,12 @@ static uint32_t chain_at(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32
     const silk_sil_edge *e = edge_at(f, t, k);
     return f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0] ? pos : n - 1 - pos;
 }
-#endif
 
 int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve)
 {
-#if SILK_SHORTCUTS
     uint32_t i = silk_remesh_kept_index(f, t);
     if (i != SILK_SIL_NONE) {   /* what seg_recs finds, from where the plan laid the points out */
-        const sil_layout *l = &f->lay_kept[i];
+        const sil_layout *l = &f->keep->lay_kept[i];
         uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
         uint32_t na = l->iB1 - 1, nb = l->iB2 - l->iB1 - 1, n2 = l->len - l->iB2 - 1;
         rec[0] = 1 + chain_at(f, t, lone, l->iA - 1, na);
@@ -715,7 +689,6 @@ int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uin
         *curve = (na > 0) + (nb > 0) + (n2 > 0);
         return 1;
     }
-#endif
     /* what silk_remesh_seg needs before it builds anything: both silhouette points */
     uint32_t lone = f->tri_state[t] & SILK_TS_LONE;
     const silk_sil_pair *pa = side_pair_of(f, t, lone), *pb = side_pair_of(f, t, (lone + 2) % 3);

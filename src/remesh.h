@@ -14,12 +14,12 @@ silk_status silk_remesh_plan(silk_sil_frame *f);     /* segments counted, costs 
  * room for every silhouette triangle's segment, which silk_remesh_plan
  * keeps as it makes them and silk_remesh_seg then reads instead of
  * rebuilding (the same bits).  Returns the bytes taken (0: none; counted
- * in f->kept_bytes).  Not in a build with -DSILK_NO_VERTEX_CACHE. */
-#if SILK_SHORTCUTS
+ * in f->keep->kept_bytes; f->keep must be there).  Only with
+ * SILK_KEEP_SEGMENTS. */
 size_t silk_remesh_keep(silk_sil_frame *f, size_t room);
-/* Where silhouette triangle t's segment is kept (seg_tri), or SILK_SIL_NONE. */
+/* Where silhouette triangle t's segment is kept (f->keep->seg_tri), or
+ * SILK_SIL_NONE (always, without SILK_KEEP_SEGMENTS). */
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t);
-#endif
 /* The silhouette segment of silhouette triangle t; 0 when a silhouette
  * point is missing (silhouette.c gives every silhouette triangle both). */
 int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);

@@ -15,35 +15,29 @@
  * is kept, and each input triangle's share of the frame is rebuilt whenever
  * a band needs it.
  *
- * A device that draws only FLAT and SMOOTH frames may build the core with
- * -DSILK_NO_REFERENCE_MODES: PN and BLEND (the comparison methods of
- * docs/methods.md, about 9 KiB of Cortex-M3 code) are then left out, and
- * asking for them is SILK_ERR_ARG.  -DSILK_NO_LINES leaves out the
- * pen-and-ink lines and --wire (lines.c and the rasterizer's lines, about
- * 7 KiB); with both flags every frame is drawn share by share, so the stored
- * frame's code goes too.  -DSILK_NO_CLIP_MODE likewise leaves out CLIP
- * (clip.c and the silhouette interpolation, about 11 KiB), -DSILK_NO_AA the
- * anti-aliased outlines (frame_aa) and -DSILK_NO_TEXTURE texture sampling
- * (phong.c, raster.c): a part with 32 KiB of RAM and 40 KiB for the core
- * draws flat and smooth frames without them.  -DSILK_NO_VERTEX_CACHE leaves
- * out the vertex cache's code (a board whose arena has no bytes to spare
- * for it sets silk_render_opts.vertex_cache_bytes to 0 and draws the same
- * pixels without it), and with it the other shortcuts that only a roomy
- * arena or a host's code size affords: what the SMOOTH plan keeps
- * (silk_remesh_keep, the carrying edges' rank), the kept shares
- * (keep_shares), the emitter's skip of triangles with nothing on their
- * sides, SMOOTH's plain triangles drawn straight from the cache and its
- * shading pass's skip of the triangles that won no depth (draw_direct,
- * depth_wins).
+ * What a build draws is its options' (silk/config.h): a device that draws
+ * only FLAT and SMOOTH frames leaves out PN and BLEND (SILK_REFERENCE_MODES
+ * 0), the lines and --wire (SILK_LINES 0; with both every frame is drawn
+ * share by share, so the stored frame's code goes too), CLIP, SILTEX,
+ * the anti-aliased outlines (frame_aa) and texture sampling, and asking
+ * for what is left out is SILK_ERR_ARG.  A build without the shortcuts
+ * (SILK_SHORTCUTS 0) leaves out the code of those that spend arena for
+ * speed, each of which a board's arena could not afford anyway: the
+ * vertex cache and the triangles drawn straight from it (vertex_cache,
+ * draw_direct), the kept shares (keep_shares), which triangles won a
+ * depth (depth_wins) and the back faces drawn last (back_last), the
+ * outline's candidates found once a frame, and what the SMOOTH plan keeps
+ * (silk_remesh_keep, the carrying edges' rank).  What a frame keeps for
+ * them is a frame_fast, which such a build does not have.
  */
 #include <string.h>
 #include "smooth.h"
 #include "remesh.h"
 #include "lines.h"
 #include "stages.h"
-
 #include "clip.h"
 #include "aa.h"
+#include "compiler.h"
 #include "silk/siltex.h"
 
 void silk_render_opts_default(silk_render_opts *o)
@@ -96,49 +90,22 @@ const char *silk_mode_name(silk_mode mode)
     return "?";
 }
 
-/* A frame ready to rasterize: geometry plus the vertex stage's output. */
-typedef struct frame {
-    const silk_hal *hal;
-    silk_geom geom;
-    silk_frame_geom g;
-    silk_vertex_out *cache;   /* NULL when the arena could not hold it */
-    silk_vertex_out *line_cache;   /* the same for the lines' records */
-    uint32_t *line_lift;      /* per line record (lines.c), or NULL */
-    /* A frame is drawn in nparts parts, part(f, k) filling g and cache
-     * with part k: a frame drawn share by share has its input triangles'
-     * shares, rebuilt one at a time; a stored frame is one part, all there. */
-    uint32_t nparts;
-    void (*part)(struct frame *f, uint32_t k);
-    int smooth;
-    silk_stage_clock *clock;  /* per-stage timing, or NULL */
-    uint8_t *rows;            /* per part: first and last row it can reach, in units of row_unit, or NULL */
-    int row_unit;             /* rows a unit of rows[] spans (share_rows) */
-    silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
+/* What a frame keeps for speed where the arena has room, for the
+ * shortcuts that take it (silk/config.h: SILK_VERTEX_CACHE,
+ * SILK_DRAW_DIRECT, SILK_KEEP_SHARES, SILK_DEPTH_WINS, SILK_BACK_FACES_LAST,
+ * SILK_AA_CANDIDATES, and the plan's SILK_KEEP_SEGMENTS and
+ * SILK_CARRY_RANK): a field is NULL or 0 where it took none.  A build
+ * without any of them has no frame_fast: silk_render's is compiled away,
+ * and a small part's stack does not hold it (FRAME_FAST). */
+typedef struct frame_fast {
     /* The vertex cache of a frame drawn share by share (vertex_cache),
      * or NULL: slot s holds the vertex stage's output for the corner
      * whose normal, vertex and uv are vc_tag[3s .. 3s+2]. */
     silk_vertex_out *vc;
     uint32_t *vc_tag;
     uint32_t vc_mask;
-    uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
-#if SILK_SHORTCUTS
     uint8_t *cand;            /* closed mesh: silk_aa_candidates' bits, or NULL */
     uint8_t cand_ready;       /* made (by the first band's frame_aa) */
-#endif
-    size_t vc_bytes;          /* the arena it and the facing memo take */
-    size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
-    size_t peak_before;       /* the arena's top high-water before those */
-    uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
-    uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
-                                 frame is on a small board's stack) */
-    /* SILTEX: the hull drawn through the silhouette texture by these stages
-     * (siltex.c), which kill the pixels where the detailed model is not seen */
-    uint8_t siltex;
-#if SILK_SILTEX_MODE
-    silk_hal siltex_hal;
-    silk_siltex_stage siltex_stage;
-#endif
-#if SILK_SHORTCUTS
     /* SMOOTH: the shares that draw_direct does not draw as first built
      * (keep_shares): input triangle t's at ks + ks_at[t] - 1, ks_at[t] 0
      * until it is built */
@@ -169,9 +136,54 @@ typedef struct frame {
     uint32_t *won;
     struct back_tri *back;
     uint32_t back_cap, nback;
-#endif
+    silk_sil_keep keep;       /* SMOOTH: what the plan keeps (silk_sil_frame.keep) */
+} frame_fast;
+
+/* Whether the build has a frame_fast: any of its shortcuts. */
+#define FRAME_FAST (SILK_VERTEX_CACHE || SILK_DRAW_DIRECT || SILK_KEEP_SHARES || SILK_DEPTH_WINS || \
+                    SILK_BACK_FACES_LAST || SILK_AA_CANDIDATES || SILK_SIL_KEEPS)
+
+/* SILTEX: the hull drawn through the silhouette texture by these stages
+ * (siltex.c), which kill the pixels where the detailed model is not seen.
+ * silk_render's, compiled away without SILK_SILTEX_MODE. */
+typedef struct frame_siltex {
+    silk_hal hal;
+    silk_siltex_stage stage;
+} frame_siltex;
+
+/* A frame ready to rasterize: geometry plus the vertex stage's output. */
+typedef struct frame {
+    const silk_hal *hal;
+    silk_geom geom;
+    silk_frame_geom g;
+    silk_vertex_out *cache;   /* NULL when the arena could not hold it */
+    silk_vertex_out *line_cache;   /* the same for the lines' records */
+    uint32_t *line_lift;      /* per line record (lines.c), or NULL */
+    /* A frame is drawn in nparts parts, part(f, k) filling g and cache
+     * with part k: a frame drawn share by share has its input triangles'
+     * shares, rebuilt one at a time; a stored frame is one part, all there. */
+    uint32_t nparts;
+    void (*part)(struct frame *f, uint32_t k);
+    silk_stage_clock *clock;  /* per-stage timing, or NULL */
+    uint8_t *rows;            /* per part: first and last row it can reach, in units of row_unit, or NULL */
+    int row_unit;             /* rows a unit of rows[] spans (share_rows) */
+    silk_clip *clip;          /* CLIP: the outline and its stencil (clip.c), else NULL */
+    frame_siltex *siltex;     /* SILTEX: its stages, else NULL */
+    frame_fast *fast;         /* what it keeps for speed, or NULL: a build without the shortcuts */
+    uint8_t *facing;          /* silk_aa.facing for frame_aa, or NULL */
+    size_t vc_bytes;          /* the arena the vertex cache, the facing memo and the rest of fast take */
+    size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
+    size_t peak_before;       /* the arena's top high-water before those */
+    uint8_t smooth;           /* SMOOTH's plan made (else the coarse mesh's shares) */
+    uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
+    uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
+                                 frame is on a small board's stack) */
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
+
+/* Whether f is a CLIP frame, a SILTEX one: never in a build without the mode. */
+#define CLIP_FRAME(f) (SILK_CLIP_MODE && (f)->clip != NULL)
+#define SILTEX_FRAME(f) (SILK_SILTEX_MODE && (f)->siltex != NULL)
 
 /* Vertex stage output for record i: from the cache when the frame could
  * afford one, else recomputed (same bits either way: the stage is a pure
@@ -184,14 +196,12 @@ static const silk_vertex_out *vertex_out(const frame *f, uint32_t i, silk_vertex
 }
 
 /* Vertex i of the lines, lifted off the triangles it lies on. */
-#if SILK_LINES
 static void line_out(const frame *f, uint32_t i, silk_vertex_out *out)
 {
     if (f->line_cache) *out = f->line_cache[i];
     else f->hal->vertex(f->hal, &f->geom, &f->g.line_vrec[i], out);
     silk_lines_apply_lift(out, f->line_lift ? f->line_lift[i] : 0);
 }
-#endif
 
 /* ---- Frames drawn share by share ------------------------------------------------
  *
@@ -215,8 +225,6 @@ static int by_shares(const silk_render_opts *o)
 
 static void share_part(frame *f, uint32_t t);
 
-
-
 static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                   const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
                                   silk_error *err)
@@ -231,22 +239,20 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
         silk_arena_mark mark = silk_arena_top_mark(a);
         /* the plan's time without the visibility test's, which is inside it */
         uint32_t vis0 = f->clock ? f->clock->ticks[SILK_STAGE_VISIBILITY] : 0, t0 = silk_stage_start(f->clock);
-#if SILK_SHORTCUTS
         size_t peak0 = a->top_peak;
-        f->sil.keep_room = o->vertex_cache_bytes;   /* silk_remesh_keep's budget: the vertex cache's */
-#endif
+        silk_sil_keep *keep = SILK_SIL_KEEPS ? &f->fast->keep : NULL;
+        if (keep) keep->room = o->vertex_cache_bytes;   /* silk_remesh_keep's budget: the vertex cache's */
         for (;;) {
+            f->sil.keep = keep;
             f->smooth = silk_frame_smooth_plan(a, m, v, o->tolerance_px, o->visibility, f->clock, &f->sil, &f->g) &&
                         (f->cache = silk_arena_array_top(a, f->sil.max_recs, sizeof *f->cache, SILK_MEM_FRAME));
-#if SILK_SHORTCUTS
-            if (!f->smooth && f->sil.kept_bytes) {
+            if (!f->smooth && keep && keep->kept_bytes) {
                 /* what the plan kept for speed took room the frame needs: again without */
                 silk_arena_top_release(a, &mark);
                 a->top_peak = peak0;
-                f->sil.keep_room = 0;
+                keep->room = 0;
                 continue;
             }
-#endif
             break;
         }
         silk_stage_stop(f->clock, SILK_STAGE_PLAN, t0);
@@ -283,27 +289,23 @@ static silk_status shares_prepare(frame *f, silk_arena *a, const silk_mesh *m, c
  * With clip not NULL, a miss takes the corner's clip coordinates from
  * there (draw_direct's, placed) and runs only the rest of the stage. */
 #define VC_OUTSIDE INT32_MIN         /* vc_xy: outside a clip plane */
-#if defined(__GNUC__)
-__attribute__((always_inline))   /* every corner of a streamed frame: inline in share_part, as a call it costs a tenth more */
-#endif
+SILK_ALWAYS_INLINE   /* every corner of a streamed frame: inline in share_part, as a call it costs a tenth more */
 static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *r, const silk_vec4 *clip)
 {
     const silk_mesh *m = f->geom.mesh;
+    frame_fast *x = f->fast;
     uint32_t n;
     if (a / 3 >= m->ntris || (n = m->tri_normal[a]) >= m->nnormals) return UINT32_MAX;
     uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
-    uint32_t s = n & f->vc_mask, *tag = &f->vc_tag[3 * s];
+    uint32_t s = n & x->vc_mask, *tag = &x->vc_tag[3 * s];
     if (tag[0] != n || tag[1] != v || tag[2] != uv) {
         const silk_vrec own = { SILK_VREC_CORNER, a, 0, 0 };
-#if SILK_SHORTCUTS
-        if (clip) {
-            f->vc[s].clip = *clip;
-            silk_hal_vertex_varyings(&f->geom, &own, &f->vc[s]);
-        } else
-#else
-        (void)clip;
-#endif
-        f->hal->vertex(f->hal, &f->geom, r ? r : &own, &f->vc[s]);
+        if (SILK_DRAW_DIRECT && clip) {
+            x->vc[s].clip = *clip;
+            silk_hal_vertex_varyings(&f->geom, &own, &x->vc[s]);
+        } else {
+            f->hal->vertex(f->hal, &f->geom, r ? r : &own, &x->vc[s]);
+        }
         tag[0] = n;
         tag[1] = v;
         tag[2] = uv;
@@ -314,17 +316,13 @@ static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *
 static void corner_cached(const frame *f, const silk_vrec *r, silk_vertex_out *out)
 {
     uint32_t s = corner_slot(f, r->a, r, NULL);
-    if (s != UINT32_MAX) *out = f->vc[s];
+    if (s != UINT32_MAX) *out = f->fast->vc[s];
     else f->hal->vertex(f->hal, &f->geom, r, out);
 }
 
-#if !SILK_SHORTCUTS
-#define VERTEX_CACHED(f) 0
-#else
-#define VERTEX_CACHED(f) ((f)->vc != NULL)
-#endif
+/* Whether frame f has a vertex cache (vertex_cache). */
+#define VERTEX_CACHED(f) (SILK_VERTEX_CACHE && (f)->fast->vc != NULL)
 
-#if SILK_SHORTCUTS
 /* A kept share: its counts and whether it is placed, then its records,
  * curves, vertex-stage output, triangles and their flags, each a multiple
  * of 4 bytes, then where its records are placed on the screen (draw_tris,
@@ -356,8 +354,8 @@ static void share_copy(frame *f, uint8_t *p)
         memcpy(p, part[i].at, part[i].bytes);
         p += (part[i].bytes + 3) & ~(size_t)3;
     }
-    f->kxy = (int32_t(*)[2])(void *)p;
-    f->kxy_ready = &n[4];
+    f->fast->kxy = (int32_t(*)[2])(void *)p;
+    f->fast->kxy_ready = &n[4];
 }
 
 /* The share kept at p as the frame's (g, cache) where it is, not copied
@@ -384,41 +382,41 @@ static void share_view(frame *f, uint8_t *p)
     g->tri = (uint32_t *)(void *)p;
     p += (3 * (size_t)g->ntri * sizeof *g->tri + 3) & ~(size_t)3;
     g->tri_added = p;
-    f->kxy = (int32_t(*)[2])(void *)(p + ((g->ntri + 3) & ~(size_t)3));
-    f->kxy_ready = &n[4];
+    f->fast->kxy = (int32_t(*)[2])(void *)(p + ((g->ntri + 3) & ~(size_t)3));
+    f->fast->kxy_ready = &n[4];
 }
 
 static inline int direct_ok(const frame *f, uint32_t k);
 
 /* Where input triangle t's share is kept: t, for every share draw_direct
- * does not draw (SILK_SIL_NONE: none). */
+ * does not draw (SILK_SIL_NONE: none, or a build without kept shares). */
 static uint32_t share_kept(const frame *f, uint32_t t)
 {
-    return f->ks && !direct_ok(f, t) ? t : SILK_SIL_NONE;
+    return SILK_KEEP_SHARES && f->fast->ks && !direct_ok(f, t) ? t : SILK_SIL_NONE;
 }
-#endif
 
 /* Input triangle t's share into g, through the vertex stage into cache. */
 static void share_part(frame *f, uint32_t t)
 {
     silk_frame_geom *g = &f->g;
+    frame_fast *x = f->fast;
     uint32_t t0 = silk_stage_start(f->clock);
-#if SILK_SHORTCUTS
     uint32_t k = share_kept(f, t);
-    if (k != SILK_SIL_NONE && f->ks_at[k]) {   /* built before: the same records, the same output */
-        share_view(f, f->ks + f->ks_at[k] - 1);
+    if (k != SILK_SIL_NONE && x->ks_at[k]) {   /* built before: the same records, the same output */
+        share_view(f, x->ks + x->ks_at[k] - 1);
         silk_stage_stop(f->clock, SILK_STAGE_EMIT, t0);
         return;
     }
-    f->kxy = NULL;   /* (share_copy: where this one is kept) */
-    if (f->ks && g->vrec != f->home.vrec) {   /* home from a kept share */
-        g->vrec = f->home.vrec;
-        g->tri = f->home.tri;
-        g->tri_added = f->home.tri_added;
-        f->geom.curves = g->curve = f->home.curve;
-        f->cache = f->home_cache;
+    if (SILK_KEEP_SHARES && x->ks) {
+        x->kxy = NULL;   /* (share_copy: where this one is kept) */
+        if (g->vrec != x->home.vrec) {   /* home from a kept share */
+            g->vrec = x->home.vrec;
+            g->tri = x->home.tri;
+            g->tri_added = x->home.tri_added;
+            f->geom.curves = g->curve = x->home.curve;
+            f->cache = x->home_cache;
+        }
     }
-#endif
     g->nvrec = g->ntri = g->ncurve = 0;
     if (f->smooth) silk_remesh_emit_tri(&f->sil, g, t);
     else silk_frame_flat_emit_tri(g, t);
@@ -428,23 +426,21 @@ static void share_part(frame *f, uint32_t t)
     const silk_vrec *r = g->vrec;
     silk_vertex_out *out = f->cache;
     uint32_t n = g->nvrec;
-    int plain = g->ntri == 1;
+    int plain = g->ntri == 1, cached = VERTEX_CACHED(f);
     for (uint32_t i = 0; i < n; i++) {
         int corner = r[i].kind == SILK_VREC_CORNER;
         plain &= corner;
-        if (VERTEX_CACHED(f) && corner) corner_cached(f, &r[i], &out[i]);
+        if (cached && corner) corner_cached(f, &r[i], &out[i]);
         else f->hal->vertex(f->hal, &f->geom, &r[i], &out[i]);
     }
     f->plain = (uint8_t)plain;
     silk_stage_stop(f->clock, SILK_STAGE_VERTEX, t0);
-#if SILK_SHORTCUTS
     size_t bytes = share_bytes(g->nvrec, g->ntri, g->ncurve);
-    if (k != SILK_SIL_NONE && f->ks_cap - f->ks_used >= bytes) {
-        share_copy(f, f->ks + f->ks_used);
-        f->ks_at[k] = (uint32_t)f->ks_used + 1;
-        f->ks_used += bytes;
+    if (k != SILK_SIL_NONE && x->ks_cap - x->ks_used >= bytes) {
+        share_copy(f, x->ks + x->ks_used);
+        x->ks_at[k] = (uint32_t)x->ks_used + 1;
+        x->ks_used += bytes;
     }
-#endif
 }
 
 /* The vertex cache (corner_cached), from at most half of the arena left
@@ -455,41 +451,36 @@ static void share_part(frame *f, uint32_t t)
 #define VCACHE_MAX 4096
 static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 {
-#if !SILK_SHORTCUTS
-    (void)f;
-    (void)a;
-    (void)o;
-#else
     const silk_mesh *m = f->geom.mesh;
-    if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
+    frame_fast *x = f->fast;
+    if (!SILK_VERTEX_CACHE || f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
+    const size_t slot = sizeof *x->vc + 3 * sizeof *x->vc_tag, half = silk_arena_free_bytes(a) / 2,
                  free0 = silk_arena_free_bytes(a);
     size_t room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
     /* where each vertex of the mesh is placed (draw_direct: FLAT's
      * triangles, SMOOTH's away from the silhouette), when that fits with
      * the least cache */
-    size_t xy = (size_t)m->nverts * (2 * sizeof *f->vc_xy + sizeof *f->vc_clip) + 2 * SILK_ARENA_ALIGN;
-    if (xy + 64 * slot + 2 * SILK_ARENA_ALIGN > room) xy = 0;
+    size_t xy = (size_t)m->nverts * (2 * sizeof *x->vc_xy + sizeof *x->vc_clip) + 2 * SILK_ARENA_ALIGN;
+    if (!SILK_DRAW_DIRECT || xy + 64 * slot + 2 * SILK_ARENA_ALIGN > room) xy = 0;
     room -= xy;
     uint32_t n = 64;
     while (n < m->nnormals && n < VCACHE_MAX && (size_t)2 * n * slot + 2 * SILK_ARENA_ALIGN <= room) n *= 2;
     if ((size_t)n * slot + 2 * SILK_ARENA_ALIGN > room) return;
     /* unfilled: a slot is read only once its tag says it is written, a
      * vertex's place only once place_vertices has written every one */
-    f->vc = silk_arena_array_top_unfilled(a, n, sizeof *f->vc, SILK_MEM_FRAME);
-    f->vc_tag = silk_arena_array_top_unfilled(a, 3 * (size_t)n, sizeof *f->vc_tag, SILK_MEM_FRAME);
-    if (!xy || !(f->vc_xy = silk_arena_array_top_unfilled(a, 2 * (size_t)m->nverts, sizeof *f->vc_xy, SILK_MEM_FRAME)) ||
-        !(f->vc_clip = silk_arena_array_top_unfilled(a, m->nverts, sizeof *f->vc_clip, SILK_MEM_FRAME)))
-        f->vc_xy = NULL;
-    if (!f->vc || !f->vc_tag) {
-        f->vc = NULL;
-        f->vc_xy = NULL;
+    x->vc = silk_arena_array_top_unfilled(a, n, sizeof *x->vc, SILK_MEM_FRAME);
+    x->vc_tag = silk_arena_array_top_unfilled(a, 3 * (size_t)n, sizeof *x->vc_tag, SILK_MEM_FRAME);
+    if (!xy || !(x->vc_xy = silk_arena_array_top_unfilled(a, 2 * (size_t)m->nverts, sizeof *x->vc_xy, SILK_MEM_FRAME)) ||
+        !(x->vc_clip = silk_arena_array_top_unfilled(a, m->nverts, sizeof *x->vc_clip, SILK_MEM_FRAME)))
+        x->vc_xy = NULL;
+    if (!x->vc || !x->vc_tag) {
+        x->vc = NULL;
+        x->vc_xy = NULL;
         return;
     }
-    for (uint32_t i = 0; i < n; i++) f->vc_tag[3 * i] = UINT32_MAX;   /* empty: no normal index is UINT32_MAX */
+    for (uint32_t i = 0; i < n; i++) x->vc_tag[3 * i] = UINT32_MAX;   /* empty: no normal index is UINT32_MAX */
     f->vc_bytes = free0 - silk_arena_free_bytes(a);
-    f->vc_mask = n - 1;
-#endif
+    x->vc_mask = n - 1;
 }
 
 /* The outline's memo of which way each input triangle faces
@@ -498,28 +489,21 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
  * worked out up to four times a band, with the same answers. */
 static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 {
-#if SILK_AA
+    if (!SILK_AA) return;
     size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a),
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
-    if (!o->aa || o->wire || f->part != share_part || f->clip || n + SILK_ARENA_ALIGN > budget ||
+    if (!o->aa || o->wire || f->part != share_part || CLIP_FRAME(f) || n + SILK_ARENA_ALIGN > budget ||
         n + SILK_ARENA_ALIGN > free0 / 2)
         return;
     f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);   /* zeroed: nothing known yet */
     if (!f->facing) return;
-#if SILK_SHORTCUTS
     /* A closed mesh: the outline's candidates for all bands at once
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
     size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
-    if (f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
+    if (SILK_AA_CANDIDATES && f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
         n + nc + 2 * SILK_ARENA_ALIGN <= free0 / 2)
-        f->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
-#endif
+        f->fast->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
-#else
-    (void)f;
-    (void)a;
-    (void)o;
-#endif
 }
 
 /* SMOOTH: the carrying edges' tangents kept (silk_sil_keep_tangents), as
@@ -532,11 +516,7 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
 {
     size_t room = silk_arena_free_bytes(a);
-#if SILK_AA
-    if (o->aa && !o->wire) room /= 2;
-#else
-    (void)o;
-#endif
+    if (SILK_AA && o->aa && !o->wire) room /= 2;
     if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
 }
 
@@ -548,49 +528,41 @@ static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
  * of the frame's need either. */
 static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
-#if SILK_SHORTCUTS
+    frame_fast *x = f->fast;
     uint32_t n = f->smooth ? f->geom.mesh->ntris : 0;   /* ks_at: per input triangle (share_kept) */
-    if (!n || n >= UINT32_MAX / 4) return;
+    if (!SILK_KEEP_SHARES || !n || n >= UINT32_MAX / 4) return;
     size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN;
-#if SILK_AA
-    reserve += 2 * (3 * ((size_t)t->width + (size_t)t->rows) * sizeof(silk_aa_px)) +
-               2 * (size_t)t->width * (silk_pixfmt_bytes(t->fmt) + sizeof(uint32_t)) +
-               ((size_t)f->sil.max_recs + SILK_AA_WALK) * sizeof(silk_aa_pt) + sizeof(silk_vertex_out);
-#else
-    (void)t;
-#endif
+    if (SILK_AA)
+        reserve += 2 * (3 * ((size_t)t->width + (size_t)t->rows) * sizeof(silk_aa_px)) +
+                   2 * (size_t)t->width * (silk_pixfmt_bytes(t->fmt) + sizeof(uint32_t)) +
+                   ((size_t)f->sil.max_recs + SILK_AA_WALK) * sizeof(silk_aa_pt) + sizeof(silk_vertex_out);
     size_t budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     size_t room = free0 > reserve ? (free0 - reserve) / 2 : 0, per = share_bytes(f->sil.max_recs, f->sil.max_tris,
                                                                                   f->sil.max_curves);
     if (room > budget) room = budget;
-    if (room < (size_t)n * sizeof *f->ks_at + per + 2 * SILK_ARENA_ALIGN) return;
-    room -= (size_t)n * sizeof *f->ks_at + 2 * SILK_ARENA_ALIGN;
+    if (room < (size_t)n * sizeof *x->ks_at + per + 2 * SILK_ARENA_ALIGN) return;
+    room -= (size_t)n * sizeof *x->ks_at + 2 * SILK_ARENA_ALIGN;
     /* all of them (the plan counted what the kept segments' hold; each adds
      * its counts and padding; the others' a few records each, on a side
      * or two carrying silhouette points or with a vertex moved), or what fits */
-    uint64_t all = (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out) + 8) * f->sil.kept_recs +
-                   (uint64_t)sizeof(silk_curve) * f->sil.kept_curves + 13 * f->sil.kept_tris +
-                   24 * (uint64_t)f->sil.nseg_kept;
-    for (uint32_t k = 0; k < n; k++)
-        if (!(f->sil.tri_state[k] & SILK_TS_SIL) && !direct_ok(f, k)) all += share_bytes(8, 6, 2);
+    const silk_sil_keep *k = f->sil.keep;
+    uint64_t all = k ? (uint64_t)(sizeof(silk_vrec) + sizeof(silk_vertex_out) + 8) * k->kept_recs +
+                       (uint64_t)sizeof(silk_curve) * k->kept_curves + 13 * k->kept_tris + 24 * (uint64_t)k->nseg_kept
+                     : 0;
+    for (uint32_t j = 0; j < n; j++)
+        if (!(f->sil.tri_state[j] & SILK_TS_SIL) && !direct_ok(f, j)) all += share_bytes(8, 6, 2);
     size_t cap = all < room ? (size_t)all : room;
-    f->ks_at = silk_arena_array_top(a, n, sizeof *f->ks_at, SILK_MEM_FRAME);   /* zeroed: none built */
-    f->ks = silk_arena_array_top_unfilled(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
-    if (!f->ks_at || !f->ks) {
-        f->ks = NULL;
+    x->ks_at = silk_arena_array_top(a, n, sizeof *x->ks_at, SILK_MEM_FRAME);   /* zeroed: none built */
+    x->ks = silk_arena_array_top_unfilled(a, cap, 1, SILK_MEM_FRAME);   /* each share written before it is read */
+    if (!x->ks_at || !x->ks) {
+        x->ks = NULL;
         return;
     }
-    f->ks_cap = cap;
-    f->ks_used = 0;
-    f->home = f->g;
-    f->home_cache = f->cache;
+    x->ks_cap = cap;
+    x->ks_used = 0;
+    x->home = f->g;
+    x->home_cache = f->cache;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
-#else
-    (void)f;
-    (void)a;
-    (void)o;
-    (void)t;
-#endif
 }
 
 /* SMOOTH: which triangles of each part wrote a depth in the depth pass,
@@ -607,7 +579,7 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
  * stages that the depth pass draws with discards.)  4 bytes an input
  * triangle under the vertex cache's budget, only where frame_draw makes a
  * depth pass; without the room every triangle is shaded as before. */
-#if SILK_SHORTCUTS
+
 /* A back face of a re-meshed part that the depth pass draws last
  * (back_last): where the rasterizer places its corners and their clip z
  * and w (all the depth needs), and which triangle of which part it is. */
@@ -620,20 +592,22 @@ typedef struct back_tri {
 #define BACK_MAX 1024   /* back_tri entries at most: a coarse mesh's silhouette has a few hundred */
 static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
 {
+    if (!SILK_DEPTH_WINS) return;
+    frame_fast *x = f->fast;
     uint64_t n = f->geom.mesh->ntris;
-    size_t free0 = silk_arena_free_bytes(a), bytes = (size_t)n * sizeof *f->won + SILK_ARENA_ALIGN,
+    size_t free0 = silk_arena_free_bytes(a), bytes = (size_t)n * sizeof *x->won + SILK_ARENA_ALIGN,
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
-    f->won = silk_arena_array_top(a, n, sizeof *f->won, SILK_MEM_FRAME);   /* each written in the depth pass */
+    x->won = silk_arena_array_top(a, n, sizeof *x->won, SILK_MEM_FRAME);   /* each written in the depth pass */
     /* the back faces put off, from what is left of the budget and of half the arena */
     size_t left = budget - bytes, free1 = silk_arena_free_bytes(a) / 2, cap = BACK_MAX;
     if (left > free1) left = free1;
-    if (cap > left / sizeof *f->back) cap = left / sizeof *f->back;
-    if (f->won && cap > 16 && (f->back = silk_arena_array_top_unfilled(a, cap, sizeof *f->back, SILK_MEM_FRAME)))
-        f->back_cap = (uint32_t)cap;
+    if (cap > left / sizeof *x->back) cap = left / sizeof *x->back;
+    if (SILK_BACK_FACES_LAST && x->won && cap > 16 &&
+        (x->back = silk_arena_array_top_unfilled(a, cap, sizeof *x->back, SILK_MEM_FRAME)))
+        x->back_cap = (uint32_t)cap;
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 }
-#endif
 
 /* The rows each input triangle can reach.  Everything drawn for it lies in
  * the screen triangles of its share's records, so between their highest and
@@ -687,12 +661,8 @@ static void share_rows(frame *f, const silk_render_opts *o, const silk_target *b
  * band need not rebuild it. */
 static int part_hidden(const frame *f, const silk_render_opts *o, const silk_target *band)
 {
-#if !SILK_AA
-    int aa = 0;   /* built without it: o->aa draws nothing */
-#else
-    int aa = o->aa;
-#endif
-    if (!f->cull || (f->smooth && !f->plain) || f->g.ntri != 1 || aa || o->wire || o->lines || f->siltex || f->clip)
+    int aa = SILK_AA ? o->aa : 0;   /* (a build without them: o->aa draws nothing) */
+    if (!f->cull || (f->smooth && !f->plain) || f->g.ntri != 1 || aa || o->wire || o->lines || SILTEX_FRAME(f) || CLIP_FRAME(f))
         return 0;
     const uint32_t *c = f->g.tri;
     return silk_raster_culled(band, &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]]);
@@ -706,115 +676,100 @@ static int part_misses(const frame *f, uint32_t k, int y0, int y1)
     return f->rows[2 * k] * u > y1 || f->rows[2 * k + 1] * u + u - 1 < y0;
 }
 
-#if SILK_STORED_FRAMES
 /* A stored frame's one part is there already. */
 static void stored_part(frame *f, uint32_t k)
 {
     (void)f;
     (void)k;
 }
-#endif
 
-static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
-                                 const silk_hal *h, const silk_render_opts *o, int band_rows,
-                                 silk_frame_stats *stats, silk_error *err)
+/* CLIP: the hull drawn as flat draws a mesh, through the stencil of the
+ * outline interpolated from the silhouette map (clip.c), band_rows high. */
+static silk_status clip_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
+                                const silk_render_opts *o, int band_rows, silk_frame_stats *stats, silk_error *err)
 {
-    memset(f, 0, sizeof *f);   /* first: frame_need reads it even when the frame is refused */
-    if (!a || !m || !v || !h || !o || !h->vertex || !h->fragment)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
-    if ((unsigned)o->lines > SILK_LINES_ONLY)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown lines setting %d", (int)o->lines);
-    /* The patches of PN and BLEND bulge over the coarse mesh, so its edges
-     * are not their outline: there only the polygonal lines, on request. */
-    if (o->lines && !o->lines_polygonal && (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND))
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0,
-                         "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
-                         "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
-#if !SILK_LINES
-    if (o->lines || o->wire)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: lines and wire are not built in (SILK_LINES 0)");
-#endif
-    f->clock = o->clock;
-    (void)band_rows;   /* the stencil's height: clip mode's only */
-    if (o->mode == SILK_MODE_CLIP) {
-#if !SILK_CLIP_MODE
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode is not built in (SILK_CLIP_MODE 0)");
-#else
-        /* the hull drawn as flat draws a mesh, through the stencil */
-        if (!o->silmap)
-            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode needs the model's silhouette map");
-        if (o->lines)
-            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: no lines in clip mode (the outline is the map's)");
-        f->clip = silk_arena_alloc_top(a, sizeof *f->clip, SILK_MEM_FRAME);
-        if (!f->clip) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "silk_render: the arena is full");
-        silk_status st = silk_clip_prepare(f->clip, a, o->silmap, v, o->silmap_hint, band_rows, o->aa, err);
-        if (st != SILK_OK) return st;
-        stats->clip_tri = f->clip->info.tri;
-        stats->clip_points = f->clip->npts;
-        silk_clip *c = f->clip;
-        st = shares_prepare(f, a, m, v, h, o, stats, err);
-        f->clip = c;
-        return st;
-#endif
-    }
-    if (o->mode == SILK_MODE_SILTEX) {
-#if !SILK_SILTEX_MODE
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode is not built in (SILK_SILTEX_MODE 0)");
-#else
-        /* the hull drawn as flat draws a mesh, each pixel through eq. 4 */
-        if (!o->siltex)
-            return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode needs the model's silhouette texture");
-        if (o->siltex->ntris != m->ntris || o->siltex->nverts != m->nverts)
-            return silk_fail(err, SILK_ERR_ARG, NULL, 0,
-                             "silk_render: the silhouette texture is for a hull of %lu triangles, the mesh has %lu",
-                             (unsigned long)o->siltex->ntris, (unsigned long)m->ntris);
-        f->siltex = 1;
-        f->siltex_stage.tex = o->siltex;
-        f->siltex_stage.shade = h;
-        f->siltex_stage.view = v;
-        /* lines (eq. 5) sized for an edge crossed a sixteenth of the hull's
-         * diagonal away from it */
-        f->siltex_stage.lines = (int)o->lines;
-        f->siltex_stage.line_rgb = o->line_rgb;
-        f->siltex_stage.bg_rgb = o->bg_rgb;
-        f->siltex_stage.line_q =
-            silk_siltex_line_width(v, silk_v3_length(silk_v3_sub(m->bbox_max, m->bbox_min)) / 16);
-        silk_siltex_hal(&f->siltex_hal, &f->siltex_stage);
-        return shares_prepare(f, a, m, v, &f->siltex_hal, o, stats, err);
-#endif
-    }
-    if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
-#if !SILK_STORED_FRAMES
-    if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_REFERENCE_MODES 0)",
-                         silk_mode_name(o->mode));
-    return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
+    if (!o->silmap)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: clip mode needs the model's silhouette map");
+    if (o->lines)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: no lines in clip mode (the outline is the map's)");
+    f->clip = silk_arena_alloc_top(a, sizeof *f->clip, SILK_MEM_FRAME);
+    if (!f->clip) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "silk_render: the arena is full");
+    silk_status st = silk_clip_prepare(f->clip, a, o->silmap, v, o->silmap_hint, band_rows, o->aa, err);
+    if (st != SILK_OK) return st;
+    stats->clip_tri = f->clip->info.tri;
+    stats->clip_points = f->clip->npts;
+    silk_clip *c = f->clip;
+    st = shares_prepare(f, a, m, v, h, o, stats, err);
+    f->clip = c;
+    return st;
 }
-#else
-    f->hal = h;
-    f->nparts = 1;
-    f->part = stored_part;
+
+/* SILTEX: the hull drawn as flat draws a mesh, each pixel through eq. 4 of
+ * the silhouette texture, by the stages of sx (siltex.c). */
+static silk_status siltex_prepare(frame *f, frame_siltex *sx, silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                  const silk_hal *h, const silk_render_opts *o, silk_frame_stats *stats,
+                                  silk_error *err)
+{
+    if (!o->siltex)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: siltex mode needs the model's silhouette texture");
+    if (o->siltex->ntris != m->ntris || o->siltex->nverts != m->nverts)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                         "silk_render: the silhouette texture is for a hull of %lu triangles, the mesh has %lu",
+                         (unsigned long)o->siltex->ntris, (unsigned long)m->ntris);
+    f->siltex = sx;
+    sx->stage.tex = o->siltex;
+    sx->stage.shade = h;
+    sx->stage.view = v;
+    /* lines (eq. 5) sized for an edge crossed a sixteenth of the hull's
+     * diagonal away from it */
+    sx->stage.lines = (int)o->lines;
+    sx->stage.line_rgb = o->line_rgb;
+    sx->stage.bg_rgb = o->bg_rgb;
+    sx->stage.line_q = silk_siltex_line_width(v, silk_v3_length(silk_v3_sub(m->bbox_max, m->bbox_min)) / 16);
+    silk_siltex_hal(&sx->hal, &sx->stage);
+    return shares_prepare(f, a, m, v, &sx->hal, o, stats, err);
+}
+
+/* A stored frame's geometry in f->g: the mode's frame (flat.c, smooth.c,
+ * pn.c, blend.c), and the polygonal lines where asked for.  *smooth_lines:
+ * whether its lines are the smooth curves, which only SMOOTH has (FLAT
+ * outlines the coarse mesh it draws). */
+static silk_status stored_geometry(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                   const silk_render_opts *o, int *smooth_lines, silk_frame_stats *stats,
+                                   silk_error *err)
+{
     silk_status st;
-    /* The smooth curves exist only in SMOOTH mode; FLAT outlines the coarse mesh it draws. */
-    int smooth_lines = o->lines && !o->lines_polygonal && o->mode == SILK_MODE_SMOOTH;
+    *smooth_lines = o->lines && !o->lines_polygonal && o->mode == SILK_MODE_SMOOTH;
     if (o->mode == SILK_MODE_SMOOTH)
-        st = silk_frame_smooth_lines(a, m, v, o->tolerance_px, o->visibility, smooth_lines, &f->g, stats, err);
+        st = silk_frame_smooth_lines(a, m, v, o->tolerance_px, o->visibility, *smooth_lines, &f->g, stats, err);
     else if (o->mode == SILK_MODE_FLAT)
         st = silk_frame_flat(a, m, &f->g, err);
-#if SILK_REFERENCE_MODES
-    else if (o->mode == SILK_MODE_PN)
+    else if (SILK_REFERENCE_MODES && o->mode == SILK_MODE_PN)
         st = silk_frame_pn(a, m, o->level, o->pn_normals, &f->g, stats, err);
-    else if (o->mode == SILK_MODE_BLEND)
+    else if (SILK_REFERENCE_MODES && o->mode == SILK_MODE_BLEND)
         st = silk_frame_blend(a, m, v, o->blend_beta, o->tolerance_px, &f->g, stats, err);
-#endif
     else if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_REFERENCE_MODES 0)",
                        silk_mode_name(o->mode));
     else
         st = silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
-    if (st != SILK_OK) return st;
-    if (o->lines && !smooth_lines && silk_lines_polygonal(a, m, v, o->mode == SILK_MODE_FLAT, &f->g) != SILK_OK)
+    if (st == SILK_OK && o->lines && !*smooth_lines &&
+        silk_lines_polygonal(a, m, v, o->mode == SILK_MODE_FLAT, &f->g) != SILK_OK)
         silk_frame_fell_short(stats);
+    return st;
+}
+
+/* A stored frame (PN, BLEND, and FLAT and SMOOTH with lines): one part,
+ * every record through the vertex stage once, and its lines. */
+static silk_status stored_prepare(frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,
+                                  const silk_render_opts *o, silk_frame_stats *stats, silk_error *err)
+{
+    f->hal = h;
+    f->nparts = 1;
+    f->part = stored_part;
+    int smooth_lines;
+    silk_status st = stored_geometry(f, a, m, v, o, &smooth_lines, stats, err);
+    if (st != SILK_OK) return st;
 
     f->geom.mesh = m;
     f->geom.curves = f->g.curve;
@@ -841,7 +796,46 @@ static silk_status frame_prepare(frame *f, silk_arena *a, const silk_mesh *m, co
     stats->tris_drawn = f->g.ntri;
     return SILK_OK;
 }
-#endif
+
+/* Frame f's geometry for options o, its parts ready to draw, with room for
+ * what only some builds keep (silk_render's: fast for the shortcuts, sx
+ * for SILTEX mode, NULL in a build without them).  Refused options are
+ * SILK_ERR_ARG, and so is a mode the build leaves out. */
+static silk_status frame_prepare(frame *f, frame_fast *fast, frame_siltex *sx, silk_arena *a, const silk_mesh *m,
+                                 const silk_view *v, const silk_hal *h, const silk_render_opts *o, int band_rows,
+                                 silk_frame_stats *stats, silk_error *err)
+{
+    memset(f, 0, sizeof *f);   /* first: frame_need reads it even when the frame is refused */
+    f->fast = fast;
+    if (fast) memset(fast, 0, sizeof *fast);
+    if (!a || !m || !v || !h || !o || !h->vertex || !h->fragment)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: missing argument");
+    if ((unsigned)o->lines > SILK_LINES_ONLY)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown lines setting %d", (int)o->lines);
+    /* The patches of PN and BLEND bulge over the coarse mesh, so its edges
+     * are not their outline: there only the polygonal lines, on request. */
+    if (o->lines && !o->lines_polygonal && (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                         "silk_render: lines follow the outline in flat and smooth mode only (%s mode: "
+                         "polygonal lines, the coarse mesh's, only)", silk_mode_name(o->mode));
+    if (!SILK_LINES && (o->lines || o->wire))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: lines and wire are not built in (SILK_LINES 0)");
+    f->clock = o->clock;
+    if (o->mode == SILK_MODE_CLIP)
+        return SILK_CLIP_MODE ? clip_prepare(f, a, m, v, h, o, band_rows, stats, err)
+                              : silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                                          "silk_render: clip mode is not built in (SILK_CLIP_MODE 0)");
+    if (o->mode == SILK_MODE_SILTEX)
+        return SILK_SILTEX_MODE ? siltex_prepare(f, sx, a, m, v, h, o, stats, err)
+                                : silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                                            "silk_render: siltex mode is not built in (SILK_SILTEX_MODE 0)");
+    if (by_shares(o)) return shares_prepare(f, a, m, v, h, o, stats, err);
+    if (SILK_STORED_FRAMES) return stored_prepare(f, a, m, v, h, o, stats, err);
+    if (o->mode == SILK_MODE_PN || o->mode == SILK_MODE_BLEND)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (SILK_REFERENCE_MODES 0)",
+                         silk_mode_name(o->mode));
+    return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: unknown mode %d", (int)o->mode);
+}
 
 /* Whether point p lies in front of the near plane as the rasterizer clips:
  * z >= -w (raster.c), strictly. */
@@ -901,18 +895,15 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
                                                 i & 2 ? m->bbox_max.y : m->bbox_min.y,
                                                 i & 4 ? m->bbox_max.z : m->bbox_min.z));
     if (corners_before) return 1;
-#if SILK_SHORTCUTS
     /* every vertex placed already (frame_extras): by the same stage, so the
      * answer of the loop below, without another pass over the mesh */
-    if (f->xy_ready && f->hal == h) return f->all_before;
-#endif
+    if (SILK_DRAW_DIRECT && f->fast->xy_ready && f->hal == h) return f->fast->all_before;
     if (sphere_before_near(m, v)) return 1;
     for (uint32_t i = 0; i < m->nverts; i++)
         if (!before_near(v, m->pos[i])) return 0;
     return 1;
 }
 
-#if SILK_SHORTCUTS
 /* The depth pass of a SMOOTH frame (depth_wins) puts off the back faces
  * of its re-meshed parts, drawn both ways (frame_draw), until every other
  * triangle has written its depth (back_draw): then most of them are
@@ -930,10 +921,12 @@ static int back_faces_hidden(const frame *f, const silk_mesh *m, const silk_hal 
 static int back_last(frame *f, const silk_target *t, const int32_t *const p[3], const uint32_t c[3], uint32_t part,
                      uint32_t bit)
 {
+    frame_fast *x = f->fast;
     const int32_t *a = p[0], *b = p[1], *d = p[2];
     int64_t area = ((int64_t)b[0] - a[0]) * ((int64_t)d[1] - a[1]) - ((int64_t)d[0] - a[0]) * ((int64_t)b[1] - a[1]);
-    if (area <= 0 || t->cull_back || t->mask || t->writes || f->nback >= f->back_cap) return 0;   /* (y down: > 0 faces away) */
-    back_tri *bt = &f->back[f->nback++];
+    if (!SILK_BACK_FACES_LAST || area <= 0 || t->cull_back || t->mask || t->writes || x->nback >= x->back_cap)
+        return 0;   /* (y down: > 0 faces away) */
+    back_tri *bt = &x->back[x->nback++];
     for (int i = 0; i < 3; i++) {
         bt->xy[i][0] = p[i][0];
         bt->xy[i][1] = p[i][1];
@@ -949,13 +942,14 @@ static int back_last(frame *f, const silk_target *t, const int32_t *const p[3], 
  * its part's win. */
 static void back_draw(frame *f, silk_target *t)
 {
+    frame_fast *x = f->fast;
     silk_vertex_out v[3];
     memset(v, 0, sizeof v);
     const silk_vertex_out *pv[3] = { &v[0], &v[1], &v[2] };
     t->depth_equal = SILK_DEPTH_TIES;
     t->cull_back = 0;
-    for (uint32_t i = 0; i < f->nback; i++) {
-        const back_tri *bt = &f->back[i];
+    for (uint32_t i = 0; i < x->nback; i++) {
+        const back_tri *bt = &x->back[i];
         const int32_t *p[3] = { bt->xy[0], bt->xy[1], bt->xy[2] };
         for (int j = 0; j < 3; j++) {
             v[j].clip.z = bt->z[j];
@@ -964,12 +958,11 @@ static void back_draw(frame *f, silk_target *t)
         if (!silk_raster_reaches(t, p)) continue;
         t->drew = 0;
         silk_raster_placed(t, NULL, pv, p);
-        if (t->drew) f->won[bt->part] |= bt->bit;
+        if (t->drew) x->won[bt->part] |= bt->bit;
     }
     t->depth_equal = 0;
-    f->nback = 0;
+    x->nback = 0;
 }
-#endif
 
 /* Pass 0: g's triangles.  Passes 1 and 2 (--wire): the edges of the
  * original triangles, then of the added ones, so their red stays on top. */
@@ -979,66 +972,55 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
     const silk_frame_geom *g = &f->g;
     silk_vertex_out tmp[3];
     /* Lines alone: the surface is drawn into the depth buffer only, to hide them. */
-    const silk_hal *shade = (o->lines == SILK_LINES_ONLY && !f->siltex) || pass < 0 ? NULL : f->hal;   /* SILTEX: its stage draws its lines */
-#if SILK_SHORTCUTS
+    const silk_hal *shade = (o->lines == SILK_LINES_ONLY && !SILTEX_FRAME(f)) || pass < 0 ? NULL : f->hal;   /* SILTEX: its stage draws its lines */
     /* A share's records placed on the screen once (silk_raster_place), not
-     * once for each of its triangles at them: the triangles that cover no
-     * pixel centre - most of a re-meshed part of a fine mesh - are then
-     * known from the places alone (silk_raster_reaches), all drawn
-     * with the bits silk_raster_triangle would give them
-     * (silk_raster_placed); a triangle at a record outside a clip plane
-     * goes to silk_raster_triangle as before. */
+     * once for each of its triangles at them (SILK_PLACE_ONCE): the
+     * triangles that cover no pixel centre - most of a re-meshed part of a
+     * fine mesh - are then known from the places alone
+     * (silk_raster_reaches), all drawn with the bits silk_raster_triangle
+     * would give them (silk_raster_placed); a triangle at a record outside
+     * a clip plane goes to silk_raster_triangle as before. */
     int32_t own[PART_XY][2], (*xy)[2] = own;
-    int placed = pass <= 0 && f->part == share_part && f->cache && g->nvrec <= PART_XY;
+    int placed = SILK_PLACE_ONCE && pass <= 0 && f->part == share_part && f->cache && g->nvrec <= PART_XY;
     /* the test pays where triangles are small (as frame_draw's depth pass
      * is made only where they are large): elsewhere most of them reach a
      * pixel, and silk_raster_placed finds the others as cheaply */
     int ask = (uint64_t)f->geom.mesh->ntris * 16 > (uint64_t)t->width * t->height;
-    if (placed && f->kxy) xy = f->kxy;   /* a kept share: placed there, once a frame */
-    for (uint32_t i = 0; placed && !(f->kxy && *f->kxy_ready) && i < g->nvrec; i++)
+    int32_t (*kxy)[2] = SILK_KEEP_SHARES && placed ? f->fast->kxy : NULL;
+    if (kxy) xy = kxy;   /* a kept share: placed there, once a frame */
+    for (uint32_t i = 0; placed && !(kxy && *f->fast->kxy_ready) && i < g->nvrec; i++)
         if (!silk_raster_place(t, &f->cache[i].clip, xy[i])) xy[i][0] = VC_OUTSIDE;
-    if (placed && f->kxy) *f->kxy_ready = 1;
-#endif
+    if (kxy) *f->fast->kxy_ready = 1;
     for (uint32_t i = 0; i < g->ntri; i++) {
         uint32_t k = t->depth_equal ? g->ntri - 1 - i : i;   /* see frame_draw */
         const uint32_t *c = &g->tri[3 * k];
         int added = g->tri_added && g->tri_added[k];
-#if SILK_SHORTCUTS
         uint32_t bit = 1u << (k < 31 ? k : 31);   /* depth_wins */
-        if (won && pass == 0 && !(*won & bit)) continue;
-        t->drew = 0;
+        int wins = SILK_DEPTH_WINS && won;
+        if (wins && pass == 0 && !(*won & bit)) continue;
+        if (SILK_DEPTH_WINS) t->drew = 0;
         if (placed && xy[c[0]][0] != VC_OUTSIDE && xy[c[1]][0] != VC_OUTSIDE && xy[c[2]][0] != VC_OUTSIDE) {
             const int32_t *p[3] = { xy[c[0]], xy[c[1]], xy[c[2]] };
-            if (won && pass < 0 && back_last(f, t, p, c, (uint32_t)(won - f->won), bit)) continue;
+            if (wins && pass < 0 && back_last(f, t, p, c, (uint32_t)(won - f->fast->won), bit)) continue;
             if (!ask || silk_raster_reaches(t, p)) {
                 const silk_vertex_out *v[3] = { &f->cache[c[0]], &f->cache[c[1]], &f->cache[c[2]] };
                 silk_raster_placed(t, shade, v, p);
-                if (won && pass < 0 && t->drew) *won |= bit;
+                if (wins && pass < 0 && t->drew) *won |= bit;
             }
             continue;
         }
-#else
-        (void)won;
-#endif
-        if (pass <= 0)
+        if (pass <= 0) {
             silk_raster_triangle(t, shade, vertex_out(f, c[0], &tmp[0]), vertex_out(f, c[1], &tmp[1]),
                                  vertex_out(f, c[2], &tmp[2]));
-#if SILK_SHORTCUTS
-        if (won && pass < 0 && t->drew) *won |= bit;
-#endif
-#if SILK_LINES
-        else if (added == pass - 1)
+            if (wins && pass < 0 && t->drew) *won |= bit;
+        } else if (SILK_LINES && added == pass - 1) {
             for (int e = 0; e < 3; e++)
                 silk_raster_line(t, vertex_out(f, c[e], &tmp[0]), vertex_out(f, c[(e + 1) % 3], &tmp[1]),
                                  added ? o->wire_new_rgb : o->wire_rgb);
-#else
-        (void)added;
-        (void)o;
-#endif
+        }
     }
 }
 
-#if SILK_SHORTCUTS
 /* Every vertex of the mesh placed on the screen of t (vc_xy) for
  * draw_direct, once a frame, before its first triangle is drawn (vertices
  * that only triangles outside the band use are so few it is cheaper than
@@ -1049,16 +1031,17 @@ static void draw_tris(frame *f, const silk_render_opts *o, silk_target *t, int p
 static void place_vertices(frame *f, const silk_target *t)
 {
     const silk_mesh *m = f->geom.mesh;
+    frame_fast *x = f->fast;
     uint32_t t0 = silk_stage_start(f->clock);
     int before = 1;
     for (uint32_t p = 0; p < m->nverts; p++) {
-        const silk_vec4 *c = &f->vc_clip[p];
-        f->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
+        const silk_vec4 *c = &x->vc_clip[p];
+        x->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
         before &= c->w > 0 && (int64_t)c->z + c->w > 0;   /* before_near's test */
-        if (!silk_raster_place(t, c, &f->vc_xy[2 * p])) f->vc_xy[2 * p] = VC_OUTSIDE;
+        if (!silk_raster_place(t, c, &x->vc_xy[2 * p])) x->vc_xy[2 * p] = VC_OUTSIDE;
     }
-    f->all_before = (uint8_t)before;
-    f->xy_ready = 1;
+    x->all_before = (uint8_t)before;
+    x->xy_ready = 1;
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
 }
 
@@ -1078,28 +1061,27 @@ static void place_vertices(frame *f, const silk_target *t)
 static int draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint32_t k)
 {
     const silk_mesh *m = f->geom.mesh;
+    frame_fast *x = f->fast;
     /* written out (every triangle of the mesh comes here every band) */
     const silk_index *tv = &m->tri[3 * (size_t)k];
     const uint32_t nv = m->nverts;
     if (tv[0] >= nv || tv[1] >= nv || tv[2] >= nv) return 0;
-    const int32_t *xy[3] = { &f->vc_xy[2 * (size_t)tv[0]], &f->vc_xy[2 * (size_t)tv[1]], &f->vc_xy[2 * (size_t)tv[2]] };
+    const int32_t *xy[3] = { &x->vc_xy[2 * (size_t)tv[0]], &x->vc_xy[2 * (size_t)tv[1]], &x->vc_xy[2 * (size_t)tv[2]] };
     int placed = (xy[0][0] != VC_OUTSIDE) & (xy[1][0] != VC_OUTSIDE) & (xy[2][0] != VC_OUTSIDE);
     t->cull_back = f->cull;   /* frame_draw's rule for triangles drawn as they are */
     if (placed && !silk_raster_reaches(t, xy)) return 1;
     const silk_vertex_out *v[3];
     uint32_t s[3];
     for (uint32_t i = 0; i < 3; i++) {
-        if ((s[i] = corner_slot(f, 3 * k + i, NULL, &f->vc_clip[m->tri[3 * k + i]])) == UINT32_MAX) return 0;
-        v[i] = &f->vc[s[i]];
+        if ((s[i] = corner_slot(f, 3 * k + i, NULL, &x->vc_clip[m->tri[3 * k + i]])) == UINT32_MAX) return 0;
+        v[i] = &x->vc[s[i]];
     }
     if (s[0] == s[1] || s[1] == s[2] || s[2] == s[0]) return 0;   /* a later corner may have taken an earlier's slot */
     if (placed) silk_raster_placed(t, shade, v, xy);
     else silk_raster_triangle(t, shade, v[0], v[1], v[2]);
     return 1;
 }
-#endif
 
-#if SILK_SHORTCUTS
 /* Whether input triangle k may be drawn by draw_direct: in FLAT every one;
  * in SMOOTH one away from the silhouette, neither on it nor carrying its
  * points, with no vertex moved, whose share is its three CORNER records
@@ -1115,20 +1097,33 @@ static inline int direct_ok(const frame *f, uint32_t k)
     return !vo || (vo[tv[0]] == SILK_PLAN_NONE && vo[tv[1]] == SILK_PLAN_NONE && vo[tv[2]] == SILK_PLAN_NONE);
 }
 
-#endif
+/* The pen-and-ink lines over band t (lines.c), depth-tested. */
+static void draw_lines(const frame *f, const silk_render_opts *o, silk_target *t)
+{
+    const silk_frame_geom *g = &f->g;
+    silk_vertex_out tmp[2];
+    for (uint32_t i = 0; i < g->nlines; i++) {
+        uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
+        uint32_t j = g->line_start[i], end = g->line_start[i + 1];
+        if (j == end) continue;
+        line_out(f, j, &tmp[0]);
+        for (; j + 1 < end; j++) {
+            line_out(f, j + 1, &tmp[1]);
+            silk_raster_line(t, &tmp[0], &tmp[1], rgb);
+            tmp[0] = tmp[1];
+        }
+    }
+}
 
 /* The frame's triangles part by part (only the parts that reach into the
  * band), then the lines. */
 static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 {
-    const silk_frame_geom *g = &f->g;
-    silk_vertex_out tmp[2];
+    frame_fast *x = f->fast;
     uint32_t t0 = silk_stage_start(f->clock);
     silk_target_clear(t, o->bg_rgb);
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
-#if SILK_CLIP_MODE
-    if (f->clip) silk_clip_stencil(f->clip, t);
-#endif
+    if (CLIP_FRAME(f)) silk_clip_stencil(f->clip, t);
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
      * near as the nearest, so each pixel is shaded once (docs/raster.md).
      * In reverse order: of fragments at equal depth the first drawn keeps
@@ -1138,15 +1133,13 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
      * rebuild every share twice a band, which costs more than the shading
      * it spares (a smooth bunny-500 frame on the Cortex-M3 board: 47 M
      * instructions with it, 37 M without; docs/small-devices.md). */
-    uint64_t ntri = f->part == share_part ? f->geom.mesh->ntris : g->ntri;
+    uint64_t ntri = f->part == share_part ? f->geom.mesh->ntris : f->g.ntri;
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
-                      !f->siltex && (f->part != share_part || t->rows >= t->height);
+                      !SILTEX_FRAME(f) && (f->part != share_part || t->rows >= t->height);
     uint32_t *wins = NULL;   /* depth_wins, where there is a depth pass */
-#if SILK_SHORTCUTS
-    if (f->vc_xy && !f->xy_ready) place_vertices(f, t);
-    if (depth_first) wins = f->won;
-#endif
+    if (SILK_DRAW_DIRECT && x->vc_xy && !x->xy_ready) place_vertices(f, t);
+    if (SILK_DEPTH_WINS && depth_first) wins = x->won;
     for (int pass = depth_first ? -1 : 0; pass < (o->wire ? 3 : 1); pass++) {
         for (uint32_t i = 0; i < f->nparts; i++) {
             t->depth_equal = pass == 0 && depth_first;
@@ -1158,8 +1151,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
                 else if (!*won) continue;   /* no pixel to shade: not rebuilt */
             }
             if (part_misses(f, k, t->y0, t->y0 + t->rows - 1)) continue;
-#if SILK_SHORTCUTS
-            if (pass <= 0 && f->vc_xy && (!f->smooth || direct_ok(f, k))) {
+            if (SILK_DRAW_DIRECT && pass <= 0 && x->vc_xy && (!f->smooth || direct_ok(f, k))) {
                 t0 = silk_stage_start(f->clock);
                 t->drew = 0;
                 int drawn = draw_direct(f, t, pass < 0 ? NULL : f->hal, k);
@@ -1169,50 +1161,29 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
                     continue;
                 }
             }
-#endif
             f->part(f, k);
             t->cull_back = pass <= 0 && f->cull && (!f->smooth || f->plain);   /* --wire draws every edge */
             /* SILTEX: a back face of the hull is seen from inside it, where
              * no visibility function was made: hull behind shows instead */
-            t->cull_back |= pass <= 0 && f->siltex;
+            t->cull_back |= pass <= 0 && SILTEX_FRAME(f);
             t0 = silk_stage_start(f->clock);
             draw_tris(f, o, t, pass, won);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
-#if SILK_SHORTCUTS
-        if (f->nback) {   /* the depth pass's back faces put off (back_last) */
+        if (SILK_BACK_FACES_LAST && x->nback) {   /* the depth pass's back faces put off (back_last) */
             t0 = silk_stage_start(f->clock);
             back_draw(f, t);
             silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
         }
-#endif
     }
     t->depth_equal = t->cull_back = 0;
-#if SILK_CLIP_MODE
-    if (f->clip) {
+    if (CLIP_FRAME(f)) {
         t->mask = NULL;
         silk_clip_antialias(f->clip, t, o->bg_rgb);
     }
-#endif
-#if SILK_LINES
-    for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
-        uint32_t rgb = g->line_feature[i] ? o->line_feature_rgb : o->line_rgb;
-        uint32_t j = g->line_start[i], end = g->line_start[i + 1];
-        if (j == end) continue;
-        line_out(f, j, &tmp[0]);
-        for (; j + 1 < end; j++) {
-            line_out(f, j + 1, &tmp[1]);
-            silk_raster_line(t, &tmp[0], &tmp[1], rgb);
-            tmp[0] = tmp[1];
-        }
-    }
-#else
-    (void)g;
-    (void)tmp;
-#endif
+    if (SILK_LINES && o->lines) draw_lines(f, o, t);
 }
 
-#if SILK_SHORTCUTS && SILK_AA
 /* The outline of input triangle k drawn as it is (direct_ok) without
  * building its share: silk_aa_share reads of such a share its one
  * triangle of three records and their clip coordinates, which
@@ -1221,7 +1192,8 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
 {
     const silk_mesh *m = f->geom.mesh;
-    if (!f->vc_xy || !f->xy_ready || !direct_ok(f, k)) return 0;
+    const frame_fast *x = f->fast;
+    if (!x->vc_xy || !x->xy_ready || !direct_ok(f, k)) return 0;
     silk_vertex_out out[3];   /* the clip coordinates alone: the rest is not read */
     uint32_t tri[3] = { 0, 1, 2 };
     silk_frame_geom g;
@@ -1232,18 +1204,19 @@ static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
     for (uint32_t i = 0; i < 3; i++) {
         uint32_t p = m->tri[3 * k + i];
         if (p >= m->nverts) return 0;
-        out[i].clip = f->vc_clip[p];
+        out[i].clip = x->vc_clip[p];
     }
     silk_aa_share(aa, m, v, &g, out, k);
     return 1;
 }
 
-/* The first outline candidate (f->cand) after k, or nparts. */
+/* The first outline candidate (fast->cand) after k, or nparts. */
 static uint32_t cand_after(const frame *f, uint32_t k)
 {
+    const uint8_t *cand = f->fast->cand;
     while (++k < f->nparts)
-        if (!f->cand[k / 8]) k |= 7;   /* eight at once, as frame_aa skips them */
-        else if (f->cand[k / 8] >> (k % 8) & 1) return k;
+        if (!cand[k / 8]) k |= 7;   /* eight at once, as frame_aa skips them */
+        else if (cand[k / 8] >> (k % 8) & 1) return k;
     return f->nparts;
 }
 
@@ -1254,56 +1227,44 @@ static uint32_t cand_after(const frame *f, uint32_t k)
  * after's corners are fetched while k's outline is worked out (some two
  * thousand instructions).  It reads nothing itself but the next
  * candidate's corners and sides, fetched at the candidate before; next
- * keeps the two candidates after the last k asked (none: UINT32_MAX). */
-#if defined(__GNUC__)
-__attribute__((always_inline))   /* gcc takes a call that only prefetches for one without effect, and drops it */
-#endif
-static inline void aa_prefetch(const frame *f, uint32_t k, uint32_t next[2])
+ * keeps the two candidates after the last k asked (none: UINT32_MAX).
+ * (Inline: gcc takes a call that only prefetches for one without effect,
+ * and drops it.) */
+SILK_ALWAYS_INLINE static inline void aa_prefetch(const frame *f, uint32_t k, uint32_t next[2])
 {
-#if defined(__GNUC__)
     const silk_mesh *m = f->geom.mesh;
     if (next[0] == k) next[0] = next[1];   /* found at the candidate before */
     else next[0] = cand_after(f, k);
     uint32_t c1 = next[0], c2 = next[1] = c1 < f->nparts ? cand_after(f, c1) : f->nparts;
     if (c2 < f->nparts) {
-        __builtin_prefetch(&m->tri[3 * (size_t)c2]);
-        if (m->tri_edge) __builtin_prefetch(&m->tri_edge[3 * (size_t)c2]);
+        SILK_PREFETCH(&m->tri[3 * (size_t)c2]);
+        if (m->tri_edge) SILK_PREFETCH(&m->tri_edge[3 * (size_t)c2]);
     }
     for (uint32_t i = 0; c1 < f->nparts && i < 3; i++) {
         uint32_t p = m->tri[3 * (size_t)c1 + i], e = m->tri_edge ? m->tri_edge[3 * (size_t)c1 + i] : SILK_NO_INDEX;
-        if (p < m->nverts) __builtin_prefetch(&f->vc_clip[p]);
-        if (e < m->nedges) __builtin_prefetch(&m->edge[e]);
+        if (p < m->nverts) SILK_PREFETCH(&f->fast->vc_clip[p]);
+        if (e < m->nedges) SILK_PREFETCH(&m->edge[e]);
     }
-#else
-    (void)f;
-    (void)k;
-    (void)next;
-#endif
 }
-#endif
 
-/* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
- * leaves them out: about 3.0 KiB of Cortex-M3 code and a band's worth of
- * scratch): the frames drawn
- * share by share (FLAT and SMOOTH without lines; CLIP's outline is the
- * map's, anti-aliased by clip.c), not under --wire's edges.  The shares that can
- * hold an outline are rebuilt once more; a band that is not the whole
- * frame first draws the rows next to it, which its edge pixels blend with. */
+/* Anti-aliased outlines (aa.c) over band t, just drawn (a build with
+ * SILK_AA 0 leaves them out: about 3.0 KiB of Cortex-M3 code and a band's
+ * worth of scratch): the frames drawn share by share (FLAT and SMOOTH
+ * without lines; CLIP's outline is the map's, anti-aliased by clip.c), not
+ * under --wire's edges.  The shares that can hold an outline are rebuilt
+ * once more; a band that is not the whole frame first draws the rows next
+ * to it, which its edge pixels blend with. */
 static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
                      silk_frame_stats *stats)
 {
-#if !SILK_AA
-    (void)f;
-    (void)a;
-    (void)v;
-    (void)o;
-    (void)stats;
-    silk_aa_alpha(t);
-#else
+    if (!SILK_AA) {
+        silk_aa_alpha(t);
+        return;
+    }
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip &&   /* clip.c does its own */
-                 !f->siltex;   /* the hull's edges are not siltex's outline */
+    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !CLIP_FRAME(f) &&   /* clip.c does its own */
+                 !SILTEX_FRAME(f);   /* the hull's edges are not siltex's outline */
     if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);
@@ -1317,37 +1278,28 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.sil = f->smooth ? &f->sil : NULL;
     aa.hal = f->hal;
     aa.geom = &f->geom;
-#if SILK_SHORTCUTS
-    if (f->cand && !f->cand_ready) {
-        silk_aa_candidates(&aa, f->geom.mesh, v, f->cand);
-        f->cand_ready = 1;
+    frame_fast *x = f->fast;
+    const uint8_t *cand = SILK_AA_CANDIDATES ? x->cand : NULL;   /* silk_aa_candidates', or NULL */
+    if (cand && !x->cand_ready) {
+        silk_aa_candidates(&aa, f->geom.mesh, v, x->cand);
+        x->cand_ready = 1;
     }
     uint32_t next[2] = { UINT32_MAX, UINT32_MAX };   /* aa_prefetch's */
-#endif
     for (uint32_t k = 0; k < f->nparts; k++) {
-#if SILK_SHORTCUTS
-        if (f->cand && !f->cand[k / 8]) {   /* eight triangles at once: most have no outline side */
+        if (cand && !cand[k / 8]) {   /* eight triangles at once: most have no outline side */
             k |= 7;
             continue;
         }
-#endif
         if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
-#if SILK_SHORTCUTS
-        if (f->cand ? !(f->cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
-#else
-        if (!silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
-#endif
-#if SILK_SHORTCUTS
-        if (f->cand && f->vc_xy && f->xy_ready && !f->smooth) aa_prefetch(f, k, next);
-        if (aa_direct(f, &aa, v, k)) continue;
-#endif
+        if (cand ? !(cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
+        if (SILK_DRAW_DIRECT && cand && x->vc_xy && x->xy_ready && !f->smooth) aa_prefetch(f, k, next);
+        if (SILK_DRAW_DIRECT && aa_direct(f, &aa, v, k)) continue;
         f->part(f, k);
         silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
     }
     silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
     stats->aa_aliased += aa.dropped;
     silk_arena_top_release(a, &mark);
-#endif
 }
 
 /* What a prepared frame may add for speed: back faces culled where they
@@ -1356,20 +1308,13 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o,
                          const silk_target *t)
 {
-#if !SILK_SHORTCUTS
-    f->cull = back_faces_hidden(f, m, h, o);
-#endif
     f->peak_before = a->top_peak;
     vertex_cache(f, a, o);
-#if SILK_SHORTCUTS
-    if (f->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
+    if (SILK_DRAW_DIRECT && f->fast->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
     f->cull = back_faces_hidden(f, m, h, o);
-#endif
     facing_memo(f, a, o);
     keep_tangents(f, a, o);
-#if SILK_SHORTCUTS
     depth_wins(f, a, o, t);
-#endif
     keep_shares(f, a, o, t);
 }
 
@@ -1382,13 +1327,12 @@ static size_t frame_need(const frame *f, const silk_arena *a, const silk_arena_m
 {
     size_t after = a->top_peak - f->vc_bytes - f->tan_bytes;   /* >= mark->top */
     size_t need = after > f->peak_before ? after : f->peak_before;
-#if SILK_SHORTCUTS
     /* what the plan kept lies under everything taken after it (silk_remesh_keep) */
-    if (f->sil.kept_bytes) {
-        need -= f->sil.kept_bytes;
-        if (need < f->sil.kept_need) need = f->sil.kept_need;
+    const silk_sil_keep *k = SILK_SIL_KEEPS && f->fast ? &f->fast->keep : NULL;
+    if (k && k->kept_bytes) {
+        need -= k->kept_bytes;
+        if (need < k->kept_need) need = k->kept_need;
     }
-#endif
     return need - mark->top;
 }
 
@@ -1416,12 +1360,15 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;
     frame f;
-    silk_status st = frame_prepare(&f, a, m, v, h, o, t->rows, stats, err);
+    frame_fast fast;   /* (compiled away, off the stack, in a build without the shortcuts) */
+    frame_siltex sx;   /* (the same without SILTEX mode) */
+    silk_status st = frame_prepare(&f, FRAME_FAST ? &fast : NULL, SILK_SILTEX_MODE ? &sx : NULL, a, m, v, h, o,
+                                   t->rows, stats, err);
     if (st == SILK_OK) {
         frame_extras(&f, a, m, h, o, t);
         frame_draw(&f, o, t);
         frame_aa(&f, a, v, o, t, stats);
-        if (f.clip) stats->clip_spans = f.clip->spans;
+        if (CLIP_FRAME(&f)) stats->clip_spans = f.clip->spans;
     }
     stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
@@ -1442,7 +1389,10 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     silk_arena_mark mark = silk_arena_top_mark(a);
     a->top_peak = a->top;
     frame f;
-    silk_status st = frame_prepare(&f, a, m, v, h, o, band->rows, stats, err);
+    frame_fast fast;   /* (compiled away, off the stack, in a build without the shortcuts) */
+    frame_siltex sx;   /* (the same without SILTEX mode) */
+    silk_status st = frame_prepare(&f, FRAME_FAST ? &fast : NULL, SILK_SILTEX_MODE ? &sx : NULL, a, m, v, h, o,
+                                   band->rows, stats, err);
     const int rows = band->rows;
     if (st == SILK_OK && f.nparts > 1 && rows < band->height)
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
@@ -1460,7 +1410,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     }
     band->y0 = 0;
     band->rows = rows;
-    if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
+    if (st == SILK_OK && CLIP_FRAME(&f)) stats->clip_spans = f.clip->spans;
     stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
     return st;

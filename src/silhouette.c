@@ -19,6 +19,7 @@
 #include "stages.h"
 #include "curve.h"
 #include "mesh_build.h"
+#include "compiler.h"
 
 /* ---- small helpers ---------------------------------------------------------- */
 
@@ -43,7 +44,6 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     else { s->uv0 = SILK_PLAN_NONE; s->uv1 = SILK_PLAN_NONE; }
 }
 
-#if SILK_AA
 static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 
 static int32_t abs32(int32_t v) { return v < 0 ? -v : v; }   /* |v| < 2^31 here */
@@ -51,25 +51,22 @@ static int32_t abs32(int32_t v) { return v < 0 ? -v : v; }   /* |v| < 2^31 here 
 /* The smallest s with v >> s below 2^14. */
 static int cut14(uint64_t v)
 {
-#if defined(__GNUC__)
-    int n = v ? 64 - __builtin_clzll(v) : 0;
+    int n = silk_bitlen64(v);
     return n > 14 ? n - 14 : 0;
-#else
-    int s = 0;
-    while ((v >> s) >= (1u << 14)) s++;
-    return s;
-#endif
 }
 
-/* silk_view_to_eye and silk_tri_cross64 for triangle t.  A host build has
- * them inline (the outline asks every triangle every frame); a board's
- * (-DSILK_NO_VERTEX_CACHE) calls them and keeps the code bytes. */
-#if defined(__GNUC__) && SILK_SHORTCUTS
-__attribute__((always_inline))
-#endif
-static inline silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t, int64_t c[3])
+/* silk_view_to_eye and silk_tri_cross64 for triangle t: written out where
+ * the build writes out its usual cases (SILK_FAST_CASES: the outline asks
+ * every triangle every frame), called on a board, which keeps the code
+ * bytes. */
+SILK_FAST_INLINE static inline silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uint32_t t,
+                                                      int64_t c[3])
 {
-#if SILK_SHORTCUTS
+    if (!SILK_FAST_CASES) {
+        silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+        silk_tri_cross64(m, t, c);
+        return e;
+    }
     const silk_index *tv = &m->tri[3 * t];
     silk_vec3 p0 = m->pos[tv[0]], p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
     int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
@@ -78,13 +75,7 @@ static inline silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uin
     c[1] = az * bx - ax * bz;
     c[2] = ax * by - ay * bx;
     return v->cam.ortho ? silk_v3_neg(v->forward) : silk_v3_sub(v->cam.eye, p0);
-#else
-    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
-    silk_tri_cross64(m, t, c);
-    return e;
-#endif
 }
-#endif
 
 /* The face normal is normalised (a square root) before the dot product
  * with the direction to the eye, so that every caller gets the same
@@ -93,29 +84,31 @@ static inline silk_vec3 front_inputs(const silk_mesh *m, const silk_view *v, uin
  * component keeps 13 bits): where the cut ones already make an angle with
  * |cos| above 2^-8, the sign is the rounded one's.  Only triangles seen
  * nearly edge-on (and zero-area ones) are normalised.  The anti-aliased
- * outline asks every triangle every frame; a build without it
- * (-DSILK_NO_AA) asks only of feature edges' triangles and keeps the
- * 0.4 KiB of Cortex-M3 code the shortcut takes. */
-#if defined(__GNUC__) && SILK_SHORTCUTS
-__attribute__((always_inline))   /* in silk_sil_tri_fronts' loop: every triangle, every frame */
-#endif
-static inline int front_of(const silk_mesh *m, const silk_view *v, uint32_t t)
+ * outline asks every triangle every frame; a build without it (SILK_AA 0)
+ * asks only of feature edges' triangles and keeps the 0.4 KiB of
+ * Cortex-M3 code the cut test takes.  (Inline where the usual cases are
+ * written out: silk_sil_tri_fronts' loop asks every triangle.) */
+SILK_FAST_INLINE static inline int front_of(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
-#if SILK_AA
+    if (!SILK_AA) {
+        silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+        silk_vec3 fn = silk_mesh_face_normal(m, t);
+        return silk_v3_dot64(fn, e) > 0;
+    }
     int64_t c[3];
     silk_vec3 e = front_inputs(m, v, t, c);
-#if SILK_SHORTCUTS
-    /* A 64-bit host first tries the uncut vectors, where their L1 norms
-     * keep every product within 63 bits (a mesh within +-2^3 units of the
-     * eye): |c.e| > cn en / 2^10 >= |c| |e| / 2^10 is an angle with |cos|
-     * above 2^-10, far more than the rounded normal's tilt of a few 2^-16
-     * can turn, so the sign is its. */
-    uint64_t cn = mag(c[0]) + mag(c[1]) + mag(c[2]), en = mag(e.x) + mag(e.y) + mag(e.z);
-    if (cn < ((uint64_t)1 << 40) && en < ((uint64_t)1 << 22)) {
-        int64_t d = c[0] * e.x + c[1] * e.y + c[2] * e.z;   /* |d| <= cn en < 2^62 */
-        if (mag(d) > (cn * en >> 10)) return d > 0;
+    /* Where the usual cases are written out (SILK_FAST_CASES), the uncut
+     * vectors first, where their L1 norms keep every product within 63
+     * bits (a mesh within +-2^3 units of the eye): |c.e| > cn en / 2^10 >=
+     * |c| |e| / 2^10 is an angle with |cos| above 2^-10, far more than the
+     * rounded normal's tilt of a few 2^-16 can turn, so the sign is its. */
+    if (SILK_FAST_CASES) {
+        uint64_t cn = mag(c[0]) + mag(c[1]) + mag(c[2]), en = mag(e.x) + mag(e.y) + mag(e.z);
+        if (cn < ((uint64_t)1 << 40) && en < ((uint64_t)1 << 22)) {
+            int64_t d = c[0] * e.x + c[1] * e.y + c[2] * e.z;   /* |d| <= cn en < 2^62 */
+            if (mag(d) > (cn * en >> 10)) return d > 0;
+        }
     }
-#endif
     int sc = cut14(mag(c[0]) | mag(c[1]) | mag(c[2])), se = cut14(mag(e.x) | mag(e.y) | mag(e.z));
     /* |c_i|, |e_i| < 2^14: d below 2^30; |c| |e| <= n1 e1 < 2^32 (written out: every triangle, every frame) */
     int32_t x0 = (int32_t)(c[0] >> sc), x1 = (int32_t)(c[1] >> sc), x2 = (int32_t)(c[2] >> sc);
@@ -124,9 +117,6 @@ static inline int front_of(const silk_mesh *m, const silk_view *v, uint32_t t)
     uint32_t n1 = (uint32_t)abs32(x0) + (uint32_t)abs32(x1) + (uint32_t)abs32(x2),
              e1 = (uint32_t)abs32(y0) + (uint32_t)abs32(y1) + (uint32_t)abs32(y2);
     if ((uint32_t)abs32(d) > (n1 * e1 >> 8)) return d > 0;
-#else
-    silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
-#endif
     silk_vec3 fn = silk_mesh_face_normal(m, t);
     return silk_v3_dot64(fn, e) > 0;
 }
@@ -138,9 +128,9 @@ int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
     return front_of(m, v, t);
 }
 
-#if SILK_SHORTCUTS
 void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing)
 {
+    if (!SILK_AA_CANDIDATES) return;   /* (only its caller's) */
     const silk_index *tv = m->tri;
     for (uint32_t t = 0; t < m->ntris; t += 4) {
         unsigned b = 0;
@@ -152,7 +142,6 @@ void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing
         facing[t / 4] = (uint8_t)b;
     }
 }
-#endif
 
 /* Triangles whose three normals and corners are usable; anything else is
  * drawn as it is (never smoothed), so a broken index cannot crash a frame. */
@@ -167,10 +156,7 @@ int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
 
 /* The point at u on edge e and its normal, as side s sees the edge.  (It
  * and edge_point_attrs inline: a board has silk_sil_edge_point alone.) */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void edge_point_pn(const silk_sil_frame *f, const silk_mesh *m, const silk_sil_edge *e,
+SILK_ALWAYS_INLINE static inline void edge_point_pn(const silk_sil_frame *f, const silk_mesh *m, const silk_sil_edge *e,
                                  const silk_sil_side *s, silk_fx u, silk_vec3 *p, silk_vec3 *n)
 {
     silk_curve c;
@@ -182,10 +168,7 @@ static inline void edge_point_pn(const silk_sil_frame *f, const silk_mesh *m, co
 }
 
 /* The uv and colour at u on edge e, as side s sees the edge. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void edge_point_attrs(const silk_mesh *m, const silk_sil_edge *e, const silk_sil_side *s, silk_fx u,
+SILK_ALWAYS_INLINE static inline void edge_point_attrs(const silk_mesh *m, const silk_sil_edge *e, const silk_sil_side *s, silk_fx u,
                                     silk_vec2 *uv, uint32_t *rgb)
 {
     if (s->uv0 != SILK_PLAN_NONE && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
@@ -206,26 +189,28 @@ void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
     edge_point_attrs(m, e, s, u, uv, rgb);
 }
 
-#if SILK_SHORTCUTS
 void silk_sil_pair_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
                          const silk_sil_pair *pr, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
     size_t i = (size_t)(pr - f->pairs);
-    if (!f->pair_pn) {
+    silk_sil_keep *k = f->keep;   /* its memo, written through the plan's const (silk_sil_side_edge's way) */
+    if (!SILK_KEEP_SEGMENTS) {   /* (its only caller takes silk_sil_edge_point then) */
+        silk_sil_edge_point(f, e, s, pr->u, p, n, uv, rgb);
+        return;
+    }
+    if (!k || !k->pair_pn) {
         edge_point_pn(f, f->m, e, s, pr->u, p, n);
     } else {
         /* the pair's normals are the side's (side_pair matched them) */
-        silk_sil_frame *memo = (silk_sil_frame *)f;
-        if (!f->pair_ready[i]) {
-            edge_point_pn(f, f->m, e, s, pr->u, &memo->pair_pn[2 * i], &memo->pair_pn[2 * i + 1]);
-            memo->pair_ready[i] = 1;
+        if (!k->pair_ready[i]) {
+            edge_point_pn(f, f->m, e, s, pr->u, &k->pair_pn[2 * i], &k->pair_pn[2 * i + 1]);
+            k->pair_ready[i] = 1;
         }
-        *p = f->pair_pn[2 * i];
-        *n = f->pair_pn[2 * i + 1];
+        *p = k->pair_pn[2 * i];
+        *n = k->pair_pn[2 * i + 1];
     }
     edge_point_attrs(f->m, e, s, pr->u, uv, rgb);
 }
-#endif
 
 uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u)
 {
@@ -297,11 +282,9 @@ size_t silk_sil_keep_tangents(silk_sil_frame *f, size_t room)
     size_t fit = room > SILK_ARENA_ALIGN ? (room - SILK_ARENA_ALIGN) / (2 * sizeof *f->tan_kept) : 0;
     uint32_t n = fit < f->nedges ? (uint32_t)fit : f->nedges;
     if (f->tan_kept || n == 0) return 0;
-#if SILK_SHORTCUTS
-    silk_vec3 *t = silk_arena_array_top_unfilled(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);   /* every one written below */
-#else
-    silk_vec3 *t = silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
-#endif
+    /* every one written below: unfilled, where the build spends the code (SILK_FAST_CASES) */
+    silk_vec3 *t = SILK_FAST_CASES ? silk_arena_array_top_unfilled(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME)
+                                   : silk_arena_array_top(f->a, 2 * (size_t)n, sizeof *t, SILK_MEM_FRAME);
     if (!t) return 0;
     for (uint32_t w = 0; w < n; w++) edge_tangents(f, &f->edges[w], &t[2 * w]);
     f->tan_kept = t;
@@ -347,14 +330,13 @@ static void chain_insert(silk_fx *c, uint32_t *n, silk_fx u)
 /* ---- the stage ----------------------------------------------------------------- */
 
 /* Whether triangle t is whole (silk_sil_tri_ok), and then its sides'
- * edges in e.  A host's mesh has them listed (tri_edge): every triangle
+ * edges in e.  A loaded mesh has them listed (tri_edge): every triangle
  * is tested every frame, so there the test is written out, each index
- * read once; a board's packed mesh finds them (-DSILK_NO_VERTEX_CACHE
- * keeps the code bytes). */
+ * read once (SILK_PLAN_BY_EDGES); a board's packed mesh finds them, and
+ * its build keeps the code bytes. */
 static int tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
 {
-#if SILK_SHORTCUTS
-    if (m->tri_edge) {
+    if (SILK_PLAN_BY_EDGES && m->tri_edge) {
         const silk_index *tv = &m->tri[3 * (size_t)t], *tn = &m->tri_normal[3 * (size_t)t],
                          *te = &m->tri_edge[3 * (size_t)t];
         uint32_t nv = m->nverts, nn = m->nnormals, ne = m->nedges;
@@ -364,7 +346,6 @@ static int tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
         return (tv[0] < nv) & (tv[1] < nv) & (tv[2] < nv) & (tn[0] < nn) & (tn[1] < nn) & (tn[2] < nn) &
                (e[0] < ne) & (e[1] < ne) & (e[2] < ne);
     }
-#endif
     if (!silk_sil_tri_ok(m, t)) return 0;
     for (uint32_t k = 0; k < 3; k++) e[k] = silk_mesh_tri_edge(m, t, k);
     return 1;
@@ -378,13 +359,12 @@ static void mark_edge(silk_sil_frame *f, silk_index e, uint32_t *n)
     f->carrying[e >> 3] |= bit;
 }
 
-#if SILK_SHORTCUTS
 /* Whether the sides on the carrying edges may be found from the edges'
- * triangles instead of a pass over every triangle: with listed edges
- * (tri_edge) and no edge of more than two triangles, edge.t names every
- * triangle with a side on the edge (silk_mesh_build), so the work is the
- * silhouette's, not the mesh's.  A host's shortcut: a board's packed mesh
- * has no tri_edge. */
+ * triangles instead of a pass over every triangle (SILK_PLAN_BY_EDGES):
+ * with listed edges (tri_edge) and no edge of more than two triangles,
+ * edge.t names every triangle with a side on the edge (silk_mesh_build),
+ * so the work is the silhouette's, not the mesh's.  A board's packed mesh
+ * has no tri_edge, and its build keeps the code bytes. */
 static int by_edges(const silk_mesh *m)
 {
     return m->tri_edge && !m->nnonmanifold_edges;
@@ -452,7 +432,23 @@ static void find_whole(silk_sil_frame *f, int features, uint32_t *nwork)
         }
     }
 }
-#endif
+
+/* The carrying edges ranked (carry_rank, silk_sil_slot), where the caller
+ * gave the plan room to keep them (SILK_CARRY_RANK); bits: carrying's bytes. */
+static void rank_carrying(silk_sil_frame *f, size_t bits)
+{
+    silk_arena *a = f->a;
+    size_t free0 = silk_arena_free_bytes(a), peak = a->top_peak;
+    size_t want = bits * sizeof *f->carry_rank + SILK_ARENA_ALIGN;
+    if (want <= f->keep->room && silk_sil_keep_fits(want, free0) &&
+        (f->carry_rank = silk_arena_array_top_unfilled(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
+        for (size_t i = 0, r = 0; i < bits; i++) {
+            f->carry_rank[i] = (uint32_t)r;
+            for (unsigned b = f->carrying[i]; b; b &= b - 1) r++;
+        }
+        silk_sil_kept(f, free0, peak);
+    }
+}
 
 /* Visibility of the normals (III-B), the silhouette triangles and the
  * front-facing triangles next to a feature edge (tri_state), and a slot for
@@ -483,59 +479,47 @@ static silk_status find_triangles(silk_sil_frame *f)
     int features = m->nfeature_edges > 0 || m->nboundary_edges > 0 || m->nnonmanifold_edges > 0;
     uint32_t nwork = 0;
     f->nsil = 0;
-#if SILK_SHORTCUTS
-    if (by_edges(m) && all_whole(m)) find_whole(f, features, &nwork);
-    else
-#endif
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        uint8_t st = 0;
-        silk_index e[3];
-        f->tri_state[t] = SILK_TS_BROKEN;   /* tested once here, read by lay_out_edges */
-        if (!tri_edges(m, t, e)) continue;
-        const silk_index *tn = &m->tri_normal[3 * t];
-        uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
-        if (v0 != v1 || v1 != v2) {
-            uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
-            st |= (uint8_t)(SILK_TS_SIL | lone);
-            f->nsil++;
-            mark_edge(f, e[lone], &nwork);
-            mark_edge(f, e[(lone + 2) % 3], &nwork);
+    if (SILK_PLAN_BY_EDGES && by_edges(m) && all_whole(m)) {
+        find_whole(f, features, &nwork);
+    } else {
+        for (uint32_t t = 0; t < m->ntris; t++) {
+            uint8_t st = 0;
+            silk_index e[3];
+            f->tri_state[t] = SILK_TS_BROKEN;   /* tested once here, read by lay_out_edges */
+            if (!tri_edges(m, t, e)) continue;
+            const silk_index *tn = &m->tri_normal[3 * t];
+            uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
+            if (v0 != v1 || v1 != v2) {
+                uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
+                st |= (uint8_t)(SILK_TS_SIL | lone);
+                f->nsil++;
+                mark_edge(f, e[lone], &nwork);
+                mark_edge(f, e[(lone + 2) % 3], &nwork);
+            }
+            if (features && ((m->edge[e[0]].flags | m->edge[e[1]].flags | m->edge[e[2]].flags) & SILK_EDGE_FEATURE) &&
+                silk_sil_tri_front(m, v, t)) {
+                st |= SILK_TS_FRONT;
+                for (int k = 0; k < 3; k++)
+                    if (m->edge[e[k]].flags & SILK_EDGE_FEATURE) mark_edge(f, e[k], &nwork);
+            }
+            f->tri_state[t] = st;
         }
-        if (features && ((m->edge[e[0]].flags | m->edge[e[1]].flags | m->edge[e[2]].flags) & SILK_EDGE_FEATURE) &&
-            silk_sil_tri_front(m, v, t)) {
-            st |= SILK_TS_FRONT;
-            for (int k = 0; k < 3; k++)
-                if (m->edge[e[k]].flags & SILK_EDGE_FEATURE) mark_edge(f, e[k], &nwork);
-        }
-        f->tri_state[t] = st;
     }
     f->nedges = nwork;
     silk_arena_top_release(a, &mark);
     f->visible = NULL;
-#if SILK_SHORTCUTS
-    /* the carrying edges ranked, where there is room (silk_sil_slot) */
-    size_t free0 = silk_arena_free_bytes(a), peak = a->top_peak;
-    size_t want = bits * sizeof *f->carry_rank + SILK_ARENA_ALIGN;
-    if (want <= f->keep_room && silk_sil_keep_fits(want, free0) &&
-        (f->carry_rank = silk_arena_array_top_unfilled(a, bits, sizeof *f->carry_rank, SILK_MEM_FRAME))) {
-        for (size_t i = 0, r = 0; i < bits; i++) {
-            f->carry_rank[i] = (uint32_t)r;
-            for (unsigned b = f->carrying[i]; b; b &= b - 1) r++;
-        }
-        silk_sil_kept(f, free0, peak);
-    }
-#endif
+    if (SILK_CARRY_RANK && f->keep) rank_carrying(f, bits);
     return SILK_OK;
 }
 
-#if SILK_SHORTCUTS
 void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak)
 {
-    size_t need = peak - f->kept_bytes;   /* the high-water so far without what was kept before */
-    if (need > f->kept_need) f->kept_need = need;
-    f->kept_bytes += free0 - silk_arena_free_bytes(f->a);
+    silk_sil_keep *k = SILK_SIL_KEEPS ? f->keep : NULL;
+    if (!k) return;
+    size_t need = peak - k->kept_bytes;   /* the high-water so far without what was kept before */
+    if (need > k->kept_need) k->kept_need = need;
+    k->kept_bytes += free0 - silk_arena_free_bytes(f->a);
 }
-#endif
 
 /* Whether silhouette side k of triangle t, on mesh edge e, gives the same
  * silhouette point as a silhouette side of the edge's other triangle, met
@@ -577,7 +561,6 @@ static int count_side(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *
     return 1;
 }
 
-#if SILK_SHORTCUTS
 /* Whether triangle t is whole (find_triangles tested it). */
 static int tri_whole(const silk_sil_frame *f, uint32_t t)
 {
@@ -595,7 +578,6 @@ static uint32_t edge_tris(const silk_sil_frame *f, silk_index e, uint32_t tt[2])
     if (b != a && tri_whole(f, b)) tt[n++] = b;
     return n;
 }
-#endif
 
 /* The carrying edges, and room for their sides and silhouette points:
  * each edge's run of sides and of points laid out edge by edge. */
@@ -615,8 +597,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
 
     /* Count the sides (every triangle side on a carrying edge) and the
      * silhouette sides of each edge, then lay them out edge by edge. */
-#if SILK_SHORTCUTS
-    if (by_edges(m)) {
+    if (SILK_PLAN_BY_EDGES && by_edges(m)) {
         for (uint32_t w = 0; w < nwork; w++) {
             silk_sil_edge *we = &f->edges[w];
             uint32_t tt[2];
@@ -625,8 +606,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
                     if (m->tri_edge[3 * (size_t)tt[i] + k] == we->edge && !count_side(f, tt[i], k, we))
                         return SILK_ERR_NOMEM;
         }
-    } else
-#endif
+    } else {
         for (uint32_t t = 0; t < m->ntris; t++) {
             if ((f->tri_state[t] & (SILK_TS_SIL | SILK_TS_LONE)) == SILK_TS_BROKEN) continue;
             for (uint32_t k = 0; k < 3; k++) {
@@ -634,6 +614,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
                 if (w != SILK_SIL_NONE && !count_side(f, t, k, &f->edges[w])) return SILK_ERR_NOMEM;
             }
         }
+    }
     uint32_t nsides = 0, npairs = 0;
     for (uint32_t w = 0; w < nwork; w++) {
         nsides += f->edges[w].nsides;
@@ -667,8 +648,7 @@ static void add_pair(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *w
 static void fill_pairs(silk_sil_frame *f)
 {
     const silk_mesh *m = f->m;
-#if SILK_SHORTCUTS
-    if (by_edges(m)) {   /* the same points in the same order, edge by edge */
+    if (SILK_PLAN_BY_EDGES && by_edges(m)) {   /* the same points in the same order, edge by edge */
         for (uint32_t w = 0; w < f->nedges; w++) {
             silk_sil_edge *we = &f->edges[w];
             uint32_t tt[2];
@@ -683,7 +663,6 @@ static void fill_pairs(silk_sil_frame *f)
         }
         return;
     }
-#endif
     for (uint32_t t = 0; t < m->ntris; t++) {
         uint8_t st = f->tri_state[t];
         if (!(st & SILK_TS_SIL)) continue;

@@ -31,23 +31,22 @@ silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view
 static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
                      silk_fx tolerance_px, silk_vis_method vis, silk_stage_clock *clock)
 {
-#if SILK_SHORTCUTS
-    size_t keep_room = f->keep_room;   /* the caller's, the one field it sets */
-#endif
+    silk_sil_keep *keep = SILK_SIL_KEEPS ? f->keep : NULL;   /* the caller's, the one field it sets */
     memset(f, 0, sizeof *f);
+    if (keep) {
+        size_t room = keep->room;
+        memset(keep, 0, sizeof *keep);
+        keep->room = room;
+        f->keep = keep;
+    }
     f->clock = clock;
     f->a = a;
     f->m = m;
     f->v = v;
     f->tol = tolerance_px;
     f->vis = vis;
-#if SILK_SHORTCUTS
-    f->keep_room = keep_room;
-#endif
     if (silk_sil_find(f) != SILK_OK) return 0;
-#if SILK_SHORTCUTS
-    silk_remesh_keep(f, keep_room > f->kept_bytes ? keep_room - f->kept_bytes : 0);
-#endif
+    if (SILK_KEEP_SEGMENTS && keep) silk_remesh_keep(f, keep->room > keep->kept_bytes ? keep->room - keep->kept_bytes : 0);
     return silk_remesh_plan(f) == SILK_OK && silk_perturb_alloc(f) && silk_perturb(f);
 }
 
@@ -64,9 +63,7 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_sil_frame f;
-#if SILK_SHORTCUTS
-    f.keep_room = 0;   /* a stored frame keeps nothing for speed */
-#endif
+    f.keep = NULL;   /* a stored frame keeps nothing for speed */
     if (!make_plan(&f, a, m, v, tolerance_px, vis, NULL) || !silk_remesh_store(&f, g)) {
         silk_status st = silk_frame_fall_back(a, m, &mark, g, stats, err);
         if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) silk_frame_fell_short(stats);

@@ -12,12 +12,11 @@
  * share in local, all from the top of the arena (the caller releases it;
  * silk_remesh_stats gives the frame's counts).  tolerance_px > 0 (the
  * caller checks it).  clock, when not NULL, times the visibility test.
- * The caller sets f->keep_room (in a build with SILK_SHORTCUTS):
- * the most the plan may take to keep its segments and edge tangents for
- * speed (silk_remesh_keep; 0: nothing kept).  Returns 0 when it does not
- * fit: then nothing is left allocated and the caller draws the coarse
- * mesh, or asks again with keep_room 0 when something was kept
- * (f->kept_bytes). */
+ * The caller sets f->keep, NULL or where the plan may keep its segments,
+ * edge tangents and rank for speed with keep->room the most it may take
+ * (silk_remesh_keep; 0: nothing kept).  Returns 0 when it does not fit:
+ * then nothing is left allocated and the caller draws the coarse mesh, or
+ * asks again with room 0 when something was kept (keep->kept_bytes). */
 int silk_frame_smooth_plan(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
                            silk_vis_method vis, silk_stage_clock *clock, silk_sil_frame *f,
                            silk_frame_geom *local);
