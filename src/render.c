@@ -1191,10 +1191,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     }
     t->depth_equal = t->cull_back = 0;
 #ifndef SILK_NO_CLIP_MODE
-    if (f->clip) {
-        t->mask = NULL;
-        silk_clip_antialias(f->clip, t, o->bg_rgb);
-    }
+    if (f->clip) t->mask = NULL;   /* frame_aa anti-aliases its outline */
 #endif
 #ifndef SILK_NO_LINES
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
@@ -1284,16 +1281,23 @@ static inline void aa_prefetch(const frame *f, uint32_t k, uint32_t next[2])
 }
 #endif
 
-/* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
+/* Anti-aliased outlines over band t, just drawn: CLIP's (clip.c: the
+ * map's outline, whatever the build), and those of aa.c (-DSILK_NO_AA
  * leaves them out: about 3.0 KiB of Cortex-M3 code and a band's worth of
- * scratch): the frames drawn
- * share by share (FLAT and SMOOTH without lines; CLIP's outline is the
- * map's, anti-aliased by clip.c), not under --wire's edges.  The shares that can
- * hold an outline are rebuilt once more; a band that is not the whole
- * frame first draws the rows next to it, which its edge pixels blend with. */
+ * scratch): of the frames drawn share by share (FLAT and SMOOTH without
+ * lines), not under --wire's edges.  The shares that can hold an outline
+ * are rebuilt once more; a band that is not the whole frame first draws
+ * the rows next to it, which its edge pixels blend with. */
 static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
                      silk_frame_stats *stats)
 {
+#ifndef SILK_NO_CLIP_MODE
+    if (f->clip) {
+        silk_aa_alpha(t);
+        silk_clip_antialias(f->clip, t, o->bg_rgb);
+        return;
+    }
+#endif
 #ifdef SILK_NO_AA
     (void)f;
     (void)a;
@@ -1304,8 +1308,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 #else
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip &&   /* clip.c does its own */
-                 !f->siltex;   /* the hull's edges are not siltex's outline */
+    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->siltex;   /* (the hull's edges are not its outline) */
     if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);
