@@ -81,6 +81,28 @@ TEST(cos_matches)
     printf("cos: largest error %.2g\n", worst);
 }
 
+TEST(acos_matches)
+{
+    double worst = 0;
+    for (int64_t c = -(1 << 30); c <= 1 << 30; c += 4099) {
+        double ref = acos(c / 1073741824.0) * 255 / PI, e = fabs(silk_siltex_acos(c) / 65536.0 - ref);
+        /* the ends, where acos is steepest, are linear over one table step */
+        if (fabs(c / 1073741824.0) < cos(PI / 255) && e > worst) worst = e;
+    }
+    CHECKF(worst < 4e-3, "acos error %.3g q", worst);   /* 5e-5 rad */
+    CHECK(silk_siltex_acos(1 << 30) == 0 && silk_siltex_acos(-(1 << 30)) == 255u << 16);
+    CHECK(silk_siltex_acos((int64_t)1 << 31) == 0 && silk_siltex_acos(-((int64_t)1 << 31)) == 255u << 16);
+    /* the inverse of silk_siltex_cos */
+    uint32_t off = 0;
+    for (uint32_t q16 = 1u << 16; q16 < 254u << 16; q16 += 101) {
+        uint32_t back = silk_siltex_acos(silk_siltex_cos(q16));
+        uint32_t d = back > q16 ? back - q16 : q16 - back;
+        off = d > off ? d : off;
+    }
+    CHECKF(off <= 256, "acos(cos(q)) off by %u / 65536 q", off);
+    printf("acos: largest error %.2g q inside the end steps; acos(cos(q)) within %u / 65536 q\n", worst, off);
+}
+
 /* A random hull frame: C and T unit (T across C), perturbed as
  * interpolation does (shorter, not quite across). */
 static void rnd_frame(double c[3], double t[3], silk_fx cf[3], silk_fx tf[3])
@@ -623,6 +645,7 @@ int main(int argc, char **argv)
     }
     RUN(azimuth_matches_atan2);
     RUN(cos_matches);
+    RUN(acos_matches);
     RUN(frame_matches);
     RUN(phi_interpolates);
     RUN(visible_matches_eq4);
