@@ -692,11 +692,11 @@ static inline int front_at(const uint32_t *dk, const uint32_t *dh, int x) { retu
 /* Whether pixel x of a row (dk, dh; the rows above and below, u and l, or
  * NULL) is on the outline: on the hull, with a neighbour across the change
  * between front face shown and not. */
-static int on_outline(const uint32_t *dk, const uint32_t *dh, const uint32_t *uk, const uint32_t *uh,
-                      const uint32_t *lk, const uint32_t *lh, int x, int width)
+static inline int on_outline(const uint32_t *dk, const uint32_t *dh, const uint32_t *uk, const uint32_t *uh,
+                             const uint32_t *lk, const uint32_t *lh, int x, int width)
 {
     if (!dh[x]) return 0;
-    int f = front_at(dk, dh, x);
+    int f = dk[x] == dh[x];
     return (x > 0 && front_at(dk, dh, x - 1) != f) || (x + 1 < width && front_at(dk, dh, x + 1) != f) ||
            (uk && front_at(uk, uh, x) != f) || (lk && front_at(lk, lh, x) != f);
 }
