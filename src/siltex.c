@@ -387,6 +387,20 @@ static void siltex_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec
     }
 }
 
+/* The unit view direction d at the point of varyings var, and in
+ * perspective the eye-to-point vector e (the line width's depth); 0 where
+ * the point is the eye. */
+static int view_dir(const silk_view *view, const silk_fx *var, int64_t d[3], silk_vec3 *e)
+{
+    *e = silk_v3(0, 0, 0);
+    if (view->cam.ortho) {
+        d[0] = view->forward.x, d[1] = view->forward.y, d[2] = view->forward.z;
+        return 1;
+    }
+    *e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
+    return silk_unit64(e->x, e->y, e->z, d);
+}
+
 /* Eq. 4, then the shading stage with the normal map's normal and the
  * colour map's colour. */
 static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
@@ -395,13 +409,8 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
     const silk_siltex *st = s->tex;
     int64_t d[3];
     const silk_view *view = s->view;
-    silk_vec3 e = { 0, 0, 0 };   /* eye to point, in perspective: the view direction and the line width's depth */
-    if (!view->cam.ortho) {
-        e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
-        if (!silk_unit64(e.x, e.y, e.z, d)) return SILK_FRAGMENT_DISCARD;
-    } else {
-        d[0] = view->forward.x, d[1] = view->forward.y, d[2] = view->forward.z;
-    }
+    silk_vec3 e;
+    if (!view_dir(view, var, d, &e)) return SILK_FRAGMENT_DISCARD;
     silk_fx u = var[VAR_UV], v = var[VAR_UV + 1];
     texels tx;
     texels_at(st, u, v, &tx);
@@ -450,19 +459,14 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
 static uint32_t margin_fragment(const silk_hal *h, const silk_fx *var)
 {
     const silk_siltex_stage *s = (const silk_siltex_stage *)h->uniforms;
-    const silk_view *view = s->view;
     const int64_t far = SILK_SILTEX_MARGIN_ZERO - 1;
     int64_t d[3];
-    if (!view->cam.ortho) {
-        silk_vec3 e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
-        if (!silk_unit64(e.x, e.y, e.z, d)) return (uint32_t)(SILK_SILTEX_MARGIN_ZERO + far);
-    } else {
-        d[0] = view->forward.x, d[1] = view->forward.y, d[2] = view->forward.z;
-    }
+    silk_vec3 e;
     texels tx;
-    texels_at(s->tex, var[VAR_UV], var[VAR_UV + 1], &tx);
     uint32_t phi;
     int64_t dc;
+    if (!view_dir(s->view, var, d, &e)) return (uint32_t)(SILK_SILTEX_MARGIN_ZERO + far);
+    texels_at(s->tex, var[VAR_UV], var[VAR_UV + 1], &tx);
     if (!lobe_at(s->tex, &tx, &var[VAR_C], &var[VAR_T], d, &phi, &dc)) return (uint32_t)(SILK_SILTEX_MARGIN_ZERO + far);
     int seen = dc >= silk_siltex_cos(phi);
     int64_t m = ((int64_t)silk_siltex_acos(dc) - phi) / 4;
