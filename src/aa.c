@@ -3,14 +3,15 @@
  * crosses gets the surface's coverage of it, computed from the outline
  * itself, and is blended with what lies behind.
  *
- * The outline is geometry silk already has, not something found in the
- * image: in SMOOTH mode the silhouette segment of every silhouette
+ * In FLAT and SMOOTH mode the outline is geometry silk already has, not
+ * something found in the image: in SMOOTH mode the silhouette segment of every silhouette
  * triangle (the Hermite curve of eq. 5, drawn as chords between its
  * samples of eq. 8); in FLAT mode (and for the triangles SMOOTH leaves as
  * they are, unless next to a silhouette triangle) every mesh edge between
  * a front- and a back-facing triangle (the face-based silhouette), and
  * every edge against nothing.  Interior pixels are never visited: the
- * cost is a walk along the outline.
+ * cost is a walk along the outline.  (SILTEX's, below, is found in the
+ * band.)
  *
  * Coverage.  Along a side whose x extent is the larger, each pixel column
  * whose centre the side spans is crossed at height y_e; the pixel the
@@ -63,6 +64,18 @@
  * either side give the two colours, and a pixel the curve covers otherwise
  * than drawn is blended from them when it and both hold the surface.
  * -DSILK_NO_AA_CREASE (and silk_render_opts.aa = 2) leave creases aliased.
+ *
+ * SILTEX.  The outline is where eq. 4 of the silhouette texture starts
+ * discarding the hull's front faces, inside their triangles: no geometry
+ * holds it, so it is found in the band, where a pixel showing the front
+ * face (its depth there is the front faces', drawn again alone) meets one
+ * showing what lies behind it or nothing, and measured by the test itself:
+ * the front faces drawn once more through siltex.c's margin stage at those
+ * pixels and their neighbours give the angle acos(d.C) - phi, negative
+ * where drawn.  An outline pixel's coverage is the part of it where that
+ * angle, linear across the pixel with its slopes to the neighbours, is
+ * negative (the box filter of a straight edge, exact), and it is blended
+ * with its neighbour across the outline as above.
  *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
