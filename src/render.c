@@ -1177,10 +1177,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
         }
     }
     t->depth_equal = t->cull_back = 0;
-    if (CLIP_FRAME(f)) {
-        t->mask = NULL;
-        silk_clip_antialias(f->clip, t, o->bg_rgb);
-    }
+    if (CLIP_FRAME(f)) t->mask = NULL;   /* frame_aa anti-aliases its outline */
     if (SILK_LINES && o->lines) draw_lines(f, o, t);
 }
 
@@ -1247,24 +1244,105 @@ SILK_ALWAYS_INLINE static inline void aa_prefetch(const frame *f, uint32_t k, ui
     }
 }
 
-/* Anti-aliased outlines (aa.c) over band t, just drawn (a build with
+/* SILTEX: the hull's front faces into s, every part that reaches its
+ * rows, as frame_draw draws them (back faces culled): through stage h, or
+ * depth alone (h NULL). */
+static void hull_draw(frame *f, const silk_render_opts *o, silk_target *s, const silk_hal *h)
+{
+    const silk_hal *shade = f->hal;
+    for (uint32_t k = 0; k < f->nparts; k++) {
+        if (part_misses(f, k, s->y0, s->y0 + s->rows - 1)) continue;
+        f->part(f, k);
+        s->cull_back = 1;
+        uint32_t t0 = silk_stage_start(f->clock);
+        f->hal = h ? h : shade;   /* the same vertex stage: the part's output stands */
+        draw_tris(f, o, s, h ? 0 : -1, NULL);
+        f->hal = shade;
+        silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+    }
+    s->cull_back = 0;
+}
+
+/* SILTEX's outline over aa's band (aa.c, silk_aa_margin): the hull's
+ * front faces drawn again, depth alone, over the band's rows and its
+ * aprons'; where the pixels drawn from a front face meet those that show
+ * what lies behind it, the front faces once more through the margin stage
+ * (siltex.c), only there; then those pixels blended by their coverage.  0
+ * when the arena has no room for it. */
+static int siltex_outline(frame *f, silk_arena *a, const silk_render_opts *o, silk_aa *aa)
+{
+    const silk_target *t = aa->t;
+    int y0 = t->y0 > 0 ? t->y0 - 1 : 0, y1 = t->y0 + t->rows < t->height ? t->y0 + t->rows + 1 : t->height;
+    size_t w = (size_t)t->width, rows = (size_t)(y1 - y0);
+    /* unfilled: the clear writes them */
+    uint8_t *c = silk_arena_array_top_unfilled(a, w * rows, 3, SILK_MEM_FRAME);
+    uint32_t *d = silk_arena_array_top_unfilled(a, w * rows, sizeof *d, SILK_MEM_FRAME);
+    uint8_t *mask = silk_arena_array_top_unfilled(a, rows, (w + 7) / 8, SILK_MEM_FRAME);
+    if (!c || !d || !mask) return 0;
+    silk_target s;
+    silk_target_init(&s, t->width, t->height, y0, (int)rows, SILK_PIX_RGB888, c, d);
+    silk_target_clear(&s, 0);
+    hull_draw(f, o, &s, NULL);
+    if (silk_aa_margin_mask(aa, &s, mask)) {
+        silk_hal margin;
+        silk_siltex_margin_hal(&margin, &f->siltex->stage);
+        s.depth_equal = 1;   /* the front faces alone */
+        hull_draw(f, o, &s, &margin);
+        silk_aa_margin(aa, &s);
+    }
+    return 1;
+}
+
+/* The outlines of the shares that can hold one (FLAT's and SMOOTH's, aa.c)
+ * over aa's band t: each candidate's share rebuilt once more, or its one
+ * triangle as drawn straight from the vertex cache. */
+static void aa_shares(frame *f, silk_aa *aa, const silk_view *v, const silk_target *t)
+{
+    frame_fast *x = f->fast;
+    const uint8_t *cand = SILK_AA_CANDIDATES ? x->cand : NULL;   /* silk_aa_candidates', or NULL */
+    if (cand && !x->cand_ready) {
+        silk_aa_candidates(aa, f->geom.mesh, v, x->cand);
+        x->cand_ready = 1;
+    }
+    uint32_t next[2] = { UINT32_MAX, UINT32_MAX };   /* aa_prefetch's */
+    for (uint32_t k = 0; k < f->nparts; k++) {
+        if (cand && !cand[k / 8]) {   /* eight triangles at once: most have no outline side */
+            k |= 7;
+            continue;
+        }
+        if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
+        if (cand ? !(cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(aa, f->geom.mesh, v, aa->sil, k)) continue;
+        if (SILK_DRAW_DIRECT && cand && x->vc_xy && x->xy_ready && !f->smooth) aa_prefetch(f, k, next);
+        if (SILK_DRAW_DIRECT && aa_direct(f, aa, v, k)) continue;
+        f->part(f, k);
+        silk_aa_share(aa, f->geom.mesh, v, &f->g, f->cache, k);
+    }
+}
+
+/* Anti-aliased outlines over band t, just drawn: CLIP's (clip.c: the
+ * map's outline, whatever the build), and those of aa.c (a build with
  * SILK_AA 0 leaves them out: about 3.0 KiB of Cortex-M3 code and a band's
- * worth of scratch): the frames drawn share by share (FLAT and SMOOTH
- * without lines; CLIP's outline is the map's, anti-aliased by clip.c), not
- * under --wire's edges.  The shares that can hold an outline are rebuilt
- * once more; a band that is not the whole frame first draws the rows next
- * to it, which its edge pixels blend with. */
+ * worth of scratch): of the frames drawn share by share (FLAT and SMOOTH
+ * without lines, and SILTEX's, from eq. 4 itself), not under --wire's
+ * edges.  The shares that can hold an outline are rebuilt once more; a
+ * band that is not the whole frame first draws the rows next to it, which
+ * its edge pixels blend with. */
 static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
                      silk_frame_stats *stats)
 {
+    if (CLIP_FRAME(f)) {
+        silk_aa_alpha(t);
+        silk_clip_antialias(f->clip, t, o->bg_rgb);
+        return;
+    }
     if (!SILK_AA) {
         silk_aa_alpha(t);
         return;
     }
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !CLIP_FRAME(f) &&   /* clip.c does its own */
-                 !SILTEX_FRAME(f);   /* the hull's edges are not siltex's outline */
+    int wanted = o->aa && !o->wire && f->part == share_part && t->depth &&
+                 !(SILTEX_FRAME(f) && o->lines);   /* its lines are drawn by its fragment stage, aliased */
     if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);
@@ -1275,27 +1353,13 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.creases = o->aa == 1;
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
-    aa.sil = f->smooth ? &f->sil : NULL;
-    aa.hal = f->hal;
-    aa.geom = &f->geom;
-    frame_fast *x = f->fast;
-    const uint8_t *cand = SILK_AA_CANDIDATES ? x->cand : NULL;   /* silk_aa_candidates', or NULL */
-    if (cand && !x->cand_ready) {
-        silk_aa_candidates(&aa, f->geom.mesh, v, x->cand);
-        x->cand_ready = 1;
-    }
-    uint32_t next[2] = { UINT32_MAX, UINT32_MAX };   /* aa_prefetch's */
-    for (uint32_t k = 0; k < f->nparts; k++) {
-        if (cand && !cand[k / 8]) {   /* eight triangles at once: most have no outline side */
-            k |= 7;
-            continue;
-        }
-        if (part_misses(f, k, t->y0 - 1, t->y0 + t->rows)) continue;
-        if (cand ? !(cand[k / 8] >> (k % 8) & 1) : !silk_aa_candidate(&aa, f->geom.mesh, v, aa.sil, k)) continue;
-        if (SILK_DRAW_DIRECT && cand && x->vc_xy && x->xy_ready && !f->smooth) aa_prefetch(f, k, next);
-        if (SILK_DRAW_DIRECT && aa_direct(f, &aa, v, k)) continue;
-        f->part(f, k);
-        silk_aa_share(&aa, f->geom.mesh, v, &f->g, f->cache, k);
+    if (SILTEX_FRAME(f)) {   /* the hull's edges are not its outline: eq. 4's edge is */
+        if (!siltex_outline(f, a, o, &aa)) stats->aa_aliased++;
+    } else {
+        aa.sil = f->smooth ? &f->sil : NULL;
+        aa.hal = f->hal;
+        aa.geom = &f->geom;
+        aa_shares(f, &aa, v, t);
     }
     silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
     stats->aa_aliased += aa.dropped;
