@@ -26,10 +26,13 @@ include boards/$(BOARD)/board.mk
 # boards/NAME/config.h, named by -DSILK_CONFIG_FILE.  A firmware board's
 # build directory also holds the host-side tool that packs its models,
 # built with the host's options; its firmware and the firmware's host build
-# take the board's (platform/mps2/firmware.mk).
+# take the board's (platform/mps2/firmware.mk).  CORE_CONFIG=FILE builds
+# everything here with that header instead (`make test` runs the core's
+# unit tests so in each firmware board's configuration).
 BOARD_CONFIG ?= boards/$(BOARD)/config.h
 config_flag = -DSILK_CONFIG_FILE='"$(abspath $(1))"'
-HOST_CONFIG := $(call config_flag,$(if $(BOARD_RULES),boards/host/config.h,$(BOARD_CONFIG)))
+CORE_CONFIG ?= $(if $(BOARD_RULES),boards/host/config.h,$(BOARD_CONFIG))
+HOST_CONFIG := $(call config_flag,$(CORE_CONFIG))
 PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 
@@ -146,12 +149,39 @@ check-nofloat:
 	  echo "check-nofloat: the core calls the heap allocator"; exit 1; fi; \
 	echo "check-nofloat: $(words $(CORE_SRC)) core files compile without floating point"
 
-# Normal build, then the same suite under AddressSanitizer + UBSan.
+# Normal build, then the core's tests in every board's configuration, then
+# the whole suite under AddressSanitizer + UBSan.
 test: check-nofloat
 	$(MAKE) tests
 	SILK=$(BUILD)/silk sh tests/run.sh $(BUILD)
+	$(MAKE) test-configs
 	$(MAKE) SAN=1 tests
 	SILK=build-san/silk SILK_SAN=1 sh tests/run.sh build-san
+
+# The core's unit tests built with each board's boards/NAME/config.h (in
+# build-config/NAME) and run on the host, so every branch a board's options
+# choose runs here, QEMU or not.  A board whose options come to the same
+# (silk/config.h's macros once derived) as the host's or as a board's tested
+# before is not built again; the tests of the host tools and the host I/O
+# (HOST_ONLY_TESTS) run in the host's configuration only, and a test of what
+# a configuration leaves out says it is skipped (tests/check.h).
+HOST_ONLY_TESTS := test_hull test_lp test_mask test_silmap test_simplify test_stex test_platform test_fb
+CONFIG_TESTS := $(filter-out $(HOST_ONLY_TESTS),$(notdir $(TEST_BIN)))
+CONFIG_BOARDS := $(filter-out host,$(notdir $(wildcard boards/*)))
+config_macros = printf '\043include "silk/config.h"\n' | $(CC) -Iinclude "-DSILK_CONFIG_FILE=\"$(CURDIR)/$(1)\"" -dM -E -x c - | \
+                grep ' SILK_' | grep -v ' SILK_CONFIG_FILE ' | sort | cksum | cut -d' ' -f1
+.PHONY: test-configs
+test-configs: $(BUILD)/silk
+	@seen=$$($(call config_macros,boards/host/config.h)); \
+	for b in $(CONFIG_BOARDS); do \
+	  sum=$$($(call config_macros,boards/$$b/config.h)) || exit 1; \
+	  case " $$seen " in *" $$sum "*) echo "test-configs: $$b: the core's options as a configuration already tested"; continue;; esac; \
+	  seen="$$seen $$sum"; \
+	  echo "test-configs: $$b (boards/$$b/config.h)"; \
+	  $(MAKE) --no-print-directory BUILD=build-config/$$b CORE_CONFIG=boards/$$b/config.h SAN= \
+	      $(addprefix build-config/$$b/tests/,$(CONFIG_TESTS)) || exit 1; \
+	  SILK=$(BUILD)/silk SILK_TESTS="$(CONFIG_TESTS)" sh tests/run.sh build-config/$$b || exit 1; \
+	done
 
 # Just the normal build's suite.
 test-fast: check-nofloat tests
@@ -194,7 +224,7 @@ install: $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(BUILD)/silk $(BUILD)/s
 	done
 
 clean:
-	rm -rf build build-san build-fuzz out
+	rm -rf build build-san build-fuzz build-config out
 
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d $(BUILD)/obj/*/*/*/*.d)
 

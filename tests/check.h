@@ -9,7 +9,10 @@
  *
  * A test that asks for the shared reference meshes (check_meshes_dir())
  * where there are none is skipped: its checks no longer count, and
- * check_done() names the skipped tests on one line.
+ * check_done() names the skipped tests on one line.  So is a test of what
+ * the core was built without (check_built(SILK_LINES, "SILK_LINES"), an
+ * option of silk/config.h: `make test` builds the core's tests in every
+ * board's configuration too).
  */
 #ifndef SILK_CHECK_H
 #define SILK_CHECK_H
@@ -20,8 +23,9 @@
 #include <sys/stat.h>
 
 static int check_tests_passed, check_tests_failed, check_cur_failed, check_cur_skipped, check_tests_skipped;
+static int check_tests_unbuilt;
 static const char *check_cur_name = "";
-static char check_skipped_names[512];
+static char check_skipped_names[512], check_unbuilt_names[512];
 
 #define TEST(name) static void name(void)
 
@@ -44,7 +48,7 @@ static char check_skipped_names[512];
         check_cur_failed = 0;                                                      \
         check_cur_skipped = 0;                                                     \
         name();                                                                    \
-        if (check_cur_skipped) check_note_skipped(#name);                          \
+        if (check_cur_skipped) check_note_skipped(#name, check_cur_skipped);       \
         else if (check_cur_failed) { check_tests_failed++; printf("not ok %s\n", #name); } \
         else { check_tests_passed++; printf("ok %s\n", #name); }                   \
         fflush(stdout);                                                            \
@@ -61,9 +65,40 @@ static inline const char *check_meshes_dir(void)
     return d;
 }
 
-static inline void check_note_skipped(const char *name)
+/* Whether the core was built with option (silk/config.h's value, named
+ * what): where not, the current test is skipped (1: it may go on, and
+ * nothing it checks counts; best to return). */
+static inline int check_built(int option, const char *what)
+{
+    if (option) return 1;
+    if (!check_cur_skipped) {
+        size_t n = strlen(check_unbuilt_names);
+        if (n + strlen(check_cur_name) + strlen(what) + 6 < sizeof check_unbuilt_names)
+            snprintf(check_unbuilt_names + n, sizeof check_unbuilt_names - n, "%s%s (%s)", n ? ", " : "",
+                     check_cur_name, what);
+    }
+    check_cur_skipped = 2;
+    return 0;
+}
+
+/* At the top of main(): a program whose every test needs option (a mode
+ * silk/config.h may leave out) runs none where the core is built without
+ * it, and says so. */
+#define CHECK_PROGRAM_NEEDS(option)                                                           \
+    do {                                                                                      \
+        if (!(option)) {                                                                      \
+            printf("skip: the core is built without %s, which every test here needs\n", #option); \
+            return check_done();                                                              \
+        }                                                                                     \
+    } while (0)
+
+static inline void check_note_skipped(const char *name, int why)
 {
     size_t n = strlen(check_skipped_names);
+    if (why == 2) {
+        check_tests_unbuilt++;
+        return;
+    }
     check_tests_skipped++;
     if (n + strlen(name) + 3 < sizeof check_skipped_names)
         snprintf(check_skipped_names + n, sizeof check_skipped_names - n, "%s%s", n ? ", " : "", name);
@@ -71,6 +106,9 @@ static inline void check_note_skipped(const char *name)
 
 static inline int check_done(void)
 {
+    if (check_tests_unbuilt)
+        printf("skip: the core is built without what %d test%s need%s: %s\n", check_tests_unbuilt,
+               check_tests_unbuilt == 1 ? "" : "s", check_tests_unbuilt == 1 ? "s" : "", check_unbuilt_names);
     if (check_tests_skipped) {
         const char *d = getenv("SILK_MESHES");
         printf("skip: %s is missing, so %d test%s that read the shared meshes did not run: %s\n",

@@ -1,7 +1,9 @@
 #!/bin/sh
 # Runs every test program in BUILD/tests (and the shell tests in tests/*.sh),
 # prints each one's result as it ends, and ends with the total
-# "N passed, N failed".
+# "N passed, N failed".  SILK_TESTS="test_a test_b ..." runs only those
+# programs of BUILD/tests (make test: the core's tests in a board's
+# configuration).
 #
 # Tests run SILK_TEST_JOBS at a time (default: the number of CPUs, at most
 # 2): each worker takes the next test nobody has claimed (a claim is an
@@ -20,8 +22,10 @@ case "$jobs" in ''|*[!0-9]*) jobs=1 ;; esac
 [ "$jobs" -lt 1 ] && jobs=1
 
 all=
-for t in "$build"/tests/test_* tests/cli_*.sh; do
-  [ -e "$t" ] || continue
+candidates="$build/tests/test_* tests/cli_*.sh"
+[ -n "${SILK_TESTS:-}" ] && candidates=$(for n in $SILK_TESTS; do echo "$build/tests/$n"; done)
+for t in $candidates; do
+  [ -e "$t" ] || [ -n "${SILK_TESTS:-}" ] || continue   # a program asked for and missing fails
   case "$t" in *.d|*.o|*.log|*.txt|*.png|*.ppm|*.secs) continue;; esac
   [ -d "$t" ] && continue
   all="$all $t"

@@ -158,6 +158,7 @@ TEST(alpha_is_coverage)
 {
     static uint16_t cov[W * H];
     static uint8_t alpha[W * H];
+    if (!check_built(SILK_AA, "SILK_AA")) return;
     const double dirs[][3] = { { 0.3, 0.4, 1 }, { 1, 0.1, 0.2 }, { -0.5, 1, 0.6 }, { 0.1, -0.3, -1 } };
     const gen_shape shapes[] = { GEN_SPHERE, GEN_TORUS };
     /* under sanitizers (SILK_SAN=1) one direction, two views */
@@ -220,6 +221,7 @@ TEST(alpha_is_coverage)
 TEST(drawn_outline_kept)
 {
     static uint8_t on[W * H], off[W * H];
+    if (!check_built(SILK_AA, "SILK_AA")) return;
     static const char *const names[] = { "bunny-500", "armadillo-500", "dragon-500", "knot-480", "spot-500" };
     const double dirs[][3] = { { 0.3, 0.4, 1 }, { 1, 0.1, 0.2 }, { -0.5, 1, 0.6 } };
     size_t nnames = getenv("SILK_SAN") ? 1 : sizeof names / sizeof names[0];
@@ -279,6 +281,7 @@ TEST(drawn_outline_kept)
 TEST(crease_blends_faces)
 {
     static uint8_t on[W * H * 3], off[W * H * 3], big[16 * W * H * 3], alpha[16 * W * H];
+    if (!check_built(SILK_AA_CREASES, "SILK_AA_CREASES")) return;
     const double dirs[][3] = { { 0.1, 1, 0.45 }, { 0.6, 1, -0.3 }, { 0.3, -1, 0.7 } };
     tm_fixture f;
     tm_fixture_init(&f, 32u << 20);

@@ -42,10 +42,15 @@ TEST(corpus)
 
     size_t arena_size = 8u << 20;
     unsigned char *mem = malloc(arena_size);
-    int checked = 0, objs = 0, plys = 0, stls = 0, others = 0;
+    int checked = 0, objs = 0, plys = 0, stls = 0, others = 0, unbuilt = 0;
     for (int i = 0; i < n; i++) {
         char path[600], expected_path[640], name[600];
         snprintf(path, sizeof path, "%s/%s", BAD_DIR, names[i]);
+        if (!SILK_SILTEX_MODE && !strncmp(names[i], "model-stex-", 11)) {   /* a core without siltex skips STEX */
+            unbuilt++;
+            free(names[i]);
+            continue;
+        }
         snprintf(expected_path, sizeof expected_path, "%s.expected", path);
         size_t len, elen;
         char *data = tm_read_file(path, &len);
@@ -87,6 +92,7 @@ TEST(corpus)
     CHECKF(objs >= 10 && plys >= 10 && stls >= 10 && others >= 10, "%d OBJ, %d PLY, %d STL and %d other files",
            objs, plys, stls, others);
     printf("  %d malformed files (%d OBJ, %d PLY, %d STL, %d of other formats)\n", checked, objs, plys, stls, others);
+    if (unbuilt) printf("  %d silhouette texture sections left out: the core is built without SILK_SILTEX_MODE\n", unbuilt);
 }
 
 /* The corpus is not all: every .expected has its file. */

@@ -209,6 +209,7 @@ TEST(bands_equal_full_frame_smooth)
 
 TEST(bands_equal_full_frame_rgb888_wire)
 {
+    if (!check_built(SILK_LINES, "SILK_LINES")) return;
     check_case(&cases[0], SILK_MODE_SMOOTH, SILK_PIX_RGB888, 1, 1);
     check_case(&cases[3], SILK_MODE_FLAT, SILK_PIX_RGB888, 1, 1);
 }

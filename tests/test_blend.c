@@ -516,6 +516,7 @@ TEST(render_blend_mode)
 
 int main(void)
 {
+    CHECK_PROGRAM_NEEDS(SILK_REFERENCE_MODES);
     arena_buf = malloc(ARENA_BYTES);
     RUN(alpha_vs_double);
     RUN(alpha_continuous_in_the_eye);

@@ -40,6 +40,7 @@
 #include "../tools/prep/hull.h"
 #include "../tools/prep/model_file.h"
 #include "../tools/prep/silmap.h"
+#include "support/scene.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"
 #include "support/stexgen.h"
@@ -50,7 +51,7 @@
 #define ARENA_BYTES (24u << 20)
 
 static int update;
-static int n_changed, n_new, n_same;
+static int n_changed, n_new, n_same, n_unbuilt;
 static const silk_texture *mesh_texture;   /* the texture of the mesh being drawn, or NULL */
 static const silk_siltex *mesh_siltex;     /* the silhouette texture of the hull being drawn, or NULL */
 
@@ -177,33 +178,49 @@ static const mode_case modes[] = {
 
 /* ---- one golden frame --------------------------------------------------------- */
 
+/* The frame's pixels as RGB888 rows (malloc'd). */
+static uint8_t *frame_rgb(const silk_target *t)
+{
+    uint8_t *rgb = malloc((size_t)t->width * (size_t)t->height * 3);
+    for (int y = 0; rgb && y < t->height; y++) silk_target_row_rgb888(t, y, rgb + (size_t)y * (size_t)t->width * 3);
+    return rgb;
+}
+
+/* The pixels of the frame that differ from NAME.png's (-1: no such image
+ * of the frame's size). */
+static long golden_differ(const silk_target *t, const char *path)
+{
+    uint8_t *mine = frame_rgb(t), *ref = NULL;
+    int rw = 0, rh = 0;
+    silk_error err;
+    long differ = -1;
+    FILE *probe = fopen(path, "rb");
+    if (probe) fclose(probe);
+    if (mine && probe && silk_png_read(path, &ref, &rw, &rh, &err) == SILK_OK && rw == t->width && rh == t->height) {
+        differ = 0;
+        for (size_t i = 0, n = (size_t)t->width * (size_t)t->height * 3; i < n; i += 3)
+            differ += memcmp(mine + i, ref + i, 3) != 0;
+    }
+    free(ref);
+    free(mine);
+    return differ;
+}
+
 /* The frame against NAME.png: 1 when equal (or rewritten with --update). */
 static int compare_golden(const silk_target *t, const char *name)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s.png", golden_dir(), name);
-    size_t n = (size_t)t->width * (size_t)t->height * 3;
-    uint8_t *mine = malloc(n);
-    for (int y = 0; y < t->height; y++) silk_target_row_rgb888(t, y, mine + (size_t)y * (size_t)t->width * 3);
-
-    uint8_t *ref = NULL;
-    int rw = 0, rh = 0;
-    silk_error err;
     FILE *probe = fopen(path, "rb");
     int exists = probe != NULL;
     if (probe) fclose(probe);
-    long differ = -1;
-    if (exists && silk_png_read(path, &ref, &rw, &rh, &err) == SILK_OK && rw == t->width && rh == t->height) {
-        differ = 0;
-        for (size_t i = 0; i < n; i += 3) differ += memcmp(mine + i, ref + i, 3) != 0;
-    }
-    free(ref);
-    free(mine);
+    long differ = golden_differ(t, path);
     if (differ == 0) {
         n_same++;
         return 1;
     }
     if (update) {
+        silk_error err;
         if (silk_png_write(t, path, &err) != SILK_OK) {
             CHECKF(0, "%s", err.msg);
             return 0;
@@ -218,12 +235,106 @@ static int compare_golden(const silk_target *t, const char *name)
     return 0;
 }
 
-static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, const mode_case *mc,
-                        silk_pixfmt fmt, int one_row_bands, const silk_silmap *map, int antialias)
-{
+/* ---- the frames as a build without anti-aliasing draws them ------------------- */
+
+/* A build with SILK_AA 0 draws every frame as silk_render_opts.aa = 0
+ * does, one with SILK_AA_CREASES 0 as aa = 2 does (silk/config.h; the
+ * boards' configurations): tests/golden/aliased.txt holds those frames of
+ * the golden cases (aa 1) as NAME-aa0 and NAME-aa2 with the CRC-32 of
+ * their RGB888 rows, one a line, where they differ from NAME.png (a frame
+ * not listed is NAME.png's).  The host draws all three and the boards'
+ * configurations theirs, so a board's frames are checked here too. */
+#define ALIASED_MAX 1024
+static struct aliased_entry {
     char name[128];
-    snprintf(name, sizeof name, "%s-%s-%s%s%s", mesh, vc->name, mc->name, map && !antialias ? "-centres" : "",
-             fmt == SILK_PIX_RGB565 ? "-565" : "");
+    uint32_t crc;
+} aliased[ALIASED_MAX];
+static int n_aliased, aliased_loaded, aliased_changed;
+
+static const char *aliased_path(void)
+{
+    static char path[512];
+    snprintf(path, sizeof path, "%s/aliased.txt", golden_dir());
+    return path;
+}
+
+static struct aliased_entry *aliased_find(const char *name)
+{
+    if (!aliased_loaded) {
+        aliased_loaded = 1;
+        FILE *fp = fopen(aliased_path(), "r");
+        char line[160];
+        while (fp && fgets(line, sizeof line, fp) && n_aliased < ALIASED_MAX) {
+            struct aliased_entry *e = &aliased[n_aliased];
+            unsigned crc;
+            if (line[0] != '#' && sscanf(line, "%127s %x", e->name, &crc) == 2) {
+                e->crc = crc;
+                n_aliased++;
+            }
+        }
+        if (fp) fclose(fp);
+    }
+    for (int i = 0; i < n_aliased; i++)
+        if (!strcmp(aliased[i].name, name)) return &aliased[i];
+    return NULL;
+}
+
+static void aliased_write(void)
+{
+    FILE *fp = fopen(aliased_path(), "w");
+    CHECKF(fp != NULL, "%s: cannot write", aliased_path());
+    if (!fp) return;
+    fprintf(fp, "# The golden frames as silk_render_opts.aa 0 (-aa0) and 2 (-aa2) draw them, where they\n"
+                "# differ from NAME.png: the CRC-32 of their RGB888 rows (tests/test_golden.c, make golden).\n");
+    for (int i = 0; i < n_aliased; i++) fprintf(fp, "%s %08x\n", aliased[i].name, (unsigned)aliased[i].crc);
+    fclose(fp);
+}
+
+/* The frame, drawn as aa (0 or 2) draws NAME's, against its entry or
+ * NAME.png; with --update the entry follows the frame. */
+static void compare_aliased(const silk_target *t, const char *name, int aa)
+{
+    char vname[128], path[512];
+    snprintf(vname, sizeof vname, "%s-aa%d", name, aa);
+    snprintf(path, sizeof path, "%s/%s.png", golden_dir(), name);
+    uint8_t *rgb = frame_rgb(t);
+    uint32_t crc = rgb ? silk_crc32(0, rgb, (size_t)t->width * (size_t)t->height * 3) : 0;
+    free(rgb);
+    struct aliased_entry *e = aliased_find(vname);
+    int same = e ? e->crc == crc : golden_differ(t, path) == 0;
+    if (same) {
+        n_same++;
+        return;
+    }
+    if (update) {
+        int existed = e != NULL;
+        if (!e && n_aliased < ALIASED_MAX) {
+            e = &aliased[n_aliased++];
+            snprintf(e->name, sizeof e->name, "%s", vname);
+        }
+        if (e) e->crc = crc;
+        printf("%s: %s (aliased.txt)\n", existed ? "changed" : "new", vname);
+        if (existed) n_changed++;
+        else n_new++;
+        aliased_changed = 1;
+        return;
+    }
+    CHECKF(0, "%s: differs from %s (make golden)", vname, e ? "its CRC in aliased.txt" : "the golden image");
+}
+
+/* The anti-aliasing a build draws when asked for aa: 0 without SILK_AA,
+ * 2 (outlines only) without SILK_AA_CREASES. */
+static int aa_drawn(int aa)
+{
+    return !SILK_AA ? 0 : aa == 1 && !SILK_AA_CREASES ? 2 : aa;
+}
+
+/* Draws one frame whole and in bands, and compares it: with NAME.png
+ * (aa 1, or a clip frame), with its aliased form (aa 0, 2), or not at all
+ * (compare 0: a build without textures draws a textured model otherwise). */
+static void golden_frame(tm_fixture *f, const char *name, const view_case *vc, const mode_case *mc, silk_pixfmt fmt,
+                         int one_row_bands, const silk_silmap *map, int aa, int compare)
+{
     silk_view v;
     if (!tf_view_around_size(&f->m, vc->dir, vc->dist, vc->ortho, W, H, &v)) {
         CHECKF(0, "%s: no view", name);
@@ -245,7 +356,7 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
     ro.bg_rgb = BG;
     ro.silmap = map;
     ro.siltex = mesh_siltex;
-    if (map) ro.aa = antialias;   /* clip frames: with and without; the others as by default */
+    ro.aa = aa;
 
     silk_arena_mark mk = silk_arena_top_mark(&f->a);
     size_t bpp = silk_pixfmt_bytes(fmt), bytes = (size_t)W * H * bpp;
@@ -277,9 +388,37 @@ static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, co
         CHECKF(memcmp(copy, color, bytes) == 0, "%s: bands of %d rows differ from the whole frame", name,
                heights[k]);
     }
-    compare_golden(&full, name);
+    if (!compare) n_unbuilt++;
+    else if (map || aa == 1) compare_golden(&full, name);
+    else compare_aliased(&full, name, aa);
     free(copy);
     silk_arena_top_release(&f->a, &mk);
+}
+
+/* One golden case: a clip frame with (antialias) or without its outline
+ * anti-aliased (NAME-centres), another as the default draws it (aa 1) and
+ * as aa 0 and 2 do, each as far as the core is built to draw it. */
+static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, const mode_case *mc,
+                        silk_pixfmt fmt, int one_row_bands, const silk_silmap *map, int antialias)
+{
+    char name[128];
+    snprintf(name, sizeof name, "%s-%s-%s%s%s", mesh, vc->name, mc->name, map && !antialias ? "-centres" : "",
+             fmt == SILK_PIX_RGB565 ? "-565" : "");
+    int compare = SILK_TEXTURES || !(mesh_texture || (mesh_siltex && mesh_siltex->color));
+    if (!ts_mode_built(mc->mode) || (!SILK_LINES && (mc->lines || mc->wire)) || (map && antialias && !SILK_AA)) {
+        n_unbuilt++;
+        return;
+    }
+    if (map) {
+        golden_frame(f, name, vc, mc, fmt, one_row_bands, map, antialias, compare);
+        return;
+    }
+    static const int aas[3] = { 1, 0, 2 };
+    for (int k = 0, first = 1; k < 3; k++)
+        if (aa_drawn(aas[k]) == aas[k]) {
+            golden_frame(f, name, vc, mc, fmt, one_row_bands && first, NULL, aas[k], compare);
+            first = 0;
+        }
 }
 
 static void golden_mesh(const char *mesh)
@@ -445,8 +584,15 @@ TEST(golden_torus) { golden_mesh("torus"); }
 TEST(golden_cone) { golden_mesh("cone"); }
 TEST(golden_knot) { golden_mesh("knot"); }
 TEST(golden_bunny) { golden_mesh("bunny"); }
-TEST(golden_knot_clip) { golden_clip(); }
-TEST(golden_spheres_siltex) { golden_siltex(); }
+TEST(golden_knot_clip)
+{
+    if (check_built(SILK_CLIP_MODE, "SILK_CLIP_MODE")) golden_clip();
+}
+
+TEST(golden_spheres_siltex)
+{
+    if (check_built(SILK_SILTEX_MODE, "SILK_SILTEX_MODE")) golden_siltex();
+}
 
 int main(int argc, char **argv)
 {
@@ -460,7 +606,11 @@ int main(int argc, char **argv)
     RUN(golden_bunny);
     RUN(golden_globe);
     RUN(golden_painted);
+    if (update && aliased_changed) aliased_write();
     if (update)
         printf("golden: %d changed, %d new, %d unchanged in %s\n", n_changed, n_new, n_same, golden_dir());
+    if (n_unbuilt)
+        printf("golden: %d frames not drawn or not compared: the core is built without what they need "
+               "(silk/config.h)\n", n_unbuilt);
     return check_done();
 }

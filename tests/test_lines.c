@@ -823,6 +823,7 @@ TEST(smooth_lines_close_every_outline)
 
 int main(void)
 {
+    CHECK_PROGRAM_NEEDS(SILK_LINES);
     sphere_setup();
     RUN(smooth_lines_on_the_boundary);
     RUN(smooth_lines_close_every_outline);

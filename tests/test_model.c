@@ -257,6 +257,7 @@ TEST(prepared_shared_models)
  * (feline at 100 triangles: 36 px, a quarter being 27) further. */
 static void no_bulges(const char *name, uint32_t target)
 {
+    if (!check_built(SILK_REFERENCE_MODES, "SILK_REFERENCE_MODES: PN")) return;
     simp_mesh fine, coarse;
     size_t len;
     uint8_t *b = prepare_shared(name, target, &len, &fine, &coarse);

@@ -815,6 +815,8 @@ int main(int argc, char **argv)
     const char *slash = argc > 0 ? strrchr(argv[0], '/') : NULL;
     if (slash && slash - argv[0] >= 6 && !strncmp(slash - 6, "/tests", 6))
         snprintf(silk_path, sizeof silk_path, "%.*s/silk", (int)(slash - 6 - argv[0]), argv[0]);
+    /* The CLI is a host tool: a board configuration's tests use the host's. */
+    if (getenv("SILK") && *getenv("SILK")) snprintf(silk_path, sizeof silk_path, "%s", getenv("SILK"));
     RUN(cube_split_normals);
     RUN(crease_threshold);
     RUN(smoothing_groups);

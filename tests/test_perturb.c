@@ -110,8 +110,8 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
                 ps->pinned++;
             }
         }
-        uint32_t sl = f->vert_offset ? f->vert_offset[v] : SILK_NO_INDEX;
-        int moved = sl != SILK_NO_INDEX;
+        uint32_t sl = f->vert_offset ? f->vert_offset[v] : SILK_PLAN_NONE;
+        int moved = sl != SILK_PLAN_NONE;
         int ref = lift > 2.0 / 65536;          /* below that, rounding decides */
         ref_moved += ref;
         if (moved != ref && lift > 4.0 / 65536) ps->wrong_moved++;
@@ -141,9 +141,9 @@ static void check_view(const silk_mesh *m, const silk_sil_frame *f, const silk_f
     ps->ref_moved += ref_moved;
     /* every corner at a moved vertex is a MOVED record with that vertex's offset */
     for (uint32_t c = 0; c < 3 * m->ntris; c++) {
-        uint32_t sl = f->vert_offset ? f->vert_offset[m->tri[c]] : SILK_NO_INDEX;
+        uint32_t sl = f->vert_offset ? f->vert_offset[m->tri[c]] : SILK_PLAN_NONE;
         const silk_vrec *r = &g->vrec[silk_remesh_corner_rec(f, c / 3, c % 3, g->part_rec[c / 3])];
-        if (sl == SILK_NO_INDEX ? r->kind != SILK_VREC_CORNER : (r->kind != SILK_VREC_MOVED || r->b != sl))
+        if (sl == SILK_PLAN_NONE ? r->kind != SILK_VREC_CORNER : (r->kind != SILK_VREC_MOVED || r->b != sl))
             ps->wrong_records++;
         if (r->a != c) ps->wrong_records++;
     }

@@ -621,6 +621,7 @@ TEST(bad_arguments_and_small_arenas)
 
 int main(void)
 {
+    CHECK_PROGRAM_NEEDS(SILK_REFERENCE_MODES);
     arena_buf = malloc(ARENA_BYTES);
     RUN(edge_ctrl_vs_double);
     RUN(patch_vs_double);

@@ -284,7 +284,7 @@ TEST(unshaded_triangles_are_skipped)
                 }
     }
     printf("  %ld frames, %ld with fewer fragments written\n", cases, fewer);
-    CHECK(check_cur_skipped || fewer > 0);
+    CHECK(check_cur_skipped || !SILK_DEPTH_WINS || fewer > 0);   /* (a build without it: the same pixels) */
     free(fast);
     free(plain);
 }

@@ -151,7 +151,8 @@ TEST(silhouette_triangles_sphere) { silhouette_triangles("sphere-200.obj", 40); 
 /* silk_sil_tri_front decides most triangles without normalising the face
  * normal: the same answers as the normalised test, edge-on triangles
  * (|cos| < 1e-3 between face normal and eye direction, counted) included;
- * silk_sil_tri_fronts gives them all at once. */
+ * silk_sil_tri_fronts gives them all at once (a build with
+ * SILK_AA_CANDIDATES; in one without, it is not called). */
 static void tri_front_as_normalised(const char *name, int nviews)
 {
     silk_arena a;
@@ -178,7 +179,8 @@ static void tri_front_as_normalised(const char *name, int nviews)
     }
     printf("  %s: %d views, %u edge-on triangles\n", name, nviews, grazing);
     CHECKF(wrong == 0, "%s: %u triangles face the other way", name, wrong);
-    CHECKF(wrong_all == 0, "%s: %u triangles face the other way all at once", name, wrong_all);
+    CHECKF(!SILK_AA_CANDIDATES || wrong_all == 0, "%s: %u triangles face the other way all at once", name,
+           wrong_all);
 }
 
 TEST(tri_front_as_normalised_test)

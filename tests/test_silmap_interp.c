@@ -609,6 +609,7 @@ TEST(simplify_map)
 
 int main(void)
 {
+    CHECK_PROGRAM_NEEDS(SILK_CLIP_MODE);   /* clip mode is the interpolation's one user */
     RUN(rectification);
     RUN(projective_map);
     RUN(lerp_convex_is_visual_hull);

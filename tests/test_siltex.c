@@ -747,6 +747,7 @@ int main(int argc, char **argv)
         if (!ok) fprintf(stderr, "test_siltex: cannot write %s\n", argv[2]);
         return ok ? 0 : 1;
     }
+    CHECK_PROGRAM_NEEDS(SILK_SILTEX_MODE);
     RUN(azimuth_matches_atan2);
     RUN(cos_matches);
     RUN(acos_matches);

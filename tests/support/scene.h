@@ -18,6 +18,16 @@
 
 #define TS_BG 0xFF0000u
 
+/* Whether the core draws mode (silk/config.h: a board's configuration may
+ * leave PN and BLEND out), and --wire's lines: the tests that render in
+ * every mode leave out what the core was built without. */
+static inline int ts_mode_built(int mode)
+{
+    return mode <= SILK_MODE_SMOOTH || (mode <= SILK_MODE_BLEND ? SILK_REFERENCE_MODES
+                                        : mode == SILK_MODE_CLIP ? SILK_CLIP_MODE : SILK_SILTEX_MODE);
+}
+#define TS_WIRE_BUILT SILK_LINES
+
 /* A growable triangle list: coordinates as doubles, corners 0-based. */
 typedef struct ts_mesh {
     double *v;
