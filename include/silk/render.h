@@ -145,6 +145,8 @@ int silk_mode_parse(const char *name, silk_mode *mode, uint32_t *level);
 
 typedef struct silk_frame_stats {
     uint32_t silhouette_tris, bridges, samples, tris_drawn, moved_vertices;
+    uint32_t flat_chains;    /* SMOOTH: silhouette chains that could not be smoothed safely, drawn as the
+                                coarse mesh's outline there (docs/architecture.md, "Flat chains") */
     size_t frame_bytes;      /* per-frame arena bytes at the frame's peak */
     int fell_back;           /* 1 if the arena ran out and part of the frame was drawn unsmoothed */
     uint32_t clip_tri;       /* CLIP: the polytope triangle the eye was found in */

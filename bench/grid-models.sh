@@ -1,0 +1,39 @@
+#!/bin/sh
+# bench/grid-models.sh SILK CACHE [NAME...] - the prepared models of the
+# robustness grid: for every detailed mesh M-fine.obj of ../shared/meshes
+# (or $SILK_MESHES; only the NAMEs given, if any), CACHE/M-prep.silk
+# (`silk prepare M-fine.obj --triangles 500`) and CACHE/M-fit.silk (the
+# same with --fit), both with --no-clip (the same coarse mesh, without
+# clip mode's hull and map).  Made again only when the sources that make
+# them change (their checksum is kept in CACHE/stamp).  Used by
+# bench/grid.sh and tests/cli_grid.sh.
+set -eu
+silk=$1
+cache=$2
+shift 2
+meshes=${SILK_MESHES:-../shared/meshes}
+src=$(cd "$(dirname "$0")/.." && pwd)
+mkdir -p "$cache"
+# what a prepared model depends on: the tool's simplification, surface
+# normals and fit, and the core's loader (fixed-point positions)
+sum=$(cat "$src"/tools/cmd_prepare.c "$src"/tools/simplify.c "$src"/tools/surface.c "$src"/tools/fit.c \
+  "$src"/tools/closest.c "$src"/tools/model_file.c "$src"/src/obj.c "$src"/src/load.c "$src"/src/fixed.c 2>/dev/null |
+  cksum | cut -d' ' -f1)
+if [ "$(cat "$cache/stamp" 2>/dev/null)" != "$sum" ]; then
+  rm -f "$cache"/*.silk
+  echo "$sum" > "$cache/stamp"
+fi
+names=$*
+if [ -z "$names" ]; then
+  for f in "$meshes"/*-fine.obj; do names="$names $(basename "$f" -fine.obj)"; done
+fi
+for m in $names; do
+  f=$meshes/$m-fine.obj
+  [ -f "$f" ] || continue
+  if [ ! -f "$cache/$m-prep.silk" ]; then
+    "$silk" prepare "$f" -o "$cache/$m-prep.silk" --triangles 500 --no-clip --quiet >/dev/null
+  fi
+  if [ ! -f "$cache/$m-fit.silk" ]; then
+    "$silk" prepare "$f" -o "$cache/$m-fit.silk" --triangles 500 --no-clip --fit --quiet >/dev/null
+  fi
+done
