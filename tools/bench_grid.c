@@ -49,7 +49,7 @@ typedef struct grid_cfg {
     int width, height, threads, worst;
     silk_fx tolerance;           /* 0: the library's default */
     long max_lost, max_hole;     /* -1: not checked */
-    const char *md, *csv;
+    const char *md, *csv, *dump;
     int quiet;
 } grid_cfg;
 
@@ -59,6 +59,7 @@ typedef struct grid_view {
     uint32_t lost, hole, hole_px;   /* lost pixels; the largest hole; all hole pixels */
     double bulge, excess;
     uint32_t flat_chains;        /* silhouette chains drawn as the flat outline */
+    int box[4];                  /* x0, y0, x1, y1 of the lost pixels (x1 < x0: none) */
     int fell_back, failed;
 } grid_view;
 
@@ -105,6 +106,8 @@ static void help(FILE *f)
             "  --max-hole N        fail (exit 1) when a view has a hole of more than N pixels\n"
             "  --md FILE           the summary and the worst views as Markdown\n"
             "  --csv FILE          every view as a CSV row\n"
+            "  --dump DIR          each worst view as DIR/MESH-yYAW-pPITCH.png: flat, smooth\n"
+            "                      (lost pixels red) and the detailed model, magnified\n"
             "  --quiet             no progress line on a terminal\n"
             "\n"
             "example:\n"
@@ -244,8 +247,17 @@ static int measure_view(const grid_cfg *c, grid_frame *f, cli_mesh *coarse, cli_
         return cli_fail(CLI_EXIT_INPUT, "out of memory");
     const uint32_t in2 = GRID_INSIDE_PX * GRID_INSIDE_PX;
     gv->lost = 0;
+    gv->box[0] = gv->box[1] = INT32_MAX;
+    gv->box[2] = gv->box[3] = -1;
     for (size_t i = 0; i < px; i++)
-        gv->lost += !f->smooth[i] && f->flat[i] && f->fine[i] && f->d_flat[i] >= in2 && f->d_fine[i] >= in2;
+        if (!f->smooth[i] && f->flat[i] && f->fine[i] && f->d_flat[i] >= in2 && f->d_fine[i] >= in2) {
+            int x = (int)(i % w), y = (int)(i / w);
+            gv->lost++;
+            if (x < gv->box[0]) gv->box[0] = x;
+            if (y < gv->box[1]) gv->box[1] = y;
+            if (x > gv->box[2]) gv->box[2] = x;
+            if (y > gv->box[3]) gv->box[3] = y;
+        }
 
     /* outside: squared distance to the nearest flat pixel, then to the nearest of either */
     if (distance_to(f->flat, 1, w, h, f->tmp, f->d_out)) return cli_fail(CLI_EXIT_INPUT, "out of memory");
@@ -324,6 +336,76 @@ static int run_job(grid_job *j)
     progress_end(&j->pr);
     pthread_mutex_destroy(&j->lock);
     return j->rc;
+}
+
+/* ---- pictures of the worst views -------------------------------------------------- */
+
+/* View v as DIR/MESH-yYAW-pPITCH.png: flat, smooth and the detailed model
+ * side by side (shaded, as measured), cropped round the lost pixels (the
+ * whole frame when none) and magnified; smooth's lost pixels red. */
+static int dump_view(const grid_cfg *c, cli_mesh *coarse, cli_mesh *fine, const char *name, const grid_view *v)
+{
+    int w = c->width, h = c->height, rc = 0;
+    size_t px = (size_t)w * h;
+    grid_frame f;
+    uint8_t *shot[3] = { NULL, NULL, NULL }, *out = NULL;
+    if (frame_alloc(&f, w, h)) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
+    cli_scene_opts o;
+    cli_scene_opts_default(&o);
+    o.width = w;
+    o.height = h;
+    o.yaw = v->yaw;
+    o.pitch = v->pitch;
+    silk_camera cam;
+    silk_view view;
+    silk_error err;
+    silk_frame_stats st;
+    if (!rc && (rc = cli_camera(&o, &coarse->mesh, &cam)) == 0 && silk_view_init(&view, &cam, &err) != SILK_OK)
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", coarse->name, err.msg);
+    const silk_mode mode[3] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_FLAT };
+    uint8_t *mask[3] = { f.flat, f.smooth, f.fine };
+    for (int i = 0; i < 3 && !rc; i++) {
+        cli_mesh *m = i == 2 && fine ? fine : coarse;
+        if (!(shot[i] = malloc(3 * px))) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
+        else if ((rc = draw(&f, m, &view, mode[i], i == 1 ? c->tolerance : 0, mask[i], &st)) == 0)
+            memcpy(shot[i], f.color, 3 * px);
+    }
+    /* the crop: the lost pixels and 24 px round them, at least 96 x 72 */
+    int x0 = 0, y0 = 0, x1 = w - 1, y1 = h - 1;
+    if (v->box[2] >= v->box[0]) {
+        int cx = (v->box[0] + v->box[2]) / 2, cy = (v->box[1] + v->box[3]) / 2;
+        int hw = (v->box[2] - v->box[0]) / 2 + 24, hh = (v->box[3] - v->box[1]) / 2 + 24;
+        if (hw < 48) hw = 48;
+        if (hh < 36) hh = 36;
+        x0 = cx - hw < 0 ? 0 : cx - hw, x1 = cx + hw >= w ? w - 1 : cx + hw;
+        y0 = cy - hh < 0 ? 0 : cy - hh, y1 = cy + hh >= h ? h - 1 : cy + hh;
+    }
+    int cw = x1 - x0 + 1, ch = y1 - y0 + 1, s = cw <= 110 ? 3 : cw <= 170 ? 2 : 1, gap = 4;
+    int ow = 3 * cw * s + 2 * gap, oh = ch * s;
+    if (!rc && !(out = malloc(3 * (size_t)ow * oh))) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
+    if (!rc) {
+        memset(out, 255, 3 * (size_t)ow * oh);
+        for (int i = 0; i < 3; i++)
+            for (int y = 0; y < oh; y++)
+                for (int x = 0; x < cw * s; x++) {
+                    size_t src = (size_t)(y0 + y / s) * w + (x0 + x / s);
+                    uint8_t *d = &out[3 * ((size_t)y * ow + i * (cw * s + gap) + x)];
+                    memcpy(d, &shot[i][3 * src], 3);
+                    if (i == 1 && !f.smooth[src] && f.flat[src] && f.fine[src]) {
+                        /* not covered by smooth where both references are: red where lost counts it */
+                        d[0] = 224, d[1] = 30, d[2] = 30;
+                    }
+                }
+        silk_target t;
+        silk_target_init(&t, ow, oh, 0, oh, SILK_PIX_RGB888, out, NULL);
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s-y%g-p%g.png", c->dump, name, v->yaw, v->pitch);
+        if (silk_png_write(&t, path, &err) != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
+    }
+    for (int i = 0; i < 3; i++) free(shot[i]);
+    free(out);
+    frame_free(&f);
+    return rc;
 }
 
 /* ---- reporting -------------------------------------------------------------------- */
@@ -464,6 +546,9 @@ int bench_grid(int argc, char **argv)
         } else if (cli_is(a, "--csv")) {
             VALUE();
             c.csv = v;
+        } else if (cli_is(a, "--dump")) {
+            VALUE();
+            c.dump = v;
         } else if (strcmp(a, "--quiet") == 0) {
             c.quiet = 1;
         } else if (a[0] == '-' && a[1]) {
@@ -491,7 +576,7 @@ int bench_grid(int argc, char **argv)
         else have_csv = 1;
     }
     if (have_csv)
-        fprintf(csv.fp, "mesh,yaw,pitch,lost,hole,hole_px,bulge_px,excess_px,flat_chains,fell_back\n");
+        fprintf(csv.fp, "mesh,yaw,pitch,lost,hole,hole_px,bulge_px,excess_px,flat_chains,fell_back,lost_x0,lost_y0,lost_x1,lost_y1\n");
     if (have_md)
         fprintf(md.fp,
                 "| mesh | views | views losing 10+ px | most lost | views with a hole > 2 px | largest hole | "
@@ -538,6 +623,19 @@ int bench_grid(int argc, char **argv)
         int k = worst_views(views, nviews, c.worst, worst);
         size_t cap = 512 * (size_t)(k + 1), used = 0;
         worst_md[m] = malloc(cap);
+        cli_mesh dc, df;
+        memset(&dc, 0, sizeof dc);
+        memset(&df, 0, sizeof df);
+        if (c.dump && k > 0) {
+            silk_load_opts lo;
+            silk_load_opts_default(&lo);
+            r = cli_mesh_load(&dc, spec, &lo, 1, 0, (size_t)8 << 20, 0, 1);
+            if (!r && j.fine) r = cli_mesh_load(&df, j.fine, &lo, 0, 0, (size_t)8 << 20, 0, 1);
+            for (int i = 0; i < k && !r; i++) r = dump_view(&c, &dc, j.fine ? &df : NULL, name, &views[worst[i]]);
+            if (r) rc = r;
+        }
+        cli_mesh_free(&dc);
+        cli_mesh_free(&df);
         for (int i = 0; i < k; i++) {
             const grid_view *v = &views[worst[i]];
             char cmd[1024];
@@ -558,8 +656,9 @@ int bench_grid(int argc, char **argv)
                 failed_check = 1;
             }
             if (have_csv)
-                fprintf(csv.fp, "%s,%g,%g,%u,%u,%u,%.2f,%.2f,%u,%d\n", name, v->yaw, v->pitch, v->lost, v->hole,
-                        v->hole_px, v->bulge, v->excess, v->flat_chains, v->fell_back);
+                fprintf(csv.fp, "%s,%g,%g,%u,%u,%u,%.2f,%.2f,%u,%d,%d,%d,%d,%d\n", name, v->yaw, v->pitch, v->lost, v->hole,
+                        v->hole_px, v->bulge, v->excess, v->flat_chains, v->fell_back, v->lost ? v->box[0] : -1,
+                        v->lost ? v->box[1] : -1, v->lost ? v->box[2] : -1, v->lost ? v->box[3] : -1);
         }
         if (have_md)
             fprintf(md.fp, "| %s | %d | %d | %u | %d | %u | %.1f | %.1f | %u |\n", name, s.views, s.lost10, s.lost_max,
