@@ -18,15 +18,24 @@
  * moves V up when it is already below one), so the sign is turned here into
  * what the text asks for: the largest motion needed, downwards.
  *
- * Three guards the paper does not have.  A plane nearly parallel to R^
- * (R^.N_i < 1/4) is skipped rather than divided by.  A vertex never moves
- * farther than its distance to M_i.  And no plane asks for more than twice
- * the segment's rise (how far its ends lie above P_i, about the depth by
- * which the coarse triangles stick out over it): on a coarse, strongly curved
- * mesh the one-ring of a one-ring reaches round the surface, and the plain
- * rule then pushed vertices of knot-480 by 0.5 units - more than the tube's
- * radius - through the other side; capped, the largest move in that view
- * is 0.07.
+ * Guards the paper does not have.  A plane nearly parallel to R^
+ * (R^.N_i < 1/4) is skipped rather than divided by.  A plane constrains only
+ * the vertices beside its segment: those whose projection onto the
+ * segment's chord on screen falls within it or a quarter of it past its
+ * ends.  The plane is the segment's
+ * tangent plane at M_i, and an outline that goes on curving beyond the
+ * segment's ends rises above it: the plain rule lowered the vertices along
+ * the outline far beyond the segment, which cannot hide it, and cut notches
+ * into the outline there (bunny-500's ears seen from below, 11 px at
+ * 320x240).  And a vertex that would have to move further than the
+ * segment's rise (how far its ends lie above P_i: the depth by which the
+ * coarse triangles stick out over a concave curve they approximate) is
+ * another part of the surface standing in front of the segment - the far
+ * sheet of a thin ear, a tail curled over the body - which hides it as the
+ * detailed model would: it stays where it is, and the segment stays hidden
+ * (capping the move instead tore holes into feline's tail).  On a coarse,
+ * strongly curved mesh the plain rule pushed vertices of knot-480 through
+ * the tube's far side; no vertex moves more than a rise now.
  *
  * The result is one offset per moved vertex; every corner at that vertex
  * becomes a MOVED record with it, so the vertex moves as one.
@@ -36,7 +45,6 @@
 #include "remesh.h"
 
 #define MIN_COS ((int64_t)1 << 30)     /* 1/4 in Q32.32 */
-#define RISE_CAP (2 * SILK_FX_ONE)      /* times the segment's rise */
 
 static void visit_near(silk_sil_frame *f, uint32_t t, const silk_sil_seg *s, uint32_t stamp, int pass);
 
@@ -84,6 +92,18 @@ int silk_perturb_alloc(silk_sil_frame *f)
     return f->acc != NULL;
 }
 
+/* Whether p lies beside segment s: its projection onto the segment's chord
+ * on screen falls within the chord or a quarter of it past either end
+ * (where the corners at the segment's ends lie). */
+static int beside(const silk_view *v, const silk_sil_seg *s, silk_vec3 p)
+{
+    silk_vec2 a, b, q;
+    if (!silk_view_project(v, s->c.p0, &a) || !silk_view_project(v, s->c.p1, &b) || !silk_view_project(v, p, &q)) return 0;
+    int64_t fx = (int64_t)b.x - a.x, fy = (int64_t)b.y - a.y, qx = (int64_t)q.x - a.x, qy = (int64_t)q.y - a.y;
+    int64_t d = fx * qx + fy * qy, l = fx * fx + fy * fy;
+    return d >= -l / 4 && d <= l + l / 4;
+}
+
 /* One neighbouring vertex of segment s, once per stamp.  Pass -1 only
  * counts the vertices (nslots), marking them in vert_slot. */
 static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint32_t stamp, int pass)
@@ -110,14 +130,12 @@ static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint
         return;
     }
     int64_t den = silk_v3_dot64(f->acc[sl], s->nm);
-    if (den < MIN_COS) return;
-    silk_vec3 vm = silk_v3_sub(f->m->pos[vtx], s->m);
-    int64_t num = silk_v3_dot64(vm, s->nm);
+    if (den < MIN_COS || !beside(f->v, s, f->m->pos[vtx])) return;
+    int64_t num = silk_v3_dot64(silk_v3_sub(f->m->pos[vtx], s->m), s->nm);
     if (num <= 0) return;                          /* already below P_i */
     /* num < 2^46 for model coordinates within SILK_COORD_MAX: the shift fits */
     silk_fx lift = silk_fx_sat((num << 16) / den);
-    lift = silk_fx_min(lift, silk_fx_min(silk_v3_length(vm), silk_fx_mul(RISE_CAP, s->rise)));
-    if (lift > f->lift[sl]) f->lift[sl] = lift;
+    if (lift <= s->rise && lift > f->lift[sl]) f->lift[sl] = lift;   /* beyond a rise: not the segment's (above) */
 }
 
 /* visit() for triangle t's corners and every vertex one edge away. */
