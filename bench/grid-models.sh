@@ -16,8 +16,9 @@ src=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$cache"
 # what a prepared model depends on: the tool's simplification, surface
 # normals and fit, and the core's loader (fixed-point positions)
-sum=$(cat "$src"/tools/cmd_prepare.c "$src"/tools/simplify.c "$src"/tools/surface.c "$src"/tools/fit.c \
-  "$src"/tools/closest.c "$src"/tools/model_file.c "$src"/src/obj.c "$src"/src/load.c "$src"/src/fixed.c 2>/dev/null |
+sum=$(cat "$src"/tools/cli/cmd_prepare.c "$src"/tools/prep/simplify.c "$src"/tools/prep/surface.c \
+  "$src"/tools/prep/fit.c "$src"/tools/prep/closest.c "$src"/tools/prep/model_file.c "$src"/src/obj.c \
+  "$src"/src/load.c "$src"/src/fixed.c |
   cksum | cut -d' ' -f1)
 if [ "$(cat "$cache/stamp" 2>/dev/null)" != "$sum" ]; then
   rm -f "$cache"/*.silk
