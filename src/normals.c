@@ -7,9 +7,8 @@
  * triangles are in different OBJ smoothing groups.  Around each vertex the
  * incident triangles fall into groups connected through non-feature edges
  * (union-find over triangle corners); each group gets one normal, the
- * average of its face normals weighted by the corner's angle (Thurmer &
- * Wuthrich 1998, the paper's [18]) and its triangle's area, so a vertex on a
- * crease has one normal per side.  With
+ * angle-weighted average of its face normals (Thurmer & Wuthrich 1998, the
+ * paper's [18]), so a vertex on a crease has one normal per side.  With
  * file normals on every corner, the groups are the corners of a vertex that
  * share a file normal, and that normal is used as given (normalised); an
  * edge across which they differ is a feature edge too.
@@ -219,57 +218,21 @@ static void split_apex_groups(const silk_mesh *m, const silk_vec3 *fn, const uin
     }
 }
 
-/* |c| / 2^s for a cross product c, s the same for every triangle of the
- * mesh (area_shift): the doubled area, to 16 bits of the largest. */
-static int64_t tri_area(const int64_t cr[3], int s)
-{
-    uint64_t q = 0;
-    for (int k = 0; k < 3; k++) {
-        int64_t c = s ? silk_shr_round64(cr[k], s) : cr[k];
-        q += (uint64_t)(c * c);
-    }
-    int64_t r = (int64_t)silk_isqrt64(q);
-    return r > 0 ? r : 1;   /* a small triangle still counts by its angles */
-}
-
-/* The shift that brings every triangle's cross product below 2^15 per
- * component. */
-static int area_shift(const silk_mesh *m)
-{
-    uint64_t big = 0;
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        int64_t cr[3];
-        silk_tri_cross64(m, t, cr);
-        for (int k = 0; k < 3; k++) big |= silk_abs64(cr[k]);
-    }
-    int bits = 0;
-    while (bits < 64 && (big >> bits) != 0) bits++;
-    return bits > 15 ? bits - 15 : 0;
-}
-
-/* Sum angle * area * face normal per group (exact in 64 bits: each term
- * below 2^50), then normalise once.  A corner counts by its angle (Thurmer
- * & Wuthrich) and by its triangle's area, so that a strip of thin
- * triangles along an edge - a CAD model's chamfer, its corners nearly
- * right angles - does not turn the normal of the large flat face it
- * borders away from that face (wingnut-500's wings bulged 10 px at
- * 640x480 past their straight outline).  A group whose sum vanishes (only
- * degenerate triangles, or faces that cancel) takes the first face normal
- * it has, else +z. */
+/* Sum angle * face normal per group in Q32.32 (exact), then normalise once.
+ * A group whose sum vanishes (only degenerate triangles, or faces that
+ * cancel) takes the first face normal it has, else +z. */
 static silk_status average_normals(const silk_mesh *m, const silk_vec3 *fn, silk_arena *a, silk_vec3 *normal)
 {
     int64_t *acc = silk_arena_array_top(a, 3 * (size_t)m->nnormals, sizeof *acc, SILK_MEM_LOAD);
     if (!acc) return SILK_ERR_NOMEM;
-    int s = area_shift(m);
     for (uint32_t t = 0; t < m->ntris; t++) {
         silk_vec3 n = fn[t];
         if (n.x == 0 && n.y == 0 && n.z == 0) continue;
         int64_t cr[3];
         silk_tri_cross64(m, t, cr);
-        int64_t area = tri_area(cr, s);
         for (uint32_t k = 0; k < 3; k++) {
             silk_index g = m->tri_normal[3 * t + k];
-            int64_t w = corner_angle(cr, corner_dot(m, t, k)) * area;
+            int64_t w = corner_angle(cr, corner_dot(m, t, k));
             acc[3 * g] += w * n.x;
             acc[3 * g + 1] += w * n.y;
             acc[3 * g + 2] += w * n.z;

@@ -1,6 +1,6 @@
 /*
  * test_normals.c - crease and smoothing-group flags, and the split,
- * shading normals weighted by angle and area (paper III-B, Fig. 8), against a double
+ * angle-weighted shading normals (paper III-B, Fig. 8), against a double
  * reference; file normals; cone apexes split into face normals (cone-70,
  * armadillo-500's spike, `silk gen cone`, pyramids either side of 50
  * degrees); and the measurements behind the default crease angle and the
@@ -188,45 +188,6 @@ static uint32_t ref_split_apexes(const silk_mesh *m, uint32_t *p)
     return split;
 }
 
-/* Triangle t's doubled area as normals.c weighs it: the exact integer
- * cross product, brought to 16 bits of the mesh's largest by one shift for
- * every triangle, its length (at least 1). */
-static void tri_cross(const silk_mesh *m, uint32_t t, int64_t c[3])
-{
-    silk_vec3 p0 = m->pos[m->tri[3 * t]], p1 = m->pos[m->tri[3 * t + 1]], p2 = m->pos[m->tri[3 * t + 2]];
-    int64_t a[3] = { (int64_t)p1.x - p0.x, (int64_t)p1.y - p0.y, (int64_t)p1.z - p0.z };
-    int64_t b[3] = { (int64_t)p2.x - p0.x, (int64_t)p2.y - p0.y, (int64_t)p2.z - p0.z };
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static int area_shift(const silk_mesh *m)
-{
-    uint64_t big = 0;
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        int64_t c[3];
-        tri_cross(m, t, c);
-        for (int k = 0; k < 3; k++) big |= (uint64_t)(c[k] < 0 ? -c[k] : c[k]);
-    }
-    int bits = 0;
-    while (bits < 64 && (big >> bits) != 0) bits++;
-    return bits > 15 ? bits - 15 : 0;
-}
-
-static double area_weight(const silk_mesh *m, uint32_t t, int s)
-{
-    int64_t c[3];
-    tri_cross(m, t, c);
-    double q = 0;
-    for (int k = 0; k < 3; k++) {
-        double v = s ? (double)silk_shr_round64(c[k], s) : (double)c[k];
-        q += v * v;
-    }
-    double r = floor(sqrt(q));
-    return r > 0 ? r : 1;
-}
-
 typedef struct normal_report {
     double max_err_ulp;      /* worst component error of a shading normal */
     double max_err_kappa;    /* its conditioning (sum of weights / length of the weighted sum) */
@@ -235,8 +196,8 @@ typedef struct normal_report {
 
 /* Checks the crease flags against the double dihedral angle (edges within
  * margin_deg of the threshold may go either way), then the grouping and the
- * normals against a double average weighted by angle and area over groups
- * formed from m's feature flags and split at apexes. */
+ * normals against a double angle-weighted average over groups formed from
+ * m's feature flags and split at apexes. */
 static void check_normals(const silk_mesh *m, double crease_deg, double margin_deg, normal_report *r)
 {
     memset(r, 0, sizeof *r);
@@ -255,14 +216,13 @@ static void check_normals(const silk_mesh *m, double crease_deg, double margin_d
     uint32_t *silk_of = malloc(sizeof *silk_of * nc), *ref_of = malloc(sizeof *ref_of * (m->nnormals + 1));
     for (uint32_t c = 0; c < nc; c++) silk_of[c] = SILK_NO_INDEX;
     for (uint32_t g = 0; g <= m->nnormals; g++) ref_of[g] = SILK_NO_INDEX;
-    int shift = area_shift(m);
     for (uint32_t t = 0; t < m->ntris; t++) {
-        double n[3], ang[3], area = area_weight(m, t, shift);
+        double n[3], ang[3];
         ref_face(m, t, n, ang);
         for (int k = 0; k < 3; k++) {
             uint32_t c = 3 * t + k, r0 = find(p, c), g = m->tri_normal[c];
-            for (int i = 0; i < 3; i++) sum[3 * r0 + i] += ang[k] * area * n[i];
-            wsum[r0] += ang[k] * area;
+            for (int i = 0; i < 3; i++) sum[3 * r0 + i] += ang[k] * n[i];
+            wsum[r0] += ang[k];
             /* the same partition: ref group <-> silk normal, one to one */
             if (silk_of[r0] == SILK_NO_INDEX) silk_of[r0] = g;
             CHECKF(silk_of[r0] == g, "corner %u: normal %u, its group has %u", c, g, silk_of[r0]);
