@@ -174,7 +174,7 @@ static silk_fx turn_at(const silk_vec3 *p, const silk_index *vert, uint32_t k, i
  * tangent at vertex i < k is then the long edge's direction, so the line
  * stays straight (silk_arc_tangent gives the chord itself) and the arc
  * meets it tangentially. */
-#define SILK_FEATURE_G1 3
+#define SILK_FEATURE_G1 2
 
 static void g1_dir(const silk_vec3 *p, const silk_index *vert, uint32_t k, int closed, uint32_t i, silk_vec3 *dir)
 {

@@ -129,7 +129,7 @@ static int passes(const silk_mesh *m, uint32_t v, int turn_rule)
 
 /* features.c's SILK_FEATURE_G1, and how close to its decisions the
  * reference leaves them to rounding. */
-#define G1 3.0
+#define G1 2.0
 #define G1_MARGIN 0.01
 
 /* The sine of the turn at v, 0 where the polyline does not pass through. */
