@@ -22,7 +22,11 @@
  * (R^.N_i < 1/4) is skipped rather than divided by.  A plane constrains only
  * the vertices beside its segment: those whose projection onto the
  * segment's chord on screen falls within it or a quarter of it past its
- * ends.  The plane is the segment's
+ * ends, and that stand out beyond the chord by no more than twice the
+ * segment's own sagitta there (the coarse polygon around the concave curve
+ * it approximates; a vertex further out is the surface going on beyond
+ * the curve, which dragon-500 prepared with --fit showed cut 10 px deep
+ * when lowered).  The plane is the segment's
  * tangent plane at M_i, and an outline that goes on curving beyond the
  * segment's ends rises above it: the plain rule lowered the vertices along
  * the outline far beyond the segment, which cannot hide it, and cut notches
@@ -94,14 +98,22 @@ int silk_perturb_alloc(silk_sil_frame *f)
 
 /* Whether p lies beside segment s: its projection onto the segment's chord
  * on screen falls within the chord or a quarter of it past either end
- * (where the corners at the segment's ends lie). */
+ * (where the corners at the segment's ends lie), and it stands out beyond
+ * the chord, away from the segment's middle, by no more than SAG_CAP
+ * times the middle's distance from the chord.  Pixel coordinates below
+ * 2^29 (SILK_MAX_DIM): the products fit. */
+#define SAG_CAP 2
 static int beside(const silk_view *v, const silk_sil_seg *s, silk_vec3 p)
 {
-    silk_vec2 a, b, q;
-    if (!silk_view_project(v, s->c.p0, &a) || !silk_view_project(v, s->c.p1, &b) || !silk_view_project(v, p, &q)) return 0;
+    silk_vec2 a, b, q, mm;
+    if (!silk_view_project(v, s->c.p0, &a) || !silk_view_project(v, s->c.p1, &b) || !silk_view_project(v, p, &q) ||
+        !silk_view_project(v, s->m, &mm))
+        return 0;
     int64_t fx = (int64_t)b.x - a.x, fy = (int64_t)b.y - a.y, qx = (int64_t)q.x - a.x, qy = (int64_t)q.y - a.y;
     int64_t d = fx * qx + fy * qy, l = fx * fx + fy * fy;
-    return d >= -l / 4 && d <= l + l / 4;
+    int64_t cq = fx * qy - fy * qx, cm = fx * ((int64_t)mm.y - a.y) - fy * ((int64_t)mm.x - a.x);
+    int64_t out = cm >= 0 ? -cq : cq, sag = cm >= 0 ? cm : -cm;
+    return d >= -l / 4 && d <= l + l / 4 && out <= SAG_CAP * sag;
 }
 
 /* One neighbouring vertex of segment s, once per stamp.  Pass -1 only

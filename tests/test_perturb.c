@@ -64,18 +64,24 @@ static void screen_of(const silk_view *v, silk_vec3 p, double s[2])
 }
 
 /* Whether V is beside segment s: on screen, its projection onto the
- * chord A B lies within it or a quarter of it past either end.  0.5 when
- * it is too close to the edge of that range for the reference to say. */
+ * chord A B lies within it or a quarter of it past either end, and it
+ * stands out beyond the chord, away from the segment's middle M, by at
+ * most twice M's distance from the chord.  0.5 when it is too close to
+ * the edge of those ranges for the reference to say. */
 static double beside(const silk_view *v, const silk_sil_seg *s, silk_vec3 V)
 {
-    double a[2], b[2], q[2];
+    double a[2], b[2], q[2], mm[2];
     screen_of(v, s->c.p0, a);
     screen_of(v, s->c.p1, b);
     screen_of(v, V, q);
+    screen_of(v, s->m, mm);
     double fx = b[0] - a[0], fy = b[1] - a[1], l = fx * fx + fy * fy;
     double u = l > 0 ? (fx * (q[0] - a[0]) + fy * (q[1] - a[1])) / l : 0;
-    if (fabs(u + 0.25) < 1e-4 || fabs(u - 1.25) < 1e-4) return 0.5;
-    return u >= -0.25 && u <= 1.25;
+    double cq = fx * (q[1] - a[1]) - fy * (q[0] - a[0]), cm = fx * (mm[1] - a[1]) - fy * (mm[0] - a[0]);
+    double out = cm >= 0 ? -cq : cq, lim = 2 * fabs(cm);
+    if (fabs(u + 0.25) < 1e-4 || fabs(u - 1.25) < 1e-4 || fabs(out - lim) < 1e-3 * (fabs(lim) + sqrt(l) * 1e-3))
+        return 0.5;
+    return u >= -0.25 && u <= 1.25 && out <= lim;
 }
 
 /* One view: recompute concavity and perturbation in double from the
