@@ -132,6 +132,7 @@ static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, const int6
 {
     int64_t ld = wlen(dir), lc = *lcp;                 /* < 2^31 each */
     int64_t prod = ld * lc;                            /* |dir||chord|, < 3 * 2^60 */
+    uint64_t par = (uint64_t)prod >> 40;               /* its 2^-10, for the straightness test below */
     /* 1 + cos theta = (prod + dir.chord) / prod: a sum, not a difference,
      * everywhere it is not clamped, so no cancellation. */
     int64_t dot = wdot(dir, chord), den = prod + dot;
@@ -163,7 +164,6 @@ static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, const int6
      * whose both ends are such is exactly its chord, not one bent by the
      * rounding of the points it was made from (a turn of 2^-10 moves a
      * curve by less than 1/4000 of its chord). */
-    uint64_t par = (uint64_t)(ld * lc) >> 40;
     if (dot > 0 && cr2 < par * par) return to_fx(chord->c, chord->e);
 #if !SILK_CPU32
     /* A 64-bit host skips the square root where the cap cannot bind, as

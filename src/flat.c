@@ -72,6 +72,9 @@ void silk_frame_stats_fell_back(silk_frame_stats *stats, uint32_t tris_drawn)
 {
     if (!stats) return;
     stats->silhouette_tris = stats->bridges = stats->samples = stats->moved_vertices = 0;
+#ifndef SILK_NO_VERTEX_CACHE
+    stats->flat_segments = 0;
+#endif
     stats->tris_drawn = tris_drawn;
     silk_frame_fell_short(stats);
 }

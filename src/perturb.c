@@ -100,20 +100,31 @@ int silk_perturb_alloc(silk_sil_frame *f)
  * on screen falls within the chord or a quarter of it past either end
  * (where the corners at the segment's ends lie), and it stands out beyond
  * the chord, away from the segment's middle, by no more than SAG_CAP
- * times the middle's distance from the chord.  Pixel coordinates below
- * 2^29 (SILK_MAX_DIM): the products fit. */
+ * times the middle's distance from the chord.  In eighths of a pixel, so
+ * that the products fit 32 bits: a point more than 1024 px from the
+ * segment's start is not beside it. */
 #define SAG_CAP 2
-static int beside(const silk_view *v, const silk_sil_seg *s, silk_vec3 p)
+#define PT_MAX (1 << 13)   /* 2 PT_MAX = 2^14: the range test below */
+static int beside(silk_sil_frame *f, const silk_sil_seg *s, silk_vec3 p)
 {
-    silk_vec2 a, b, q, mm;
-    if (!silk_view_project(v, s->c.p0, &a) || !silk_view_project(v, s->c.p1, &b) || !silk_view_project(v, p, &q) ||
-        !silk_view_project(v, s->m, &mm))
-        return 0;
-    int64_t fx = (int64_t)b.x - a.x, fy = (int64_t)b.y - a.y, qx = (int64_t)q.x - a.x, qy = (int64_t)q.y - a.y;
-    int64_t d = fx * qx + fy * qy, l = fx * fx + fy * fy;
-    int64_t cq = fx * qy - fy * qx, cm = fx * ((int64_t)mm.y - a.y) - fy * ((int64_t)mm.x - a.x);
-    int64_t out = cm >= 0 ? -cq : cq, sag = cm >= 0 ? cm : -cm;
-    return d >= -l / 4 && d <= l + l / 4 && out <= SAG_CAP * sag;
+    /* from A on screen, in eighths of a pixel: B (the chord), p, the middle M */
+    const silk_vec3 *pts[4] = { &s->c.p0, &s->c.p1, &p, &s->m };
+    int32_t x[4], y[4];
+    for (int i = 0; i < 4; i++) {
+        silk_vec2 q;
+        if (!silk_view_project(f->v, *pts[i], &q)) return 0;
+        x[i] = (q.x >> 13) - (i ? x[0] : 0);
+        y[i] = (q.y >> 13) - (i ? y[0] : 0);
+        if (i && ((uint32_t)(x[i] + PT_MAX) | (uint32_t)(y[i] + PT_MAX)) >> 14) return 0;   /* beyond +-2^13 */
+    }
+    int32_t d = x[1] * x[2] + y[1] * y[2], l = (int32_t)((uint32_t)(x[1] * x[1] + y[1] * y[1]) >> 2);
+    int32_t cq = x[1] * y[2] - y[1] * x[2], cm = x[1] * y[3] - y[1] * x[3];
+    /* out <= SAG_CAP |cm|, out = cq on the side away from M: cq + SAG_CAP cm on M's side */
+    int in = d >= -l && d <= 5 * l;
+#ifndef SILK_NO_VERTEX_CACHE
+    if (in && ((cq + SAG_CAP * cm) ^ cm) < 0) f->refused = 1;   /* left standing in front: counted */
+#endif
+    return in && ((cq + SAG_CAP * cm) ^ cm) >= 0;
 }
 
 /* One neighbouring vertex of segment s, once per stamp.  Pass -1 only
@@ -142,12 +153,15 @@ static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint
         return;
     }
     int64_t den = silk_v3_dot64(f->acc[sl], s->nm);
-    if (den < MIN_COS || !beside(f->v, s, f->m->pos[vtx])) return;
+    if (den < MIN_COS) return;
     int64_t num = silk_v3_dot64(silk_v3_sub(f->m->pos[vtx], s->m), s->nm);
-    if (num <= 0) return;                          /* already below P_i */
+    if (num <= 0 || !beside(f, s, f->m->pos[vtx])) return;   /* already below P_i, or not in its way */
     /* num < 2^46 for model coordinates within SILK_COORD_MAX: the shift fits */
     silk_fx lift = silk_fx_sat((num << 16) / den);
     if (lift <= s->rise && lift > f->lift[sl]) f->lift[sl] = lift;   /* beyond a rise: not the segment's (above) */
+#ifndef SILK_NO_VERTEX_CACHE
+    if (lift > s->rise) f->refused = 1;
+#endif
 }
 
 /* visit() for triangle t's corners and every vertex one edge away. */
@@ -206,8 +220,12 @@ int silk_perturb(silk_sil_frame *f)
         if (f->seg_kept && f->nseg_kept == ns) {
             /* every segment kept, in triangle order (silk_remesh_keep): the
              * concave ones read from there, not sought among every triangle */
-            for (uint32_t j = 0; j < ns; j++)
-                if (f->seg_kept[j].concave) visit_near(f, f->seg_tri[j], &f->seg_kept[j], pass * ns + j + 1, pass);
+            for (uint32_t j = 0; j < ns; j++) {
+                if (!f->seg_kept[j].concave) continue;
+                f->refused = 0;
+                visit_near(f, f->seg_tri[j], &f->seg_kept[j], pass * ns + j + 1, pass);
+                f->flat_segs += f->refused;
+            }
         } else
 #endif
         /* the segments in triangle order */
@@ -217,7 +235,13 @@ int silk_perturb(silk_sil_frame *f)
             silk_sil_seg tmp;   /* rebuilt only where the plan found it concave */
             const silk_sil_seg *s = (f->tri_state[t] & SILK_TS_CONCAVE) && silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
             if (!s || !s->concave) continue;
+#ifndef SILK_NO_VERTEX_CACHE
+            f->refused = 0;
+#endif
             visit_near(f, t, s, pass * ns + i, pass);
+#ifndef SILK_NO_VERTEX_CACHE
+            f->flat_segs += f->refused;
+#endif
         }
         if (pass == 0)
             for (uint32_t sl = 0; sl < f->nslots; sl++)
@@ -227,7 +251,10 @@ int silk_perturb(silk_sil_frame *f)
     for (uint32_t sl = 0; sl < f->nslots; sl++) {
         silk_index vtx = f->slot_vert[sl];
         if (f->lift[sl] > 0 && !silhouette_at(f, vtx)) {
-            f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);   /* noffset <= sl */
+            /* silk_v3_scale(acc, -lift) by components, noffset <= sl */
+            const silk_fx *r = &f->acc[sl].x;
+            silk_fx *o = &f->offset[f->noffset].x;
+            for (int k = 0; k < 3; k++) o[k] = silk_fx_sat(silk_shr_round64((int64_t)r[k] * -f->lift[sl], 16));
             f->vert_slot[vtx] = (silk_index)f->noffset++;
         } else {
             f->vert_slot[vtx] = SILK_NO_INDEX;

@@ -172,6 +172,11 @@ typedef struct silk_sil_frame {
     uint8_t *pair_ready;
     size_t kept_bytes, kept_need, keep_room;
     uint64_t kept_recs, kept_tris, kept_curves;   /* what the kept segments' shares hold in all */
+    /* concave segments the perturbation left to the coarse outline
+     * (silk_frame_stats.flat_segments), and whether the one being visited
+     * is such (perturb.c) */
+    uint32_t flat_segs;
+    uint8_t refused;
 #endif
 } silk_sil_frame;
 

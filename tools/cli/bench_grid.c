@@ -58,7 +58,7 @@ typedef struct grid_view {
     double yaw, pitch;
     uint32_t lost, hole, hole_px;   /* lost pixels; the largest hole; all hole pixels */
     double bulge, excess;
-    uint32_t flat_chains;        /* silhouette chains drawn as the flat outline */
+    uint32_t flat_segments;      /* concave segments left to the coarse outline (silk_frame_stats) */
     int box[4];                  /* x0, y0, x1, y1 of the lost pixels (x1 < x0: none) */
     int fell_back, failed;
 } grid_view;
@@ -91,7 +91,7 @@ static void help(FILE *f)
             "  excess  the same outside both flat's and the detailed object\n"
             "One line per mesh, then its worst views, each with the silk render command\n"
             "that shows it:\n"
-            "  grid MESH views=N lost10=N lost_max=N hole_views=N hole_max=N bulge_max=X excess_max=X flat_chains=N\n"
+            "  grid MESH views=N lost10=N lost_max=N hole_views=N hole_max=N bulge_max=X excess_max=X flat_segments=N\n"
             "  grid-view MESH yaw=Y pitch=P lost=N hole=N bulge=X excess=X: silk render ...\n"
             "docs/measurements.md defines the grid and every number.\n"
             "\n"
@@ -238,7 +238,7 @@ static int measure_view(const grid_cfg *c, grid_frame *f, cli_mesh *coarse, cli_
     memset(&st, 0, sizeof st);
     if ((rc = draw(f, coarse, &view, SILK_MODE_SMOOTH, c->tolerance, f->smooth, &st)) != 0) return rc;
     gv->fell_back = st.fell_back;
-    gv->flat_chains = st.flat_chains;
+    gv->flat_segments = st.flat_segments;
     if (fine && (rc = draw(f, fine, &view, SILK_MODE_FLAT, 0, f->fine, &st)) != 0) return rc;
     if (!fine) memcpy(f->fine, f->flat, px);
 
@@ -420,7 +420,7 @@ static int view_worse(const grid_view *a, const grid_view *b)
 
 typedef struct grid_sum {
     int views, lost10, hole_views, fell_back;
-    uint32_t lost_max, hole_max, flat_chains;
+    uint32_t lost_max, hole_max, flat_segments;
     double bulge_max, excess_max;
 } grid_sum;
 
@@ -432,7 +432,7 @@ static void summarise(const grid_view *v, int n, grid_sum *s)
         s->lost10 += v[i].lost >= 10;
         s->hole_views += v[i].hole > 2;
         s->fell_back += v[i].fell_back;
-        s->flat_chains += v[i].flat_chains;
+        s->flat_segments += v[i].flat_segments;
         if (v[i].lost > s->lost_max) s->lost_max = v[i].lost;
         if (v[i].hole > s->hole_max) s->hole_max = v[i].hole;
         if (v[i].bulge > s->bulge_max) s->bulge_max = v[i].bulge;
@@ -576,7 +576,7 @@ int bench_grid(int argc, char **argv)
         else have_csv = 1;
     }
     if (have_csv)
-        fprintf(csv.fp, "mesh,yaw,pitch,lost,hole,hole_px,bulge_px,excess_px,flat_chains,fell_back,lost_x0,lost_y0,lost_x1,lost_y1\n");
+        fprintf(csv.fp, "mesh,yaw,pitch,lost,hole,hole_px,bulge_px,excess_px,flat_segments,fell_back,lost_x0,lost_y0,lost_x1,lost_y1\n");
     if (have_md)
         fprintf(md.fp,
                 "| mesh | views | views losing 10+ px | most lost | views with a hole > 2 px | largest hole | "
@@ -617,8 +617,8 @@ int bench_grid(int argc, char **argv)
         grid_sum s;
         summarise(views, nviews, &s);
         printf("grid %s views=%d lost10=%d lost_max=%u hole_views=%d hole_max=%u bulge_max=%.1f excess_max=%.1f "
-               "flat_chains=%u%s\n",
-               name, s.views, s.lost10, s.lost_max, s.hole_views, s.hole_max, s.bulge_max, s.excess_max, s.flat_chains,
+               "flat_segments=%u%s\n",
+               name, s.views, s.lost10, s.lost_max, s.hole_views, s.hole_max, s.bulge_max, s.excess_max, s.flat_segments,
                s.fell_back ? " fell_back=1" : "");
         int k = worst_views(views, nviews, c.worst, worst);
         size_t cap = 512 * (size_t)(k + 1), used = 0;
@@ -657,12 +657,12 @@ int bench_grid(int argc, char **argv)
             }
             if (have_csv)
                 fprintf(csv.fp, "%s,%g,%g,%u,%u,%u,%.2f,%.2f,%u,%d,%d,%d,%d,%d\n", name, v->yaw, v->pitch, v->lost, v->hole,
-                        v->hole_px, v->bulge, v->excess, v->flat_chains, v->fell_back, v->lost ? v->box[0] : -1,
+                        v->hole_px, v->bulge, v->excess, v->flat_segments, v->fell_back, v->lost ? v->box[0] : -1,
                         v->lost ? v->box[1] : -1, v->lost ? v->box[2] : -1, v->lost ? v->box[3] : -1);
         }
         if (have_md)
             fprintf(md.fp, "| %s | %d | %d | %u | %d | %u | %.1f | %.1f | %u |\n", name, s.views, s.lost10, s.lost_max,
-                    s.hole_views, s.hole_max, s.bulge_max, s.excess_max, s.flat_chains);
+                    s.hole_views, s.hole_max, s.bulge_max, s.excess_max, s.flat_segments);
         fflush(stdout);
         free(spec);
     }
