@@ -278,20 +278,26 @@ static int measure_view(const grid_cfg *c, grid_frame *f, cli_mesh *coarse, cli_
 
 /* ---- the threads ------------------------------------------------------------------ */
 
-static void *grid_worker(void *arg)
+/* One thread's copies of the meshes, with room for a frame's scratch
+ * besides each as silk bench gives it.  0, or an exit status after the
+ * error. */
+static int grid_load(const grid_job *j, cli_mesh *coarse, cli_mesh *fine)
 {
-    grid_job *j = arg;
-    const grid_cfg *c = j->cfg;
-    cli_mesh coarse, fine;
-    grid_frame f;
     silk_load_opts lo;
     silk_load_opts_default(&lo);
-    memset(&fine, 0, sizeof fine);
-    int rc = frame_alloc(&f, c->width, c->height) ? cli_fail(CLI_EXIT_INPUT, "out of memory") : 0;
-    /* room for the frame's scratch besides the mesh, as silk bench gives it */
-    if (!rc) rc = cli_mesh_load(&coarse, j->coarse, &lo, 1, 0, (size_t)8 << 20, 0, 1);
-    else memset(&coarse, 0, sizeof coarse);
-    if (!rc && j->fine) rc = cli_mesh_load(&fine, j->fine, &lo, 0, 0, (size_t)8 << 20, 0, 1);
+    memset(fine, 0, sizeof *fine);
+    int rc = cli_mesh_load(coarse, j->coarse, &lo, 1, 0, (size_t)8 << 20, 0, 1);
+    if (!rc && j->fine) rc = cli_mesh_load(fine, j->fine, &lo, 0, 0, (size_t)8 << 20, 0, 1);
+    return rc;
+}
+
+/* Views handed out one at a time until none are left or one failed. */
+static void grid_views(grid_job *j, cli_mesh *coarse, cli_mesh *fine, int rc)
+{
+    const grid_cfg *c = j->cfg;
+    grid_frame f;
+    memset(&f, 0, sizeof f);
+    if (!rc && frame_alloc(&f, c->width, c->height)) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
     for (;;) {
         pthread_mutex_lock(&j->lock);
         if (rc && !j->rc) j->rc = rc;
@@ -299,15 +305,22 @@ static void *grid_worker(void *arg)
         if (k < j->nviews) progress_update(&j->pr, j->done, j->nviews);
         pthread_mutex_unlock(&j->lock);
         if (k >= j->nviews) break;
-        rc = measure_view(c, &f, &coarse, j->fine ? &fine : NULL, &j->views[k]);
+        rc = measure_view(c, &f, coarse, j->fine ? fine : NULL, &j->views[k]);
         if (rc) j->views[k].failed = 1;
         pthread_mutex_lock(&j->lock);
         j->done++;
         pthread_mutex_unlock(&j->lock);
     }
+    frame_free(&f);
+}
+
+static void *grid_worker(void *arg)
+{
+    grid_job *j = arg;
+    cli_mesh coarse, fine;
+    grid_views(j, &coarse, &fine, grid_load(j, &coarse, &fine));
     cli_mesh_free(&coarse);
     cli_mesh_free(&fine);
-    frame_free(&f);
     return NULL;
 }
 
@@ -329,10 +342,16 @@ static int run_job(grid_job *j)
     char label[160];
     snprintf(label, sizeof label, "grid %s", j->coarse);
     progress_start(&j->pr, j->cfg->quiet, label);
-    for (int i = 1; i < n; i++)
+    /* this thread's meshes first: a file that cannot be read is said once */
+    cli_mesh coarse, fine;
+    int rc = grid_load(j, &coarse, &fine);
+    for (int i = 1; i < n && !rc; i++)
         if (pthread_create(&th[started], NULL, grid_worker, j) == 0) started++;
-    grid_worker(j);
+    if (!rc) grid_views(j, &coarse, &fine, 0);
+    else j->rc = rc;
     for (int i = 0; i < started; i++) pthread_join(th[i], NULL);
+    cli_mesh_free(&coarse);
+    cli_mesh_free(&fine);
     progress_end(&j->pr);
     pthread_mutex_destroy(&j->lock);
     return j->rc;
