@@ -2,8 +2,9 @@
 # bench/grid-models.sh SILK CACHE [NAME...] - the prepared models of the
 # robustness grid: for every detailed mesh M-fine.obj of ../shared/meshes
 # (or $SILK_MESHES; only the NAMEs given, if any), CACHE/M-prep.silk
-# (`silk prepare M-fine.obj --triangles 500`) and CACHE/M-fit.silk (the
-# same with --fit), both with --no-clip (the same coarse mesh, without
+# (`silk prepare M-fine.obj --triangles 500`, the normals fitted as by
+# default) and CACHE/M-nofit.silk (the same with --no-fit: the detailed
+# mesh's own normals), both with --no-clip (the same coarse mesh, without
 # clip mode's hull and map).  Made again only when the sources that make
 # them change (their checksum is kept in CACHE/stamp).  Used by
 # bench/grid.sh and tests/cli_grid.sh.
@@ -34,7 +35,7 @@ for m in $names; do
   if [ ! -f "$cache/$m-prep.silk" ]; then
     "$silk" prepare "$f" -o "$cache/$m-prep.silk" --triangles 500 --no-clip --quiet >/dev/null
   fi
-  if [ ! -f "$cache/$m-fit.silk" ]; then
-    "$silk" prepare "$f" -o "$cache/$m-fit.silk" --triangles 500 --no-clip --fit --quiet >/dev/null
+  if [ ! -f "$cache/$m-nofit.silk" ]; then
+    "$silk" prepare "$f" -o "$cache/$m-nofit.silk" --triangles 500 --no-clip --no-fit --quiet >/dev/null
   fi
 done

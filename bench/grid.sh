@@ -3,17 +3,19 @@
 # docs/measurements.md, "The robustness grid"): every shipped mesh of
 # ../shared/meshes (or $SILK_MESHES) against its detailed model where there
 # is one, and every detailed model made into prepared models of 500
-# triangles by `silk prepare` (default options, and --fit) against itself,
+# triangles by `silk prepare` (default options, which fit the normals, and
+# --no-fit) against itself,
 # 120 views each (24 yaws x 5 pitches, 320x240, outlines not anti-aliased).
 # Writes OUTDIR/grid.md (the summary, the worst views and the commands that
 # show them), OUTDIR/grid.csv (every view) and OUTDIR/grid.txt.
 #
-# The prepared models are kept in BUILD/grid/ (BUILD the directory of SILK)
+# The prepared models are kept in BUILD/grid/ (BUILD the directory of SILK;
+# GRID_CACHE=DIR elsewhere)
 # and made again only when the sources of `silk prepare` change
 # (bench/grid-models.sh).  They are made with --no-clip, which writes the
 # same coarse mesh without the clip mode's hull and map.
 # GRID_ARGS adds options (e.g. --threads 1); GRID_ONLY=NAME,... restricts
-# the grid to those meshes (names as in the table, e.g. bunny-500,cow-fit).
+# the grid to those meshes (names as in the table, e.g. bunny-500,cow-prep).
 set -eu
 silk=${1:-build/silk}
 out=${2:-out}
@@ -24,7 +26,7 @@ if [ ! -d "$meshes" ]; then
   echo "bench/grid.sh: skipped: no reference meshes in $meshes"
   exit 0
 fi
-cache=$(dirname "$silk")/grid
+cache=${GRID_CACHE:-$(dirname "$silk")/grid}
 sh "$here/grid-models.sh" "$silk" "$cache"
 
 list=""
@@ -48,7 +50,7 @@ done
 for f in "$meshes"/*-fine.obj; do
   m=$(basename "$f" -fine.obj)
   want "$m-prep" && list="$list $cache/$m-prep.silk:$f"
-  want "$m-fit" && list="$list $cache/$m-fit.silk:$f"
+  want "$m-nofit" && list="$list $cache/$m-nofit.silk:$f"
 done
 
 # shellcheck disable=SC2086
@@ -56,7 +58,7 @@ done
 {
   echo "<!-- make bench (bench/grid.sh), $(date -u +%Y-%m-%dT%H:%M:%SZ) -->"
   echo "Prepared models: \`$cache/M-prep.silk\` is \`silk prepare $meshes/M-fine.obj -o M-prep.silk --triangles 500\`,"
-  echo "\`$cache/M-fit.silk\` the same with \`--fit\` (made with \`--no-clip\`: the same mesh)."
+  echo "\`$cache/M-nofit.silk\` the same with \`--no-fit\` (made with \`--no-clip\`: the same mesh)."
   echo
   cat "$out/grid.md.tmp"
 } > "$out/grid.md"

@@ -3,7 +3,8 @@
 # "The robustness grid"), on the shared meshes whose outlines smooth mode
 # once got visibly wrong - bunny-500's ear notch, fish-500's belly,
 # knot-480's concave rim, dragon-500's creases along its base, the cow
-# prepared with --fit (a torn leg), feline prepared (holes in its tail),
+# prepared with fitted normals (a torn leg), feline prepared with and
+# without them (holes in its tail),
 # fandisk-1000's straight creases - over all 120 views: no view may lose 10
 # or more pixels lying 3 px inside both the flat and the detailed object,
 # nor show an enclosed hole of more than 2 px.  Also the tool's output:
@@ -31,8 +32,8 @@ fi
 
 list="$meshes/bunny-500.obj:$meshes/bunny-fine.obj $meshes/fish-500.obj:$meshes/fish-fine.obj
  $meshes/knot-480.obj:$meshes/knot-fine.obj $meshes/dragon-500.obj:$meshes/dragon-fine.obj
- $meshes/fandisk-1000.obj:$meshes/fandisk-fine.obj $cache/cow-fit.silk:$meshes/cow-fine.obj
- $cache/feline-prep.silk:$meshes/feline-fine.obj $cache/feline-fit.silk:$meshes/feline-fine.obj"
+ $meshes/fandisk-1000.obj:$meshes/fandisk-fine.obj $cache/cow-prep.silk:$meshes/cow-fine.obj
+ $cache/feline-prep.silk:$meshes/feline-fine.obj $cache/feline-nofit.silk:$meshes/feline-fine.obj"
 mkdir -p "$tmp/dump"
 # shellcheck disable=SC2086
 run_silk bench --grid $list --worst 2 --max-lost 9 --max-hole 2 --csv "$tmp/g.csv" --md "$tmp/g.md" --dump "$tmp/dump"
@@ -44,12 +45,12 @@ check "two worst views per mesh, each with its command" \
     [ "$(grep -cE '^grid-view .* yaw=[0-9.]+ pitch=-?[0-9]+ lost=[0-9]+ .*: silk render .* --yaw [0-9.]+ --pitch -?[0-9]+ --size 320x240 --aa off --compare$' "$out")" = 16 ]
 check "CSV: a row per view" [ "$(tail -n +2 "$tmp/g.csv" | wc -l)" = 960 ]
 check "CSV columns" [ "$(head -n 1 "$tmp/g.csv" | cut -d, -f1-8)" = "mesh,yaw,pitch,lost,hole,hole_px,bulge_px,excess_px" ]
-check "Markdown: the summary and the worst views" grep -q '^| cow-fit | 120 | 0 |' "$tmp/g.md"
+check "Markdown: the summary and the worst views" grep -q '^| cow-prep | 120 | 0 |' "$tmp/g.md"
 check "dump: a picture per worst view" [ "$(ls "$tmp/dump" | wc -l)" = 16 ]
 check "dump: PNG" is_png "$(ls "$tmp/dump"/*.png | head -n 1)"
 
 # The command a worst view names shows that view.
-cmd=$(grep '^grid-view cow-fit ' "$out" | head -n 1 | sed 's/.*: silk render //; s/ -o view.png / -o '"$(echo "$tmp" | sed 's/[\/&]/\\&/g')"'\/view.png /')
+cmd=$(grep '^grid-view cow-prep ' "$out" | head -n 1 | sed 's/.*: silk render //; s/ -o view.png / -o '"$(echo "$tmp" | sed 's/[\/&]/\\&/g')"'\/view.png /')
 # shellcheck disable=SC2086
 run_silk render $cmd
 check "the worst view's command renders it (exit $rc)" test "$rc" -eq 0 -a -s "$tmp/view.png"
