@@ -216,22 +216,30 @@ static void holes(const uint8_t *s, const uint8_t *cover, int w, int h, uint8_t 
         }
 }
 
+/* View gv's camera: silk render's default framing of the coarse mesh
+ * turned by its yaw and pitch, as `silk render --yaw --pitch` makes it. */
+static int view_of(const grid_cfg *c, const cli_mesh *coarse, const grid_view *gv, silk_view *view)
+{
+    cli_scene_opts o;
+    cli_scene_opts_default(&o);
+    o.width = c->width;
+    o.height = c->height;
+    o.yaw = gv->yaw;
+    o.pitch = gv->pitch;
+    silk_camera cam;
+    silk_error err;
+    int rc = cli_camera(&o, &coarse->mesh, &cam);
+    if (!rc && silk_view_init(view, &cam, &err) != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", coarse->name, err.msg);
+    return rc;
+}
+
 static int measure_view(const grid_cfg *c, grid_frame *f, cli_mesh *coarse, cli_mesh *fine, grid_view *gv)
 {
     int w = c->width, h = c->height;
     size_t px = (size_t)w * h;
-    cli_scene_opts o;
-    cli_scene_opts_default(&o);
-    o.width = w;
-    o.height = h;
-    o.yaw = gv->yaw;
-    o.pitch = gv->pitch;
-    silk_camera cam;
     silk_view view;
-    silk_error err;
-    int rc = cli_camera(&o, &coarse->mesh, &cam);
+    int rc = view_of(c, coarse, gv, &view);
     if (rc) return rc;
-    if (silk_view_init(&view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s: %s", coarse->name, err.msg);
     silk_frame_stats st;
     memset(&st, 0, sizeof st);
     if ((rc = draw(f, coarse, &view, SILK_MODE_FLAT, 0, f->flat, &st)) != 0) return rc;
@@ -369,18 +377,10 @@ static int dump_view(const grid_cfg *c, cli_mesh *coarse, cli_mesh *fine, const 
     grid_frame f;
     uint8_t *shot[3] = { NULL, NULL, NULL }, *out = NULL;
     if (frame_alloc(&f, w, h)) rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_scene_opts o;
-    cli_scene_opts_default(&o);
-    o.width = w;
-    o.height = h;
-    o.yaw = v->yaw;
-    o.pitch = v->pitch;
-    silk_camera cam;
     silk_view view;
     silk_error err;
     silk_frame_stats st;
-    if (!rc && (rc = cli_camera(&o, &coarse->mesh, &cam)) == 0 && silk_view_init(&view, &cam, &err) != SILK_OK)
-        rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", coarse->name, err.msg);
+    if (!rc) rc = view_of(c, coarse, v, &view);
     const silk_mode mode[3] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_FLAT };
     uint8_t *mask[3] = { f.flat, f.smooth, f.fine };
     for (int i = 0; i < 3 && !rc; i++) {
