@@ -132,10 +132,9 @@ static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, const int6
 {
     int64_t ld = wlen(dir), lc = *lcp;                 /* < 2^31 each */
     int64_t prod = ld * lc;                            /* |dir||chord|, < 3 * 2^60 */
-    uint64_t par = (uint64_t)prod >> 40;               /* its 2^-10, for the straightness test below */
     /* 1 + cos theta = (prod + dir.chord) / prod: a sum, not a difference,
      * everywhere it is not clamped, so no cancellation. */
-    int64_t dot = wdot(dir, chord), den = prod + dot;
+    int64_t den = prod + wdot(dir, chord);
     int64_t den_min = prod * 2 / SILK_ARC_MAX_RATIO;   /* 1 + cos theta >= 2 / max ratio */
     if (den < den_min) den = den_min;
     /* g = 1 / (1 + cos theta) in Q30, from 31-bit operands so that
@@ -158,13 +157,6 @@ static silk_vec3 arc_tangent_wide(const wvec *dir, const wvec *chord, const int6
         int64_t q = silk_shr_round64(cr[k], 30);
         cr2 += (uint64_t)(q * q);
     }
-    /* Straight stays straight: a direction within 2^-10 of the chord's
-     * (sin theta: |dir x chord| / 2^30 against |dir||chord| 2^-40) is the
-     * chord's, and eq. 4 at theta = 0 gives the chord itself, so a curve
-     * whose both ends are such is exactly its chord, not one bent by the
-     * rounding of the points it was made from (a turn of 2^-10 moves a
-     * curve by less than 1/4000 of its chord). */
-    if (dot > 0 && cr2 < par * par) return to_fx(chord->c, chord->e);
 #if !SILK_CPU32
     /* A 64-bit host skips the square root where the cap cannot bind, as
      * across a fine mesh's edges: x = round(sqrt(cr2)) <= 2^h for

@@ -15,12 +15,7 @@
  * gives the chord itself (theta = 0: a straight line), a zero chord the zero
  * vector, and 1 + cos theta near 0 the clamp below; never overflows.
  * Within 1 ulp + 2^-27 of the result's length of the exact value
- * (tests/test_curve.c).  Straight stays straight: a dir within 2^-10 of the
- * chord's direction (sin theta < 2^-10, cos theta > 0) gives the chord
- * itself, bit for bit, so a curve both of whose ends are such - a straight
- * feature polyline, a bridge over an edge of a plane - is its chord
- * exactly (eq. 5 with t0 = t1 = p1 - p0), not one the rounding of its
- * points bent; such a turn moves a curve by less than 1/4000 of its chord. */
+ * (tests/test_curve.c). */
 silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
 
 /* The bulge bound, applied by silk_arc_tangent and silk_bridge after eq. 4

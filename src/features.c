@@ -172,8 +172,8 @@ static silk_fx turn_at(const silk_vec3 *p, const silk_index *vert, uint32_t k, i
  * as much again.  A circle through the three points would bend the long,
  * straight edge - fandisk-1000's 150 px edges by 10 px at 640x480.  The
  * tangent at vertex i < k is then the long edge's direction, so the line
- * stays straight (silk_arc_tangent gives the chord itself) and the arc
- * meets it tangentially. */
+ * stays straight (end_tangent gives the chord itself) and the arc meets it
+ * tangentially. */
 #define SILK_FEATURE_G1 2
 
 static void g1_dir(const silk_vec3 *p, const silk_index *vert, uint32_t k, int closed, uint32_t i, silk_vec3 *dir)
@@ -184,6 +184,21 @@ static void g1_dir(const silk_vec3 *p, const silk_index *vert, uint32_t k, int c
     silk_fx ti = turn_at(p, vert, k, closed, i) / 4;
     if (s1 / g2 > s0 && turn_at(p, vert, k, closed, b) < ti) silk_v3_normalize(w1, dir);
     else if (s0 / g2 > s1 && turn_at(p, vert, k, closed, a) < ti) silk_v3_normalize(w0, dir);
+}
+
+/* Eq. 4's tangent (silk_arc_tangent) for the unit direction d over chord,
+ * and straight stays straight: a direction within 2^-10 of the chord's
+ * (|d x chord| below |chord| / 1024, d.chord > 0) gives the chord itself,
+ * which eq. 4 at theta = 0 is, bit for bit - so a polyline that is straight
+ * gives exactly its edges (eq. 5 with t0 = t1 = the chord), not curves bent
+ * by the rounding of its points and unit vectors (such a turn moves a curve
+ * by less than 1/4000 of its chord). */
+static silk_vec3 end_tangent(silk_vec3 d, silk_vec3 chord)
+{
+    if (silk_v3_dot64(d, chord) > 0 &&
+        (int64_t)silk_v3_length(silk_v3_cross(d, chord)) * 1024 < (int64_t)silk_v3_length(chord))
+        return chord;
+    return silk_arc_tangent(d, chord);
 }
 
 /* closed: vert[k] == vert[0] is an inner vertex.  An open polyline may also
@@ -212,7 +227,7 @@ static void polyline_segments(silk_mesh *m, const silk_index *vert, const uint32
     }
     for (uint32_t j = 0; j < k; j++) {
         silk_vec3 chord = silk_v3_sub(p[vert[j + 1]], p[vert[j]]);
-        store(m, edges[j], vert[j], silk_arc_tangent(dir[j], chord), silk_arc_tangent(dir[j + 1], chord));
+        store(m, edges[j], vert[j], end_tangent(dir[j], chord), end_tangent(dir[j + 1], chord));
     }
 }
 

@@ -120,7 +120,7 @@ static int beside(silk_sil_frame *f, const silk_sil_seg *s, silk_vec3 p)
     int32_t d = x[1] * x[2] + y[1] * y[2], l = (int32_t)((uint32_t)(x[1] * x[1] + y[1] * y[1]) >> 2);
     int32_t cq = x[1] * y[2] - y[1] * x[2], cm = x[1] * y[3] - y[1] * x[3];
     /* out <= SAG_CAP |cm|, out = cq on the side away from M: cq + SAG_CAP cm on M's side */
-    int in = d >= -l && d <= 5 * l;
+    int in = (uint32_t)(d + l) <= (uint32_t)(6 * l);   /* -l <= d <= 5 l */
 #ifndef SILK_NO_VERTEX_CACHE
     if (in && ((cq + SAG_CAP * cm) ^ cm) < 0) f->refused = 1;   /* left standing in front: counted */
 #endif
