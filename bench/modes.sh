@@ -6,9 +6,9 @@
 # skipped when absent), and bunny-fine simplified to 500 triangles by
 # `silk simplify`.  Writes OUTDIR/bench.md, bench.csv and bench.png.
 # Then the shipped coarse scans against the same detailed models made into
-# prepared models by `silk prepare` (500 triangles, default options, and
-# with --fit), flat, smooth and pn3: OUTDIR/bench-prepared.md and
-# bench-prepared.csv.
+# prepared models by `silk prepare` (500 triangles, default options - the
+# normals fitted - and with --no-fit), flat, smooth and pn3:
+# OUTDIR/bench-prepared.md and bench-prepared.csv.
 # BENCH_VIEWS, BENCH_SIZE and BENCH_REPS override the defaults.
 set -eu
 silk=${1:-build/silk}
@@ -29,7 +29,8 @@ pairs="--pair $work/gen-sphere-200.obj:$work/gen-sphere-fine.obj --pair $work/ge
 
 # Shared pairs: the coarse ones are MeshLab's quadric simplifications of the
 # fine ones (SOURCES.md).
-for p in bunny-500:bunny-fine fandisk-128:fandisk-fine armadillo-500:armadillo-fine knot-480:knot-fine; do
+for p in bunny-500:bunny-fine fandisk-128:fandisk-fine fandisk-1000:fandisk-fine wingnut-500:wingnut-fine armadillo-500:armadillo-fine \
+    knot-480:knot-fine; do
   c=$meshes/${p%%:*}.obj f=$meshes/${p#*:}.obj
   if [ -f "$c" ] && [ -f "$f" ]; then pairs="$pairs --pair $c:$f"; else echo "bench/modes.sh: skipping $p (not in $meshes)"; fi
 done
@@ -52,12 +53,12 @@ echo "bench/modes.sh: wrote $out/bench.md, $out/bench.csv, $out/bench.png"
 
 # Shipped coarse scans against prepared models of the same detailed ones.
 pairs=""
-for m in bunny armadillo spot feline; do
+for m in bunny cow armadillo spot feline springer fish cat; do
   c=$meshes/$m-500.obj f=$meshes/$m-fine.obj
   if [ -f "$c" ] && [ -f "$f" ]; then
-    "$silk" prepare "$f" -o "$work/$m-prepared-500.silk" --triangles 500 >/dev/null
-    "$silk" prepare "$f" -o "$work/$m-prepared-fit-500.silk" --triangles 500 --fit >/dev/null
-    pairs="$pairs --pair $c:$f --pair $work/$m-prepared-500.silk:$f --pair $work/$m-prepared-fit-500.silk:$f"
+    "$silk" prepare "$f" -o "$work/$m-prepared-500.silk" --triangles 500 --no-clip >/dev/null
+    "$silk" prepare "$f" -o "$work/$m-prepared-nofit-500.silk" --triangles 500 --no-clip --no-fit >/dev/null
+    pairs="$pairs --pair $c:$f --pair $work/$m-prepared-500.silk:$f --pair $work/$m-prepared-nofit-500.silk:$f"
   else
     echo "bench/modes.sh: skipping $m (not in $meshes)"
   fi

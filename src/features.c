@@ -150,6 +150,57 @@ static void store(silk_mesh *m, uint32_t e, silk_index from, silk_vec3 t_from, s
     }
 }
 
+/* The sine of the turn at vertex j of a polyline (vert[0..k], vert[k] ==
+ * vert[0] when closed), Q16; 0 at an end of an open one. */
+static silk_fx turn_at(const silk_vec3 *p, const silk_index *vert, uint32_t k, int closed, uint32_t j)
+{
+    if (!closed && (j == 0 || j == k)) return 0;
+    uint32_t a = j == 0 ? k - 1 : j - 1, b = j == k ? 1 : j + 1;
+    silk_vec3 u, w;
+    if (!silk_v3_normalize(silk_v3_sub(p[vert[j]], p[vert[a]]), &u) ||
+        !silk_v3_normalize(silk_v3_sub(p[vert[b]], p[vert[j]]), &w))
+        return 0;
+    return silk_v3_length(silk_v3_cross(u, w));
+}
+
+/* Where a feature polyline's spacing changes sharply - an edge next to one
+ * SILK_FEATURE_G1 times as long or longer - and the long edge's far end
+ * turns less than a quarter as much as this vertex (or ends the polyline),
+ * the polyline is a CAD model's straight line meeting the arc it is
+ * tangent to (fandisk's creases: a fillet's short edges, then a long
+ * straight one), not a circle sampled unevenly, whose far end would turn
+ * as much again.  A circle through the three points would bend the long,
+ * straight edge - fandisk-1000's 150 px edges by 10 px at 640x480.  The
+ * tangent at vertex i < k is then the long edge's direction, so the line
+ * stays straight (end_tangent gives the chord itself) and the arc meets it
+ * tangentially. */
+#define SILK_FEATURE_G1 2
+
+static void g1_dir(const silk_vec3 *p, const silk_index *vert, uint32_t k, int closed, uint32_t i, silk_vec3 *dir)
+{
+    uint32_t a = i == 0 ? k - 1 : i - 1, b = i + 1;
+    silk_vec3 w0 = silk_v3_sub(p[vert[i]], p[vert[a]]), w1 = silk_v3_sub(p[vert[b]], p[vert[i]]);
+    int64_t s0 = silk_v3_dot64(w0, w0), s1 = silk_v3_dot64(w1, w1), g2 = SILK_FEATURE_G1 * SILK_FEATURE_G1;
+    silk_fx ti = turn_at(p, vert, k, closed, i) / 4;
+    if (s1 / g2 > s0 && turn_at(p, vert, k, closed, b) < ti) silk_v3_normalize(w1, dir);
+    else if (s0 / g2 > s1 && turn_at(p, vert, k, closed, a) < ti) silk_v3_normalize(w0, dir);
+}
+
+/* Eq. 4's tangent (silk_arc_tangent) for the unit direction d over chord,
+ * and straight stays straight: a direction within 2^-10 of the chord's
+ * (|d x chord| below |chord| / 1024, d.chord > 0) gives the chord itself,
+ * which eq. 4 at theta = 0 is, bit for bit - so a polyline that is straight
+ * gives exactly its edges (eq. 5 with t0 = t1 = the chord), not curves bent
+ * by the rounding of its points and unit vectors (such a turn moves a curve
+ * by less than 1/4000 of its chord). */
+static silk_vec3 end_tangent(silk_vec3 d, silk_vec3 chord)
+{
+    if (silk_v3_dot64(d, chord) > 0 &&
+        (int64_t)silk_v3_length(silk_v3_cross(d, chord)) * 1024 < (int64_t)silk_v3_length(chord))
+        return chord;
+    return silk_arc_tangent(d, chord);
+}
+
 /* closed: vert[k] == vert[0] is an inner vertex.  An open polyline may also
  * come back to its first vertex (a loop through a junction): then that
  * vertex is two ends. */
@@ -162,16 +213,21 @@ static void polyline_segments(silk_mesh *m, const silk_index *vert, const uint32
         store(m, edges[0], vert[0], chord, chord);
         return;
     }
-    for (uint32_t i = 1; i < k; i++) dir[i] = inner_dir(p[vert[i - 1]], p[vert[i]], p[vert[i + 1]]);
+    for (uint32_t i = 1; i < k; i++) {
+        dir[i] = inner_dir(p[vert[i - 1]], p[vert[i]], p[vert[i + 1]]);
+        g1_dir(p, vert, k, closed, i, &dir[i]);
+    }
     if (closed) {
-        dir[0] = dir[k] = inner_dir(p[vert[k - 1]], p[vert[0]], p[vert[1]]);
+        dir[0] = inner_dir(p[vert[k - 1]], p[vert[0]], p[vert[1]]);
+        g1_dir(p, vert, k, closed, 0, &dir[0]);
+        dir[k] = dir[0];
     } else {
         dir[0] = end_dir(silk_v3_sub(p[vert[1]], p[vert[0]]), dir[1]);
         dir[k] = end_dir(silk_v3_sub(p[vert[k]], p[vert[k - 1]]), dir[k - 1]);
     }
     for (uint32_t j = 0; j < k; j++) {
         silk_vec3 chord = silk_v3_sub(p[vert[j + 1]], p[vert[j]]);
-        store(m, edges[j], vert[j], silk_arc_tangent(dir[j], chord), silk_arc_tangent(dir[j + 1], chord));
+        store(m, edges[j], vert[j], end_tangent(dir[j], chord), end_tangent(dir[j + 1], chord));
     }
 }
 

@@ -72,6 +72,7 @@ void silk_frame_stats_fell_back(silk_frame_stats *stats, uint32_t tris_drawn)
 {
     if (!stats) return;
     stats->silhouette_tris = stats->bridges = stats->samples = stats->moved_vertices = 0;
+    stats->flat_segments = 0;
     stats->tris_drawn = tris_drawn;
     silk_frame_fell_short(stats);
 }

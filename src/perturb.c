@@ -18,15 +18,28 @@
  * moves V up when it is already below one), so the sign is turned here into
  * what the text asks for: the largest motion needed, downwards.
  *
- * Three guards the paper does not have.  A plane nearly parallel to R^
- * (R^.N_i < 1/4) is skipped rather than divided by.  A vertex never moves
- * farther than its distance to M_i.  And no plane asks for more than twice
- * the segment's rise (how far its ends lie above P_i, about the depth by
- * which the coarse triangles stick out over it): on a coarse, strongly curved
- * mesh the one-ring of a one-ring reaches round the surface, and the plain
- * rule then pushed vertices of knot-480 by 0.5 units - more than the tube's
- * radius - through the other side; capped, the largest move in that view
- * is 0.07.
+ * Guards the paper does not have.  A plane nearly parallel to R^
+ * (R^.N_i < 1/4) is skipped rather than divided by.  A plane constrains only
+ * the vertices beside its segment: those whose projection onto the
+ * segment's chord on screen falls within it or a quarter of it past its
+ * ends, and that stand out beyond the chord by no more than twice the
+ * segment's own sagitta there (the coarse polygon around the concave curve
+ * it approximates; a vertex further out is the surface going on beyond
+ * the curve, which dragon-500 prepared with --fit showed cut 10 px deep
+ * when lowered).  The plane is the segment's
+ * tangent plane at M_i, and an outline that goes on curving beyond the
+ * segment's ends rises above it: the plain rule lowered the vertices along
+ * the outline far beyond the segment, which cannot hide it, and cut notches
+ * into the outline there (bunny-500's ears seen from below, 11 px at
+ * 320x240).  And a vertex that would have to move further than the
+ * segment's rise (how far its ends lie above P_i: the depth by which the
+ * coarse triangles stick out over a concave curve they approximate) is
+ * another part of the surface standing in front of the segment - the far
+ * sheet of a thin ear, a tail curled over the body - which hides it as the
+ * detailed model would: it stays where it is, and the segment stays hidden
+ * (capping the move instead tore holes into feline's tail).  On a coarse,
+ * strongly curved mesh the plain rule pushed vertices of knot-480 through
+ * the tube's far side; no vertex moves more than a rise now.
  *
  * The result is one offset per moved vertex; every corner at that vertex
  * becomes a MOVED record with it, so the vertex moves as one.
@@ -36,7 +49,6 @@
 #include "remesh.h"
 
 #define MIN_COS ((int64_t)1 << 30)     /* 1/4 in Q32.32 */
-#define RISE_CAP (2 * SILK_FX_ONE)      /* times the segment's rise */
 
 static void visit_near(silk_sil_frame *f, uint32_t t, const silk_sil_seg *s, uint32_t stamp, int pass);
 
@@ -81,6 +93,35 @@ int silk_perturb_alloc(silk_sil_frame *f)
     return f->acc != NULL;
 }
 
+/* Whether p lies beside segment s: its projection onto the segment's chord
+ * on screen falls within the chord or a quarter of it past either end
+ * (where the corners at the segment's ends lie), and it stands out beyond
+ * the chord, away from the segment's middle, by no more than SAG_CAP
+ * times the middle's distance from the chord.  In eighths of a pixel, so
+ * that the products fit 32 bits: a point more than 1024 px from the
+ * segment's start is not beside it. */
+#define SAG_CAP 2
+#define PT_MAX (1 << 13)   /* 2 PT_MAX = 2^14: the range test below */
+static int beside(silk_sil_frame *f, const silk_sil_seg *s, silk_vec3 p)
+{
+    /* from A on screen, in eighths of a pixel: B (the chord), p, the middle M */
+    const silk_vec3 *pts[4] = { &s->c.p0, &s->c.p1, &p, &s->m };
+    int32_t x[4], y[4];
+    for (int i = 0; i < 4; i++) {
+        silk_vec2 q;
+        if (!silk_view_project(f->v, *pts[i], &q)) return 0;
+        x[i] = (q.x >> 13) - (i ? x[0] : 0);
+        y[i] = (q.y >> 13) - (i ? y[0] : 0);
+        if (i && ((uint32_t)(x[i] + PT_MAX) | (uint32_t)(y[i] + PT_MAX)) >> 14) return 0;   /* beyond +-2^13 */
+    }
+    int32_t d = x[1] * x[2] + y[1] * y[2], l = (int32_t)((uint32_t)(x[1] * x[1] + y[1] * y[1]) >> 2);
+    int32_t cq = x[1] * y[2] - y[1] * x[2], cm = x[1] * y[3] - y[1] * x[3];
+    /* out <= SAG_CAP |cm|, out = cq on the side away from M: cq + SAG_CAP cm on M's side */
+    int in = (uint32_t)(d + l) <= (uint32_t)(6 * l);   /* -l <= d <= 5 l */
+    if (in && ((cq + SAG_CAP * cm) ^ cm) < 0) f->refused = 1;   /* left standing in front: counted */
+    return in && ((cq + SAG_CAP * cm) ^ cm) >= 0;
+}
+
 /* One neighbouring vertex of segment s, once per stamp.  Pass -1 only
  * counts the vertices (nslots), marking them in vert_slot. */
 static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint32_t stamp, int pass)
@@ -108,13 +149,12 @@ static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint
     }
     int64_t den = silk_v3_dot64(f->acc[sl], s->nm);
     if (den < MIN_COS) return;
-    silk_vec3 vm = silk_v3_sub(f->m->pos[vtx], s->m);
-    int64_t num = silk_v3_dot64(vm, s->nm);
-    if (num <= 0) return;                          /* already below P_i */
+    int64_t num = silk_v3_dot64(silk_v3_sub(f->m->pos[vtx], s->m), s->nm);
+    if (num <= 0 || !beside(f, s, f->m->pos[vtx])) return;   /* already below P_i, or not in its way */
     /* num < 2^46 for model coordinates within SILK_COORD_MAX: the shift fits */
     silk_fx lift = silk_fx_sat((num << 16) / den);
-    lift = silk_fx_min(lift, silk_fx_min(silk_v3_length(vm), silk_fx_mul(RISE_CAP, s->rise)));
-    if (lift > f->lift[sl]) f->lift[sl] = lift;
+    if (lift <= s->rise && lift > f->lift[sl]) f->lift[sl] = lift;   /* beyond a rise: not the segment's (above) */
+    if (lift > s->rise) f->refused = 1;
 }
 
 /* visit() for triangle t's corners and every vertex one edge away. */
@@ -173,8 +213,12 @@ int silk_perturb(silk_sil_frame *f)
         if (SILK_KEEP_SEGMENTS && k && k->seg_kept && k->nseg_kept == ns) {
             /* every segment kept, in triangle order (silk_remesh_keep): the
              * concave ones read from there, not sought among every triangle */
-            for (uint32_t j = 0; j < ns; j++)
-                if (k->seg_kept[j].concave) visit_near(f, k->seg_tri[j], &k->seg_kept[j], pass * ns + j + 1, pass);
+            for (uint32_t j = 0; j < ns; j++) {
+                if (!k->seg_kept[j].concave) continue;
+                f->refused = 0;
+                visit_near(f, k->seg_tri[j], &k->seg_kept[j], pass * ns + j + 1, pass);
+                f->flat_segs += f->refused;
+            }
         } else {
             /* the segments in triangle order */
             for (uint32_t t = 0, i = 0; t < f->m->ntris && i < ns; t++) {
@@ -183,7 +227,9 @@ int silk_perturb(silk_sil_frame *f)
                 silk_sil_seg tmp;   /* rebuilt only where the plan found it concave */
                 const silk_sil_seg *s = (f->tri_state[t] & SILK_TS_CONCAVE) && silk_remesh_seg(f, t, &tmp) ? &tmp : NULL;
                 if (!s || !s->concave) continue;
+                f->refused = 0;
                 visit_near(f, t, s, pass * ns + i, pass);
+                f->flat_segs += f->refused;
             }
         }
         if (pass == 0)
@@ -194,7 +240,10 @@ int silk_perturb(silk_sil_frame *f)
     for (uint32_t sl = 0; sl < f->nslots; sl++) {
         silk_index vtx = f->slot_vert[sl];
         if (f->lift[sl] > 0 && !silhouette_at(f, vtx)) {
-            f->offset[f->noffset] = silk_v3_scale(f->acc[sl], -f->lift[sl]);   /* noffset <= sl */
+            /* silk_v3_scale(acc, -lift) by components, noffset <= sl */
+            const silk_fx *r = &f->acc[sl].x;
+            silk_fx *o = &f->offset[f->noffset].x;
+            for (int c = 0; c < 3; c++) o[c] = silk_fx_sat(silk_shr_round64((int64_t)r[c] * -f->lift[sl], 16));
             f->vert_slot[vtx] = (silk_plan_index)f->noffset++;
         } else {
             f->vert_slot[vtx] = SILK_PLAN_NONE;

@@ -192,6 +192,11 @@ typedef struct silk_sil_frame {
      * carrying the carrying edges before it, or NULL (silk_sil_slot) */
     silk_sil_keep *keep;
     uint32_t *carry_rank;
+    /* concave segments the perturbation left to the coarse outline
+     * (silk_frame_stats.flat_segments), and whether the one being visited
+     * is such (perturb.c) */
+    uint32_t flat_segs;
+    uint8_t refused;
 } silk_sil_frame;
 
 /* Whether the plan keeps anything for speed: a build with SILK_KEEP_SEGMENTS

@@ -715,4 +715,5 @@ void silk_remesh_stats(const silk_sil_frame *f, silk_frame_stats *stats)
     stats->samples = samples;
     stats->tris_drawn = f->out_tris;
     stats->moved_vertices = f->noffset;
+    stats->flat_segments = f->flat_segs;
 }

@@ -77,6 +77,14 @@ for eye in 0,0,4 3,3,3 0,-5,0.5 -2,1,-3; do
     st=$(info_value "$out" "  silhouette triangles"); td=$(info_value "$out" "  triangles drawn")
     check "smooth frame from $eye: $st silhouette triangles, $td drawn" test "$rc" -eq 0 -a "${st:-0}" -gt 0 -a "${td:-0}" -gt 200
 done
+# A convex sphere has no concave segment to leave to the coarse outline;
+# a torus from the side has (its inner rim), and JSON says the same.
+check "sphere: no flat segments" test "$(info_value "$out" "  flat segments")" = 0
+run_silk info "$tmp/torus.obj" --eye 0,0.9,4 --target 0,0,0
+flat=$(info_value "$out" "  flat segments")
+check "torus from the side: $flat flat segments, a count" test "${flat:-x}" -ge 0 2>/dev/null
+run_silk info "$tmp/torus.obj" --eye 0,0.9,4 --target 0,0,0 --json
+check "JSON: flat_segments" grep -qE "\"flat_segments\": ${flat:-x}," "$out"
 run_silk info "$tmp/sphere.obj" --ortho auto
 check "info reports orthographic" grep -q 'orthographic' "$out"
 run_silk info "$tmp/sphere.obj"

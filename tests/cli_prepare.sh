@@ -10,7 +10,7 @@
 "$SILK" gen torus -o "$tmp/torus.obj" >/dev/null
 
 run_silk prepare "$tmp/sphere.obj" -o "$tmp/sphere.silk" --triangles 120
-check "prepare: the summary line" grep -qE "^prepare .* triangles=120 vertices=62 normals=62 hull_triangles=1[12][0-9] map_views=162 map_bytes=[0-9]+ bytes=[0-9]+$" "$out"
+check "prepare: the summary line" grep -qE "^prepare .* triangles=120 vertices=62 normals=62 hull_triangles=1[12][0-9] map_views=162 map_bytes=[0-9]+ bytes=[0-9]+ fitted=[0-9]+ fit_rms_before=[0-9.e-]+ fit_rms_after=[0-9.e-]+$" "$out"
 check "prepare: nothing on stderr" [ ! -s "$err" ]
 run_silk info "$tmp/sphere.silk" --size 64x64
 check "info reads it: 120 triangles" [ "$(info_value "$out" triangles)" = 120 ]
@@ -23,8 +23,10 @@ for mode in flat smooth pn blend clip; do
 done
 run_silk pack "$tmp/sphere.silk" -o "$tmp/sphere.h"
 check "pack" grep -q "sphere_mesh" "$tmp/sphere.h"
-run_silk prepare "$tmp/sphere.obj" -o "$tmp/fit.silk" --triangles 120 --fit
-check "prepare --fit" grep -qE "^prepare .* triangles=120 .* fitted=[0-9]+ fit_rms_before=.* fit_rms_after=" "$out"
+run_silk prepare "$tmp/sphere.obj" -o "$tmp/fit.silk" --triangles 120
+check "prepare fits the normals by default" grep -qE "^prepare .* triangles=120 .* fitted=[0-9]+ fit_rms_before=.* fit_rms_after=" "$out"
+run_silk prepare "$tmp/sphere.obj" -o "$tmp/nofit.silk" --triangles 120 --no-fit
+check "prepare --no-fit" [ "$rc" -eq 0 ] && ! grep -q "fitted=" "$out"
 run_silk prepare "$tmp/torus.obj" -o "$tmp/torus.silk" --triangles 200
 check "torus: 200 triangles" grep -q "triangles=200 " "$out"
 run_silk bench "$tmp/torus.silk" --views 1 --reps 1 --modes flat,smooth --size 64x48

@@ -127,25 +127,80 @@ static int passes(const silk_mesh *m, uint32_t v, int turn_rule)
     return t < TURN_DEG;
 }
 
+/* features.c's SILK_FEATURE_G1, and how close to its decisions the
+ * reference leaves them to rounding. */
+#define G1 2.0
+#define G1_MARGIN 0.01
+
+/* The sine of the turn at v, 0 where the polyline does not pass through. */
+static double turn_sin(const silk_mesh *m, uint32_t v, int turn_rule)
+{
+    return passes(m, v, turn_rule) > 0 ? sin(turn_at(m, v) * PI / 180) : 0;
+}
+
+/* The direction of the tangent at v, passed through from u to w: the long
+ * edge's where the spacing changes by more than G1 and the long edge's far
+ * end turns less than a quarter as much as v (a line meeting the arc it is
+ * tangent to), else the circle's.  *unsure when a rounding could decide
+ * otherwise. */
+static dvec pass_dir(const silk_mesh *m, uint32_t u, uint32_t v, uint32_t w, int turn_rule, int *unsure)
+{
+    dvec pu = vpos(m, u), pv = vpos(m, v), pw = vpos(m, w);
+    double l0 = dlen(dsub(pv, pu)), l1 = dlen(dsub(pw, pv)), tv = turn_sin(m, v, turn_rule) / 4;
+    double tw = turn_sin(m, w, turn_rule), tu = turn_sin(m, u, turn_rule);
+    if (fabs(l1 / l0 - G1) < G1_MARGIN || fabs(l0 / l1 - G1) < G1_MARGIN) *unsure = 1;
+    if (l1 > G1 * l0 && fabs(tw - tv) < G1_MARGIN * tv) *unsure = 1;
+    if (l0 > G1 * l1 && fabs(tu - tv) < G1_MARGIN * tv) *unsure = 1;
+    if (l1 > G1 * l0 && tw < tv) return dsub(pw, pv);
+    if (l0 > G1 * l1 && tu < tv) return dsub(pv, pu);
+    return circle_tangent(pu, pv, pw, pv);
+}
+
+/* d mirrored in the bisector plane of the chord and reversed: the end
+ * tangent of the circle through the end, its neighbour and the next
+ * vertex, from the tangent d at the neighbour (features.c end_dir). */
+static dvec mirrored(dvec chord, dvec d)
+{
+    dvec u = dscale(chord, 1 / dlen(chord));
+    d = dscale(d, 1 / dlen(d));
+    return dsub(dscale(u, 2 * ddot(d, u)), d);
+}
+
+/* Straight stays straight (curve.c): a direction within 2^-10 of the
+ * chord's is the chord's. */
+static dvec snapped(dvec d, dvec chord, int *unsure)
+{
+    double s = dlen(dcross(d, chord)) / (dlen(d) * dlen(chord)), lim = 1.0 / 1024;
+    if (s > lim / 2 && s < 2 * lim) *unsure = 1;
+    return s < lim ? chord : d;
+}
+
 /* The reference Hermite tangents of feature edge e (eq. 4 lengths): at an
- * end the polyline passes through, the tangent of the circle through it and
- * its two neighbours; at an end where it stops, that of the circle through
- * the end and the next two vertices, or the chord for a polyline of one
- * edge.  Returns 0 when an end is too close to the turn limit to tell. */
+ * end the polyline passes through, pass_dir; at an end where it stops, the
+ * other end's direction mirrored (for plain circles, the tangent of the
+ * circle through the end and the next two vertices), or the chord for a
+ * polyline of one edge.  Returns 0 when an end is too close to a rule's
+ * limit to tell. */
 static int ref_tangents(const silk_mesh *m, uint32_t e, int turn_rule, dvec *ta, dvec *tb)
 {
     uint32_t a = m->edge[e].v[0], b = m->edge[e].v[1];
-    int pa = passes(m, a, turn_rule), pb = passes(m, b, turn_rule);
+    int pa = passes(m, a, turn_rule), pb = passes(m, b, turn_rule), unsure = 0;
     if (pa < 0 || pb < 0) return 0;
-    dvec p = vpos(m, a), q = vpos(m, b), chord = dsub(q, p);
-    dvec prev = pa ? vpos(m, beyond(m, a, e)) : p, next = pb ? vpos(m, beyond(m, b, e)) : q;
-    if (pa) *ta = circle_tangent(prev, p, q, p);
-    else *ta = pb ? circle_tangent(p, q, next, p) : chord;
-    if (pb) *tb = circle_tangent(p, q, next, q);
-    else *tb = pa ? circle_tangent(prev, p, q, q) : chord;
-    *ta = arc_length_scaled(*ta, chord);
-    *tb = arc_length_scaled(*tb, chord);
-    return 1;
+    dvec chord = dsub(vpos(m, b), vpos(m, a));
+    uint32_t prev = pa ? beyond(m, a, e) : a, next = pb ? beyond(m, b, e) : b;
+    if (pa && (prev == a || prev == b)) return 0;   /* a loop of two edges */
+    if (pb && (next == b || next == a)) return 0;
+    dvec da = pa ? pass_dir(m, prev, a, b, turn_rule, &unsure) : chord;
+    dvec db = pb ? pass_dir(m, a, b, next, turn_rule, &unsure) : chord;
+    if (!pa && pb) da = mirrored(chord, db);
+    if (pa && !pb) db = mirrored(chord, da);
+    if (!pa && !pb) {
+        *ta = *tb = chord;
+        return 1;
+    }
+    *ta = arc_length_scaled(snapped(da, chord, &unsure), chord);
+    *tb = arc_length_scaled(snapped(db, chord, &unsure), chord);
+    return !unsure;
 }
 
 typedef struct feat_report {
@@ -806,11 +861,56 @@ TEST(fandisk_feature_segments_near_their_chords)
     free(f.buf);
 }
 
+/* Straight stays straight: a crease along a straight line of unevenly
+ * spaced vertices in a random direction (coordinates rounded to Q16.16, so
+ * not exactly collinear), and the strip's straight boundaries: every
+ * feature segment is exactly its chord, t0 = t1 = the end points'
+ * difference, bit for bit, so eq. 5 draws the straight edge itself. */
+TEST(straight_polylines_are_exactly_straight)
+{
+    for (int round = 0; round < 20; round++) {
+        dvec u, w, n;
+        random_frame(&u, &w, &n);
+        dvec o = dmk(check_uniform(-2, 2), check_uniform(-2, 2), check_uniform(-2, 2));
+        enum { K = 7 };
+        double pos[3 * 3 * K], at = 0;
+        uint32_t tri[3 * 4 * (K - 1)], nt = 0;
+        for (uint32_t i = 0; i < K; i++) {
+            dvec c = dadd(o, dscale(u, at));
+            put(pos, 3 * i, c);                                                 /* the crease */
+            put(pos, 3 * i + 1, dadd(c, dscale(w, 0.4)));                       /* one face */
+            put(pos, 3 * i + 2, dadd(c, dadd(dscale(w, -0.2), dscale(n, 0.35))));   /* the other, 60 degrees on */
+            at += check_uniform(0.1, 0.9);
+        }
+        for (uint32_t i = 0; i + 1 < K; i++) {
+            uint32_t c0 = 3 * i, c1 = 3 * i + 3;
+            uint32_t t[12] = { c0, c1, c0 + 1, c0 + 1, c1, c1 + 1, c1, c0, c0 + 2, c1, c0 + 2, c1 + 2 };
+            memcpy(&tri[3 * nt], t, sizeof t);
+            nt += 4;
+        }
+        tm_fixture f;
+        tm_fixture_init(&f, 1 << 18);
+        CHECK(tm_fixture_input(&f, pos, 3 * K, tri, nt) && tm_fixture_build(&f) == SILK_OK);
+        uint32_t crooked = 0, checked = 0;
+        for (uint32_t e = 0; e < f.m.nedges; e++) {
+            if (!(f.m.edge[e].flags & SILK_EDGE_FEATURE)) continue;
+            const silk_feature_seg *sg = &f.m.feature[f.m.edge_feature[e]];
+            silk_vec3 chord = silk_v3_sub(f.m.pos[f.m.edge[e].v[1]], f.m.pos[f.m.edge[e].v[0]]);
+            checked++;
+            crooked += memcmp(&sg->t0, &chord, sizeof chord) != 0 || memcmp(&sg->t1, &chord, sizeof chord) != 0;
+        }
+        CHECKF(crooked == 0 && checked >= 3 * (K - 1), "round %d: %u of %u feature segments are not their chord", round,
+               crooked, checked);
+        free(f.buf);
+    }
+}
+
 int main(void)
 {
     RUN(closed_loop_on_a_circle);
     RUN(open_arc_with_junction_ends);
     RUN(single_edge_stays_straight);
+    RUN(straight_polylines_are_exactly_straight);
     RUN(sharp_corner_breaks_the_polyline);
     RUN(octagon_stays_one_smooth_loop);
     RUN(shared_meshes_vs_reference);

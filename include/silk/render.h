@@ -145,6 +145,10 @@ int silk_mode_parse(const char *name, silk_mode *mode, uint32_t *level);
 
 typedef struct silk_frame_stats {
     uint32_t silhouette_tris, bridges, samples, tris_drawn, moved_vertices;
+    uint32_t flat_segments;  /* SMOOTH: concave silhouette segments the perturbation could not unblock
+                                safely (perturb.c), so the coarse mesh's outline is drawn there instead
+                                of a curve; counted by host builds only (a board's frame has the same
+                                pixels and reports 0) */
     size_t frame_bytes;      /* per-frame arena bytes at the frame's peak */
     int fell_back;           /* 1 if the arena ran out and part of the frame was drawn unsmoothed */
     uint32_t clip_tri;       /* CLIP: the polytope triangle the eye was found in */

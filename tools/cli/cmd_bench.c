@@ -92,6 +92,7 @@ static void help(FILE *f)
     fprintf(f,
             "usage: silk bench [options] MESH... [--pair COARSE:FINE]...\n"
             "       silk bench --visibility MESH...   (visibility benchmark, see its --help)\n"
+            "       silk bench --grid COARSE[:FINE]...   (smooth outlines over a grid of views, see its --help)\n"
             "\n"
             "Render every mesh in every mode from N views around it, orthographic and\n"
             "perspective, and report per mode: triangles in, triangles drawn per frame,\n"
@@ -873,6 +874,8 @@ int cmd_bench(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++)
         if (cli_is(argv[i], "--visibility")) return bench_visibility(argc, argv);
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--grid") == 0) return bench_grid(argc, argv);
 
     bench_cfg c;
     memset(&c, 0, sizeof c);

@@ -122,6 +122,7 @@ static void print_frame(const cli_scene *s, const cli_scene_opts *o, const silk_
     line("  bridges", "%u", st->bridges);
     line("  samples", "%u", st->samples);
     line("  moved vertices", "%u", st->moved_vertices);
+    line("  flat segments", "%u", st->flat_segments);
     line("  triangles drawn", "%u", st->tris_drawn);
     line("  frame bytes", "%zu", st->frame_bytes);
     line("  fell back", "%s", st->fell_back ? "yes (the arena ran out; part of the frame not smoothed)" : "no");
@@ -193,9 +194,9 @@ static void print_json(const cli_scene *s, const cli_scene_opts *o, const silk_f
            c->ortho ? "orthographic" : "perspective", cli_fx_to_double(c->fov_deg),
            cli_fx_to_double(c->ortho_half_height));
     printf("    \"silhouette_triangles\": %u, \"bridges\": %u, \"samples\": %u, \"moved_vertices\": %u,\n"
-           "    \"triangles_drawn\": %u, \"frame_bytes\": %zu, \"fell_back\": %s",
-           st->silhouette_tris, st->bridges, st->samples, st->moved_vertices, st->tris_drawn, st->frame_bytes,
-           st->fell_back ? "true" : "false");
+           "    \"flat_segments\": %u, \"triangles_drawn\": %u, \"frame_bytes\": %zu, \"fell_back\": %s",
+           st->silhouette_tris, st->bridges, st->samples, st->moved_vertices, st->flat_segments, st->tris_drawn,
+           st->frame_bytes, st->fell_back ? "true" : "false");
     if (o->render.mode == SILK_MODE_CLIP)
         printf(",\n    \"map_views\": %u, \"map_bytes\": %u, \"map_triangle\": %u, \"polygon_vertices\": %u, "
                "\"stencil_spans\": %u", s->silmap.nviews, silk_silmap_bytes(&s->silmap), st->clip_tri, st->clip_points,

@@ -36,13 +36,15 @@ static void help(FILE *f)
             "Make the detailed mesh FINE (OBJ, PLY or STL; - for standard input) into a\n"
             "prepared model: a coarse mesh of N triangles whose vertices are vertices of\n"
             "FINE (so they lie on its surface) and whose normals are FINE's normals there,\n"
-            "split along feature edges - the mesh smooth mode draws best.  flat, smooth, pn\n"
-            "and blend draw it; every silk command that takes a mesh takes MODEL.silk.\n"
+            "split along feature edges and each turned (up to 30 degrees) so that the\n"
+            "curves smooth mode builds over its edges follow FINE: the mesh smooth mode\n"
+            "draws best.  flat, smooth, pn and blend draw it; every silk command that\n"
+            "takes a mesh takes MODEL.silk.\n"
             "With it, for clip mode: FINE's outer hull of N triangles, shaded with FINE's\n"
             "normals, and FINE's silhouette map (its outlines from many views).\n"
             "Written atomically.  Prints:\n"
             "  prepare FINE MODEL triangles=N vertices=N normals=N hull_triangles=N\n"
-            "          map_views=N map_bytes=N bytes=N\n"
+            "          map_views=N map_bytes=N bytes=N fitted=N fit_rms_before=X fit_rms_after=X\n"
             "and with --siltex: siltex_bytes=N siltex_error=E siltex_multi=S (the share\n"
             "of view directions the texture gets wrong, averaged over the hull; the\n"
             "share of texels whose visibility is not one lobe).\n"
@@ -67,6 +69,8 @@ static void help(FILE *f)
             "  --no-mesh           only the hull and map (flat mode then draws the hull)\n"
             "  --fit               move each normal (up to 30 degrees) so that the curves\n"
             "                      smooth mode builds over its edges follow FINE closer\n"
+            "                      (the default)\n"
+            "  --no-fit            keep FINE's own normals\n"
             "  --scale S           multiply coordinates by S while reading (as silk render)\n"
             "  --quiet             no progress line on a terminal\n"
             "\n"
@@ -324,7 +328,7 @@ int cmd_prepare(int argc, char **argv)
     simp_opts so;
     simp_opts_default(&so, 0);
     so.subset = 1;
-    int rc = 0, fit = 0, k;
+    int rc = 0, fit = 1, k;
     clip_opts co = { 1, 1, 2, 256, 0, 0, 0, { 0, 0, 0, 0, 0, 0 } };
     stex_opts_default(&co.so);
     long lv;
@@ -338,6 +342,8 @@ int cmd_prepare(int argc, char **argv)
             if (k < 0) rc = CLI_EXIT_USAGE;
         } else if (strcmp(a, "--fit") == 0) {
             fit = 1;
+        } else if (strcmp(a, "--no-fit") == 0) {
+            fit = 0;
         } else if (strcmp(a, "--no-clip") == 0) {
             co.on = 0;
         } else if (strcmp(a, "--no-mesh") == 0) {

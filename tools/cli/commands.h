@@ -19,9 +19,11 @@ int cmd_view(int argc, char **argv);
 int cmd_profile(int argc, char **argv);
 int cmd_hull(int argc, char **argv);
 
-/* Parts: `silk bench --visibility` (tools/cli/bench_visibility.c) and the
- * framebuffer side of `silk view` (tools/view/view_fb.c). */
+/* Parts: `silk bench --visibility` (tools/cli/bench_visibility.c), `silk
+ * bench --grid` (tools/cli/bench_grid.c) and the framebuffer side of `silk
+ * view` (tools/view/view_fb.c). */
 int bench_visibility(int argc, char **argv);
+int bench_grid(int argc, char **argv);
 int view_fb(int argc, char **argv);
 
 #endif
