@@ -40,12 +40,16 @@ else
   TOOL_SRC  := $(filter-out tools/view/viewer_sdl.c,$(TOOL_SRC))
   $(info silk: SDL2 not found (pkg-config sdl2): building without the viewer window)
 endif
-TEST_SRC  := $(wildcard tests/test_*.c)
+# The tests, a folder per part they test (tests/README.md): core/, platform/,
+# prep/ (host-side preparation and image helpers); cli/ and boards/ hold the
+# shell tests.  Every test program is BUILD/tests/test_NAME, whatever its folder.
+TEST_DIRS := core platform prep
+TEST_SRC  := $(foreach d,$(TEST_DIRS),$(wildcard tests/$(d)/test_*.c))
 
 CORE_OBJ  := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 PLAT_OBJ  := $(PLAT_SRC:%.c=$(BUILD)/obj/%.o)
 TOOL_OBJ  := $(TOOL_SRC:%.c=$(BUILD)/obj/%.o)
-TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%) $(BUILD)/tests/test_cxx
+TEST_BIN  := $(addprefix $(BUILD)/tests/,$(basename $(notdir $(TEST_SRC)))) $(BUILD)/tests/test_cxx
 TEST_SUPPORT := $(wildcard tests/support/*.c)
 # (stexgen.c writes prepared models with the tool's writer)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tools/prep/model_file.o
@@ -88,9 +92,12 @@ $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 $(BUILD)/silk.1: $(BUILD)/silk
 	$(BUILD)/silk help --man >$@.tmp && mv $@.tmp $@
 
-$(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
-	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests $(TOOL_INC) -o $@ $< $(TEST_TOOL_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+define TEST_RULE
+$$(BUILD)/tests/%: tests/$(1)/%.c $$(TEST_SUPPORT_OBJ) $$(BUILD)/libsilk_platform.a $$(BUILD)/libsilk.a tests/check.h
+	@mkdir -p $$(dir $$@)
+	$$(CC) $$(ALL_CFLAGS) $$(LDFLAGS) -Itests $$(TOOL_INC) -o $$@ $$< $$(TEST_TOOL_OBJ) $$(TEST_SUPPORT_OBJ) $$(BUILD)/libsilk_platform.a $$(BUILD)/libsilk.a $$(PNG_LIBS) -lm
+endef
+$(foreach d,$(TEST_DIRS),$(eval $(call TEST_RULE,$(d))))
 
 # Tests of host tools link the tools' objects they test; tests that draw
 # meshes made by `silk gen`'s generator link it.
@@ -114,7 +121,7 @@ $(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tool
 $(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o silmap_simplify.o gen.o)
 
 # The public headers from C++ (extern "C"): compiles and links against the core.
-$(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
+$(BUILD)/tests/test_cxx: tests/core/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(CXXFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk_platform.a \
 	    $(BUILD)/libsilk.a $(PNG_LIBS)
@@ -278,7 +285,7 @@ profile: $(BUILD)/silk
 	$(BUILD)/silk profile '$(PROFILE_MESH)' --csv '$(PROFILE_CSV)' $(PROFILE_ARGS)
 endif
 
-# `make test` runs the firmware under QEMU (tests/cli_qemu.sh) when the ARM
+# `make test` runs the firmware under QEMU (tests/boards/cli_qemu.sh) when the ARM
 # toolchain is installed; in CI it must be.
 HAVE_ARM := $(shell command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1 && echo 1)
 ifeq ($(BOARD)$(HAVE_ARM),host1)
@@ -286,7 +293,7 @@ ifneq ($(SAN),1)
 tests: firmware-for-tests
 .PHONY: firmware-for-tests
 # The Cortex-M3 board's models are shared meshes: without them
-# tests/cli_qemu.sh skips it.  The Cortex-M0 board always has its `silk gen`
+# tests/boards/cli_qemu.sh skips it.  The Cortex-M0 board always has its `silk gen`
 # model.
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \

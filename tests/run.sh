@@ -1,5 +1,5 @@
 #!/bin/sh
-# Runs every test program in BUILD/tests (and the shell tests in tests/*.sh),
+# Runs every test program in BUILD/tests (and the shell tests in tests/*/*.sh),
 # prints each one's result as it ends, and ends with the total
 # "N passed, N failed".
 #
@@ -20,7 +20,7 @@ case "$jobs" in ''|*[!0-9]*) jobs=1 ;; esac
 [ "$jobs" -lt 1 ] && jobs=1
 
 all=
-for t in "$build"/tests/test_* tests/cli_*.sh; do
+for t in "$build"/tests/test_* tests/*/cli_*.sh; do
   [ -e "$t" ] || continue
   case "$t" in *.d|*.o|*.log|*.txt|*.png|*.ppm|*.secs) continue;; esac
   [ -d "$t" ] && continue

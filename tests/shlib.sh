@@ -1,4 +1,4 @@
-# shlib.sh - helpers for the shell tests of the silk command (tests/cli_*.sh),
+# shlib.sh - helpers for the shell tests of the silk command (tests/*/cli_*.sh),
 # sourced, not run.  Each test script gets the build directory as $1 and
 # ends with done_testing, which prints "N passed, N failed" like check.h.
 #
@@ -9,7 +9,8 @@
 
 build=${1:-build}
 SILK=$build/silk
-here=$(cd "$(dirname "$0")" && pwd)
+# the tests folder (every script sits in a group folder below it)
+here=$(cd "$(dirname "$0")/.." && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/silk-cli.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 passed=0

@@ -19,7 +19,7 @@
  * `silk render` computes them for the same options, and each camera's
  * comment gives the --eye that makes `silk render` use it: a device
  * rendering camera k with the packed mesh must produce the bytes
- * `silk render` writes (tests/cli_qemu.sh checks it).
+ * `silk render` writes (tests/boards/cli_qemu.sh checks it).
  *
  * Indices are written as silk_index and SILK_NO_INDEX, so the header works
  * with a narrower SILK_INDEX_T when the model fits (a static assertion says
