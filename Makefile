@@ -113,8 +113,7 @@ $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/prep/gen.o
 CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,gen.o hull.o lp.o simplify.o closest.o silmap.o)
 $(BUILD)/tests/test_golden: $(CLIP_TOOL_OBJ)
 $(BUILD)/tests/test_golden: TEST_TOOL_OBJ = $(CLIP_TOOL_OBJ)
-STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o) \
-                 $(BUILD)/obj/tools/cli/progress.o
+STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o)
 $(BUILD)/tests/test_stex: $(STEX_TOOL_OBJ)
 $(BUILD)/tests/test_stex: TEST_TOOL_OBJ = $(STEX_TOOL_OBJ) -pthread
 $(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o silmap_simplify.o gen.o)

@@ -4,7 +4,8 @@
  * rectification, the projective map to the current view, linear
  * interpolation of two outlines as the silhouette of the two views' visual
  * hull, the polytope triangle, and whole outlines of generated shapes and
- * the shared bunny against the true silhouette drawn at the current view.
+ * the shared bunny against the true silhouette drawn at the current view;
+ * a view's outline reprojected to another camera at its eye.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -15,6 +16,7 @@
 #include "tools/prep/gen.h"
 #include "tools/prep/silmap.h"
 #include "tools/prep/silmap_simplify.h"
+#include "src/silmap_interp.h"
 
 static silk_fx fx(double v) { return (silk_fx)floor(v * 65536 + 0.5); }
 static double dbl(silk_fx v) { return v / 65536.0; }
@@ -552,6 +554,62 @@ TEST(bunny)
     free(tri);
 }
 
+/* silk_outline_reproject: a map view's outline (offsets into the map's
+ * arrays) seen by a camera at the same eye turned by a few degrees and with
+ * another focal length lands where that camera sees each outline point's
+ * direction, within a hundredth of a pixel. */
+TEST(reproject)
+{
+    gen_params gp;
+    gen_defaults(GEN_TORUS, &gp);
+    gen_mesh g;
+    CHECK(gen_build(&gp, &g) == 0);
+    silmap_params p;
+    silmap_params_default(&p);
+    p.level = 1;
+    p.res = 128;
+    silmap m;
+    silmap_fixed f;
+    CHECK(silmap_build(g.pos, g.nverts, g.tri, g.ntris, &p, &m) == 0);
+    CHECK(silmap_export(&m, &f) == 0);
+    static uint8_t buf[1 << 20];
+    silk_arena ar;
+    silk_arena_init(&ar, buf, sizeof buf);
+    double worst = 0;
+    long points = 0;
+    for (uint32_t w = 1; w < f.map.nviews; w += 7) {
+        const silk_silmap_cam *a = &f.map.views[w].cam;
+        silk_silmap_cam b = *a;
+        double r[3], u[3], fw[3];
+        v3d(a->right, r), v3d(a->up, u), v3d(a->fwd, fw);
+        double t = 4 * 3.14159265358979323846 / 180, c = cos(t), sn = sin(t);
+        /* turned about the up axis; the focal length half again */
+        b.fwd = (silk_vec3){ fx(c * fw[0] + sn * r[0]), fx(c * fw[1] + sn * r[1]), fx(c * fw[2] + sn * r[2]) };
+        b.right = (silk_vec3){ fx(c * r[0] - sn * fw[0]), fx(c * r[1] - sn * fw[1]), fx(c * r[2] - sn * fw[2]) };
+        b.focal = a->focal + a->focal / 2;
+        silk_outline own = silk_silmap_outline(&f.map, w), out;
+        silk_arena_mark mk = silk_arena_top_mark(&ar);
+        CHECK(silk_outline_reproject(&own, a, &b, &ar, &out) == SILK_OK);
+        CHECK(out.nloops == own.nloops && out.start[0] == 0 && out.npts == own.start[own.nloops] - own.start[0]);
+        for (uint32_t i = 0; i < out.npts; i++) {
+            silk_vec2 pa = own.pt[own.start[0] + i];
+            double e[3], q[3], ref[2];
+            v3d(a->eye, e);
+            double x = (dbl(pa.x) - dbl(a->cx)) / dbl(a->focal), y = (dbl(a->cy) - dbl(pa.y)) / dbl(a->focal);
+            for (int k = 0; k < 3; k++) q[k] = e[k] + fw[k] + x * r[k] + y * u[k];
+            CHECK(project_d(&b, q, ref) == 0);
+            worst = fmax(worst, hypot(dbl(out.pt[i].x) - ref[0], dbl(out.pt[i].y) - ref[1]));
+            points++;
+        }
+        silk_arena_top_release(&ar, &mk);
+    }
+    CHECKF(points > 100 && worst < 0.01, "%ld points, worst %.4f px", points, worst);
+    printf("  reprojected %ld outline points: within %.5f px\n", points, worst);
+    silmap_fixed_free(&f);
+    silmap_free(&m);
+    gen_free(&g);
+}
+
 /* Section 6: the 42-view map of a torus simplified to 3 px: fewer views and
  * bytes, the polytope still star-shaped (every triangle counter-clockwise
  * about the centre), and every view of the dense map, dropped or not,
@@ -617,5 +675,6 @@ int main(void)
     RUN(sphere_and_torus);
     RUN(bunny);
     RUN(simplify_map);
+    RUN(reproject);
     return check_done();
 }

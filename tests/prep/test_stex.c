@@ -173,7 +173,7 @@ TEST(sphere_in_a_hull_sphere)
     CHECK(sphere(12, 8, R, &hull) == 0);
     stex_opts o;
     stex_opts_default(&o);
-    o.atlas = 48, o.angles = 16, o.samples = 1024, o.quiet = 1;
+    o.atlas = 48, o.angles = 16, o.samples = 1024;
     stex s;
     CHECK(stex_build(&fine, NULL, &hull, &o, &s) == 0);
     const double step = PI / 255;
@@ -285,7 +285,7 @@ TEST(interior_silhouettes)
     CHECK(sphere(12, 8, 1, &hull) == 0 && twice(&hull, gap) == 0);
     stex_opts o;
     stex_opts_default(&o);
-    o.atlas = 64, o.samples = 256, o.quiet = 1;
+    o.atlas = 64, o.samples = 256;
     stex s;
     CHECK(stex_build(&fine, NULL, &hull, &o, &s) == 0);
     size_t nt = (size_t)s.atlas.w * s.atlas.h, row = (size_t)(s.nsamples + 7) / 8;
@@ -357,7 +357,7 @@ TEST(runtime_lookup_agrees_with_the_encoding)
     CHECK(sphere(12, 8, 1, &hull) == 0);
     stex_opts o;
     stex_opts_default(&o);
-    o.atlas = 48, o.samples = 256, o.quiet = 1;
+    o.atlas = 48, o.samples = 256;
     stex s;
     CHECK(stex_build(&fine, NULL, &hull, &o, &s) == 0);
     size_t size, nt = (size_t)s.atlas.w * s.atlas.h;

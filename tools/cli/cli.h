@@ -14,8 +14,9 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "silk/silk.h"
-#include "src/silmap_interp.h"
+#include "silk/silmap.h"
 #include "silk/siltex.h"
+#include "host.h"
 #include "material.h"
 #include "platform/platform.h"
 
@@ -40,9 +41,9 @@
 /* Files from this size on show a progress line while they load. */
 #define CLI_PROGRESS_FILE_BYTES ((size_t)4 << 20)
 
-/* The tools' one pi, and degrees to radians. */
-#define CLI_PI 3.14159265358979323846
-#define CLI_DEG (CLI_PI / 180)
+/* The tools' one pi, and degrees to radians (host.h). */
+#define CLI_PI HOST_PI
+#define CLI_DEG HOST_DEG
 
 /* The default camera: vertical field of view, and the direction from the
  * model towards the eye, 30 degrees to the right of +z and 20 degrees up. */

@@ -26,6 +26,7 @@
 #include "prep/simplify.h"
 #include "prep/stex_build.h"
 #include "prep/surface.h"
+#include "progress.h"
 #include "platform/platform.h"
 
 static void help(FILE *f)
@@ -84,6 +85,7 @@ typedef struct clip_opts {
     double map_error;        /* --map-error: 0 keeps every view */
     int siltex;              /* --siltex: the silhouette texture too */
     int siltex_compare;      /* --siltex-compare */
+    int quiet;               /* no progress line */
     stex_opts so;
 } clip_opts;
 
@@ -94,6 +96,9 @@ typedef struct clip_stats {
     double stex_error, stex_multi;
 } clip_stats;
 
+/* stex_build's progress: the progress line. */
+static void on_texels(void *user, double done, double total) { progress_update(user, done, total); }
+
 /* The STEX section for hull h of fine (stex_build.h).  0, or an exit
  * status after a one-line error. */
 static int add_siltex(model_out *mo, const char *in, const simp_mesh *fine, const uint32_t *fine_color,
@@ -101,7 +106,13 @@ static int add_siltex(model_out *mo, const char *in, const simp_mesh *fine, cons
 {
     stex st;
     stex_svd svd;
-    int rc = stex_build(fine, fine_color, h, &co->so, &st);
+    stex_opts so = co->so;
+    progress pr;
+    progress_start(&pr, co->quiet, "siltex");
+    so.progress = on_texels;
+    so.progress_user = &pr;
+    int rc = stex_build(fine, fine_color, h, &so, &st);
+    progress_end(&pr);
     if (rc == -2)
         return cli_fail(CLI_EXIT_INPUT, "%s: the hull's %u triangles do not fit a %d x %d atlas (raise --atlas)", in,
                         h->ntris, co->so.atlas, co->so.atlas);
@@ -325,7 +336,7 @@ int cmd_prepare(int argc, char **argv)
     simp_opts_default(&so, 0);
     so.subset = 1;
     int rc = 0, fit = 0, k;
-    clip_opts co = { 1, 1, 2, 256, 0, 0, 0, { 0, 0, 0, 0, 0, 0 } };
+    clip_opts co = { 1, 1, 2, 256, 0, 0, 0, 0, { 0, 0, 0, 0, 0, NULL, NULL } };
     stex_opts_default(&co.so);
     long lv;
     const char *siltex_opt = NULL;   /* a --siltex option given */
@@ -399,6 +410,6 @@ int cmd_prepare(int argc, char **argv)
     if (silk_file_same(in, args.out))
         return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
     /* A failed run leaves OUT as it was (written atomically), as every command. */
-    co.so.quiet = args.quiet;
+    co.quiet = args.quiet;
     return prepare(in, args.out, &so, args.scale, args.quiet, fit, &co);
 }

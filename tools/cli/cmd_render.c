@@ -349,9 +349,10 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
     if (se->sheet) {
         char title[200];
         sheet_title(o, se, title, sizeof title);
-        if (sheet_init(&sh, cols, rows, o->width * se->pixels, o->height * se->pixels, title)) {
+        silk_error err;
+        if (sheet_init(&sh, cols, rows, o->width * se->pixels, o->height * se->pixels, title, &err) != SILK_OK) {
             sheet_free(&sh);
-            return CLI_EXIT_INPUT;
+            return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         }
     }
     silk_target big;
