@@ -64,8 +64,8 @@ check "no reference: no error" grep -qE '^bench coarse flat ortho triangles=200 
 check "no reference: empty CSV cells" grep -q '^coarse,flat,,ortho,200,200\.0,[0-9.]*,,,' "$tmp/c.csv"
 
 # the visibility benchmark is still there
-run_silk bench --visibility --batches 1 --projection parallel "$tmp/coarse.obj"
-check "--visibility runs the visibility benchmark" grep -q '^visibility ' "$out"
+run_silk bench --visibility-pass --batches 1 --projection parallel "$tmp/coarse.obj"
+check "--visibility-pass runs the visibility benchmark" grep -q '^visibility ' "$out"
 
 want="not a mode" expect_usage "unknown mode" bench "$tmp/coarse.obj" --modes flat,shiny
 expect_usage "PN level too high" bench "$tmp/coarse.obj" --modes pn99

@@ -11,7 +11,7 @@
 . "$(dirname "$0")/../shlib.sh"
 
 "$SILK" gen knot -o "$tmp/knot.obj" >/dev/null || { fail "gen" "exit $?"; done_testing; exit 1; }
-run_silk prepare "$tmp/knot.obj" -o "$tmp/knot.silk" --triangles 300 --views 42 --map-resolution 128
+run_silk prepare "$tmp/knot.obj" -o "$tmp/knot.silk" --triangles 300 --map-views 42 --map-resolution 128
 check "prepare" [ "$rc" -eq 0 ]
 
 worst=0

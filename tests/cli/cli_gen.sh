@@ -174,7 +174,7 @@ want='\.obj' expect_usage "output not .obj" gen sphere -o "$tmp/s.png"
 want='unknown option' expect_usage "unknown option" gen sphere --wobble 3 -o "$o"
 check "no output after failures" test ! -e "$o"
 check "no .png written for a bad extension" test ! -e "$tmp/s.png"
-want='cannot create' expect_input "missing directory" gen sphere -o "$tmp/no/such/dir/s.obj"
+want="the directory $tmp/no/such/dir does not exist" expect_input "missing directory" gen sphere -o "$tmp/no/such/dir/s.obj"
 check "no temporary files after failures" no_tmp_files "$tmp"
 
 help_lists() {

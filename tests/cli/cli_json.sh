@@ -29,7 +29,14 @@ check "info --json: arena peak" \
     test "$(py "$tmp/info.json" 'j["arena"]["peak"]')" = "$(info_value "$tmp/info.txt" '  peak')"
 check "info --json: schema silk-info/1" test "$(py "$tmp/info.json" 'j["schema"]')" = silk-info/1
 check "info --json: every section" test "$(py "$tmp/info.json" '" ".join(sorted(j))')" = \
-    "arena file file_bytes frame mesh mesh_bytes schema"
+    "arena file file_bytes frame mesh mesh_bytes model schema"
+check "info --json: a mesh file is no prepared model" test "$(py "$tmp/info.json" 'j["model"]')" = None
+# every count of the text is in the JSON
+check "info --json: reoriented triangles as the text" \
+    test "$(py "$tmp/info.json" 'j["mesh"]["reoriented_triangles"]')" = "$(info_value "$tmp/info.txt" 'reoriented triangles')"
+check "info --json: normals from as the text" \
+    test "$(py "$tmp/info.json" 'j["mesh"]["normals_from"]')" = \
+    "$(info_value "$tmp/info.txt" 'normals from' | sed 's/the file/file/; s/computed.*/computed/')"
 run_silk info "$tmp/missing.obj" --json
 check "info --json: a missing file is still exit 1, nothing on stdout" test "$rc" -eq 1 -a ! -s "$out"
 

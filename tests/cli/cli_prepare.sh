@@ -33,19 +33,19 @@ run_silk simplify "$tmp/torus.silk" "$tmp/torus-100.obj" --triangles 100
 check "simplify takes it" grep -q "triangles=100 " "$out"
 
 # clip mode: the hull and the map; a model without them says so
-run_silk prepare "$tmp/sphere.obj" -o "$tmp/small-map.silk" --triangles 60 --views 42 --map-resolution 64
-check "--views 42 --map-resolution 64" grep -qE "map_views=42 map_bytes=[0-9]+ " "$out"
+run_silk prepare "$tmp/sphere.obj" -o "$tmp/small-map.silk" --triangles 60 --map-views 42 --map-resolution 64
+check "--map-views 42 --map-resolution 64" grep -qE "map_views=42 map_bytes=[0-9]+ " "$out"
 run_silk bench "$tmp/small-map.silk" --views 2 --reps 1 --modes flat,clip --size 64x48
 check "bench: a clip row" grep -q "^bench small-map clip perspective" "$out"
 run_silk prepare "$tmp/sphere.obj" -o "$tmp/no-clip.silk" --triangles 60 --no-clip
 check "--no-clip: no map" sh -c "! grep -q map_views $out"
-run_silk prepare "$tmp/sphere.obj" -o "$tmp/hull-only.silk" --triangles 60 --no-mesh --views 12 --map-resolution 32
+run_silk prepare "$tmp/sphere.obj" -o "$tmp/hull-only.silk" --triangles 60 --no-mesh --map-views 12 --map-resolution 32
 run_silk render "$tmp/hull-only.silk" -o "$tmp/hull-flat.png" --size 96x64 --mode flat
 check "--no-mesh: flat draws the hull" [ "$rc" -eq 0 ]
 want="leave nothing to write" expect_usage "--no-clip --no-mesh" prepare "$tmp/sphere.obj" -o "$tmp/x.silk" --triangles 10 --no-clip --no-mesh
 want="no HULL section" expect_input "clip without a hull" render "$tmp/no-clip.silk" -o "$tmp/x.png" --mode clip
 want="clip mode draws a prepared model" expect_input "clip of a mesh file" render "$tmp/sphere.obj" -o "$tmp/x.png" --mode clip
-want="--views must be 12, 42, 162" expect_usage "--views 50" prepare "$tmp/sphere.obj" -o "$tmp/x.silk" --triangles 10 --views 50
+want="--map-views must be 12, 42, 162" expect_usage "--map-views 50" prepare "$tmp/sphere.obj" -o "$tmp/x.silk" --triangles 10 --map-views 50
 
 # errors
 want="--triangles N is needed" expect_usage "no target" prepare "$tmp/sphere.obj" -o "$tmp/x.silk"

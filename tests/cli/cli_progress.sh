@@ -21,7 +21,7 @@ quiet_run() {
 }
 quiet_run simplify simplify "$tmp/big.obj" "$tmp/s.obj" --triangles 2000
 quiet_run bench bench "$sphere" --views 2 --reps 1 --size 64x48 --modes flat
-quiet_run "bench --visibility" bench --visibility "$sphere" --batches 1
+quiet_run "bench --visibility-pass" bench --visibility-pass "$sphere" --batches 1
 quiet_run turntable render "$sphere" --turntable 4 -o "$tmp/t_%d.png" --size 64x48
 quiet_run "loading a large file" info "$tmp/big.obj"
 
@@ -40,7 +40,7 @@ tty() {
 }
 tty simplify 'simplify *[0-9]*%' simplify "$tmp/big.obj" "$tmp/s.obj" --triangles 2000
 tty bench 'bench sphere *[0-9]*%' bench "$sphere" --views 4 --reps 1 --size 64x48 --modes flat
-tty "bench --visibility" 'bench --visibility .*sphere.obj *[0-9]*%' bench --visibility "$sphere" --batches 1
+tty "bench --visibility-pass" 'bench --visibility-pass .*sphere.obj *[0-9]*%' bench --visibility-pass "$sphere" --batches 1
 tty turntable 'render *[0-9]*%' render "$sphere" --turntable 4 -o "$tmp/t_%d.png" --size 64x48
 tty "loading a large file" 'loading .*big.obj' info "$tmp/big.obj"
 script -qec "\"$SILK\" simplify \"$tmp/big.obj\" \"$tmp/s.obj\" --triangles 2000 --quiet" /dev/null >"$tmp/tty" 2>&1 </dev/null

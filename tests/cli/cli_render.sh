@@ -125,7 +125,9 @@ check "usage error writes nothing" test ! -e "$o"
 cp "$tmp/o.ppm" "$tmp/input.ppm"
 expect_input "an image as the mesh" render "$tmp/input.ppm" -o "$tmp/input.ppm"
 check "a failed render never removes its input" cmp -s "$tmp/o.ppm" "$tmp/input.ppm"
-want='cannot create: No such file or directory' expect_input "missing output directory" render "$sphere" -o "$tmp/no/dir/x.png"
+# a missing directory is named, before any work
+want="-o $tmp/no/dir/x.png: the directory $tmp/no/dir does not exist" expect_input "missing output directory" render "$sphere" -o "$tmp/no/dir/x.png"
+want="the directory $tmp/no does not exist" expect_input "missing --turntable directory" render "$sphere" -o "$tmp/no/t%d.png" --turntable 2
 want='unknown image format' expect_usage "unknown extension" render "$sphere" -o "$tmp/x.jpg"
 check "nothing written for an unknown extension" test ! -e "$tmp/x.jpg"
 mkdir "$tmp/dir.png"
