@@ -14,7 +14,7 @@
 
 case "$build" in
 *san*)
-    echo "skipped: valgrind does not run sanitizer builds (the $build pass covers memory with ASan)"
+    echo "skip: valgrind does not run sanitizer builds (the $build pass covers memory with ASan)"
     done_testing
     exit $?
     ;;
@@ -23,7 +23,7 @@ if ! command -v valgrind >/dev/null 2>&1; then
     if [ -n "${CI:-}" ]; then
         fail "valgrind" "not installed (CI installs it: .ci/run)"
     else
-        echo "skipped: valgrind is not installed"
+        echo "skip: valgrind is not installed"
     fi
     done_testing
     exit $?

@@ -20,17 +20,18 @@
  * and "painted", a sphere whose vertex colours follow the position; both in
  * the surface modes from two views.
  *
- *   test_golden            compare (make test)
- *   test_golden --update   rewrite the images that differ or are missing
- *                          and print "changed: NAME" / "new: NAME" for each
- *                          (make golden)
- *
- * SILK_GOLDEN overrides the directory (default tests/golden).
+ * The comparison is tests/support/golden.c's, as for every reference
+ * image: a frame that differs is left in build/tests/out/ with a picture of
+ * the difference, and `make golden` (SILK_GOLDEN_UPDATE=1) rewrites the
+ * references that differ or are missing and names them.  The last test
+ * checks that a failing comparison leaves those two images.
  */
+#define _POSIX_C_SOURCE 200809L
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "check.h"
 #include "silk/silk.h"
@@ -43,22 +44,15 @@
 #include "support/testmesh.h"
 #include "support/testframe.h"
 #include "support/stexgen.h"
+#include "support/golden.h"
 
 #define W 128
 #define H 96
 #define BG 0xFFFFFFu
 #define ARENA_BYTES (24u << 20)
 
-static int update;
-static int n_changed, n_new, n_same;
 static const silk_texture *mesh_texture;   /* the texture of the mesh being drawn, or NULL */
 static const silk_siltex *mesh_siltex;     /* the silhouette texture of the hull being drawn, or NULL */
-
-static const char *golden_dir(void)
-{
-    const char *d = getenv("SILK_GOLDEN");
-    return d ? d : "tests/golden";
-}
 
 /* ---- the meshes ------------------------------------------------------------- */
 
@@ -177,45 +171,13 @@ static const mode_case modes[] = {
 
 /* ---- one golden frame --------------------------------------------------------- */
 
-/* The frame against NAME.png: 1 when equal (or rewritten with --update). */
+/* The frame against NAME's reference (support/golden.h). */
 static int compare_golden(const silk_target *t, const char *name)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s.png", golden_dir(), name);
-    size_t n = (size_t)t->width * (size_t)t->height * 3;
-    uint8_t *mine = malloc(n);
-    for (int y = 0; y < t->height; y++) silk_target_row_rgb888(t, y, mine + (size_t)y * (size_t)t->width * 3);
-
-    uint8_t *ref = NULL;
-    int rw = 0, rh = 0;
-    silk_error err;
-    FILE *probe = fopen(path, "rb");
-    int exists = probe != NULL;
-    if (probe) fclose(probe);
-    long differ = -1;
-    if (exists && silk_png_read(path, &ref, &rw, &rh, &err) == SILK_OK && rw == t->width && rh == t->height) {
-        differ = 0;
-        for (size_t i = 0; i < n; i += 3) differ += memcmp(mine + i, ref + i, 3) != 0;
-    }
-    free(ref);
-    free(mine);
-    if (differ == 0) {
-        n_same++;
-        return 1;
-    }
-    if (update) {
-        if (silk_png_write(t, path, &err) != SILK_OK) {
-            CHECKF(0, "%s", err.msg);
-            return 0;
-        }
-        printf("%s: %s\n", exists ? "changed" : "new", name);
-        if (exists) n_changed++;
-        else n_new++;
-        return 1;
-    }
-    if (!exists) CHECKF(0, "%s: no golden image (make golden)", path);
-    else CHECKF(differ == 0, "%s: %ld pixels differ from the golden image", name, differ);
-    return 0;
+    char msg[600];
+    int same = golden_compare(t, name, msg, sizeof msg);
+    CHECKF(same, "%s", msg);
+    return same;
 }
 
 static void golden_case(tm_fixture *f, const char *mesh, const view_case *vc, const mode_case *mc,
@@ -445,12 +407,79 @@ TEST(golden_torus) { golden_mesh("torus"); }
 TEST(golden_cone) { golden_mesh("cone"); }
 TEST(golden_knot) { golden_mesh("knot"); }
 TEST(golden_bunny) { golden_mesh("bunny"); }
+
+/* A comparison that fails leaves the frame and the difference: a sphere's
+ * frame against a reference with three pixels changed, in a directory of
+ * its own. */
+TEST(failure_leaves_images)
+{
+    char dir[] = "/tmp/silk-golden.XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char refdir[64], outdir[64], path[128];
+    snprintf(refdir, sizeof refdir, "%s/ref", dir);
+    snprintf(outdir, sizeof outdir, "%s/out", dir);
+    CHECK(mkdir(refdir, 0777) == 0);
+    enum { TW = 32, TH = 24 };
+    static uint8_t px[TW * TH * 3];
+    for (int i = 0; i < TW * TH * 3; i++) px[i] = (uint8_t)(i * 7);
+    silk_target t;
+    silk_target_init(&t, TW, TH, 0, TH, SILK_PIX_RGB888, px, NULL);
+    silk_error err;
+    snprintf(path, sizeof path, "%s/frame.png", refdir);
+    /* the reference: the frame with three pixels changed */
+    static uint8_t ref[TW * TH * 3];
+    memcpy(ref, px, sizeof ref);
+    const int changed[3] = { 0, 5 * TW + 7, TW * TH - 1 };
+    for (int k = 0; k < 3; k++) ref[3 * changed[k]] ^= 0x40;
+    silk_target rt;
+    silk_target_init(&rt, TW, TH, 0, TH, SILK_PIX_RGB888, ref, NULL);
+    CHECK(silk_png_write(&rt, path, &err) == SILK_OK);
+    const char *was_golden = getenv("SILK_GOLDEN"), *was_out = getenv("SILK_TEST_OUT"),
+               *was_update = getenv("SILK_GOLDEN_UPDATE");
+    char keep[3][512];
+    snprintf(keep[0], sizeof keep[0], "%s", was_golden ? was_golden : "");
+    snprintf(keep[1], sizeof keep[1], "%s", was_out ? was_out : "");
+    snprintf(keep[2], sizeof keep[2], "%s", was_update ? was_update : "");
+    setenv("SILK_GOLDEN", refdir, 1);
+    setenv("SILK_TEST_OUT", outdir, 1);
+    unsetenv("SILK_GOLDEN_UPDATE");
+    char msg[600];
+    CHECKF(golden_compare(&t, "frame", msg, sizeof msg) == 0, "the frame differs, yet it passed");
+    CHECKF(strstr(msg, "3 pixels differ") != NULL, "%s", msg);
+    uint8_t *got = NULL, *diff = NULL;
+    int w = 0, h = 0, dw = 0, dh = 0;
+    snprintf(path, sizeof path, "%s/frame.png", outdir);
+    CHECKF(silk_png_read(path, &got, &w, &h, &err) == SILK_OK, "%s is not there: %s", path, err.msg);
+    CHECK(got && w == TW && h == TH && memcmp(got, px, sizeof px) == 0);
+    snprintf(path, sizeof path, "%s/frame-diff.png", outdir);
+    CHECKF(silk_png_read(path, &diff, &dw, &dh, &err) == SILK_OK, "%s is not there: %s", path, err.msg);
+    int red = 0, red_right = 0;
+    for (int i = 0; diff && dw == TW && dh == TH && i < TW * TH; i++) {
+        int is_red = diff[3 * i] == 255 && diff[3 * i + 1] == 0 && diff[3 * i + 2] == 0;
+        red += is_red;
+        for (int k = 0; k < 3; k++) red_right += is_red && i == changed[k];
+    }
+    CHECKF(red == 3 && red_right == 3, "the difference has %d red pixels, %d of them the changed ones", red, red_right);
+    free(got);
+    free(diff);
+    /* as it was */
+    if (was_golden) setenv("SILK_GOLDEN", keep[0], 1);
+    else unsetenv("SILK_GOLDEN");
+    if (was_out) setenv("SILK_TEST_OUT", keep[1], 1);
+    else unsetenv("SILK_TEST_OUT");
+    if (was_update) setenv("SILK_GOLDEN_UPDATE", keep[2], 1);
+    const char *files[] = { "ref/frame.png", "out/frame.png", "out/frame-diff.png", "ref", "out" };
+    for (int k = 0; k < 5; k++) {
+        snprintf(path, sizeof path, "%s/%s", dir, files[k]);
+        remove(path);
+    }
+    remove(dir);
+}
 TEST(golden_knot_clip) { golden_clip(); }
 TEST(golden_spheres_siltex) { golden_siltex(); }
 
-int main(int argc, char **argv)
+int main(void)
 {
-    update = argc > 1 && !strcmp(argv[1], "--update");
     RUN(golden_sphere);
     RUN(golden_torus);
     RUN(golden_cone);
@@ -460,7 +489,7 @@ int main(int argc, char **argv)
     RUN(golden_bunny);
     RUN(golden_globe);
     RUN(golden_painted);
-    if (update)
-        printf("golden: %d changed, %d new, %d unchanged in %s\n", n_changed, n_new, n_same, golden_dir());
+    RUN(failure_leaves_images);
+    golden_summary();
     return check_done();
 }

@@ -3,9 +3,8 @@
  * gaps, no double hits), golden images, perspective-correct varyings against
  * a double reference, clipping, bands, lines, and frame sizes.
  *
- * Golden images live in tests/golden/ and are compared byte for byte;
- * SILK_UPDATE_GOLDEN=1 rewrites them, SILK_DUMP_DIR=dir also writes every
- * golden scene there for viewing.
+ * Golden images live in tests/golden/ and are compared byte for byte by
+ * tests/support/golden.c (`make golden` rewrites them).
  */
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +13,7 @@
 #include "check.h"
 #include "silk/silk.h"
 #include "src/frame.h"   /* silk_raster_place, _reaches, _placed */
+#include "support/golden.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -546,75 +546,11 @@ TEST(depth_pass_then_shade)
 
 /* ---- (b) golden images ------------------------------------------------------------- */
 
-static const char *golden_dir(void)
-{
-    const char *d = getenv("SILK_GOLDEN_DIR");
-    return d ? d : "tests/golden";
-}
-
-static int ppm_write(const char *path, const silk_target *t)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f) return 0;
-    fprintf(f, "P6\n%d %d\n255\n", t->width, t->rows);
-    for (int y = t->y0; y < t->y0 + t->rows; y++)
-        for (int x = 0; x < t->width; x++) {
-            uint32_t c = silk_target_get(t, x, y);
-            unsigned char b[3] = { (unsigned char)(c >> 16), (unsigned char)(c >> 8), (unsigned char)c };
-            fwrite(b, 1, 3, f);
-        }
-    return fclose(f) == 0;
-}
-
-/* Reads a binary PPM written by ppm_write; returns malloc'd RGB bytes or NULL. */
-static unsigned char *ppm_read(const char *path, int *w, int *h)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    int maxv = 0;
-    unsigned char *px = NULL;
-    if (fscanf(f, "P6 %d %d %d", w, h, &maxv) == 3 && maxv == 255 && fgetc(f) != EOF && *w > 0 && *h > 0) {
-        size_t n = (size_t)*w * (size_t)*h * 3;
-        px = malloc(n);
-        if (px && fread(px, 1, n, f) != n) { free(px); px = NULL; }
-    }
-    fclose(f);
-    return px;
-}
-
+/* The frame against tests/golden/NAME.ppm (support/golden.h). */
 static void check_golden(const char *name, const silk_target *t)
 {
-    char path[512];
-    const char *dump = getenv("SILK_DUMP_DIR");
-    if (dump) {
-        snprintf(path, sizeof path, "%s/%s.ppm", dump, name);
-        ppm_write(path, t);
-    }
-    snprintf(path, sizeof path, "%s/%s.ppm", golden_dir(), name);
-    const char *upd = getenv("SILK_UPDATE_GOLDEN");
-    if (upd && *upd == '1') {
-        CHECKF(ppm_write(path, t), "cannot write %s", path);
-        return;
-    }
-    int w = 0, h = 0;
-    unsigned char *g = ppm_read(path, &w, &h);
-    CHECKF(g != NULL, "cannot read golden image %s (SILK_UPDATE_GOLDEN=1 makes it)", path);
-    if (!g) return;
-    CHECKF(w == t->width && h == t->rows, "%s is %dx%d, rendered %dx%d", path, w, h, t->width, t->rows);
-    int diff = 0, first = -1;
-    if (w == t->width && h == t->rows)
-        for (int y = 0; y < h; y++)
-            for (int x = 0; x < w; x++) {
-                uint32_t c = silk_target_get(t, x, y);
-                const unsigned char *p = g + ((size_t)y * w + x) * 3;
-                if (p[0] != (c >> 16 & 255) || p[1] != (c >> 8 & 255) || p[2] != (c & 255)) {
-                    if (first < 0) first = y * w + x;
-                    diff++;
-                }
-            }
-    CHECKF(diff == 0, "%s: %d pixels differ, first at (%d,%d)", name, diff, first % (w ? w : 1),
-           first / (w ? w : 1));
-    free(g);
+    char msg[600];
+    CHECKF(golden_compare(t, name, msg, sizeof msg), "%s", msg);
 }
 
 /* The scenes: a Phong sphere, perspective or orthographic, and a sphere
@@ -1405,5 +1341,6 @@ int main(void)
     RUN(depth_pass_then_shade);
     RUN(frame_sizes);
     RUN(pixel_formats);
+    golden_summary();
     return check_done();
 }
