@@ -122,6 +122,11 @@ silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err
         int e = errno;
         free(o->tmp);
         o->tmp = NULL;
+        /* the usual cause: say which directory is missing */
+        const char *slash = strrchr(path, '/');
+        if (e == ENOENT && slash && slash > path)
+            return silk_fail(err, SILK_ERR_IO, path, 0, "cannot create: the directory %.*s does not exist",
+                             (int)(slash - path), path);
         return silk_fail(err, SILK_ERR_IO, path, 0, "cannot create: %s", strerror(e));
     }
     /* mkstemp makes the file private (0600); an output should get the usual

@@ -87,6 +87,13 @@ ppm_count_not() {
         END { print n + 0 }'
 }
 
+# The pixels of columns [X0, X0 + W) of a PPM, one pixel a line ("r g b").
+ppm_columns() {
+    hdr=$(head -n 3 "$1" | wc -c)
+    iw=$(ppm_size "$1" | cut -dx -f1)
+    od -An -v -tu1 -w3 -j"$hdr" "$1" | awk -v x0="$2" -v w="$3" -v iw="$iw" '{ x = (NR - 1) % iw } x >= x0 && x < x0 + w'
+}
+
 # The value of a "name: value" line of `silk info`; name includes the
 # line's indentation ("  samples" in the frame section).
 info_value() {

@@ -10,7 +10,8 @@
 
 "$SILK" gen sphere -o "$tmp/coarse.obj" || { fail "gen" "exit $?"; done_testing; exit 1; }
 "$SILK" gen sphere --segments 48 --bands 48 -o "$tmp/fine.obj"
-mkdir -p "$tmp/dump"
+# --dump makes its directory; one in a directory that is missing is refused
+# before any frame, naming it
 
 run_silk bench --pair "$tmp/coarse.obj:$tmp/fine.obj" --views 2 --size 160x120 --modes flat,smooth,pn3 --reps 1 \
     --csv "$tmp/b.csv" --md "$tmp/b.md" --plot "$tmp/b.png" --dump "$tmp/dump"
@@ -26,6 +27,10 @@ check "Markdown table" grep -q '^| coarse | 200 | smooth |' "$tmp/b.md"
 check "Markdown: smooth mode's goals checked" grep -qE '^\| coarse \| [0-9.]+ \((met|NOT met)\) \| .* \| (yes|no) \|$' "$tmp/b.md"
 check "chart is a PNG" is_png "$tmp/b.png"
 check "16 dumped views: 2 projections x 2 views x (3 modes + fine)" [ "$(ls "$tmp/dump" | wc -l)" = 16 ]
+want="--dump $tmp/no/dump: the directory $tmp/no does not exist" expect_input "--dump into a missing directory" \
+    bench "$tmp/coarse.obj" --views 1 --reps 1 --modes flat --dump "$tmp/no/dump"
+want="the directory $tmp/no does not exist" expect_input "--csv into a missing directory" \
+    bench "$tmp/coarse.obj" --views 1 --reps 1 --modes flat --csv "$tmp/no/b.csv"
 # on an analytic sphere the smoothed outline is far closer than the polygon
 fe=$(awk -F, '$2 == "flat" && $4 == "perspective" { print $8 }' "$tmp/b.csv")
 se=$(awk -F, '$2 == "smooth" && $4 == "perspective" { print $8 }' "$tmp/b.csv")

@@ -45,6 +45,40 @@ check "HULL and SMAP still there" [ -n "$(section_size "$tmp/s.silk" HULL)" -a -
 run_silk render "$tmp/s.silk" -o "$tmp/clip.png" --size 96x64 --mode clip
 check "the model draws in clip mode" test "$rc" -eq 0 -a -s "$tmp/clip.png"
 
+# One model in every mode: side by side, from one camera.
+run_silk render "$tmp/s.silk" --modes flat,smooth,clip,siltex --sheet -o "$tmp/modes.png" --size 96x64
+check "--modes flat,smooth,clip,siltex --sheet draws the model (exit $rc: $(head -c 200 "$err"))" \
+    test "$rc" -eq 0 -a ! -s "$err" -a -s "$tmp/modes.png"
+eye=$("$SILK" info "$tmp/s.silk" --size 96x64 | grep '^  eye:')
+for m in clip siltex; do
+    e=$("$SILK" info "$tmp/s.silk" --size 96x64 --mode $m | grep '^  eye:')
+    check "render --mode $m: the default camera of flat and smooth ($e; $eye)" test -n "$eye" -a "$e" = "$eye"
+    "$SILK" view "$tmp/s.silk" --size 96x64 --events "h shot:$tmp/v-$m-start.ppm" --mode $m >/dev/null 2>&1
+    key=5; [ $m = siltex ] && key=6
+    "$SILK" view "$tmp/s.silk" --size 96x64 --events "h $key shot:$tmp/v-$m-key.ppm" >/dev/null 2>&1
+    check "view, key $key: the view of view --mode $m" cmp -s "$tmp/v-$m-start.ppm" "$tmp/v-$m-key.ppm"
+done
+# --compare: flat beside the mode asked for
+for m in clip siltex pn; do
+    "$SILK" render "$tmp/s.silk" --compare --mode $m --size 96x64 -o "$tmp/cmp.ppm" 2>"$err"
+    "$SILK" render "$tmp/s.silk" --mode $m --size 96x64 -o "$tmp/one.ppm"
+    "$SILK" render "$tmp/s.silk" --mode flat --size 96x64 -o "$tmp/flat.ppm"
+    ppm_columns "$tmp/cmp.ppm" 96 96 >"$tmp/right"
+    ppm_columns "$tmp/cmp.ppm" 0 96 >"$tmp/left"
+    ppm_columns "$tmp/one.ppm" 0 96 >"$tmp/want"
+    check "--compare --mode $m: the right half is $m" cmp -s "$tmp/right" "$tmp/want"
+    ppm_columns "$tmp/flat.ppm" 0 96 >"$tmp/want"
+    check "--compare --mode $m: the left half is flat" cmp -s "$tmp/left" "$tmp/want"
+done
+want="--compare puts flat beside" expect_usage "--compare --mode flat" render "$tmp/s.silk" --compare --mode flat -o "$tmp/x.png"
+# silk info names the sections, and says which mesh it counts
+"$SILK" info "$tmp/s.silk" >"$tmp/info.txt"
+check "info: the model's sections ($(info_value "$tmp/info.txt" sections))" \
+    grep -qE '^sections: +MESH [0-9]+ bytes \(required\), HULL [0-9]+ bytes, SMAP [0-9]+ bytes, STEX [0-9]+ bytes$' "$tmp/info.txt"
+check "info: the counts are the coarse mesh's" test "$(info_value "$tmp/info.txt" 'counts of')" = MESH
+check "info --mode clip: the counts are the hull's" \
+    test "$("$SILK" info "$tmp/s.silk" --mode clip | sed -n 's/^counts of: *//p')" = HULL
+
 run_silk prepare "$tmp/sphere.obj" -o "$tmp/svd.silk" --triangles 80 --siltex --atlas 32 --angles 8 --siltex-svd 4
 size=$(section_size "$tmp/svd.silk" STEX)
 svd=$((2 * 8 + 4 * 4 + 2 * 4 * 8 + 32 * 32 * 4))

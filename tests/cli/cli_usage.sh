@@ -109,6 +109,19 @@ want='camera' expect_usage "up along the view" render "$sphere" -o "$o" --eye 0,
 want='cannot be framed' expect_usage "default camera for an extreme aspect" render "$sphere" -o "$o" --size 1x8192
 check "no output after all that" test ! -e "$o"
 
+# what a mode does not draw is refused as usage, in the command's words
+# (not the library's "silk_render:")
+for c in "pn --lines over" "blend --lines only" "clip --lines over" "clip --lines-polygonal"; do
+    want="^silk: render: ${c%% *} mode draws" expect_usage "--mode $c: exit 2 in render's words" render "$sphere" -o "$o" --mode $c
+    check "--mode $c: no silk_render: in the message" test -z "$(grep silk_render "$err")"
+done
+want="^silk: render: pn mode draws" expect_usage "--modes flat,pn --lines over" render "$sphere" -o "$o" --modes flat,pn --sheet --lines over
+# every mode is named in the help
+"$SILK" help render >"$tmp/help-render"
+for m in flat smooth pn blend clip siltex; do
+    check "help render names mode $m" grep -qE -- "--mode [a-zL|]*\\b$m\\b" "$tmp/help-render"
+done
+
 # info takes the same options and fails the same way
 want='size' expect_usage "info --size abc" info "$sphere" --size abc
 want='unknown option' expect_usage "info -o" info "$sphere" -o x.png

@@ -105,6 +105,35 @@ check "view --events reports each screenshot" test "$(grep -c '^silk view: saved
 n=$(ppm_differ "$tmp/e1.ppm" "$tmp/e2.ppm")
 check "view --events: flat differs from smooth ($n px)" test "$n" -gt 20
 
+# The status line never covers the model: it is a band of rows under it,
+# at most a third of the frame (one line at 160x120 and 64x48), and the rows
+# above it hold exactly the frame the viewer draws at that height without it.
+# band_rows FILE: the bottom rows that are mostly the band's dark grey.
+band_rows() {
+    bw=$(ppm_size "$1" | cut -dx -f1)
+    hdr=$(head -n 3 "$1" | wc -c)
+    od -An -v -tu1 -w3 -j"$hdr" "$1" | awk -v w="$bw" '
+        { row = int((NR - 1) / w) } $1 == 32 && $2 == 32 && $3 == 32 { dark[row]++ }
+        END { for (r = row; r >= 0 && dark[r] > w / 2; r--) n++; print n + 0 }'
+}
+# ppm_top FILE N: the pixels of the first N rows, one a line.
+ppm_top() {
+    tw=$(ppm_size "$1" | cut -dx -f1)
+    hdr=$(head -n 3 "$1" | wc -c)
+    od -An -v -tu1 -w3 -j"$hdr" "$1" | head -n $(($2 * tw))
+}
+for size in 160x120 64x48 640x480; do
+    w=${size%x*}; h=${size#*x}
+    "$SILK" view "$torus" --size $size --events "shot:$tmp/hud.ppm" >"$out" 2>"$err"
+    band=$(band_rows "$tmp/hud.ppm")
+    check "$size: the status band is under the model, one line, at most a third of the frame ($band rows)" \
+        test "$band" -ge 9 -a "$band" -le 14 -a "$band" -le $((h / 3))
+    "$SILK" view "$torus" --size $size --events "h size:${w}x$((h - band)) shot:$tmp/nohud.ppm" >"$out" 2>"$err"
+    ppm_top "$tmp/hud.ppm" $((h - band)) >"$tmp/a"
+    ppm_top "$tmp/nohud.ppm" $((h - band)) >"$tmp/b"
+    check "$size: the model above the band is the whole frame at ${w}x$((h - band))" cmp -s "$tmp/a" "$tmp/b"
+done
+
 # ---- in a window ---------------------------------------------------------------------
 
 missing=

@@ -206,10 +206,10 @@ TEST(outfile_errors)
 {
     silk_outfile o;
     silk_error err;
-    char p[300], want[400];
+    char p[300], want[800];
     snprintf(p, sizeof p, "%s/no/such/dir/x.png", dir);
     CHECK(silk_outfile_open(&o, p, &err) == SILK_ERR_IO);
-    snprintf(want, sizeof want, "%s: cannot create: No such file or directory", p);
+    snprintf(want, sizeof want, "%s: cannot create: the directory %s/no/such/dir does not exist", p, dir);
     CHECKF(strcmp(err.msg, want) == 0, "got \"%s\"", err.msg);
 
     CHECK(silk_outfile_open(&o, dir, &err) == SILK_ERR_IO);

@@ -330,14 +330,16 @@ void viewer_status(const viewer *v, char *buf, size_t n)
              v->ro.lines && v->ro.lines_polygonal ? " coarse" : "");
 }
 
-/* The status line's font scale, and how many lines of it fit the frame:
- * the band under the model takes at most a third of the window's height,
- * and none when not even one line fits so. */
+/* The status line's font scale, and how many lines of it the frame takes:
+ * a sixth of its height, and one line at least as long as that is at most
+ * a third of it (none in a smaller frame). */
 static int hud_scale(const viewer *v) { return v->w >= 1280 && v->h >= 480 ? 2 : 1; }
 static int hud_max_lines(const viewer *v)
 {
-    int line = FONT_LINE * hud_scale(v);
-    return (v->h / 3 - 4 * hud_scale(v)) / line;
+    int scale = hud_scale(v), line = FONT_LINE * scale;
+    int n = (v->h / 6 - 4 * scale) / line;
+    if (n < 1) n = (line + 4 * scale) * 3 <= v->h;
+    return n;
 }
 
 /* The status line wrapped at its " | " separators into at most max lines
