@@ -68,6 +68,28 @@ run_silk render "$tmp/mat.obj" --size 64x48 -o "$tmp/map.png"
 check "map_Kd (after options) is read" [ "$rc" -eq 0 ] && [ ! -s "$err" ]
 check "map_Kd changes the picture" sh -c "! cmp -s '$tmp/untextured.png' '$tmp/map.png'"
 
+# Files the model names that are not regular files, or too large, are not
+# read (a device that never ends, a pipe without a writer, a sparse 2 GiB
+# file): one warning each, at once, and the model renders without them.
+# Each run gets 10 s and 200 MB of memory (not under the sanitizers, whose
+# shadow memory needs more): reading /dev/zero to its cap, or waiting on the
+# pipe, does not finish so.
+named() {   # NAME MTLLIB [MTL TEXT]
+    { echo "mtllib $2"; echo "usemtl painted"; cat "$tmp/globe.obj"; } >"$tmp/named.obj"
+    [ -n "${3:-}" ] && printf "$3" >"$tmp/named.mtl"
+    ([ -n "${SILK_SAN:-}" ] || ulimit -v 200000; timeout 10 "$SILK" render "$tmp/named.obj" --size 64x48 -o "$tmp/named.png") >"$out" 2>"$err"
+    rc=$?
+    check "$1: exit 0 at once (got $rc)" [ "$rc" -eq 0 ]
+    check "$1: one warning line ($(head -c 200 "$err"))" \
+        sh -c "[ \$(wc -l <'$err') -eq 1 ] && grep -qE '^silk: warning: .*$4' '$err'"
+}
+named "mtllib /dev/zero" /dev/zero "" "/dev/zero: not a regular file"
+mkfifo "$tmp/fifo.mtl" 2>/dev/null && named "mtllib of a FIFO" fifo.mtl "" "fifo.mtl: not a regular file"
+named "map_Kd /dev/zero" named.mtl 'newmtl painted\nmap_Kd /dev/zero\n' "/dev/zero: not a regular file"
+truncate -s 2G "$tmp/big.png" 2>/dev/null &&
+    named "map_Kd of 2 GiB" named.mtl 'newmtl painted\nmap_Kd big.png\n' "big.png: 2147483648 bytes, more than"
+truncate -s 100M "$tmp/big.mtl" 2>/dev/null && named "an .mtl of 100 MiB" big.mtl "" "big.mtl: [0-9]+ bytes, more than"
+
 # vertex colours: used without being asked
 awk '/^v /{ print $0, 1, 0, 0; next } { print }' "$tmp/plain.obj" >"$tmp/red.obj"
 "$SILK" render "$tmp/plain.obj" --size 64x48 -o "$tmp/plain.png" 2>/dev/null
