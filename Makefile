@@ -32,10 +32,14 @@ PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/pn
 TOOL_SRC  := $(wildcard tools/cli/*.c tools/prep/*.c tools/view/*.c tools/image/*.c)
 # The window of `silk view` needs SDL2 (docs/viewer.md); without it the rest
 # builds, and `silk view` offers only --fb, --benchmark and --events.
-SDL2_OK   := $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
+# (SDL2_OK= on the command line builds without it.)  The objects that differ
+# with it depend on BUILD/sdl2.stamp, which changes when the answer does, so
+# a build follows its configuration without `make clean`.
+SDL2_OK   ?= $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
 ifeq ($(SDL2_OK),1)
   SDL2_CFLAGS := $(shell pkg-config --cflags sdl2)
   SDL2_LIBS   := $(shell pkg-config --libs sdl2)
+  TOOL_SRC  := $(filter-out tools/view/viewer_nosdl.c,$(TOOL_SRC))
 else
   TOOL_SRC  := $(filter-out tools/view/viewer_sdl.c,$(TOOL_SRC))
   $(info silk: SDL2 not found (pkg-config sdl2): building without the viewer window)
@@ -77,6 +81,11 @@ ifeq ($(SDL2_OK),1)
 $(BUILD)/obj/tools/cli/cmd_view.o: ALL_CFLAGS += -DSILK_HAVE_SDL2
 $(BUILD)/obj/tools/view/viewer_sdl.o: ALL_CFLAGS += $(SDL2_CFLAGS) -DSILK_HAVE_SDL2
 endif
+$(BUILD)/obj/tools/cli/cmd_view.o $(BUILD)/silk: $(BUILD)/sdl2.stamp
+.PHONY: FORCE
+$(BUILD)/sdl2.stamp: FORCE
+	@mkdir -p $(dir $@)
+	@echo 'SDL2_OK=$(SDL2_OK)' | cmp -s - $@ 2>/dev/null || echo 'SDL2_OK=$(SDL2_OK)' >$@
 
 $(BUILD)/libsilk.a: $(CORE_OBJ)
 	@mkdir -p $(dir $@)
@@ -178,19 +187,34 @@ demo: $(BUILD)/silk
 
 # The core (silk.pc) and the host I/O around it (silk-platform.pc: the PNG
 # and PPM writers and readers of silk/platform.h), the command, its manual
-# page and the licence.
+# page, and the README and docs/ with the licence in share/doc/silk.
+# `make uninstall` removes exactly these (and the directories left empty).
 VERSION  := 0.1.0
-INSTALL_DIRS := lib lib/pkgconfig include/silk bin share/man/man1 share/doc/silk
+INSTALL_DIRS := lib lib/pkgconfig include/silk bin share/man/man1 share/doc/silk share/doc/silk/docs \
+                share/doc/silk/docs/img
+INSTALL_FILES := lib/libsilk.a lib/libsilk_platform.a lib/pkgconfig/silk.pc lib/pkgconfig/silk-platform.pc \
+                 $(wildcard include/silk/*.h) bin/silk share/man/man1/silk.1 \
+                 share/doc/silk/LICENSE share/doc/silk/README.md $(addprefix share/doc/silk/,$(wildcard docs/*.md) \
+                 $(wildcard docs/img/*.png))
 install: $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(BUILD)/silk $(BUILD)/silk.1
 	install -d $(INSTALL_DIRS:%=$(DESTDIR)$(PREFIX)/%)
 	install -m 644 $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(DESTDIR)$(PREFIX)/lib/
 	install -m 644 include/silk/*.h $(DESTDIR)$(PREFIX)/include/silk/
 	install -m 755 $(BUILD)/silk $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(BUILD)/silk.1 $(DESTDIR)$(PREFIX)/share/man/man1/
-	install -m 644 LICENSE $(DESTDIR)$(PREFIX)/share/doc/silk/
+	install -m 644 LICENSE README.md $(DESTDIR)$(PREFIX)/share/doc/silk/
+	install -m 644 docs/*.md $(DESTDIR)$(PREFIX)/share/doc/silk/docs/
+	install -m 644 docs/img/*.png $(DESTDIR)$(PREFIX)/share/doc/silk/docs/img/
 	for pc in silk silk-platform; do \
 	  sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@PNG_LIBS@|$(PNG_LIBS)|g' \
 	    $$pc.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/$$pc.pc || exit 1; \
+	done
+
+.PHONY: uninstall
+uninstall:
+	rm -f $(INSTALL_FILES:%=$(DESTDIR)$(PREFIX)/%)
+	for d in share/doc/silk/docs/img share/doc/silk/docs share/doc/silk include/silk; do \
+	  rmdir $(DESTDIR)$(PREFIX)/$$d 2>/dev/null || true; \
 	done
 
 clean:

@@ -2,7 +2,8 @@
 # cli_install.sh - what `make install` gives a user: into a temporary
 # PREFIX, the libraries (libsilk.a, libsilk_platform.a), the headers
 # (silk/platform.h among them), silk.pc and silk-platform.pc, the command,
-# its manual page and the licence.  A small program (tests/core/test_cxx.cpp)
+# its manual page, the README, docs/ and the licence; `make uninstall`
+# removes all of it again.  A small program (tests/core/test_cxx.cpp)
 # built with
 #   c++ test_cxx.cpp $(pkg-config --cflags --libs silk-platform)
 # renders a frame and writes it as PNG and PPM with the installed writers,
@@ -24,9 +25,13 @@ make -s -C "$root" BUILD="$b" PREFIX="$prefix" install >"$tmp/install.log" 2>&1
 check "make install PREFIX=... succeeds ($(tail -n 3 "$tmp/install.log"))" test $? -eq 0
 for f in lib/libsilk.a lib/libsilk_platform.a lib/pkgconfig/silk.pc lib/pkgconfig/silk-platform.pc \
          include/silk/silk.h include/silk/platform.h include/silk/validate.h bin/silk \
-         share/man/man1/silk.1 share/doc/silk/LICENSE; do
+         share/man/man1/silk.1 share/doc/silk/LICENSE share/doc/silk/README.md share/doc/silk/docs/architecture.md \
+         share/doc/silk/docs/img/bunny-modes.png include/silk/silmap.h; do
     check "installed $f" test -s "$prefix/$f"
 done
+n=$(ls "$root"/docs/*.md | wc -l)
+check "installed every page of docs/ ($n)" test "$(ls "$prefix"/share/doc/silk/docs/*.md | wc -l)" -eq "$n"
+check "the manual page points at the installed docs" grep -q 'share/doc/silk' "$prefix/share/man/man1/silk.1"
 check "the installed page is silk help --man" sh -c "'$prefix/bin/silk' help --man | cmp -s - '$prefix/share/man/man1/silk.1'"
 
 PKG_CONFIG_PATH=$prefix/lib/pkgconfig
@@ -64,5 +69,14 @@ if command -v man >/dev/null 2>&1; then
     check "man silk reads the installed page" grep -q 'silk render' "$out"
 fi
 cd "$root" || exit 1
+
+# make uninstall: every file install wrote is gone, and the directories of silk's own
+touch "$prefix/lib/other.a"
+make -s -C "$root" BUILD="$b" PREFIX="$prefix" uninstall >"$tmp/uninstall.log" 2>&1
+check "make uninstall succeeds ($(tail -n 3 "$tmp/uninstall.log"))" test $? -eq 0
+left=$(cd "$prefix" && find . -type f ! -name other.a | head -n 5 | tr '\n' ' ')
+check "make uninstall leaves none of silk's files (${left:-none})" test -z "$left"
+check "make uninstall leaves what is not silk's" test -e "$prefix/lib/other.a"
+check "make uninstall removes silk's directories" test ! -e "$prefix/include/silk" -a ! -e "$prefix/share/doc/silk"
 
 done_testing

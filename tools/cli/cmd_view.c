@@ -773,13 +773,3 @@ int cmd_view(int argc, char **argv)
     free(v);
     return rc;
 }
-
-#ifndef SILK_HAVE_SDL2
-/* Without SDL2 there is no window; cmd_view never gets here. */
-int viewer_run_sdl(viewer *v, long frames)
-{
-    (void)v;
-    (void)frames;
-    return cli_fail(CLI_EXIT_USAGE, "view: this silk was built without SDL2");
-}
-#endif

@@ -62,7 +62,7 @@ void man_end(FILE *out)
     fputs(".SH LICENSE\n"
           "MIT; see the file LICENSE that comes with silk.\n"
           ".SH SEE ALSO\n"
-          "README.md and docs/ in the silk sources: the library, the render modes, the\n"
-          "file formats, memory, small devices and the measurements.\n",
+          "README.md and docs/ (installed in share/doc/silk): the library, the render\n"
+          "modes, the file formats, memory, small devices and the measurements.\n",
           out);
 }
