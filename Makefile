@@ -269,6 +269,16 @@ FW_BOARD ?= mps2-an385
 .PHONY: firmware firmware-host firmware-256k run
 firmware firmware-host firmware-256k run:
 	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= $@
+
+# The soak run alone (tests/boards/cli_soak.sh; make test runs it too):
+# SOAK_FRAMES frames on the host build of the Cortex-M3 firmware and
+# SOAK_QEMU_FRAMES under QEMU, along a random camera path.
+SOAK_FRAMES ?= 1000
+SOAK_QEMU_FRAMES ?= 100
+.PHONY: soak
+soak: $(BUILD)/silk
+	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= soak-firmware
+	SILK_SOAK_FRAMES=$(SOAK_FRAMES) SILK_SOAK_QEMU_FRAMES=$(SOAK_QEMU_FRAMES) sh tests/boards/cli_soak.sh $(BUILD)
 endif
 
 # `make clean` leaves the boards' build directories; this removes them.
@@ -322,7 +332,7 @@ tests: firmware-for-tests
 # model.
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
-	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k; \
+	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k soak-firmware; \
 	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host; \
 	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD) firmware for the tests (its models are shared meshes)"; fi
 	$(MAKE) BOARD=microbit BUILD=build-microbit SAN= CFLAGS= firmware firmware-host firmware-256k
