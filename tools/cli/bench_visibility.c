@@ -229,22 +229,20 @@ int bench_visibility(int argc, char **argv)
 {
     bench_opts o;
     visibility_defaults(&o);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &o };
     int rc = cli_parse(&cmd_bench_visibility_spec, bases, argc, argv, &args);
     if (!rc && !o.visibility) rc = cli_fail(CLI_EXIT_USAGE, "bench: say what to measure: --visibility-pass");
     if (!rc && args.npos == 0) rc = cli_fail(CLI_EXIT_USAGE, "bench: no mesh given");
     if (rc) {
-        free(pos);
+        cli_args_free(&args);
         return rc == CLI_HELP ? 0 : rc;
     }
     /* every mesh, the last failure's status */
     for (int i = 0; i < args.npos; i++) {
-        int r = bench_mesh(pos[i], &o);
+        int r = bench_mesh(args.pos[i], &o);
         if (r) rc = r;
     }
-    free(pos);
+    cli_args_free(&args);
     return rc;
 }

@@ -970,15 +970,14 @@ int cmd_bench(int argc, char **argv)
     c.pair_buf = calloc((size_t)argc, sizeof *c.pair_buf);
     c.pair_modes = calloc((size_t)argc, sizeof *c.pair_modes);
     uint32_t *mode_mask = calloc((size_t)argc, sizeof *mode_mask);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
     int rc = 0, n = 0;
     const char **coarse = c.coarse, **fine = c.fine;
-    if (!c.coarse || !c.fine || !c.pair_buf || !c.pair_modes || !mode_mask || !pos) {
+    cli_args args = { 0, NULL, 0, { NULL } };
+    void *bases[] = { &c };
+    if (!c.coarse || !c.fine || !c.pair_buf || !c.pair_modes || !mode_mask) {
         rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
         goto done;
     }
-    cli_args args = { 0, pos, 0, { NULL } };
-    void *bases[] = { &c };
     rc = cli_parse(&cmd_bench_spec, bases, argc, argv, &args);
     if (rc == CLI_HELP) {
         rc = 0;
@@ -1019,6 +1018,6 @@ int cmd_bench(int argc, char **argv)
 done:
     if (c.pair_buf)
         for (int i = 0; i < argc; i++) free(c.pair_buf[i]);
-    free(c.pair_buf), free(c.coarse), free(c.fine), free(c.pair_modes), free(mode_mask), free(pos);
+    free(c.pair_buf), free(c.coarse), free(c.fine), free(c.pair_modes), free(mode_mask), cli_args_free(&args);
     return rc;
 }

@@ -144,14 +144,12 @@ int cmd_diff(int argc, char **argv)
 {
     diff_args da;
     diff_defaults(&da);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &da };
     int rc = cli_parse(&cmd_diff_spec, bases, argc, argv, &args);
-    const char *files[2] = { args.npos > 0 ? pos[0] : NULL, args.npos > 1 ? pos[1] : NULL };
-    if (!rc && args.npos > 2) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images only (got a third, %s)", pos[2]);
-    free(pos);
+    const char *files[2] = { args.npos > 0 ? args.pos[0] : NULL, args.npos > 1 ? args.pos[1] : NULL };
+    if (!rc && args.npos > 2) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images only (got a third, %s)", args.pos[2]);
+    cli_args_free(&args);
     if (rc == CLI_HELP) return 0;
     const char *out = da.out;
     if (!rc && !files[1]) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images needed (silk diff A.png B.png)");

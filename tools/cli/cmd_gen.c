@@ -131,17 +131,15 @@ int cmd_gen(int argc, char **argv)
 {
     gen_args ga;
     memset(&ga, 0, sizeof ga);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &ga };
     int rc = cli_parse(&cmd_gen_spec, bases, argc, argv, &args);
     gen_shape shape = GEN_SHAPE_COUNT;
     if (!rc && args.npos == 0) rc = cli_fail(CLI_EXIT_USAGE, "gen: which shape? (sphere, torus, cone, cylinder or knot)");
-    if (!rc && args.npos > 1) rc = cli_fail(CLI_EXIT_USAGE, "gen: one shape at a time (got %s and %s)", pos[0], pos[1]);
-    if (!rc && (shape = gen_shape_from_name(pos[0])) == GEN_SHAPE_COUNT)
-        rc = cli_fail(CLI_EXIT_USAGE, "gen: unknown shape \"%s\" (sphere, torus, cone, cylinder or knot)", pos[0]);
-    free(pos);
+    if (!rc && args.npos > 1) rc = cli_fail(CLI_EXIT_USAGE, "gen: one shape at a time (got %s and %s)", args.pos[0], args.pos[1]);
+    if (!rc && (shape = gen_shape_from_name(args.pos[0])) == GEN_SHAPE_COUNT)
+        rc = cli_fail(CLI_EXIT_USAGE, "gen: unknown shape \"%s\" (sphere, torus, cone, cylinder or knot)", args.pos[0]);
+    cli_args_free(&args);
     if (rc == CLI_HELP) return 0;
     if (rc) return rc;
     /* the shape's defaults, and the parameters given over them */

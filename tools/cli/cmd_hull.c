@@ -98,14 +98,12 @@ int cmd_hull(int argc, char **argv)
     hull_args ha = { NULL, 0 };
     simp_args args;
     simp_args_default(&args);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args ca = { 0, pos, 0, { NULL } };
+    cli_args ca;
     void *bases[] = { &ha, &args };
     const char *in = NULL;
     int rc = cli_parse(&cmd_hull_spec, bases, argc, argv, &ca);
     if (!rc) rc = simp_one_input("hull", ca.npos, ca.pos, "silk hull FINE -o HULL.obj --triangles N", &in);
-    free(pos);
+    cli_args_free(&ca);
     if (rc == CLI_HELP) return 0;
     if (!rc && !ha.out) rc = cli_fail(CLI_EXIT_USAGE, "hull: -o HULL.obj is needed");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "hull: --triangles N is needed");

@@ -291,13 +291,11 @@ int cmd_info(int argc, char **argv)
     cli_scene_opts_default(&o);
     o.orient_note = 0;        /* the report has the line */
     info_args ia = { 0 };
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &ia, &o };
     int rc = cli_parse(&cmd_info_spec, bases, argc, argv, &args);
     if (!rc) rc = cli_one_mesh("info", args.npos, args.pos, "silk info MESH", &o.mesh_path);
-    free(pos);
+    cli_args_free(&args);
     if (rc == CLI_HELP) return 0;
     if (!rc) rc = cli_mode_check("info", o.render.mode, &o.render);
     if (rc) return rc;

@@ -443,13 +443,11 @@ int cmd_pack(int argc, char **argv)
     cli_scene_opts_default(&o);
     pack_args pa;
     memset(&pa, 0, sizeof pa);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &pa, &o };
     int rc = cli_parse(&cmd_pack_spec, bases, argc, argv, &args);
     if (!rc) rc = cli_one_mesh("pack", args.npos, args.pos, "silk pack MESH -o MODEL.h", &o.mesh_path);
-    free(pos);
+    cli_args_free(&args);
     if (rc == CLI_HELP) return 0;
     const char *out = pa.out, *name_opt = pa.name;
     double (*eyes)[3] = pa.eyes;

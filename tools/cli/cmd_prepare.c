@@ -383,14 +383,12 @@ int cmd_prepare(int argc, char **argv)
     prepare_defaults(&pa);
     simp_args args;
     simp_args_default(&args);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args ca = { 0, pos, 0, { NULL } };
+    cli_args ca;
     void *bases[] = { &pa, &args };
     const char *in = NULL;
     int rc = cli_parse(&cmd_prepare_spec, bases, argc, argv, &ca);
     if (!rc) rc = simp_one_input("prepare", ca.npos, ca.pos, "silk prepare FINE -o MODEL.silk --triangles N", &in);
-    free(pos);
+    cli_args_free(&ca);
     if (rc == CLI_HELP) return 0;
     clip_opts co = pa.co;
     co.on = !pa.no_clip;

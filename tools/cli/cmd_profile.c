@@ -301,14 +301,12 @@ const cli_command cmd_profile_spec = {
 int cmd_profile(int argc, char **argv)
 {
     profile_args pa = { NULL, 0, 0 };
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &pa };
     const char *mesh = NULL;
     int rc = cli_parse(&cmd_profile_spec, bases, argc, argv, &args);
     if (!rc) rc = cli_one_mesh("profile", args.npos, args.pos, "silk profile MESH", &mesh);
-    free(pos);
+    cli_args_free(&args);
     if (rc == CLI_HELP) return 0;
     if (rc) return rc;
     return profile(mesh, pa.csv, pa.check, pa.mode);

@@ -502,13 +502,11 @@ int cmd_render(int argc, char **argv)
     render_args r;
     cli_scene_opts_default(&o);
     render_defaults(&r);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &r, &o };
     int rc = cli_parse(&cmd_render_spec, bases, argc, argv, &args);
     if (!rc) rc = cli_one_mesh("render", args.npos, args.pos, "silk render MESH -o OUT.png", &o.mesh_path);
-    free(pos);
+    cli_args_free(&args);
     if (rc == CLI_HELP) return 0;
     if (rc) return rc;
     series *se = &r.se;

@@ -270,20 +270,18 @@ int cmd_simplify(int argc, char **argv)
     simplify_args sa = { NULL, 0 };
     simp_args args;
     simp_args_default(&args);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    cli_args ca = { 0, pos, 0, { NULL } };
+    cli_args ca;
     void *bases[] = { &sa, &args };
     int rc = cli_parse(&cmd_simplify_spec, bases, argc, argv, &ca);
-    const char *in = ca.npos > 0 ? pos[0] : NULL;
+    const char *in = ca.npos > 0 ? ca.pos[0] : NULL;
     if (!rc && ca.npos > 1 && sa.out)
-        rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got %s and -o %s)", pos[1], sa.out);
-    if (!rc && ca.npos > 2) rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", pos[2]);
+        rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got %s and -o %s)", ca.pos[1], sa.out);
+    if (!rc && ca.npos > 2) rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", ca.pos[2]);
     if (!rc && ca.npos > 1) {
-        sa.out = pos[1];
+        sa.out = ca.pos[1];
         if (!silk_path_is_stdio(sa.out) && cli_check_output_dir("simplify", sa.out)) rc = CLI_EXIT_INPUT;
     }
-    free(pos);
+    cli_args_free(&ca);
     if (rc == CLI_HELP) return 0;
     if (!rc && (!in || !sa.out))
         rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");

@@ -726,9 +726,7 @@ int cmd_view(int argc, char **argv)
     cli_scene_opts_default(&o);
     view_args a;
     view_defaults(&a);
-    const char **pos = calloc((size_t)argc + 1, sizeof *pos);
-    if (!pos) return cli_fail(CLI_EXIT_INPUT, "view: out of memory");
-    cli_args args = { 0, pos, 0, { NULL } };
+    cli_args args;
     void *bases[] = { &a, &o };
     int rc = cli_parse(&cmd_view_spec, bases, argc, argv, &args);
     if (!rc) rc = cli_one_mesh("view", args.npos, args.pos, "silk view MESH", &o.mesh_path);
@@ -744,7 +742,7 @@ int cmd_view(int argc, char **argv)
     if (!rc && o.mesh_path) rc = check_display(&a, &args, fb);
     a.fb.have_size = cli_given(&args, "--size");
     a.fb.have_format = cli_given(&args, "--format");
-    free(pos);
+    cli_args_free(&args);
     if (rc || !o.mesh_path) return rc;
     if (o.bg_none) return cli_fail(CLI_EXIT_USAGE, "view: --bg none is for images (silk render); give a colour");
     if ((rc = cli_mode_check("view", o.render.mode, &o.render)) != 0) return rc;

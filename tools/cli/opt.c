@@ -199,6 +199,7 @@ int cli_parse(const cli_command *c, void *const *bases, int argc, char **argv, c
     short_name(c, me, sizeof me);
     args->npos = 0;
     args->ngiven = 0;
+    if (!(args->pos = calloc((size_t)argc + 1, sizeof *args->pos))) return cli_fail(CLI_EXIT_INPUT, "out of memory");
     int positional = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -247,6 +248,12 @@ int cli_parse(const cli_command *c, void *const *bases, int argc, char **argv, c
         if (r) return r;
     }
     return 0;
+}
+
+void cli_args_free(cli_args *args)
+{
+    free(args->pos);
+    args->pos = NULL;
 }
 
 int cli_given(const cli_args *a, const char *name)

@@ -115,7 +115,7 @@ typedef struct cli_command {
 #define CLI_MAX_GIVEN 256
 typedef struct cli_args {
     int npos;
-    const char **pos;          /* the other arguments in order ("-" among them), argc of room */
+    const char **pos;          /* the other arguments in order ("-" among them); cli_args_free */
     int ngiven;
     const cli_opt *given[CLI_MAX_GIVEN];   /* the options given, in order (the first CLI_MAX_GIVEN) */
 } cli_args;
@@ -129,8 +129,9 @@ typedef struct cli_args {
  * spelling, as "--opt value" or "--opt=value"; after "--" every argument is
  * positional.  Returns 0, CLI_HELP, or CLI_EXIT_USAGE after a one-line
  * error ("CMD: unknown option --x (try silk CMD --help)", "--size needs a
- * value", the value's own).  args->pos must have argc entries of room. */
+ * value", the value's own).  cli_args_free releases args either way. */
 int cli_parse(const cli_command *c, void *const *bases, int argc, char **argv, cli_args *args);
+void cli_args_free(cli_args *args);
 
 /* Whether an option of the command line was given (by row). */
 int cli_given(const cli_args *a, const char *name);
