@@ -465,7 +465,13 @@ static size_t auto_arena_bytes(size_t file_len, size_t raster)
 static size_t raster_bytes(const cli_scene_opts *o)
 {
     size_t px = (size_t)o->width * (size_t)o->height;
-    return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + (o->bg_none ? px : 0) + 64;
+    /* siltex's anti-aliased outline draws the hull's front faces into a
+     * frame of its own: RGB888, depth and a stencil bit (src/render.c) */
+    int siltex = o->render.mode == SILK_MODE_SILTEX || (o->modes >> SILK_MODE_SILTEX & 1u);
+    size_t outline = siltex && o->render.aa && o->render.lines == SILK_LINES_NONE
+                         ? px * (3 + sizeof(uint32_t)) + px / 8 + 64 * (size_t)o->width
+                         : 0;
+    return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + (o->bg_none ? px : 0) + outline + 64;
 }
 
 /* One load of m's file into an arena of size bytes; nothing printed. */

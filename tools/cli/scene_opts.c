@@ -203,8 +203,8 @@ const cli_opt cli_scene_rows[] = {
       .help = "background colour in hex (default %D); none: a PNG with alpha: the object's coverage of each pixel" },
     { .name = "--aa", .mask = CLI_OPT_LOOK, .kind = CLI_CHOICE, .choices = "on|off|outline", .values = aa_v,
       F(render.aa),
-      .help = "anti-aliased outlines and creases, flat and smooth without lines (outline: the outlines only; "
-              "default %D)" },
+      .help = "anti-aliased outlines (flat, smooth, clip and siltex without lines) and creases (flat and smooth; "
+              "outline: the outlines only; default %D)" },
     { .name = "--wire", .mask = CLI_OPT_LOOK, .kind = CLI_FLAG, F(render.wire),
       .help = "draw the edges; triangles added by smoothing in red" },
     { .name = "--lines", .mask = CLI_OPT_LOOK, .kind = CLI_CHOICE, .choices = "over|only", .values = lines_v,
