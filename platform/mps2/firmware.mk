@@ -124,7 +124,7 @@ define fw_model
 $(FW_OUT)/$(1)/fwmodel.h: $(2) $(BUILD)/silk $(FW_OUT)/$(1)/pack.args
 	$(BUILD)/silk pack $(2) -o $$@ --name fwmodel $(FW_PACK_ARGS) $(FW_PACK_EXTRA_$(1))
 
-$(FW_OUT)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args
+$(FW_OUT)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h platform/mps2/fw_say.h $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args
 	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) -c $$< -o $$@
 
 $(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld \
@@ -132,7 +132,7 @@ $(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk
 	$(FW_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_OUT)/$(1)/fw.map -o $$@ $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) \
 	    $(FW_DIR)/libsilk.a
 
-$(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
+$(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
                         $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
 	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) \
 	    -o $$@ platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
@@ -150,13 +150,13 @@ FW_SOAK_MODEL := $(firstword $(FW_NAMES))
 FW_SOAK := $(FW_OUT)/soak
 .PHONY: soak-firmware
 soak-firmware: $(if $(FW_SOAK_MODEL),$(FW_SOAK)/soak.elf $(FW_SOAK)/soak-host $(FW_OUT)/machine)
-$(FW_SOAK)/fw_soak.o: platform/mps2/fw_soak.c platform/mps2/fw_io.h $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h \
+$(FW_SOAK)/fw_soak.o: platform/mps2/fw_soak.c platform/mps2/fw_io.h platform/mps2/fw_say.h $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h \
                       $(FW_OUT)/defs.args
 	@mkdir -p $(dir $@)
 	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -Iplatform/mps2 -I$(FW_OUT)/$(FW_SOAK_MODEL) -c $< -o $@
 $(FW_SOAK)/soak.elf: $(FW_SOAK)/fw_soak.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld $(FW_OUT)/defs.args
 	$(FW_CC) $(FW_LDFLAGS) -o $@ $(FW_SOAK)/fw_soak.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a
-$(FW_SOAK)/soak-host: platform/mps2/fw_soak.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
+$(FW_SOAK)/soak-host: platform/mps2/fw_soak.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
                       $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) $(FW_DEFS) -Iplatform/mps2 -I$(FW_OUT)/$(FW_SOAK_MODEL) \

@@ -27,6 +27,7 @@
 #include "silk/silk.h"
 #include "silk/validate.h"
 #include "fw_io.h"
+#include "fw_say.h"
 #include "fwmodel.h"
 
 #ifndef FW_BOARD
@@ -43,20 +44,6 @@
 #endif
 
 static uint8_t arena_mem[FW_ARENA_BYTES] __attribute__((aligned(SILK_ARENA_ALIGN)));
-
-#if defined(__GNUC__)
-__attribute__((format(printf, 1, 2)))
-#endif
-static void say(const char *fmt, ...)
-{
-    char line[160];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(line, sizeof line - 1, fmt, ap);
-    va_end(ap);
-    strcat(line, "\n");
-    fw_print(line);
-}
 
 /* FNV-1a over the frame's pixels as rendered, band by band. */
 static int checksum_band(void *user, const silk_target *t)
