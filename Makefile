@@ -43,20 +43,28 @@ PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/pn
 TOOL_SRC  := $(wildcard tools/cli/*.c tools/prep/*.c tools/view/*.c tools/image/*.c)
 # The window of `silk view` needs SDL2 (docs/viewer.md); without it the rest
 # builds, and `silk view` offers only --fb, --benchmark and --events.
-SDL2_OK   := $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
+# (SDL2_OK= on the command line builds without it.)  The objects that differ
+# with it depend on BUILD/sdl2.stamp, which changes when the answer does, so
+# a build follows its configuration without `make clean`.
+SDL2_OK   ?= $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
 ifeq ($(SDL2_OK),1)
   SDL2_CFLAGS := $(shell pkg-config --cflags sdl2)
   SDL2_LIBS   := $(shell pkg-config --libs sdl2)
+  TOOL_SRC  := $(filter-out tools/view/viewer_nosdl.c,$(TOOL_SRC))
 else
   TOOL_SRC  := $(filter-out tools/view/viewer_sdl.c,$(TOOL_SRC))
   $(info silk: SDL2 not found (pkg-config sdl2): building without the viewer window)
 endif
-TEST_SRC  := $(wildcard tests/test_*.c)
+# The tests, a folder per part they test (tests/README.md): core/, platform/,
+# prep/ (host-side preparation and image helpers); cli/ and boards/ hold the
+# shell tests.  Every test program is BUILD/tests/test_NAME, whatever its folder.
+TEST_DIRS := core platform prep
+TEST_SRC  := $(foreach d,$(TEST_DIRS),$(wildcard tests/$(d)/test_*.c))
 
 CORE_OBJ  := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 PLAT_OBJ  := $(PLAT_SRC:%.c=$(BUILD)/obj/%.o)
 TOOL_OBJ  := $(TOOL_SRC:%.c=$(BUILD)/obj/%.o)
-TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%) $(BUILD)/tests/test_cxx
+TEST_BIN  := $(addprefix $(BUILD)/tests/,$(basename $(notdir $(TEST_SRC)))) $(BUILD)/tests/test_cxx
 TEST_SUPPORT := $(wildcard tests/support/*.c)
 # (stexgen.c writes prepared models with the tool's writer)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tools/prep/model_file.o
@@ -84,6 +92,11 @@ ifeq ($(SDL2_OK),1)
 $(BUILD)/obj/tools/cli/cmd_view.o: ALL_CFLAGS += -DSILK_HAVE_SDL2
 $(BUILD)/obj/tools/view/viewer_sdl.o: ALL_CFLAGS += $(SDL2_CFLAGS) -DSILK_HAVE_SDL2
 endif
+$(BUILD)/obj/tools/cli/cmd_view.o $(BUILD)/silk: $(BUILD)/sdl2.stamp
+.PHONY: FORCE
+$(BUILD)/sdl2.stamp: FORCE
+	@mkdir -p $(dir $@)
+	@echo 'SDL2_OK=$(SDL2_OK)' | cmp -s - $@ 2>/dev/null || echo 'SDL2_OK=$(SDL2_OK)' >$@
 
 $(BUILD)/libsilk.a: $(CORE_OBJ)
 	@mkdir -p $(dir $@)
@@ -99,9 +112,12 @@ $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 $(BUILD)/silk.1: $(BUILD)/silk
 	$(BUILD)/silk help --man >$@.tmp && mv $@.tmp $@
 
-$(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
-	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests $(TOOL_INC) -o $@ $< $(TEST_TOOL_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+define TEST_RULE
+$$(BUILD)/tests/%: tests/$(1)/%.c $$(TEST_SUPPORT_OBJ) $$(BUILD)/libsilk_platform.a $$(BUILD)/libsilk.a tests/check.h
+	@mkdir -p $$(dir $$@)
+	$$(CC) $$(ALL_CFLAGS) $$(LDFLAGS) -Itests $$(TOOL_INC) -o $$@ $$< $$(TEST_TOOL_OBJ) $$(TEST_SUPPORT_OBJ) $$(BUILD)/libsilk_platform.a $$(BUILD)/libsilk.a $$(PNG_LIBS) -lm
+endef
+$(foreach d,$(TEST_DIRS),$(eval $(call TEST_RULE,$(d))))
 
 # Tests of host tools link the tools' objects they test; tests that draw
 # meshes made by `silk gen`'s generator link it.
@@ -117,25 +133,26 @@ $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/prep/gen.o
 CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,gen.o hull.o lp.o simplify.o closest.o silmap.o)
 $(BUILD)/tests/test_golden: $(CLIP_TOOL_OBJ)
 $(BUILD)/tests/test_golden: TEST_TOOL_OBJ = $(CLIP_TOOL_OBJ)
-STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o) \
-                 $(BUILD)/obj/tools/cli/progress.o
+STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o)
 $(BUILD)/tests/test_stex: $(STEX_TOOL_OBJ)
 $(BUILD)/tests/test_stex: TEST_TOOL_OBJ = $(STEX_TOOL_OBJ) -pthread
 $(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o silmap_simplify.o gen.o)
 $(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o silmap_simplify.o gen.o)
 
 # The public headers from C++ (extern "C"): compiles and links against the core.
-$(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
+$(BUILD)/tests/test_cxx: tests/core/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++11 $(WARN) $(OPT) -g -Iinclude $(SANFLAGS) $(CXXFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libsilk_platform.a \
 	    $(BUILD)/libsilk.a $(PNG_LIBS)
 
 tests: $(TEST_BIN) $(BUILD)/silk $(BUILD)/silk.1
 
-# Rewrite the golden frames (tests/golden/) that differ and list them.
+# Rewrite the reference images (tests/golden/) that differ or are missing
+# and name them: the one way to update them (tests/support/golden.c).
 .PHONY: golden
-golden: $(BUILD)/tests/test_golden
-	$(BUILD)/tests/test_golden --update
+golden: $(BUILD)/tests/test_golden $(BUILD)/tests/test_raster
+	SILK_GOLDEN_UPDATE=1 $(BUILD)/tests/test_golden
+	SILK_GOLDEN_UPDATE=1 $(BUILD)/tests/test_raster
 
 # The core may not use floating point: compiled without FP/SIMD registers,
 # any float or double use is a compile error.
@@ -163,10 +180,9 @@ test: check-nofloat
 # choose runs here, QEMU or not.  A board whose options come to the same
 # (silk/config.h's macros once derived) as the host's or as a board's tested
 # before is not built again; the tests of the host tools and the host I/O
-# (HOST_ONLY_TESTS) run in the host's configuration only, and a test of what
+# (tests/prep, tests/platform) run in the host's configuration only, and a test of what
 # a configuration leaves out says it is skipped (tests/check.h).
-HOST_ONLY_TESTS := test_hull test_lp test_mask test_silmap test_simplify test_stex test_platform test_fb
-CONFIG_TESTS := $(filter-out $(HOST_ONLY_TESTS),$(notdir $(TEST_BIN)))
+CONFIG_TESTS := $(basename $(notdir $(wildcard tests/core/test_*.c))) test_cxx
 CONFIG_BOARDS := $(filter-out host,$(notdir $(wildcard boards/*)))
 config_macros = printf '\043include "silk/config.h"\n' | $(CC) -Iinclude "-DSILK_CONFIG_FILE=\"$(CURDIR)/$(1)\"" -dM -E -x c - | \
                 grep ' SILK_' | grep -v ' SILK_CONFIG_FILE ' | sort | cksum | cut -d' ' -f1
@@ -180,7 +196,7 @@ test-configs: $(BUILD)/silk
 	  echo "test-configs: $$b (boards/$$b/config.h)"; \
 	  $(MAKE) --no-print-directory BUILD=build-config/$$b CORE_CONFIG=boards/$$b/config.h SAN= \
 	      $(addprefix build-config/$$b/tests/,$(CONFIG_TESTS)) || exit 1; \
-	  SILK=$(BUILD)/silk SILK_TESTS="$(CONFIG_TESTS)" sh tests/run.sh build-config/$$b || exit 1; \
+	  SILK=$(BUILD)/silk sh tests/run.sh build-config/$$b $(addprefix build-config/$$b/tests/,$(CONFIG_TESTS)) || exit 1; \
 	done
 
 # Just the normal build's suite.
@@ -211,19 +227,34 @@ demo: $(BUILD)/silk
 
 # The core (silk.pc) and the host I/O around it (silk-platform.pc: the PNG
 # and PPM writers and readers of silk/platform.h), the command, its manual
-# page and the licence.
+# page, and the README and docs/ with the licence in share/doc/silk.
+# `make uninstall` removes exactly these (and the directories left empty).
 VERSION  := 0.1.0
-INSTALL_DIRS := lib lib/pkgconfig include/silk bin share/man/man1 share/doc/silk
+INSTALL_DIRS := lib lib/pkgconfig include/silk bin share/man/man1 share/doc/silk share/doc/silk/docs \
+                share/doc/silk/docs/img
+INSTALL_FILES := lib/libsilk.a lib/libsilk_platform.a lib/pkgconfig/silk.pc lib/pkgconfig/silk-platform.pc \
+                 $(wildcard include/silk/*.h) bin/silk share/man/man1/silk.1 \
+                 share/doc/silk/LICENSE share/doc/silk/README.md $(addprefix share/doc/silk/,$(wildcard docs/*.md) \
+                 $(wildcard docs/img/*.png))
 install: $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(BUILD)/silk $(BUILD)/silk.1
 	install -d $(INSTALL_DIRS:%=$(DESTDIR)$(PREFIX)/%)
 	install -m 644 $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(DESTDIR)$(PREFIX)/lib/
 	install -m 644 include/silk/*.h $(DESTDIR)$(PREFIX)/include/silk/
 	install -m 755 $(BUILD)/silk $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(BUILD)/silk.1 $(DESTDIR)$(PREFIX)/share/man/man1/
-	install -m 644 LICENSE $(DESTDIR)$(PREFIX)/share/doc/silk/
+	install -m 644 LICENSE README.md $(DESTDIR)$(PREFIX)/share/doc/silk/
+	install -m 644 docs/*.md $(DESTDIR)$(PREFIX)/share/doc/silk/docs/
+	install -m 644 docs/img/*.png $(DESTDIR)$(PREFIX)/share/doc/silk/docs/img/
 	for pc in silk silk-platform; do \
 	  sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@PNG_LIBS@|$(PNG_LIBS)|g' \
 	    $$pc.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/$$pc.pc || exit 1; \
+	done
+
+.PHONY: uninstall
+uninstall:
+	rm -f $(INSTALL_FILES:%=$(DESTDIR)$(PREFIX)/%)
+	for d in share/doc/silk/docs/img share/doc/silk/docs share/doc/silk include/silk; do \
+	  rmdir $(DESTDIR)$(PREFIX)/$$d 2>/dev/null || true; \
 	done
 
 clean:
@@ -278,6 +309,16 @@ FW_BOARD ?= mps2-an385
 .PHONY: firmware firmware-host firmware-256k run
 firmware firmware-host firmware-256k run:
 	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= $@
+
+# The soak run alone (tests/boards/cli_soak.sh; make test runs it too):
+# SOAK_FRAMES frames on the host build of the Cortex-M3 firmware and
+# SOAK_QEMU_FRAMES under QEMU, along a random camera path.
+SOAK_FRAMES ?= 1000
+SOAK_QEMU_FRAMES ?= 100
+.PHONY: soak
+soak: $(BUILD)/silk
+	$(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= soak-firmware
+	SILK_SOAK_FRAMES=$(SOAK_FRAMES) SILK_SOAK_QEMU_FRAMES=$(SOAK_QEMU_FRAMES) sh tests/boards/cli_soak.sh $(BUILD)
 endif
 
 # `make clean` leaves the boards' build directories; this removes them.
@@ -319,7 +360,7 @@ profile: $(BUILD)/silk
 	$(BUILD)/silk profile '$(PROFILE_MESH)' --csv '$(PROFILE_CSV)' $(PROFILE_ARGS)
 endif
 
-# `make test` runs the firmware under QEMU (tests/cli_qemu.sh) when the ARM
+# `make test` runs the firmware under QEMU (tests/boards/cli_qemu.sh) when the ARM
 # toolchain is installed; in CI it must be.
 HAVE_ARM := $(shell command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1 && echo 1)
 ifeq ($(BOARD)$(HAVE_ARM),host1)
@@ -327,11 +368,11 @@ ifneq ($(SAN),1)
 tests: firmware-for-tests
 .PHONY: firmware-for-tests
 # The Cortex-M3 board's models are shared meshes: without them
-# tests/cli_qemu.sh skips it.  The Cortex-M0 board always has its `silk gen`
+# tests/boards/cli_qemu.sh skips it.  The Cortex-M0 board always has its `silk gen`
 # model.
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
-	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k; \
+	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k soak-firmware; \
 	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host; \
 	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD) firmware for the tests (its models are shared meshes)"; fi
 	$(MAKE) BOARD=microbit BUILD=build-microbit SAN= CFLAGS= firmware firmware-host firmware-256k

@@ -43,7 +43,7 @@ for m in bunny armadillo spot; do
     pairs="$pairs --pair $work/$m-$t.silk:$f=flat,smooth"
   done
   for v in 42 162 642; do
-    "$silk" prepare "$f" -o "$work/$m-500-map$v.silk" --triangles 500 --views "$v" >/dev/null
+    "$silk" prepare "$f" -o "$work/$m-500-map$v.silk" --triangles 500 --map-views "$v" >/dev/null
     pairs="$pairs --pair $work/$m-500-map$v.silk:$f=clip"
   done
   if [ "$siltex" = 1 ]; then

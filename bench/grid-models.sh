@@ -7,7 +7,7 @@
 # mesh's own normals), both with --no-clip (the same coarse mesh, without
 # clip mode's hull and map).  Made again only when the sources that make
 # them change (their checksum is kept in CACHE/stamp).  Used by
-# bench/grid.sh and tests/cli_grid.sh.
+# bench/grid.sh and tests/cli/cli_grid.sh.
 set -eu
 silk=$1
 cache=$2

@@ -22,9 +22,9 @@ list="$work/knot-500.obj $work/knot-5000.obj $work/knot-50000.obj $work/knot-200
 [ -f "$meshes/bunny-fine.obj" ] && list="$list $meshes/bunny-fine.obj"
 
 {
-  echo "# silk bench --visibility, $(date -u +%Y-%m-%dT%H:%M:%SZ), $(uname -m)"
+  echo "# silk bench --visibility-pass, $(date -u +%Y-%m-%dT%H:%M:%SZ), $(uname -m)"
   echo "# ns per frame, median over 36 views of the best of 5 batches; speedup = brute_ns / gauss_ns"
-  "$silk" bench --visibility $list
+  "$silk" bench --visibility-pass $list
 } > "$out/bench_visibility.txt.tmp"
 awk '$1 == "visibility" { split($5, b, "="); split($6, g, "="); split($8, a, "=");
        best = b[2] < g[2] ? b[2] : g[2];
@@ -39,7 +39,7 @@ if [ "${CALLGRIND:-0}" = 1 ] && command -v valgrind >/dev/null; then
       for m in brute gauss; do
         cg="$work/callgrind.$m.out"
         valgrind --tool=callgrind --callgrind-out-file="$cg" \
-          "$silk" bench --visibility --only $m --projection $p --batches 1 "$f" >/dev/null 2>&1
+          "$silk" bench --visibility-pass --only $m --projection $p --batches 1 "$f" >/dev/null 2>&1
         # instructions of silk_visibility() and all it calls, over the 36 frames
         ir=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg" 2>/dev/null |
              awk 'index($0, ":silk_visibility ") { gsub(",", "", $1); print $1; exit }')

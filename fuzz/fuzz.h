@@ -17,7 +17,7 @@
 #include "silk/silk.h"
 #include "silk/validate.h"
 
-/* The entry point: libFuzzer's, unless tests/test_regress.c, which runs
+/* The entry point: libFuzzer's, unless tests/core/test_regress.c, which runs
  * every harness in one program, names each one itself. */
 #ifndef FUZZ_ENTRY
 #define FUZZ_ENTRY LLVMFuzzerTestOneInput

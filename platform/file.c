@@ -83,6 +83,47 @@ silk_status silk_file_read(const char *path, uint8_t **data, size_t *len, silk_e
     return SILK_OK;
 }
 
+silk_status silk_file_read_regular(const char *path, size_t max, uint8_t **data, size_t *len, silk_error *err)
+{
+    *data = NULL;
+    *len = 0;
+    /* O_NONBLOCK: opening a FIFO does not wait for a writer; it is refused below */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) return silk_fail(err, SILK_ERR_IO, path, 0, "cannot open: %s", strerror(errno));
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return silk_fail(err, SILK_ERR_IO, path, 0, "not a regular file");
+    }
+    if ((uintmax_t)st.st_size > max) {
+        close(fd);
+        return silk_fail(err, SILK_ERR_IO, path, 0, "%llu bytes, more than %zu", (unsigned long long)st.st_size, max);
+    }
+    size_t n = (size_t)st.st_size, got = 0;
+    uint8_t *buf = malloc(n + 1);
+    if (!buf) {
+        close(fd);
+        return silk_fail(err, SILK_ERR_IO, path, 0, "out of memory reading the file");
+    }
+    while (got < n) {   /* a file that shrinks meanwhile ends early; one that grows is cut at its size */
+        ssize_t r = read(fd, buf + got, n - got);
+        if (r < 0 && errno == EINTR) continue;
+        if (r < 0) {
+            int e = errno;
+            free(buf);
+            close(fd);
+            return silk_fail(err, SILK_ERR_IO, path, 0, "cannot read: %s", strerror(e));
+        }
+        if (r == 0) break;
+        got += (size_t)r;
+    }
+    close(fd);
+    buf[got] = 0;
+    *data = buf;
+    *len = got;
+    return SILK_OK;
+}
+
 silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err)
 {
     o->fp = NULL;
@@ -122,6 +163,11 @@ silk_status silk_outfile_open(silk_outfile *o, const char *path, silk_error *err
         int e = errno;
         free(o->tmp);
         o->tmp = NULL;
+        /* the usual cause: say which directory is missing */
+        const char *slash = strrchr(path, '/');
+        if (e == ENOENT && slash && slash > path)
+            return silk_fail(err, SILK_ERR_IO, path, 0, "cannot create: the directory %.*s does not exist",
+                             (int)(slash - path), path);
         return silk_fail(err, SILK_ERR_IO, path, 0, "cannot create: %s", strerror(e));
     }
     /* mkstemp makes the file private (0600); an output should get the usual

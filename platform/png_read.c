@@ -64,15 +64,21 @@ silk_status silk_image_read(const char *path, uint32_t bg_rgb, uint8_t **rgb, in
     size_t len;
     silk_status s = silk_file_read(path, &data, &len, err);
     if (s != SILK_OK) return s;
-    const char *name = silk_path_is_stdio(path) ? SILK_STDIN_NAME : path;
-    if (len >= sizeof png_magic && memcmp(data, png_magic, sizeof png_magic) == 0)
-        s = png_decode(data, len, name, bg_rgb, rgb, width, height, err);
-    else if (len >= 2 && data[0] == 'P' && data[1] == '6')
-        s = silk_ppm_parse(data, len, name, rgb, width, height, err);
-    else
-        s = silk_fail(err, SILK_ERR_PARSE, name, 0, "not a PNG or binary PPM image");
+    s = silk_image_decode(data, len, silk_path_is_stdio(path) ? SILK_STDIN_NAME : path, bg_rgb, rgb, width, height,
+                          err);
     free(data);
     return s;
+}
+
+silk_status silk_image_decode(const uint8_t *data, size_t len, const char *name, uint32_t bg_rgb, uint8_t **rgb,
+                              int *width, int *height, silk_error *err)
+{
+    *rgb = NULL;
+    *width = *height = 0;
+    if (len >= sizeof png_magic && memcmp(data, png_magic, sizeof png_magic) == 0)
+        return png_decode(data, len, name, bg_rgb, rgb, width, height, err);
+    if (len >= 2 && data[0] == 'P' && data[1] == '6') return silk_ppm_parse(data, len, name, rgb, width, height, err);
+    return silk_fail(err, SILK_ERR_PARSE, name, 0, "not a PNG or binary PPM image");
 }
 
 silk_status silk_png_read(const char *path, uint8_t **rgb, int *width, int *height, silk_error *err)

@@ -15,7 +15,7 @@
  * gives the chord itself (theta = 0: a straight line), a zero chord the zero
  * vector, and 1 + cos theta near 0 the clamp below; never overflows.
  * Within 1 ulp + 2^-27 of the result's length of the exact value
- * (tests/test_curve.c). */
+ * (tests/core/test_curve.c). */
 silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
 
 /* The bulge bound, applied by silk_arc_tangent and silk_bridge after eq. 4

@@ -141,7 +141,7 @@ static uint32_t channel(const silk_material *m, silk_fx base, silk_fx spec, int6
  * needs no saturation, and has factors within 32 bits (mul32: one multiply
  * instruction on a 32-bit processor); only the dot products round.  The error is a
  * few ulp of Q16.16, far below one level of an 8-bit channel
- * (tests/test_phong.c compares with a double-precision Phong).  R.V is
+ * (tests/core/test_phong.c compares with a double-precision Phong).  R.V is
  * 2 (N.L)(N.V) - L.V, so the mirror direction R is never formed. */
 static uint32_t shade(const silk_phong *p, const silk_fx *var, const int64_t *base);
 static inline uint32_t shade_in(const silk_phong *p, const silk_fx *var, const int64_t *base, int plain);

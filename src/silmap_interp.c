@@ -289,6 +289,26 @@ silk_status silk_outline_map(const silk_outline *in, const silk_h3 *h, silk_aren
     return SILK_OK;
 }
 
+silk_status silk_outline_reproject(const silk_outline *in, const silk_silmap_cam *from, const silk_silmap_cam *to,
+                                   silk_arena *a, silk_outline *out)
+{
+    /* in's offsets may be a map's (silk_silmap_outline): rebased here */
+    uint32_t base = in->start[0], n = in->start[in->nloops] - base, *start;
+    silk_vec2 *pt;
+    silk_h3 h;
+    silk_status st = silk_h3_between(from, to, NULL, NULL, &h);
+    if (!st) st = outline_alloc(a, in->nloops, n, &start, &pt);
+    if (st) return st;
+    for (uint32_t i = 0; i <= in->nloops; i++) start[i] = in->start[i] - base;
+    for (uint32_t i = 0; i < n; i++)
+        if (silk_h3_apply(&h, in->pt[base + i], &pt[i])) return SILK_ERR_RANGE;
+    out->nloops = in->nloops;
+    out->npts = n;
+    out->start = start;
+    out->pt = pt;
+    return SILK_OK;
+}
+
 /* ---- rectification ------------------------------------------------------------- */
 
 /* Unit vector along an exact 64-bit vector. */

@@ -11,7 +11,7 @@
  * and the two azimuth samples around theta (bilinear x linear); the pixel
  * is drawn iff d.C >= cos(phi).  The azimuth is an octant fold and a table
  * of atan, cos(phi) a table and two Taylor terms: no trigonometric
- * function and no floating point.  tests/test_siltex.c compares each step
+ * function and no floating point.  tests/core/test_siltex.c compares each step
  * with a double-precision reference.
  */
 #include <string.h>

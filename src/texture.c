@@ -9,7 +9,7 @@
  * (section V); how a texel is read is the usual GPU way, in integers.
  * Texel centres sit at half-integer texel coordinates: x = u W - 1/2.
  * Bilinear weights keep 16 fractional bits (within one level of an 8-bit
- * channel of the exact blend, tests/test_texture.c), the level 4 (lambda
+ * channel of the exact blend, tests/core/test_texture.c), the level 4 (lambda
  * from the exponent of rho and four bits of log2 of its mantissa by
  * repeated squaring); everything is an integer function of its inputs, so a device
  * samples the same bits as the host.

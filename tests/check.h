@@ -1,5 +1,5 @@
 /*
- * check.h - the test harness: every tests/test_*.c is its own program.
+ * check.h - the test harness: every test_*.c under tests/ is its own program.
  *
  *   TEST(name) { CHECK(x == 1); CHECKF(err < 2, "err %g", err); }
  *   int main(void) { RUN(name); return check_done(); }

@@ -1,4 +1,4 @@
-# shlib.sh - helpers for the shell tests of the silk command (tests/cli_*.sh),
+# shlib.sh - helpers for the shell tests of the silk command (tests/*/cli_*.sh),
 # sourced, not run.  Each test script gets the build directory as $1 and
 # ends with done_testing, which prints "N passed, N failed" like check.h.
 #
@@ -9,7 +9,8 @@
 
 build=${1:-build}
 SILK=$build/silk
-here=$(cd "$(dirname "$0")" && pwd)
+# the tests folder (every script sits in a group folder below it)
+here=$(cd "$(dirname "$0")/.." && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/silk-cli.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 passed=0
@@ -84,6 +85,13 @@ ppm_count_not() {
     od -An -v -tu1 -j"$hdr" "$1" | awk -v r="$r" -v g="$g" -v b="$b" '
         { for (i = 1; i <= NF; i++) { c[k++ % 3] = $i; if (k % 3 == 0 && (c[0] != r || c[1] != g || c[2] != b)) n++ } }
         END { print n + 0 }'
+}
+
+# The pixels of columns [X0, X0 + W) of a PPM, one pixel a line ("r g b").
+ppm_columns() {
+    hdr=$(head -n 3 "$1" | wc -c)
+    iw=$(ppm_size "$1" | cut -dx -f1)
+    od -An -v -tu1 -w3 -j"$hdr" "$1" | awk -v x0="$2" -v w="$3" -v iw="$iw" '{ x = (NR - 1) % iw } x >= x0 && x < x0 + w'
 }
 
 # The value of a "name: value" line of `silk info`; name includes the

@@ -77,7 +77,7 @@ silk_status silk_load_model(const void *data, size_t len, const char *name, cons
                             silk_arena *a, silk_mesh *out, silk_error *err);
 
 /* The model's silhouette map (docs/formats.md "SMAP") as a silk_silmap
- * (src/silmap_interp.h) whose arrays point into the caller's bytes, so a
+ * (silk/silmap.h) whose arrays point into the caller's bytes, so a
  * model in flash keeps its map there.  Every count, index and number the
  * interpolation relies on is checked.  The bytes must be 4-byte aligned
  * (the arrays are read in place) and the host little-endian.  SILK_OK,

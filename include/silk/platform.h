@@ -37,6 +37,13 @@ int silk_path_is_stdio(const char *path);
  * reads standard input to its end. */
 silk_status silk_file_read(const char *path, uint8_t **data, size_t *len, silk_error *err);
 
+/* The same for a file a model names (an OBJ's mtllib and map_Kd): read
+ * only when it is a regular file (never a device, a pipe or a directory,
+ * which could block or never end; opened without waiting for a writer) of
+ * at most max bytes, checked before reading.  SILK_ERR_IO "PATH: not a
+ * regular file" / "PATH: N bytes, more than MAX" otherwise. */
+silk_status silk_file_read_regular(const char *path, size_t max, uint8_t **data, size_t *len, silk_error *err);
+
 /* An output written atomically: the data goes to "PATH.tmpXXXXXX" in the
  * same directory, which replaces PATH by rename() only once everything was
  * written and flushed.  Until then PATH is untouched, and on any failure the
@@ -114,6 +121,9 @@ silk_status silk_png_read(const char *path, uint8_t **rgb, int *width, int *heig
  * Errors name the file: "a.png: not a PNG or binary PPM image". */
 silk_status silk_image_read(const char *path, uint32_t bg_rgb, uint8_t **rgb, int *width, int *height,
                             silk_error *err);
+/* The same on a file's bytes in memory (name for messages). */
+silk_status silk_image_decode(const uint8_t *data, size_t len, const char *name, uint32_t bg_rgb, uint8_t **rgb,
+                              int *width, int *height, silk_error *err);
 
 /* The PPM part on bytes in memory (name for messages; platform/ppm_read.c,
  * which needs no libpng). */

@@ -16,6 +16,7 @@
 #include "raster.h"
 #include "hal.h"
 #include "texture.h"
+#include "silmap.h"
 #include "siltex.h"
 #include "visibility.h"
 #include "render.h"

@@ -128,7 +128,7 @@ define fw_model
 $(FW_OUT)/$(1)/fwmodel.h: $(2) $(BUILD)/silk $(FW_OUT)/$(1)/pack.args
 	$(BUILD)/silk pack $(2) -o $$@ --name fwmodel $(FW_PACK_ARGS) $(FW_PACK_EXTRA_$(1))
 
-$(FW_OUT)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args
+$(FW_OUT)/$(1)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h platform/mps2/fw_say.h $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args
 	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) -c $$< -o $$@
 
 $(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld \
@@ -136,7 +136,7 @@ $(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk
 	$(FW_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_OUT)/$(1)/fw.map -o $$@ $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) \
 	    $(FW_DIR)/libsilk.a
 
-$(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h \
+$(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
                         $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
 	$(CC) $(FW_HOST_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) \
 	    -o $$@ platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
@@ -147,5 +147,23 @@ endef
 $(foreach m,$(BOARD_MESHES),$(eval $(call fw_model,$(basename $(notdir $(m))),$(m))))
 
 run: $(FW_NAMES:%=run-%)
+
+# The soak run (platform/mps2/fw_soak.c, tests/boards/cli_soak.sh): the first
+# model's scene along a random camera path, for the board and for the host.
+FW_SOAK_MODEL := $(firstword $(FW_NAMES))
+FW_SOAK := $(FW_OUT)/soak
+.PHONY: soak-firmware
+soak-firmware: $(if $(FW_SOAK_MODEL),$(FW_SOAK)/soak.elf $(FW_SOAK)/soak-host $(FW_OUT)/machine)
+$(FW_SOAK)/fw_soak.o: platform/mps2/fw_soak.c platform/mps2/fw_io.h platform/mps2/fw_say.h $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h \
+                      $(FW_OUT)/defs.args
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -Iplatform/mps2 -I$(FW_OUT)/$(FW_SOAK_MODEL) -c $< -o $@
+$(FW_SOAK)/soak.elf: $(FW_SOAK)/fw_soak.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld $(FW_OUT)/defs.args
+	$(FW_CC) $(FW_LDFLAGS) -o $@ $(FW_SOAK)/fw_soak.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a
+$(FW_SOAK)/soak-host: platform/mps2/fw_soak.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
+                      $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) $(FW_DEFS) -Iplatform/mps2 -I$(FW_OUT)/$(FW_SOAK_MODEL) \
+	    -o $@ platform/mps2/fw_soak.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
 
 -include $(wildcard $(FW_DIR)/obj/*/*.d $(FW_DIR)/obj/*/*/*.d $(FW_DIR)/host-obj/*/*.d)

@@ -1,7 +1,7 @@
 /*
  * fw_io_host.c - fw_io.h with stdio, so the firmware's scene runs on the
  * host too: `fw-host PREFIX` writes the same frames and report as the
- * board under QEMU, which is how tests/cli_qemu.sh tells a difference of
+ * board under QEMU, which is how tests/boards/cli_qemu.sh tells a difference of
  * the target (compiler, 32-bit CPU) from a difference of the scene.  The
  * host measures no stack and has no instruction timer; static sizes and
  * ticks are reported as 0.

@@ -42,6 +42,7 @@
 #include "silk/silk.h"
 #include "silk/validate.h"
 #include "fw_io.h"
+#include "fw_say.h"
 #include "fwmodel.h"
 #include "../../src/stages.h"      /* the core's own timing of a piece, to measure its overhead */
 
@@ -78,20 +79,6 @@
 #define CHUNK_PIXELS 32          /* pixels converted per host write */
 
 static uint8_t arena_mem[FW_ARENA_BYTES] __attribute__((aligned(SILK_ARENA_ALIGN)));
-
-#if defined(__GNUC__)
-__attribute__((format(printf, 1, 2)))
-#endif
-static void say(const char *fmt, ...)
-{
-    char line[160];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(line, sizeof line - 1, fmt, ap);
-    va_end(ap);
-    strcat(line, "\n");
-    fw_print(line);
-}
 
 /* Where the bands go: a host file (or nowhere) and a checksum. */
 typedef struct band_out {

@@ -4,7 +4,7 @@
 other formats) from a small valid prepared model with a map:
 
     silk gen sphere --segments 6 --bands 5 -o s.obj
-    silk prepare s.obj -o s.silk --triangles 24 --views 12 --map-resolution 32
+    silk prepare s.obj -o s.silk --triangles 24 --map-views 12 --map-resolution 32
     python3 tests/bad/make_bad_smap.py s.silk
 
 Each case changes the SMAP section and makes its checksums right again, so

@@ -9,10 +9,10 @@
 
 #include <stdint.h>
 #include "silk/silk.h"
-#include "../../src/frame.h"
-#include "../../src/plan.h"
-#include "../../src/remesh.h"
-#include "../../src/perturb.h"
+#include "src/frame.h"
+#include "src/plan.h"
+#include "src/remesh.h"
+#include "src/perturb.h"
 
 /* Looking at the centre of the mesh's bounding box from direction dir
  * (any length), dist bounding radii away: 512 x 512, 45 degrees, or a

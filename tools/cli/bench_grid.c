@@ -28,6 +28,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <pthread.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +36,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "opt.h"
 #include "image/mask.h"
 #include "progress.h"
 #include "platform/platform.h"
@@ -51,6 +53,7 @@ typedef struct grid_cfg {
     long max_lost, max_hole;     /* -1: not checked */
     const char *md, *csv, *dump;
     int quiet;
+    int grid;                    /* --grid: what `silk bench` dispatches on */
 } grid_cfg;
 
 /* What one view measured. */
@@ -74,45 +77,6 @@ typedef struct grid_job {
     pthread_mutex_t lock;
     progress pr;
 } grid_job;
-
-static void help(FILE *f)
-{
-    fprintf(f,
-            "usage: silk bench --grid [options] COARSE[:FINE]...\n"
-            "\n"
-            "Draw each coarse mesh flat and smooth from a grid of views about silk\n"
-            "render's default framing, and its detailed model FINE flat from the same\n"
-            "camera, and count per view what smooth mode gets visibly wrong:\n"
-            "  lost    pixels at least 3 px inside both the flat and the detailed object\n"
-            "          (the flat one alone without FINE) that smooth leaves uncovered\n"
-            "  hole    the largest enclosed background region of the smooth frame, in\n"
-            "          its pixels that lie 3 px inside both objects (a subset of lost)\n"
-            "  bulge   how far (px) smooth reaches outside flat's object\n"
-            "  excess  the same outside both flat's and the detailed object\n"
-            "One line per mesh, then its worst views, each with the silk render command\n"
-            "that shows it:\n"
-            "  grid MESH views=N lost10=N lost_max=N hole_views=N hole_max=N bulge_max=X excess_max=X flat_segments=N\n"
-            "  grid-view MESH yaw=Y pitch=P lost=N hole=N bulge=X excess=X: silk render ...\n"
-            "docs/measurements.md defines the grid and every number.\n"
-            "\n"
-            "options:\n"
-            "  --yaws N            yaws, every 360/N degrees from the default view [24]\n"
-            "  --pitches LIST      comma-separated pitches in degrees [-60,-30,0,30,60]\n"
-            "  --size WxH          image size [320x240]\n"
-            "  --tolerance PX      smooth mode's sampling tolerance [library default]\n"
-            "  --threads N         threads drawing the views [processors online]\n"
-            "  --worst N           worst views printed per mesh [3]\n"
-            "  --max-lost N        fail (exit 1) when a view loses more than N pixels\n"
-            "  --max-hole N        fail (exit 1) when a view has a hole of more than N pixels\n"
-            "  --md FILE           the summary and the worst views as Markdown\n"
-            "  --csv FILE          every view as a CSV row\n"
-            "  --dump DIR          each worst view as DIR/MESH-yYAW-pPITCH.png: flat, smooth\n"
-            "                      (lost pixels red) and the detailed model, magnified\n"
-            "  --quiet             no progress line on a terminal\n"
-            "\n"
-            "example:\n"
-            "  silk bench --grid bunny-500.obj:bunny-fine.obj --max-lost 9 --max-hole 2\n");
-}
 
 /* ---- one view --------------------------------------------------------------------- */
 
@@ -228,7 +192,7 @@ static int view_of(const grid_cfg *c, const cli_mesh *coarse, const grid_view *g
     o.pitch = gv->pitch;
     silk_camera cam;
     silk_error err;
-    int rc = cli_camera(&o, &coarse->mesh, &cam);
+    int rc = cli_camera(&o, &coarse->mesh, NULL, &cam);
     if (!rc && silk_view_init(view, &cam, &err) != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", coarse->name, err.msg);
     return rc;
 }
@@ -508,80 +472,91 @@ static int parse_pitches(const char *s, grid_cfg *c)
     return c->npitch ? 0 : cli_fail(-1, "--pitches needs at least one pitch");
 }
 
+static int opt_pitches(const cli_opt *o, const char *v, void *base)
+{
+    (void)o;
+    return parse_pitches(v, base);
+}
+
+static void grid_defaults(void *base)
+{
+    grid_cfg *c = base;
+    memset(c, 0, sizeof *c);
+    c->yaws = 24;
+    c->width = 320;
+    c->height = 240;
+    c->worst = 3;
+    c->max_lost = c->max_hole = -1;
+    parse_pitches("-60,-30,0,30,60", c);
+}
+
+#define F(member) CLI_FIELD(grid_cfg, member)
+static const cli_opt grid_rows[] = {
+    { .name = "--grid", .group = "options", .kind = CLI_FLAG, F(grid),
+      .help = "the robustness grid (instead of the render modes' benchmark)" },
+    { .name = "--yaws", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 360, F(yaws),
+      .help = "yaws, every 360/N degrees from the default view (%R, default %D)" },
+    { .name = "--pitches", .kind = CLI_CUSTOM, .meta = "LIST", .parse = opt_pitches,
+      .help = "comma-separated pitches in degrees, -90..90 (default -60,-30,0,30,60)" },
+    { .name = "--size", .kind = CLI_SIZE, .meta = "WxH", F(width), .off2 = offsetof(grid_cfg, height),
+      .help = "image size (default 320x240)" },
+    { .name = "--tolerance", .kind = CLI_FX, .meta = "PX", .lo = 0.25, .hi = 4, F(tolerance),
+      .help = "smooth mode's sampling tolerance (%R; default: the library's)" },
+    { .name = "--threads", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = GRID_MAX_THREADS, F(threads),
+      .help = "threads drawing the views (%R; default: the processors online)" },
+    { .name = "--worst", .kind = CLI_INT, .meta = "N", .lo = 0, .hi = 1000, F(worst),
+      .help = "worst views printed per mesh (%R, default %D)" },
+    { .name = "--max-lost", .kind = CLI_INT, .meta = "N", .lo = 0, .hi = 100000000, F(max_lost),
+      .help = "fail (exit 1) when a view loses more than N pixels" },
+    { .name = "--max-hole", .kind = CLI_INT, .meta = "N", .lo = 0, .hi = 100000000, F(max_hole),
+      .help = "fail (exit 1) when a view has a hole of more than N pixels" },
+    { .name = "--md", .kind = CLI_OUTPUT, .meta = "FILE", F(md), .help = "the summary and the worst views as Markdown" },
+    { .name = "--csv", .kind = CLI_OUTPUT, .meta = "FILE", F(csv), .help = "every view as a CSV row" },
+    { .name = "--dump", .kind = CLI_DIR, .meta = "DIR", F(dump),
+      .help = "each worst view as DIR/MESH-yYAW-pPITCH.png: flat, smooth (lost pixels red) and the detailed model, "
+              "magnified (DIR is made when missing)" },
+    { .name = "--quiet", .kind = CLI_FLAG, F(quiet), .help = "no progress line on a terminal" },
+    { .name = NULL },
+};
+#undef F
+
+const cli_command cmd_bench_grid_spec = {
+    .name = "bench --grid",
+    .usage = "usage: silk bench --grid [options] COARSE[:FINE]...\n",
+    .about =
+        "Draw each coarse mesh flat and smooth from a grid of views about silk\n"
+        "render's default framing, and its detailed model FINE flat from the same\n"
+        "camera, and count per view what smooth mode gets visibly wrong:\n"
+        "  lost    pixels at least 3 px inside both the flat and the detailed object\n"
+        "          (the flat one alone without FINE) that smooth leaves uncovered\n"
+        "  hole    the largest enclosed background region of the smooth frame, in\n"
+        "          its pixels that lie 3 px inside both objects (a subset of lost)\n"
+        "  bulge   how far (px) smooth reaches outside flat's object\n"
+        "  excess  the same outside both flat's and the detailed object\n"
+        "One line per mesh, then its worst views, each with the silk render command\n"
+        "that shows it:\n"
+        "  grid MESH views=N lost10=N lost_max=N hole_views=N hole_max=N bulge_max=X excess_max=X flat_segments=N\n"
+        "  grid-view MESH yaw=Y pitch=P lost=N hole=N bulge=X excess=X: silk render ...\n"
+        "docs/measurements.md defines the grid and every number.\n",
+    .examples = "  silk bench --grid bunny-500.obj:bunny-fine.obj --max-lost 9 --max-hole 2\n",
+    .sets = { { grid_rows, 0, sizeof(grid_cfg), grid_defaults, NULL } },
+    .nsets = 1,
+};
+
 int bench_grid(int argc, char **argv)
 {
     grid_cfg c;
-    memset(&c, 0, sizeof c);
-    c.yaws = 24;
-    c.width = 320;
-    c.height = 240;
-    c.worst = 3;
-    c.max_lost = c.max_hole = -1;
-    parse_pitches("-60,-30,0,30,60", &c);
-    const char **paths = calloc((size_t)argc, sizeof *paths);
-    if (!paths) return cli_fail(CLI_EXIT_INPUT, "out of memory");
-    int n = 0, rc = 0;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i], *v;
-        long num;
-#define VALUE() if (!(v = cli_value(argc, argv, &i))) { rc = CLI_EXIT_USAGE; break; }
-        if (cli_help(a, help)) {
-            free(paths);
-            return 0;
-        } else if (strcmp(a, "--grid") == 0) {
-            continue;
-        } else if (cli_is(a, "--yaws")) {
-            VALUE();
-            if (cli_parse_long("--yaws", v, 1, 360, &num)) rc = CLI_EXIT_USAGE;
-            c.yaws = (int)num;
-        } else if (cli_is(a, "--pitches")) {
-            VALUE();
-            if (parse_pitches(v, &c)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--size")) {
-            VALUE();
-            if (cli_parse_size("--size", v, &c.width, &c.height)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--tolerance")) {
-            VALUE();
-            double t;
-            if (cli_parse_double("--tolerance", v, 0.25, 4, &t)) rc = CLI_EXIT_USAGE;
-            c.tolerance = cli_fx_from_double(t);
-        } else if (cli_is(a, "--threads")) {
-            VALUE();
-            if (cli_parse_long("--threads", v, 1, GRID_MAX_THREADS, &num)) rc = CLI_EXIT_USAGE;
-            c.threads = (int)num;
-        } else if (cli_is(a, "--worst")) {
-            VALUE();
-            if (cli_parse_long("--worst", v, 0, 1000, &num)) rc = CLI_EXIT_USAGE;
-            c.worst = (int)num;
-        } else if (cli_is(a, "--max-lost")) {
-            VALUE();
-            if (cli_parse_long("--max-lost", v, 0, 100000000, &c.max_lost)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--max-hole")) {
-            VALUE();
-            if (cli_parse_long("--max-hole", v, 0, 100000000, &c.max_hole)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--md")) {
-            VALUE();
-            c.md = v;
-        } else if (cli_is(a, "--csv")) {
-            VALUE();
-            c.csv = v;
-        } else if (cli_is(a, "--dump")) {
-            VALUE();
-            c.dump = v;
-        } else if (strcmp(a, "--quiet") == 0) {
-            c.quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_unknown_option("bench --grid", a);
-        } else {
-            paths[n++] = a;
-        }
-#undef VALUE
-    }
-    if (!rc && n == 0) rc = cli_fail(CLI_EXIT_USAGE, "bench --grid: no mesh given (silk bench --grid COARSE[:FINE]...)");
+    grid_defaults(&c);
+    cli_args args;
+    void *bases[] = { &c };
+    int rc = cli_parse(&cmd_bench_grid_spec, bases, argc, argv, &args);
+    if (!rc && args.npos == 0) rc = cli_fail(CLI_EXIT_USAGE, "bench --grid: no mesh given (silk bench --grid COARSE[:FINE]...)");
     if (rc) {
-        free(paths);
-        return rc;
+        cli_args_free(&args);
+        return rc == CLI_HELP ? 0 : rc;
     }
+    const char **paths = args.pos;
+    int n = args.npos;
 
     silk_outfile md, csv;
     silk_error err;
@@ -692,7 +667,8 @@ int bench_grid(int argc, char **argv)
             if (worst_md[m]) fputs(worst_md[m], md.fp);
     }
     for (int m = 0; m < n; m++) free(worst_md[m]);
-    free(worst_md), free(views), free(worst), free(paths);
+    free(worst_md), free(views), free(worst);
+    cli_args_free(&args);
     if (have_md) {
         if (rc) silk_outfile_abort(&md);
         else if (silk_outfile_commit(&md, &err) != SILK_OK) rc = cli_fail(CLI_EXIT_INPUT, "%s", err.msg);

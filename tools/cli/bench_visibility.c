@@ -1,5 +1,5 @@
 /*
- * bench_visibility.c - `silk bench --visibility MESH...`: the cost of one frame's
+ * bench_visibility.c - `silk bench --visibility-pass MESH...`: the cost of one frame's
  * visibility (paper III-B) by the brute pass and by the Gaussian-sphere
  * hierarchy, on each mesh, from 36 views around it, in perspective and
  * parallel projection.
@@ -25,31 +25,6 @@
 #include "platform/platform.h"
 
 #define BENCH_VIEWS 36
-
-static void help(FILE *f)
-{
-    fprintf(f,
-            "usage: silk bench --visibility [options] MESH...\n"
-            "\n"
-            "Time the per-frame visibility of every shading normal: the brute pass\n"
-            "(one dot product per normal) against the Gaussian-sphere hierarchy, from\n"
-            "%d views around each mesh, perspective and parallel.  One line per mesh\n"
-            "and projection:\n"
-            "  visibility MESH PROJ normals=N brute_ns=N gauss_ns=N cell_decided=N auto_ns=N\n"
-            "(ns per frame, medians over the views).  Then the hierarchy's size and build\n"
-            "time on a line starting with '#'.\n"
-            "\n"
-            "options:\n"
-            "  --visibility       the visibility benchmark (the only one so far)\n"
-            "  --batches N        timed batches per view and method, best kept [5]\n"
-            "  --depth N          hierarchy depth 1..10 [from the mesh size]\n"
-            "  --leaf N           largest cell not split [default of the library]\n"
-            "  --only brute|gauss run one method only, 36 views x batches frames (for\n"
-            "                     callgrind: valgrind --tool=callgrind silk bench ...)\n"
-            "  --projection perspective|parallel   only this projection [both]\n"
-            "  --quiet            no progress line on a terminal\n",
-            BENCH_VIEWS);
-}
 
 static double now_ns(void)
 {
@@ -98,7 +73,56 @@ typedef struct bench_opts {
     int only;                  /* 0 all, SILK_VIS_BRUTE or SILK_VIS_GAUSS */
     int proj;                  /* bit 0: perspective, bit 1: parallel */
     int quiet;                 /* no progress line */
+    int visibility;            /* --visibility-pass: what `silk bench` dispatches on */
 } bench_opts;
+
+#define F(member) CLI_FIELD(bench_opts, member)
+#define XSTR(x) STR(x)
+#define STR(x) #x
+static const int only_v[] = { SILK_VIS_BRUTE, SILK_VIS_GAUSS };
+static const int proj_v[] = { 2, 1, 3, 2 };   /* bit 1 parallel (ortho), bit 0 perspective */
+static const cli_opt visibility_rows[] = {
+    { .name = "--visibility-pass", .group = "options", .kind = CLI_FLAG, F(visibility),
+      .help = "the visibility benchmark (instead of the render modes')" },
+    { .name = "--batches", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 1000, F(batches),
+      .help = "timed batches per view and method, best kept (%R, default %D)" },
+    { .name = "--depth", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 10, F(vis.max_depth),
+      .help = "hierarchy depth (%R; default: from the mesh size)" },
+    { .name = "--leaf", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 1 << 20, F(vis.leaf_max),
+      .help = "largest cell not split (%R; default: the library's)" },
+    { .name = "--only", .kind = CLI_CHOICE, .choices = "brute|gauss", .values = only_v, F(only),
+      .help = "run one method only, " XSTR(BENCH_VIEWS) " views x batches frames (for callgrind: valgrind "
+              "--tool=callgrind silk bench ...)" },
+    { .name = "--projection", .kind = CLI_CHOICE, .choices = "ortho|perspective|both|parallel", .values = proj_v,
+      F(proj), .help = "only this projection (default both; parallel: ortho's older name)" },
+    { .name = "--quiet", .kind = CLI_FLAG, F(quiet), .help = "no progress line on a terminal" },
+    { .name = NULL },
+};
+#undef F
+
+static void visibility_defaults(void *base)
+{
+    bench_opts *o = base;
+    memset(o, 0, sizeof *o);
+    o->batches = 5;
+    o->proj = 3;
+}
+
+const cli_command cmd_bench_visibility_spec = {
+    .name = "bench --visibility-pass",
+    .usage = "usage: silk bench --visibility-pass [options] MESH...\n",
+    .about =
+        "Time the per-frame visibility of every shading normal: the brute pass\n"
+        "(one dot product per normal) against the Gaussian-sphere hierarchy, from\n"
+        XSTR(BENCH_VIEWS) " views around each mesh, perspective and parallel.  One line per mesh\n"
+        "and projection:\n"
+        "  visibility MESH PROJ normals=N brute_ns=N gauss_ns=N cell_decided=N auto_ns=N\n"
+        "(ns per frame, medians over the views).  Then the hierarchy's size and build\n"
+        "time on a line starting with '#'.\n",
+    .examples = "  silk bench --visibility-pass bunny-fine.obj knot.obj\n",
+    .sets = { { visibility_rows, 0, sizeof(bench_opts), visibility_defaults, NULL } },
+    .nsets = 1,
+};
 
 /* Projection p (0 perspective, 1 parallel) is to be measured. */
 static int want(const bench_opts *o, int p) { return o->proj >> p & 1; }
@@ -139,7 +163,7 @@ static int bench_mesh(const char *path, const bench_opts *o)
     silk_mesh m = lm.mesh;
     progress pr;
     char label[96];
-    snprintf(label, sizeof label, "bench --visibility %s", lm.name);
+    snprintf(label, sizeof label, "bench --visibility-pass %s", lm.name);
     progress_start(&pr, o->quiet, label);
     uint8_t *vis = malloc(m.nnormals + 1);
     double brute[2][BENCH_VIEWS], gauss[2][BENCH_VIEWS], autot[2][BENCH_VIEWS], decided[2][BENCH_VIEWS];
@@ -204,62 +228,21 @@ done:
 int bench_visibility(int argc, char **argv)
 {
     bench_opts o;
-    memset(&o, 0, sizeof o);
-    o.batches = 5;
-    o.proj = 3;
-    int visibility = 0, first_mesh = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        long n;
-        if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0) {
-            help(stdout);
-            return 0;
-        } else if (cli_is(arg, "--visibility")) {
-            visibility = 1;
-        } else if (strcmp(arg, "--quiet") == 0) {
-            o.quiet = 1;
-        } else if (cli_is(arg, "--batches")) {
-            const char *val = cli_value(argc, argv, &i);
-            if (!val || cli_parse_long("--batches", val, 1, 1000, &n)) return CLI_EXIT_USAGE;
-            o.batches = (int)n;
-        } else if (cli_is(arg, "--depth")) {
-            const char *val = cli_value(argc, argv, &i);
-            if (!val || cli_parse_long("--depth", val, 1, 10, &n)) return CLI_EXIT_USAGE;
-            o.vis.max_depth = (uint32_t)n;
-        } else if (cli_is(arg, "--leaf")) {
-            const char *val = cli_value(argc, argv, &i);
-            if (!val || cli_parse_long("--leaf", val, 1, 1 << 20, &n)) return CLI_EXIT_USAGE;
-            o.vis.leaf_max = (uint32_t)n;
-        } else if (cli_is(arg, "--only")) {
-            const char *val = cli_value(argc, argv, &i);
-            if (!val) return CLI_EXIT_USAGE;
-            if (strcmp(val, "brute") == 0) o.only = SILK_VIS_BRUTE;
-            else if (strcmp(val, "gauss") == 0) o.only = SILK_VIS_GAUSS;
-            else return cli_fail(CLI_EXIT_USAGE, "--only must be brute or gauss, not '%s'", val);
-        } else if (cli_is(arg, "--projection")) {
-            const char *val = cli_value(argc, argv, &i);
-            if (!val) return CLI_EXIT_USAGE;
-            if (strcmp(val, "perspective") == 0) o.proj = 1;
-            else if (strcmp(val, "parallel") == 0) o.proj = 2;
-            else return cli_fail(CLI_EXIT_USAGE, "--projection must be perspective or parallel, not '%s'", val);
-        } else if (arg[0] == '-' && arg[1]) {
-            return cli_fail(CLI_EXIT_USAGE, "bench: unknown option '%s' (see silk bench --help)", arg);
-        } else if (!first_mesh) {
-            first_mesh = i;
-        }
+    visibility_defaults(&o);
+    cli_args args;
+    void *bases[] = { &o };
+    int rc = cli_parse(&cmd_bench_visibility_spec, bases, argc, argv, &args);
+    if (!rc && !o.visibility) rc = cli_fail(CLI_EXIT_USAGE, "bench: say what to measure: --visibility-pass");
+    if (!rc && args.npos == 0) rc = cli_fail(CLI_EXIT_USAGE, "bench: no mesh given");
+    if (rc) {
+        cli_args_free(&args);
+        return rc == CLI_HELP ? 0 : rc;
     }
-    if (!visibility) return cli_fail(CLI_EXIT_USAGE, "bench: say what to measure: --visibility");
-    if (!first_mesh) return cli_fail(CLI_EXIT_USAGE, "bench: no mesh given");
-    int rc = 0;
-    for (int i = first_mesh; i < argc; i++) {
-        const char *arg = argv[i];
-        if (arg[0] == '-' && arg[1]) {
-            /* skip options and their values, parsed above */
-            if (!strchr(arg, '=') && !cli_is(arg, "--visibility") && strcmp(arg, "--quiet") != 0) i++;
-            continue;
-        }
-        int r = bench_mesh(arg, &o);
+    /* every mesh, the last failure's status */
+    for (int i = 0; i < args.npos; i++) {
+        int r = bench_mesh(args.pos[i], &o);
         if (r) rc = r;
     }
+    cli_args_free(&args);
     return rc;
 }

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli.h"
 #include "progress.h"
@@ -153,55 +154,62 @@ bad:
 
 /* ---- arguments ------------------------------------------------------------------ */
 
-int cli_is(const char *arg, const char *name)
+int cli_parse_decimal(const char *opt, const char *s, silk_decimal *out)
 {
-    size_t n = strlen(name);
-    return strncmp(arg, name, n) == 0 && (arg[n] == 0 || (arg[n] == '=' && name[0] == '-'));
+    const char *end;
+    silk_decimal d;
+    if (!plain_decimal(s) || silk_decimal_parse(s, &end, &d) != 0 || *end || d.mant <= 0)
+        return cli_fail(-1, "%s must be a positive decimal number, e.g. 0.01 (got \"%s\")", opt, s);
+    *out = d;
+    return 0;
 }
 
-const char *cli_value(int argc, char **argv, int *i)
+/* The directory part of path ("." when it has none). */
+static void dir_of(const char *path, char *buf, size_t n)
 {
-    const char *arg = argv[*i];
-    const char *eq = strchr(arg, '=');
-    if (arg[0] == '-' && eq) return eq + 1;
-    if (*i + 1 >= argc) {
-        cli_fail(-1, "%s needs a value", arg);
-        return NULL;
-    }
-    return argv[++*i];
+    const char *slash = strrchr(path, '/');
+    if (!slash) snprintf(buf, n, ".");
+    else if (slash == path) snprintf(buf, n, "/");
+    else snprintf(buf, n, "%.*s", (int)(slash - path), path);
 }
 
-int cli_parse_choice(const char *opt, const char *s, const char *a, const char *b, int *out)
+static int is_dir(const char *path)
 {
-    *out = strcmp(s, b) == 0;
-    if (*out || strcmp(s, a) == 0) return 0;
-    return cli_fail(-1, "%s must be %s or %s (got \"%s\")", opt, a, b, s);
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-int cli_help(const char *arg, void (*help)(FILE *))
+int cli_check_output_dir(const char *opt, const char *path)
 {
-    if (strcmp(arg, "--help") != 0 && strcmp(arg, "-h") != 0) return 0;
-    help(stdout);
-    return 1;
+    char dir[4096];
+    dir_of(path, dir, sizeof dir);
+    if (is_dir(dir)) return 0;
+    return cli_fail(-1, "%s %s: the directory %s does not exist", opt, path, dir);
 }
 
-int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc)
+int cli_check_dir(const char *opt, const char *path)
 {
-    int r = cli_scene_option(o, argc, argv, i);
-    if (r < 0) *rc = CLI_EXIT_USAGE;
-    return r != 0;
+    struct stat st;
+    if (stat(path, &st) == 0) return S_ISDIR(st.st_mode) ? 0 : cli_fail(-1, "%s %s: not a directory", opt, path);
+    char dir[4096], parent[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    for (size_t n = strlen(dir); n > 1 && dir[n - 1] == '/'; n--) dir[n - 1] = 0;
+    dir_of(dir, parent, sizeof parent);
+    if (is_dir(parent)) return 0;
+    return cli_fail(-1, "%s %s: the directory %s does not exist", opt, path, parent);
 }
 
-int cli_unknown_option(const char *cmd, const char *arg)
+int cli_make_dir(const char *path)
 {
-    return cli_fail(CLI_EXIT_USAGE, "%s: unknown option %s (try silk %s --help)", cmd, arg, cmd);
+    if (is_dir(path) || mkdir(path, 0777) == 0) return 0;
+    return cli_fail(CLI_EXIT_INPUT, "%s: cannot make the directory: %s", path, strerror(errno));
 }
 
-int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path)
+int cli_one_mesh(const char *cmd, int npos, const char *const *pos, const char *usage, const char **mesh_path)
 {
-    if (arg[0] == '-' && arg[1]) return cli_unknown_option(cmd, arg);
-    if (*mesh_path) return cli_fail(CLI_EXIT_USAGE, "%s: one mesh at a time (got %s and %s)", cmd, *mesh_path, arg);
-    *mesh_path = arg;
+    if (npos == 0) return cli_fail(CLI_EXIT_USAGE, "%s: no mesh given (%s)", cmd, usage);
+    if (npos > 1) return cli_fail(CLI_EXIT_USAGE, "%s: one mesh at a time (got %s and %s)", cmd, pos[0], pos[1]);
+    *mesh_path = pos[0];
     return 0;
 }
 
@@ -251,399 +259,6 @@ int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, i
                         "separated "
                         "by commas (MODE-noaa: without anti-aliasing)", opt, (int)len, p, SILK_PN_MAX_LEVEL);
     }
-}
-
-/* The option's name without "=value", for messages. */
-static const char *opt_name(const char *arg, char *buf, size_t n)
-{
-    size_t k = strcspn(arg, "=");
-    if (k >= n) k = n - 1;
-    memcpy(buf, arg, k);
-    buf[k] = 0;
-    return buf;
-}
-
-/* ---- scene options ------------------------------------------------------------- */
-
-void cli_scene_opts_default(cli_scene_opts *o)
-{
-    memset(o, 0, sizeof *o);
-    silk_load_opts_default(&o->load);
-    o->width = SILK_BOARD_WIDTH;
-    o->height = SILK_BOARD_HEIGHT;
-    o->fmt = SILK_BOARD_FORMAT;
-    o->fov = CLI_DEFAULT_FOV;
-    o->groups = CLI_OPT_ALL;
-    o->orient_note = 1;
-    silk_render_opts_default(&o->render);
-}
-
-/* Which group each scene option belongs to; a command takes only the groups
- * in its cli_scene_opts.groups, so an option it would ignore is refused.
- * Options not listed here are load options, taken by every command. */
-static const struct {
-    const char *name;
-    unsigned group;
-} option_group[] = {
-    { "--eye", CLI_OPT_CAMERA },          { "--target", CLI_OPT_CAMERA },     { "--up", CLI_OPT_CAMERA },
-    { "--fov", CLI_OPT_CAMERA },          { "--ortho", CLI_OPT_CAMERA },      { "--yaw", CLI_OPT_CAMERA },
-    { "--pitch", CLI_OPT_CAMERA },        { "--up-axis", CLI_OPT_CAMERA },    { "--size", CLI_OPT_FRAME },
-    { "--format", CLI_OPT_FRAME },        { "--mode", CLI_OPT_MODE },         { "--tolerance", CLI_OPT_MODE },
-    { "--level", CLI_OPT_MODE },          { "--pn-normals", CLI_OPT_MODE },   { "--beta", CLI_OPT_MODE },
-    { "--bg", CLI_OPT_LOOK },             { "--wire", CLI_OPT_LOOK },         { "--lines", CLI_OPT_LOOK },
-    { "--lines-polygonal", CLI_OPT_LOOK }, { "--color", CLI_OPT_LOOK },       { "--ambient", CLI_OPT_LOOK },
-    { "--specular", CLI_OPT_LOOK },       { "--shininess", CLI_OPT_LOOK },    { "--light", CLI_OPT_LOOK },
-    { "--aa", CLI_OPT_LOOK },
-    { "--texture", CLI_OPT_LOOK },        { "--texture-format", CLI_OPT_LOOK }, { "--texture-filter", CLI_OPT_LOOK },
-    { "--texture-wrap", CLI_OPT_LOOK },
-};
-
-static unsigned group_of(const char *arg)
-{
-    size_t n = strcspn(arg, "=");
-    for (size_t i = 0; i < sizeof option_group / sizeof option_group[0]; i++)
-        if (strlen(option_group[i].name) == n && strncmp(arg, option_group[i].name, n) == 0)
-            return option_group[i].group;
-    return CLI_OPT_LOAD;
-}
-
-/* A material colour (components in [0, 1]) as 0xRRGGBB. */
-static uint32_t v3_to_rgb(silk_vec3 c)
-{
-    silk_fx v[3] = { c.x, c.y, c.z };
-    uint32_t rgb = 0;
-    for (int k = 0; k < 3; k++) rgb = rgb << 8 | (uint32_t)lround(cli_fx_to_double(v[k]) * 255);
-    return rgb;
-}
-
-void cli_print_scene_help(FILE *f, unsigned groups)
-{
-    silk_render_opts ro;
-    silk_render_opts_default(&ro);
-    silk_phong ph;
-    silk_phong_default(&ph, NULL);
-    if (groups & CLI_OPT_LOAD)
-        fprintf(f,
-            "\n"
-            "Mesh loading (MESH - reads standard input; the format is told by the content):\n"
-            "  --scale S            multiply coordinates by S while reading (exact decimal;\n"
-            "                       model coordinates must end up within +-1024)\n"
-            "  --crease DEG         dihedral angle above which an edge is a sharp feature\n"
-            "                       (0..180, default %g)\n"
-            "  --normals auto|compute|file  shading normals: auto (default) the file's\n"
-            "                       where every corner has one, computed otherwise;\n"
-            "                       compute always computed; file the same as auto\n"
-            "  --orient fix|keep    fix (default): wind the triangles consistently and\n"
-            "                       closed surfaces outward; keep: the file's winding\n"
-            "  --visibility auto|brute|gauss  visibility of normals: auto builds the\n"
-            "                       Gaussian-sphere hierarchy at load and uses it where it\n"
-            "                       pays (default); brute tests every normal; gauss always\n"
-            "                       uses the hierarchy\n"
-            "  --arena BYTES        the one memory block silk may use (e.g. 512K, 64M);\n"
-            "                       default: sized from the file and the image, grown if short\n"
-            "  --quiet              no progress line on a terminal\n",
-            cli_fx_to_double(SILK_DEFAULT_CREASE_DEG));
-    if (groups & CLI_OPT_CAMERA)
-        fprintf(f,
-            "Camera (default: the whole model, seen from front-right-above):\n"
-            "  --eye x,y,z          eye position (default: placed so the model fits the view)\n"
-            "  --target x,y,z       point looked at (default: centre of the bounding box)\n"
-            "  --up x,y,z           up direction (default: the up axis)\n"
-            "  --up-axis y|z        the model's up axis (default y; z for Z-up exports, whose\n"
-            "                       front is then -y)\n"
-            "  --yaw DEG            orbit the eye DEG degrees about the up axis through the\n"
-            "                       target, to the viewer's right (the model turns left)\n"
-            "  --pitch DEG          orbit the eye DEG degrees up (-90..90; the elevation stops\n"
-            "                       at straight above or below)\n"
-            "  --fov DEG            perspective, vertical field of view (%g..%g, default %g)\n"
-            "  --ortho H|auto       orthographic, H = half the view height in model units;\n"
-            "                       auto fits the model\n",
-            cli_fx_to_double(SILK_FOV_MIN), cli_fx_to_double(SILK_FOV_MAX), CLI_DEFAULT_FOV);
-    if (groups & (CLI_OPT_FRAME | CLI_OPT_MODE)) fprintf(f, "Frame:\n");
-    if (groups & CLI_OPT_FRAME)
-        fprintf(f,
-            "  --size WxH           image size in pixels, 1..%d each (default %dx%d)\n"
-            "  --format rgb888|rgb565  pixel format silk renders in (default %s)\n",
-            CLI_MAX_SIDE, SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT,
-            SILK_BOARD_FORMAT == SILK_PIX_RGB565 ? "rgb565" : "rgb888");
-    if (groups & CLI_OPT_MODE)
-        fprintf(f,
-            "  --mode flat|smooth|pn|pnL|blend  coarse mesh as it is, smoothed silhouettes\n"
-            "                       (default), PN triangles (pnL: at level L), or\n"
-            "                       silhouetteness blending (Dyken & Reimers); docs/methods.md\n"
-            "  --tolerance PX       silhouette sampling tolerance in pixels, 0.25..4 (%g)\n"
-            "  --level L            pn: segments per triangle side, 1..%u (default %u)\n"
-            "  --pn-normals quadratic|linear  pn: normal patch (default quadratic)\n"
-            "  --beta B             blend: silhouetteness transition, 0..1 (default %g)\n",
-            cli_fx_to_double(ro.tolerance_px), SILK_PN_MAX_LEVEL, (unsigned)ro.level, cli_fx_to_double(ro.blend_beta));
-    if (groups & CLI_OPT_LOOK)
-        fprintf(f,
-            "Look (docs/viewer.md, \"Material and light\"):\n"
-            "  --bg RRGGBB|none     background colour in hex (default %06x); none: a PNG\n"
-            "                       with alpha: the object's coverage of each pixel\n"
-            "  --aa on|off|outline  anti-aliased outlines (flat, smooth, clip and siltex\n"
-            "                       without lines) and creases (flat and smooth;\n"
-            "                       outline: the outlines only) (default on)\n"
-            "  --wire               draw the edges; triangles added by smoothing in red\n"
-            "  --lines over|only    pen-and-ink outlines over the shading or alone: the\n"
-            "                       smoothed silhouette and visible feature curves (smooth),\n"
-            "                       the mesh's silhouette and feature edges (flat), the\n"
-            "                       texture's silhouettes, interior ones too (siltex)\n"
-            "  --lines-polygonal    the coarse mesh's silhouette and feature edges in any\n"
-            "                       mode (pn and blend draw lines only so; alone: --lines over)\n"
-            "  --color RRGGBB       the object's colour (default %06x)\n"
-            "  --ambient A          light everywhere, 0..1 (default %.2f)\n"
-            "  --specular S         strength of the highlights, 0..1 (default %.2f)\n"
-            "  --shininess N        sharpness of the highlights, 1..256 (default %d)\n"
-            "  --light [point:]x,y,z[:RRGGBB]  a white (or RRGGBB) light instead of the\n"
-            "                       default two: directional from direction x,y,z (model\n"
-            "                       axes, towards the light), or with point: at position\n"
-            "                       x,y,z; repeat for up to %d lights\n"
-            "  --texture FILE.png   map the image over the mesh's texture coordinates (an\n"
-            "                       OBJ's material texture, map_Kd, is used without it);\n"
-            "                       --texture checker[:N]: a built-in N x N (256) image of\n"
-            "                       8 x 8 squares\n"
-            "  --texture-format rgb888|rgb565|pal8   how the texels are stored (rgb888;\n"
-            "                       pal8: the image's colours if it has at most 256, else a\n"
-            "                       fixed palette of 252)\n"
-            "  --texture-filter bilinear|nearest  within a mipmap level and between\n"
-            "                       levels (bilinear), or the nearest texel of the nearest\n"
-            "                       level\n"
-            "  --texture-wrap repeat|clamp   beyond the texture's edges (repeat)\n",
-            (unsigned)ro.bg_rgb, (unsigned)v3_to_rgb(ph.mat.color), cli_fx_to_double(ph.mat.ambient),
-            cli_fx_to_double(ph.mat.specular), ph.mat.shininess, SILK_MAX_LIGHTS);
-}
-
-static int parse_fx(const char *opt, const char *s, double lo, double hi, silk_fx *out)
-{
-    double v;
-    if (cli_parse_double(opt, s, lo, hi, &v) != 0) return -1;
-    *out = cli_fx_from_double(v);
-    return 0;
-}
-
-/* --light [point:]x,y,z[:RRGGBB] */
-static int parse_light(const char *s, cli_light *l)
-{
-    char buf[256];
-    if (strlen(s) >= sizeof buf) return cli_fail(-1, "--light is too long");
-    strcpy(buf, s);
-    char *p = buf, *colour;
-    memset(l, 0, sizeof *l);
-    l->rgb = 0xFFFFFF;
-    if (strncmp(p, "point:", 6) == 0) {
-        l->point = 1;
-        p += 6;
-    } else if (strncmp(p, "dir:", 4) == 0) {
-        p += 4;
-    }
-    if ((colour = strchr(p, ':')) != NULL) {
-        *colour++ = 0;
-        if (cli_parse_rgb("--light", colour, &l->rgb)) return -1;
-    }
-    if (cli_parse_vec3("--light", p, CLI_MAX_COORD, l->v)) return -1;
-    if (!l->point && l->v[0] == 0 && l->v[1] == 0 && l->v[2] == 0)
-        return cli_fail(-1, "--light: a direction must not be 0,0,0 (got \"%s\")", s);
-    return 0;
-}
-
-/* The texture options: 1 when arg is one (r: 0, -1 after a bad value's
- * message, -2 without a value), else 0. */
-static int texture_option(cli_scene_opts *o, const char *arg, const char *opt, int argc, char **argv, int *i, int *r)
-{
-    static const char *const opts[] = { "--texture", "--texture-format", "--texture-filter", "--texture-wrap" };
-    int k = 0, c;
-    while (k < 4 && !cli_is(arg, opts[k])) k++;
-    if (k == 4) return 0;
-    const char *v = cli_value(argc, argv, i);
-    if (!v) {
-        *r = -2;
-        return 1;
-    }
-    cli_texture_opts *t = &o->look.texture;
-    *r = 0;
-    if (k == 0) {
-        o->look.texture_path = v;
-    } else if (k == 1) {
-        if (strcmp(v, "rgb888") == 0) t->format = SILK_TEX_RGB888;
-        else if (strcmp(v, "rgb565") == 0) t->format = SILK_TEX_RGB565;
-        else if (strcmp(v, "pal8") == 0) t->format = SILK_TEX_PAL8;
-        else *r = cli_fail(-1, "%s must be rgb888, rgb565 or pal8 (got \"%s\")", opt, v);
-    } else if (k == 2) {
-        if (!(*r = cli_parse_choice(opt, v, "bilinear", "nearest", &c))) t->filter = c ? SILK_TEX_NEAREST : SILK_TEX_BILINEAR;
-    } else if (!(*r = cli_parse_choice(opt, v, "repeat", "clamp", &c))) {
-        t->wrap = c ? SILK_TEX_CLAMP : SILK_TEX_REPEAT;
-    }
-    return 1;
-}
-
-int cli_texture_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc)
-{
-    char name[40];
-    int r = 0;
-    const char *arg = argv[*i];
-    if (!texture_option(o, arg, opt_name(arg, name, sizeof name), argc, argv, i, &r)) return 0;
-    if (r) *rc = CLI_EXIT_USAGE;
-    return 1;
-}
-
-void cli_texture_args_text(const cli_scene_opts *o, char *buf, size_t n)
-{
-    const cli_texture_opts *t = &o->look.texture;
-    static const char *const fmt[] = { "", " --texture-format rgb565", " --texture-format pal8" };
-    snprintf(buf, n, "--texture %s%s%s%s", o->look.texture_path ? o->look.texture_path : "",
-             (unsigned)t->format < 3 ? fmt[t->format] : "", t->filter == SILK_TEX_NEAREST ? " --texture-filter nearest" : "",
-             t->wrap == SILK_TEX_CLAMP ? " --texture-wrap clamp" : "");
-}
-
-int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i)
-{
-    char name[40];
-    const char *arg = argv[*i], *opt = opt_name(arg, name, sizeof name), *v;
-    int r = 0, c;
-    if (!(group_of(arg) & o->groups)) return 0;   /* not this command's: it says "unknown option" */
-#define VALUE() do { if (!(v = cli_value(argc, argv, i))) return -1; } while (0)
-    if (cli_is(arg, "--quiet")) {
-        o->quiet = 1;
-    } else if (cli_is(arg, "--scale")) {
-        VALUE();
-        const char *end;
-        silk_decimal d;
-        int pr = plain_decimal(v) ? silk_decimal_parse(v, &end, &d) : -1;
-        if (pr != 0 || *end || d.mant <= 0)
-            return cli_fail(-1, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
-        o->load.scale = d;
-    } else if (cli_is(arg, "--crease")) {
-        VALUE();
-        r = parse_fx(opt, v, 0, 180, &o->load.crease_deg);
-    } else if (cli_is(arg, "--normals")) {
-        VALUE();
-        if (strcmp(v, "auto") == 0) o->load.normals = SILK_NORMALS_AUTO;
-        else if (strcmp(v, "compute") == 0) o->load.normals = SILK_NORMALS_COMPUTE;
-        else if (strcmp(v, "file") == 0) o->load.normals = SILK_NORMALS_FILE;
-        else r = cli_fail(-1, "%s must be auto, compute or file (got \"%s\")", opt, v);
-    } else if (cli_is(arg, "--orient")) {
-        VALUE();
-        if (!(r = cli_parse_choice(opt, v, "fix", "keep", &c))) o->load.orient = c ? SILK_ORIENT_KEEP : SILK_ORIENT_FIX;
-    } else if (cli_is(arg, "--visibility")) {
-        VALUE();
-        if (strcmp(v, "auto") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_AUTO;
-        else if (strcmp(v, "brute") == 0) o->vis_brute = 1, o->render.visibility = SILK_VIS_BRUTE;
-        else if (strcmp(v, "gauss") == 0) o->vis_brute = 0, o->render.visibility = SILK_VIS_GAUSS;
-        else return cli_fail(-1, "--visibility must be auto, brute or gauss (got \"%s\")", v);
-    } else if (cli_is(arg, "--arena")) {
-        VALUE();
-        r = cli_parse_bytes(opt, v, &o->arena_bytes);
-    } else if (cli_is(arg, "--eye")) {
-        VALUE();
-        r = cli_parse_vec3(opt, v, CLI_MAX_COORD, o->eye);
-        o->have_eye = 1;
-    } else if (cli_is(arg, "--target")) {
-        VALUE();
-        r = cli_parse_vec3(opt, v, CLI_MAX_COORD, o->target);
-        o->have_target = 1;
-    } else if (cli_is(arg, "--up")) {
-        VALUE();
-        r = cli_parse_vec3(opt, v, CLI_MAX_COORD, o->up);
-        if (!r && o->up[0] == 0 && o->up[1] == 0 && o->up[2] == 0)
-            return cli_fail(-1, "--up must not be the zero vector");
-        o->have_up = 1;
-    } else if (cli_is(arg, "--fov")) {
-        VALUE();
-        r = cli_parse_double(opt, v, cli_fx_to_double(SILK_FOV_MIN), cli_fx_to_double(SILK_FOV_MAX), &o->fov);
-        o->ortho = 0;
-    } else if (cli_is(arg, "--ortho")) {
-        VALUE();
-        o->ortho = 1;
-        o->ortho_auto = strcmp(v, "auto") == 0;
-        if (!o->ortho_auto) {
-            r = cli_parse_double(opt, v, 0, CLI_MAX_COORD, &o->ortho_half);
-            if (!r && o->ortho_half < 1.0 / 256)
-                return cli_fail(-1, "--ortho must be a positive half height of at least 1/256, or auto (got %s)", v);
-        }
-    } else if (cli_is(arg, "--size")) {
-        VALUE();
-        r = cli_parse_size(opt, v, &o->width, &o->height);
-    } else if (cli_is(arg, "--format")) {
-        VALUE();
-        if (!(r = cli_parse_choice(opt, v, "rgb888", "rgb565", &c))) o->fmt = c ? SILK_PIX_RGB565 : SILK_PIX_RGB888;
-    } else if (cli_is(arg, "--mode")) {
-        VALUE();
-        uint32_t level;
-        if (silk_mode_parse(v, &o->render.mode, &level) != 0)
-            return cli_fail(-1, "--mode must be flat, smooth, pn, pnL (L 1..%u), blend, clip or siltex (got \"%s\")",
-                            SILK_PN_MAX_LEVEL, v);
-        if (level) o->render.level = level;
-    } else if (cli_is(arg, "--level")) {
-        VALUE();
-        long l;
-        r = cli_parse_long(opt, v, 1, SILK_PN_MAX_LEVEL, &l);
-        if (!r) o->render.level = (uint32_t)l;
-    } else if (cli_is(arg, "--pn-normals")) {
-        VALUE();
-        if (!(r = cli_parse_choice(opt, v, "quadratic", "linear", &c)))
-            o->render.pn_normals = c ? SILK_PN_LINEAR : SILK_PN_QUADRATIC;
-    } else if (cli_is(arg, "--beta")) {
-        VALUE();
-        r = parse_fx(opt, v, 0, 1, &o->render.blend_beta);
-    } else if (cli_is(arg, "--tolerance")) {
-        VALUE();
-        r = parse_fx(opt, v, 0.25, 4, &o->render.tolerance_px);
-    } else if (cli_is(arg, "--bg")) {
-        VALUE();
-        o->bg_none = strcmp(v, "none") == 0;
-        if (!o->bg_none) r = cli_parse_rgb(opt, v, &o->render.bg_rgb);
-    } else if (cli_is(arg, "--aa")) {
-        VALUE();
-        if (strcmp(v, "outline") == 0) o->render.aa = 2;   /* what a board built with SILK_AA_CREASES 0 draws */
-        else if (strcmp(v, "on") == 0 || strcmp(v, "off") == 0) o->render.aa = strcmp(v, "on") == 0;
-        else r = cli_fail(-1, "%s must be on, off or outline (got \"%s\")", opt, v);
-    } else if (strcmp(arg, "--wire") == 0) {
-        o->render.wire = 1;
-    } else if (cli_is(arg, "--lines")) {
-        VALUE();
-        if (!(r = cli_parse_choice(opt, v, "over", "only", &c))) o->render.lines = c ? SILK_LINES_ONLY : SILK_LINES_OVER;
-    } else if (strcmp(arg, "--lines-polygonal") == 0) {
-        o->render.lines_polygonal = 1;
-        if (!o->render.lines) o->render.lines = SILK_LINES_OVER;
-    } else if (cli_is(arg, "--yaw")) {
-        VALUE();
-        r = cli_parse_double(opt, v, -360, 360, &o->yaw);
-    } else if (cli_is(arg, "--pitch")) {
-        VALUE();
-        r = cli_parse_double(opt, v, -90, 90, &o->pitch);
-    } else if (cli_is(arg, "--up-axis")) {
-        VALUE();
-        if (!(r = cli_parse_choice(opt, v, "y", "z", &c))) o->up_axis_z = c;
-    } else if (cli_is(arg, "--color")) {
-        VALUE();
-        r = cli_parse_rgb(opt, v, &o->look.color);
-        o->look.have_color = 1;
-    } else if (cli_is(arg, "--ambient")) {
-        VALUE();
-        r = cli_parse_double(opt, v, 0, 1, &o->look.ambient);
-        o->look.have_ambient = 1;
-    } else if (cli_is(arg, "--specular")) {
-        VALUE();
-        r = cli_parse_double(opt, v, 0, 1, &o->look.specular);
-        o->look.have_specular = 1;
-    } else if (cli_is(arg, "--shininess")) {
-        VALUE();
-        long n;
-        r = cli_parse_long(opt, v, 1, 256, &n);
-        o->look.shininess = (int)n;
-    } else if (texture_option(o, arg, opt, argc, argv, i, &r)) {
-        if (r == -2) return -1;
-    } else if (cli_is(arg, "--light")) {
-        VALUE();
-        if (o->look.nlights == SILK_MAX_LIGHTS) return cli_fail(-1, "--light: at most %d lights", SILK_MAX_LIGHTS);
-        r = parse_light(v, &o->look.light[o->look.nlights]);
-        o->look.nlights++;
-    } else {
-        return 0;
-    }
-#undef VALUE
-    return r ? -1 : 1;
 }
 
 /* ---- camera --------------------------------------------------------------------- */
@@ -729,11 +344,25 @@ void cli_up_axis(const cli_scene_opts *o, double up[3])
     model_frame(o, up, F, R);
 }
 
-int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
+/* The largest distance of a vertex of m from c, 5% to spare. */
+static double reach_of(const silk_mesh *m, const double c[3])
+{
+    double r2 = 0;
+    for (uint32_t i = 0; i < m->nverts; i++) {
+        double d[3] = { cli_fx_to_double(m->pos[i].x) - c[0], cli_fx_to_double(m->pos[i].y) - c[1],
+                        cli_fx_to_double(m->pos[i].z) - c[2] };
+        r2 = fmax(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    return 1.05 * sqrt(r2);
+}
+
+int cli_camera(const cli_scene_opts *o, const silk_mesh *m, const silk_mesh *also, silk_camera *cam)
 {
     const double deg = CLI_DEG;
     double c[3];
     double r = cli_mesh_radius(m, c);
+    /* near and far bracket also's vertices too */
+    double reach = also ? fmax(r, reach_of(also, c)) : r;
     double aspect = (double)o->width / o->height;
     double U[3], F[3], R[3];
     model_frame(o, U, F, R);
@@ -780,11 +409,11 @@ int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam)
                             "+-%g; give --eye or a wider --fov",
                             o->width, o->height, o->fov, CLI_MAX_COORD);
 
-    /* Everything visible lies within the sphere around c; no closer than a
+    /* Everything visible lies within reach of c; no closer than a
      * thousandth of the far distance, so depth keeps its resolution. */
     double ec[3] = { c[0] - eye[0], c[1] - eye[1], c[2] - eye[2] };
-    double zfar = (len3(ec) + r) * 1.01;
-    double znear = len3(ec) - r * 1.01;
+    double zfar = (len3(ec) + reach) * 1.01;
+    double znear = len3(ec) - reach * 1.01;
     if (znear < zfar / 1000) znear = zfar / 1000;
     if (znear < 1.0 / 256) znear = 1.0 / 256;
     if (znear > 4096) znear = 4096;   /* the projection keeps 2 znear in Q16.16 */
@@ -838,7 +467,8 @@ static size_t raster_bytes(const cli_scene_opts *o)
     size_t px = (size_t)o->width * (size_t)o->height;
     /* siltex's anti-aliased outline draws the hull's front faces into a
      * frame of its own: RGB888, depth and a stencil bit (src/render.c) */
-    size_t outline = o->render.mode == SILK_MODE_SILTEX && o->render.aa && o->render.lines == SILK_LINES_NONE
+    int siltex = o->render.mode == SILK_MODE_SILTEX || (o->modes >> SILK_MODE_SILTEX & 1u);
+    size_t outline = siltex && o->render.aa && o->render.lines == SILK_LINES_NONE
                          ? px * (3 + sizeof(uint32_t)) + px / 8 + 64 * (size_t)o->width
                          : 0;
     return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + (o->bg_none ? px : 0) + outline + 64;
@@ -963,13 +593,57 @@ int cli_siltex(const uint8_t *file, size_t len, const char *name, silk_siltex *o
     return 0;
 }
 
+/* The hull (with its hierarchy unless brute visibility), the map and the
+ * texture of the prepared model in s->file that the modes need: needed
+ * ones are an error when missing, wanted ones (parts_if_any) not. */
+static int load_parts(cli_scene *s, const cli_scene_opts *o, const char *name, int clip, int siltex)
+{
+    int any = o->parts_if_any && silk_is_model(s->file, s->file_len);
+    if (!clip && !siltex && !any) return 0;
+    silk_error err;
+    silk_load_opts lo = o->load;
+    lo.part = SILK_PART_HULL;
+    int rc = 0;
+    if (clip && !silk_is_model(s->file, s->file_len)) return cli_silmap(s->file, s->file_len, name, &s->silmap);
+    if (siltex && !silk_is_model(s->file, s->file_len)) return cli_siltex(s->file, s->file_len, name, &s->siltex);
+    silk_status st = silk_load_model(s->file, s->file_len, name, &lo, &s->arena, &s->hull, &err);
+    if (st == SILK_OK && !o->vis_brute) st = silk_vis_build(&s->hull, NULL, &s->arena, &err);
+    if (st == SILK_ERR_NOMEM) return cli_fail(CLI_EXIT_INPUT, "%s (the arena has %zu bytes; raise --arena)", err.msg,
+                                              s->arena.size);
+    if (st != SILK_OK) return clip || siltex ? cli_fail(CLI_EXIT_INPUT, "%s", err.msg) : 0;
+    s->have_hull = 1;
+    silk_model m;
+    silk_model_section sec;
+    int has_map = 1, has_tex = 1;
+    if (silk_model_open(s->file, s->file_len, name, &m, &err) == SILK_OK) {
+        has_map = silk_model_find(&m, SILK_SECTION_SMAP, &sec);
+        has_tex = silk_model_find(&m, SILK_SECTION_STEX, &sec);
+    }
+    if (clip || (any && has_map)) {
+        rc = cli_silmap(s->file, s->file_len, name, &s->silmap);
+        s->have_silmap = rc == 0;
+        if (rc && clip) return rc;
+    }
+    if (siltex || (any && has_tex)) {
+        rc = cli_siltex(s->file, s->file_len, name, &s->siltex);
+        s->have_siltex = rc == 0;
+        if (rc && siltex) return rc;
+    }
+    return 0;
+}
+
+static int wants(const cli_scene_opts *o, silk_mode m) { return o->render.mode == m || (o->modes >> m & 1u); }
+static int hull_mode(silk_mode m) { return m == SILK_MODE_CLIP || m == SILK_MODE_SILTEX; }
+
 int cli_scene_load(cli_scene *s, cli_scene_opts *o)
 {
     memset(s, 0, sizeof *s);
     cli_mesh lm;
+    const char *name = cli_input_name(o->mesh_path);
+    int clip = wants(o, SILK_MODE_CLIP), siltex = wants(o, SILK_MODE_SILTEX);
     silk_load_opts lo = o->load;
-    int clip = o->render.mode == SILK_MODE_CLIP, siltex = o->render.mode == SILK_MODE_SILTEX;
-    if (clip || siltex) lo.part = SILK_PART_HULL;
+    int hull_only = o->only_drawn && hull_mode(o->render.mode);
+    if (hull_only) lo.part = SILK_PART_HULL;
     int rc = cli_mesh_load(&lm, o->mesh_path, &lo, !o->vis_brute, o->arena_bytes, raster_bytes(o),
                            o->arena_doublings, o->quiet);
     /* the scene takes over the file and the arena */
@@ -978,17 +652,21 @@ int cli_scene_load(cli_scene *s, cli_scene_opts *o)
     s->arena_buf = lm.buf;
     s->arena = lm.arena;
     s->mesh = lm.mesh;
-    if (!rc && clip) rc = cli_silmap(s->file, s->file_len, cli_input_name(o->mesh_path), &s->silmap);
+    if (!rc && hull_only) {
+        /* the one mesh is the hull: only the map or texture besides */
+        if (clip) rc = cli_silmap(s->file, s->file_len, name, &s->silmap);
+        if (siltex) rc = cli_siltex(s->file, s->file_len, name, &s->siltex);
+        s->have_silmap = clip && !rc;
+        s->have_siltex = siltex && !rc;
+    } else if (!rc) {
+        rc = load_parts(s, o, name, clip, siltex);
+    }
     if (rc) return rc;
-    if (clip) o->render.silmap = &s->silmap;
-    if (!rc && siltex) rc = cli_siltex(s->file, s->file_len, cli_input_name(o->mesh_path), &s->siltex);
-    if (rc) return rc;
-    if (siltex) o->render.siltex = &s->siltex;
     s->load_bytes = s->arena.bottom;
-    if (o->orient_note) cli_orient_note(cli_input_name(o->mesh_path), &s->mesh);
+    if (o->orient_note) cli_orient_note(name, &s->mesh);
 
     silk_error err;
-    rc = cli_camera(o, &s->mesh, &s->cam);
+    rc = cli_scene_camera(s, o, &s->cam);
     if (rc) return rc;
     if (silk_view_init(&s->view, &s->cam, &err) != SILK_OK)
         return cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
@@ -1008,8 +686,36 @@ int cli_scene_load(cli_scene *s, cli_scene_opts *o)
     rc = cli_material_load(&s->material, o->mesh_path, s->file, s->file_len, &s->mesh, o->look.texture_path,
                            &o->look.texture, o->quiet);
     if (rc) return rc;
-    cli_scene_phong(s, o, &s->view, &s->phong);
+    cli_scene_phong(s, o, o->render.mode, &s->view, &s->phong);
     silk_hal_phong(&s->hal, &s->phong);
+    return 0;
+}
+
+const silk_mesh *cli_scene_mesh(const cli_scene *s, silk_mode mode)
+{
+    return hull_mode(mode) && s->have_hull ? &s->hull : &s->mesh;
+}
+
+void cli_scene_render_opts(const cli_scene *s, silk_render_opts *ro)
+{
+    ro->silmap = ro->mode == SILK_MODE_CLIP && s->have_silmap ? &s->silmap : NULL;
+    ro->siltex = ro->mode == SILK_MODE_SILTEX && s->have_siltex ? &s->siltex : NULL;
+}
+
+int cli_scene_camera(const cli_scene *s, const cli_scene_opts *o, silk_camera *cam)
+{
+    return cli_camera(o, &s->mesh, s->have_hull ? &s->hull : NULL, cam);
+}
+
+int cli_mode_check(const char *cmd, silk_mode mode, const silk_render_opts *ro)
+{
+    if (!ro->lines) return 0;
+    if (mode == SILK_MODE_CLIP)
+        return cli_fail(CLI_EXIT_USAGE, "%s: clip mode draws no lines (its outline is the silhouette map's); leave out "
+                        "--lines and --lines-polygonal", cmd);
+    if ((mode == SILK_MODE_PN || mode == SILK_MODE_BLEND) && !ro->lines_polygonal)
+        return cli_fail(CLI_EXIT_USAGE, "%s: %s mode draws only the coarse mesh's outline: --lines-polygonal instead "
+                        "of --lines", cmd, silk_mode_name(mode));
     return 0;
 }
 
@@ -1028,7 +734,7 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
     if (l->have_color) p->mat.color = rgb_to_v3(l->color);
     if (l->have_ambient) p->mat.ambient = cli_fx_from_double(l->ambient);
     if (l->have_specular) p->mat.specular = cli_fx_from_double(l->specular);
-    if (l->shininess) p->mat.shininess = l->shininess;
+    if (l->have_shininess) p->mat.shininess = l->shininess;
     if (l->nlights) {
         p->nlights = l->nlights;
         for (int i = 0; i < l->nlights; i++) {
@@ -1042,12 +748,14 @@ void cli_phong(const cli_scene_opts *o, const silk_view *view, silk_phong *p)
     }
 }
 
-void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_view *view, silk_phong *p)
+void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, silk_mode mode, const silk_view *view,
+                     silk_phong *p)
 {
     cli_phong(o, view, p);
-    cli_material_apply(&s->material, &s->mesh, o->look.have_color, o->look.have_specular, o->look.shininess != 0, p);
+    cli_material_apply(&s->material, cli_scene_mesh(s, mode), o->look.have_color, o->look.have_specular,
+                       o->look.have_shininess, p);
     /* a silhouette texture's colour map, like a texture, is the colour (unless --color) */
-    if (o->render.mode == SILK_MODE_SILTEX && s->siltex.color && !o->look.have_color)
+    if (mode == SILK_MODE_SILTEX && s->have_siltex && s->siltex.color && !o->look.have_color)
         p->mat.color = silk_v3(SILK_FX_ONE, SILK_FX_ONE, SILK_FX_ONE);
 }
 

@@ -1,8 +1,9 @@
 /*
  * cli.h - what the subcommands of the silk tool share: one-line errors with
  * the exit codes (2: usage, 1: input), strict number parsing, and the scene
- * options of `silk render` and `silk info` (load options, camera, frame),
- * including the default camera that frames the model.
+ * options of the commands that load and draw a mesh (load options, camera,
+ * frame, mode, look; their option table is scene_opts.c, the parser
+ * opt.h), including the default camera that frames the model.
  *
  * Tools run on the host and may use double; values reach the core as Q16.16
  * only after a range check.
@@ -14,9 +15,11 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "silk/silk.h"
-#include "src/silmap_interp.h"
+#include "silk/silmap.h"
 #include "silk/siltex.h"
+#include "host.h"
 #include "material.h"
+#include "opt.h"
 #include "platform/platform.h"
 
 #define CLI_EXIT_INPUT 1      /* a file, a mesh or a render failed */
@@ -40,9 +43,9 @@
 /* Files from this size on show a progress line while they load. */
 #define CLI_PROGRESS_FILE_BYTES ((size_t)4 << 20)
 
-/* The tools' one pi, and degrees to radians. */
-#define CLI_PI 3.14159265358979323846
-#define CLI_DEG (CLI_PI / 180)
+/* The tools' one pi, and degrees to radians (host.h). */
+#define CLI_PI HOST_PI
+#define CLI_DEG HOST_DEG
 
 /* The default camera: vertical field of view, and the direction from the
  * model towards the eye, 30 degrees to the right of +z and 20 degrees up. */
@@ -61,13 +64,21 @@ int cli_fail(int code, const char *fmt, ...)
  * return -1.  Numbers must be complete ("12x" is not 12), finite and in
  * [lo, hi]. */
 int cli_parse_long(const char *opt, const char *s, long lo, long hi, long *out);
-/* s as one of two words: *out 0 for a, 1 for b ("OPT must be A or B"). */
-int cli_parse_choice(const char *opt, const char *s, const char *a, const char *b, int *out);
 int cli_parse_double(const char *opt, const char *s, double lo, double hi, double *out);
 int cli_parse_vec3(const char *opt, const char *s, double lim, double out[3]);
 int cli_parse_size(const char *opt, const char *s, int *w, int *h);
 int cli_parse_rgb(const char *opt, const char *s, uint32_t *rgb);
 int cli_parse_bytes(const char *opt, const char *s, size_t *out);
+/* An exact positive decimal number (--scale). */
+int cli_parse_decimal(const char *opt, const char *s, silk_decimal *out);
+
+/* Where a command writes: path's directory must exist ("OPT PATH: the
+ * directory D does not exist"); a directory to write into must be one, or
+ * be one that can be made in a directory that exists (cli_make_dir makes
+ * it).  0, or -1 after the error. */
+int cli_check_output_dir(const char *opt, const char *path);
+int cli_check_dir(const char *opt, const char *path);
+int cli_make_dir(const char *path);
 
 /* A list of render modes (--modes flat,smooth,pn3): each name as
  * silk_mode_parse reads it (level 0 where the name gives none), at most
@@ -80,20 +91,15 @@ typedef struct cli_mode {
 } cli_mode;
 int cli_parse_modes(const char *opt, const char *list, cli_mode *out, int max, int *n);
 
-/* Argument walking with "--opt value" and "--opt=value".  cli_value returns
- * the value of the option at argv[*i] and advances *i, or prints "OPT needs
- * a value" and returns NULL.  cli_is(arg, name) matches "name" and "name=..". */
-int cli_is(const char *arg, const char *name);
-const char *cli_value(int argc, char **argv, int *i);
-
-/* The groups of scene options; a command takes those it uses (the groups
- * field of cli_scene_opts) and refuses the others as unknown. */
-#define CLI_OPT_LOAD 1u        /* --scale --crease --normals --visibility --arena --quiet */
+/* The parts of the scene options; a command takes those it uses (its
+ * CLI_SCENE_SET) and its parser refuses the others as unknown. */
+#define CLI_OPT_LOAD 1u        /* --scale --crease --normals --orient --visibility --arena --quiet */
 #define CLI_OPT_CAMERA 2u      /* --eye --target --up --up-axis --yaw --pitch --fov --ortho */
 #define CLI_OPT_FRAME 4u       /* --size --format */
 #define CLI_OPT_MODE 8u        /* --mode --tolerance --level --pn-normals --beta */
-#define CLI_OPT_LOOK 16u       /* --bg --wire --lines --lines-polygonal, material and lights */
-#define CLI_OPT_ALL 31u
+#define CLI_OPT_LOOK 16u       /* --bg --aa --wire --lines --lines-polygonal, material and lights */
+#define CLI_OPT_TEXTURE 32u    /* --texture --texture-format --texture-filter --texture-wrap */
+#define CLI_OPT_ALL 63u
 
 /* --light [point:]x,y,z[:RRGGBB] */
 typedef struct cli_light {
@@ -104,10 +110,10 @@ typedef struct cli_light {
 
 /* Material and lights; what is not given keeps silk_phong_default's value. */
 typedef struct cli_look {
-    int have_color, have_ambient, have_specular;
+    int have_color, have_ambient, have_specular, have_shininess;
     uint32_t color;
     double ambient, specular;
-    int shininess;             /* 0: the default */
+    int shininess;
     int nlights;               /* 0: the default two lights */
     cli_light light[SILK_MAX_LIGHTS];
     const char *texture_path;  /* --texture: NULL for the OBJ material's map_Kd, if any */
@@ -118,7 +124,6 @@ typedef struct cli_look {
  * besides their own few options. */
 typedef struct cli_scene_opts {
     const char *mesh_path;     /* "-": standard input */
-    unsigned groups;           /* CLI_OPT_*: the options this command takes */
     silk_load_opts load;
     int width, height;
     silk_pixfmt fmt;
@@ -138,18 +143,27 @@ typedef struct cli_scene_opts {
     size_t arena_bytes;        /* 0: from the file size */
     int arena_doublings;       /* without --arena: start from the estimate times 2^this */
     int orient_note;           /* 1 (default): say on stderr when the load turned triangles round */
+    /* Besides render.mode, the modes the command may draw (bit 1 << mode:
+     * a --modes list): a prepared model's hull, map and texture are loaded
+     * for clip and siltex among them.  parts_if_any: load them whenever the
+     * model has them, without asking (the viewer's keys 5 and 6). */
+    unsigned modes;
+    int parts_if_any;
+    int only_drawn;            /* load only the mesh render.mode draws (a device's RAM: silk profile) */
 } cli_scene_opts;
 
 void cli_scene_opts_default(cli_scene_opts *o);
 
-/* Consume argv[*i] if it is a scene option (advancing *i past its value):
- * returns 1 if consumed, 0 if not a scene option, -1 after printing an
- * error. */
-int cli_scene_option(cli_scene_opts *o, int argc, char **argv, int *i);
-
-/* The help text of the scene options in groups (CLI_OPT_*), for the
- * subcommands' --help. */
-void cli_print_scene_help(FILE *f, unsigned groups);
+/* The scene options' table (scene_opts.c) as an option set of a command
+ * (opt.h) that takes the parts in mask. */
+extern const cli_opt cli_scene_rows[];
+void cli_scene_defaults(void *base);
+int cli_scene_finish(void *base);
+#define CLI_SCENE_SET(mask) { cli_scene_rows, (mask), sizeof(cli_scene_opts), cli_scene_defaults, cli_scene_finish }
+/* --bg RRGGBB|none into a cli_scene_opts (for a command's own --bg row). */
+int cli_parse_bg(const cli_opt *r, const char *v, void *base);
+/* The texture options as a command line gives them, for a header to record. */
+void cli_texture_args_text(const cli_scene_opts *o, char *buf, size_t n);
 
 /* The Phong stages for a view: silk_phong_default, then o's material and
  * lights. */
@@ -198,15 +212,21 @@ typedef struct cli_scene {
     size_t file_len;
     void *arena_buf;
     silk_arena arena;
+    /* The model's mesh - a prepared model's coarse mesh, or its hull when
+     * it holds no other: what flat, smooth, pn and blend draw, and what the
+     * default camera frames in every mode, so that the view stays put when
+     * the mode changes. */
     silk_mesh mesh;
+    silk_mesh hull;            /* a prepared model's outer hull, for clip and siltex (have_hull) */
+    int have_hull, have_silmap, have_siltex;
     silk_camera cam;
     silk_view view;
     silk_target target;
     silk_phong phong;
     silk_hal hal;
-    size_t load_bytes;         /* arena bottom after loading the mesh */
-    silk_silmap silmap;        /* clip mode: the model's silhouette map, in file */
-    silk_siltex siltex;        /* siltex mode: the model's silhouette texture, in file */
+    size_t load_bytes;         /* arena bottom after loading the meshes */
+    silk_silmap silmap;        /* clip mode: the model's silhouette map, in file (have_silmap) */
+    silk_siltex siltex;        /* siltex mode: the model's silhouette texture, in file (have_siltex) */
     cli_material material;     /* the OBJ material, the texture */
 } cli_scene;
 
@@ -215,28 +235,42 @@ typedef struct cli_scene {
 void cli_orient_note(const char *path, const silk_mesh *m);
 
 /* Read and load the mesh (with the orientation note unless o->orient_note
- * is 0), allocate the arena, set up the camera, the target (colour and
- * depth from the arena, purpose RASTER) and the Phong stages.  In clip
- * mode the mesh is the model's hull and o->render.silmap points at the
- * scene's silhouette map, in siltex mode o->render.siltex at its
- * silhouette texture.
- * Returns 0, or an exit code after printing the error; cli_scene_free
- * releases everything either way. */
+ * is 0) and, for clip and siltex mode, the prepared model's hull with its
+ * silhouette map or texture, allocate the arena, set up the camera, the
+ * target (colour and depth from the arena, purpose RASTER) and the Phong
+ * stages for o->render.mode.  Returns 0, or an exit code after printing
+ * the error; cli_scene_free releases everything either way. */
 int cli_scene_load(cli_scene *s, cli_scene_opts *o);
+
+/* What a frame in mode draws: the hull for clip and siltex, else the mesh;
+ * and the render options for it (ro's silhouette map or texture pointed at
+ * the scene's). */
+const silk_mesh *cli_scene_mesh(const cli_scene *s, silk_mode mode);
+void cli_scene_render_opts(const cli_scene *s, silk_render_opts *ro);
+/* The camera for o in the scene: cli_camera of its mesh, near and far
+ * bracketing the hull too. */
+int cli_scene_camera(const cli_scene *s, const cli_scene_opts *o, silk_camera *cam);
+
+/* The usage error, in the command's words, for render options a mode does
+ * not draw (lines in pn, blend or clip mode): 0 or CLI_EXIT_USAGE. */
+int cli_mode_check(const char *cmd, silk_mode mode, const silk_render_opts *ro);
 
 /* The silhouette map of the prepared model in file (clip mode); 0 or an
  * exit code after a one-line error. */
 int cli_silmap(const uint8_t *file, size_t len, const char *name, silk_silmap *out);
 /* The same for the silhouette texture (siltex mode). */
 int cli_siltex(const uint8_t *file, size_t len, const char *name, silk_siltex *out);
-/* cli_phong, then the scene's material, texture and vertex colours. */
-void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, const silk_view *view, silk_phong *p);
+/* cli_phong, then the scene's material, texture and vertex colours (in
+ * siltex mode the texture's colour map). */
+void cli_scene_phong(const cli_scene *s, const cli_scene_opts *o, silk_mode mode, const silk_view *view,
+                     silk_phong *p);
 void cli_scene_free(cli_scene *s);
 
-/* The camera for o and the loaded mesh: the options where given, the default
- * framing (docs/architecture.md, "Default camera") where not.  Returns 0 or
- * an exit code after printing the error. */
-int cli_camera(const cli_scene_opts *o, const silk_mesh *m, silk_camera *cam);
+/* The camera for o and the loaded mesh m: the options where given, the
+ * default framing of m (docs/architecture.md, "Default camera") where not;
+ * near and far bracket also's vertices too (NULL: none).  Returns 0 or an
+ * exit code after printing the error. */
+int cli_camera(const cli_scene_opts *o, const silk_mesh *m, const silk_mesh *also, silk_camera *cam);
 
 /* The orbit about the target in o's model frame (--up-axis): the direction
  * from the target towards the eye at azimuth az (from the front towards the
@@ -255,25 +289,10 @@ silk_fx cli_fx_from_double(double v);
  * that holds every vertex, 5% to spare; 1 for a mesh of one point. */
 double cli_mesh_radius(const silk_mesh *m, double c[3]);
 
-/* The head of every command's option loop.  cli_help: whether arg is
- * --help or -h, after printing help(stdout) (the command then exits 0).
- * cli_scene_arg: whether argv[*i] was a scene option of o (consumed; *rc
- * set to CLI_EXIT_USAGE when its value was bad).  cli_unknown_option: the
- * usage error for an option no one took. */
-int cli_help(const char *arg, void (*help)(FILE *));
-int cli_scene_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
-/* --texture FILE, --texture-format, --texture-filter, --texture-wrap into
- * o->look (for commands without the look options): 1 when argv[*i] was one
- * of them (*rc set to CLI_EXIT_USAGE when its value was bad), else 0. */
-int cli_texture_arg(cli_scene_opts *o, int argc, char **argv, int *i, int *rc);
-/* Those options as a command line gives them, for a header to record. */
-void cli_texture_args_text(const cli_scene_opts *o, char *buf, size_t n);
-int cli_unknown_option(const char *cmd, const char *arg);
-
-/* An argument of `silk CMD` that no option took: the one mesh (*mesh_path),
- * or the usage error of an unknown option or a second mesh.  Returns 0 or
- * CLI_EXIT_USAGE. */
-int cli_mesh_arg(const char *cmd, const char *arg, const char **mesh_path);
+/* The arguments of `silk CMD` that no option took, when the command takes
+ * one mesh: *mesh_path, or the usage error for none ("CMD: no mesh given
+ * (USAGE)") or a second.  Returns 0 or CLI_EXIT_USAGE. */
+int cli_one_mesh(const char *cmd, int npos, const char *const *pos, const char *usage, const char **mesh_path);
 
 /* s as a JSON string, quoted and escaped. */
 void cli_json_string(FILE *f, const char *s);

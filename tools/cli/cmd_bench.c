@@ -10,7 +10,7 @@
  *
  * Output: one line per mesh, mode and projection on stdout, and on request
  * a CSV file, the same rows as JSON, a Markdown table and a bar chart
- * (tools/image/plot.c).  `silk bench --visibility` is the visibility benchmark
+ * (tools/image/plot.c).  `silk bench --visibility-pass` is the visibility benchmark
  * (tools/cli/bench_visibility.c).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -47,6 +47,13 @@ typedef struct bench_cfg {
     uint32_t bg;
     const char *csv, *json, *md, *plot, *plot_bytes, *dump;
     int quiet;
+    int visibility;            /* --visibility-pass: the other benchmark (bench_visibility.c) */
+    int grid;                  /* --grid: the robustness grid (bench_grid.c) */
+    /* The meshes in the order given: coarse[i] and, for a --pair, fine[i]
+     * (NULL without) and the pair's own modes; argc of room each. */
+    int n;
+    const char **coarse, **fine, **pair_modes;
+    char **pair_buf;
 } bench_cfg;
 
 /* One row of the table: a mesh, a mode (or the fine reference), a projection. */
@@ -86,47 +93,6 @@ typedef struct loaded {
     silk_siltex siltex;
     struct loaded *hull;       /* clip and siltex mode's mesh, map and texture, when a mode needs them */
 } loaded;
-
-static void help(FILE *f)
-{
-    fprintf(f,
-            "usage: silk bench [options] MESH... [--pair COARSE:FINE]...\n"
-            "       silk bench --visibility MESH...   (visibility benchmark, see its --help)\n"
-            "       silk bench --grid COARSE[:FINE]...   (smooth outlines over a grid of views, see its --help)\n"
-            "\n"
-            "Render every mesh in every mode from N views around it, orthographic and\n"
-            "perspective, and report per mode: triangles in, triangles drawn per frame,\n"
-            "milliseconds per frame, and - for a --pair - the silhouette error against\n"
-            "the fine mesh drawn flat from the same camera (as silk diff measures it).\n"
-            "One line per mesh, mode and projection:\n"
-            "  bench MESH MODE PROJ triangles=N drawn=N ms=X fps=X error_mean_px=X error_max_px=X arena_bytes=N bytes=N\n"
-            "docs/measurements.md defines the camera path and every number.\n"
-            "\n"
-            "options:\n"
-            "  --pair COARSE:FINE  a coarse mesh and its fine reference (repeatable);\n"
-            "                      COARSE:FINE=MODES draws that pair in those of --modes only\n"
-            "  --views N           views per projection along the camera path [12]\n"
-            "  --size WxH          image size [640x480]\n"
-            "  --modes LIST        comma-separated: flat, smooth, blend, clip, siltex, pnL (PN triangles\n"
-            "                      at level L = 1..%u) [flat,smooth,blend,pn2,pn3]\n"
-            "  --projection ortho|perspective|both   [both]\n"
-            "  --reps N            timed renders per view, the fastest kept [3]\n"
-            "  --tolerance PX      smooth and blend sampling tolerance, 0.25..4 [library default]\n"
-            "  --bg RRGGBB         background colour; the object is every other pixel [ffffff]\n"
-            "  --csv FILE          the table as CSV\n"
-            "  --json FILE         the same rows as a JSON array (docs/formats.md); - for\n"
-            "                      standard output, which then holds only the JSON\n"
-            "  --quiet             no progress line on a terminal\n"
-            "  --md FILE           the table as Markdown, with smooth mode's goals checked\n"
-            "  --plot FILE.png     bar chart of frame time and silhouette error per mode\n"
-            "  --plot-bytes FILE.png  silhouette error against the model's bytes in flash,\n"
-            "                      a line per mode through the pairs' coarse meshes\n"
-            "  --dump DIR          every rendered view as DIR/MESH-PROJ-VIEW-MODE.png\n"
-            "\n"
-            "example:\n"
-            "  silk bench --pair bunny-500.obj:bunny-fine.obj --views 8 --md out.md\n",
-            SILK_PN_MAX_LEVEL);
-}
 
 static double now_ms(void)
 {
@@ -189,6 +155,131 @@ static int pair_mode_mask(const char *list, const bench_cfg *c, uint32_t *mask)
     return 0;
 }
 
+/* ---- the command's options ---------------------------------------------------------- */
+
+static int opt_modes(const cli_opt *o, const char *v, void *base)
+{
+    (void)o;
+    return parse_modes(v, base);
+}
+
+/* --pair COARSE:FINE[=MODES] */
+static int opt_pair(const cli_opt *o, const char *v, void *base)
+{
+    (void)o;
+    bench_cfg *c = base;
+    char *buf = malloc(strlen(v) + 1);
+    if (!buf) return cli_fail(CLI_EXIT_INPUT, "out of memory");
+    strcpy(buf, v);
+    c->pair_buf[c->n] = buf;
+    char *eq = strrchr(buf, '=');   /* the pair's own modes */
+    if (eq) *eq = 0;
+    char *colon = strrchr(buf, ':');
+    if (!colon || colon == buf || !colon[1] || (eq && !eq[1]))
+        return cli_fail(-1, "--pair must be COARSE:FINE or COARSE:FINE=MODES (got \"%s\")", v);
+    *colon = 0;
+    c->coarse[c->n] = buf;
+    c->pair_modes[c->n] = eq ? eq + 1 : NULL;
+    c->fine[c->n++] = colon + 1;
+    return 0;
+}
+
+static int bench_positional(const char *arg, void *base)
+{
+    bench_cfg *c = base;
+    c->coarse[c->n++] = arg;
+    return 0;
+}
+
+static int opt_plot(const cli_opt *o, const char *v, void *base)
+{
+    if (silk_image_format_for_path(v) != SILK_IMAGE_PNG)
+        return cli_fail(-1, "%s: %s: the chart is a PNG (use .png)", o->name, v);
+    if (cli_check_output_dir(o->name, v)) return CLI_EXIT_INPUT;
+    *(const char **)((char *)base + o->off) = v;
+    return 0;
+}
+
+static void bench_defaults(void *base)
+{
+    bench_cfg *c = base;
+    memset(c, 0, sizeof *c);
+    c->views = 12;
+    c->reps = 3;
+    c->width = 640;
+    c->height = 480;
+    c->proj_mask = 3;
+    c->bg = 0xFFFFFF;
+    parse_modes("flat,smooth,blend,pn2,pn3", c);
+}
+
+#define F(member) CLI_FIELD(bench_cfg, member)
+static const int proj_v[] = { 1 << PROJ_ORTHO, 1 << PROJ_PERSP, 3, 1 << PROJ_ORTHO };
+static const cli_opt bench_rows[] = {
+    { .name = "--pair", .group = "options", .kind = CLI_CUSTOM, .meta = "COARSE:FINE", .parse = opt_pair,
+      .help = "a coarse mesh and its fine reference (repeatable); COARSE:FINE=MODES draws that pair in those of "
+              "--modes only" },
+    { .name = "--views", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = MAX_VIEWS, F(views),
+      .help = "views per projection along the camera path (%R, default %D)" },
+    { .name = "--size", .kind = CLI_SIZE, .meta = "WxH", .lo = 1, .hi = CLI_MAX_SIDE, F(width),
+      .off2 = offsetof(bench_cfg, height), .help = "image size (default %D)" },
+    { .name = "--modes", .kind = CLI_CUSTOM, .meta = "LIST", .parse = opt_modes,
+      .help = "comma-separated: flat, smooth, blend, clip, siltex, pnL (PN triangles at level L, as --level of "
+              "silk render); MODE-noaa: without anti-aliased outlines (default flat,smooth,blend,pn2,pn3)" },
+    { .name = "--projection", .kind = CLI_CHOICE, .choices = "ortho|perspective|both|parallel", .values = proj_v,
+      F(proj_mask), .help = "(default both; parallel: the same as ortho)" },
+    { .name = "--reps", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 1000, F(reps),
+      .help = "timed renders per view, the fastest kept (%R, default %D)" },
+    { .name = "--tolerance", .kind = CLI_FX, .meta = "PX", .lo = 0.25, .hi = 4, F(tolerance),
+      .help = "smooth and blend sampling tolerance (%R; default: the library's)" },
+    { .name = "--bg", .kind = CLI_RGB, .meta = "RRGGBB", F(bg),
+      .help = "background colour; the object is every other pixel (default %D)" },
+    { .name = "--csv", .group = "Output", .kind = CLI_OUTPUT, .meta = "FILE", F(csv), .help = "the table as CSV" },
+    { .name = "--json", .kind = CLI_OUTPUT, .meta = "FILE", F(json),
+      .help = "the same rows as a JSON array (docs/formats.md); - for standard output, which then holds only the "
+              "JSON" },
+    { .name = "--md", .kind = CLI_OUTPUT, .meta = "FILE", F(md),
+      .help = "the table as Markdown, with smooth mode's goals checked" },
+    { .name = "--plot", .kind = CLI_OUTPUT, .meta = "FILE.png", F(plot), .parse = opt_plot,
+      .help = "bar chart of frame time and silhouette error per mode" },
+    { .name = "--plot-bytes", .kind = CLI_OUTPUT, .meta = "FILE.png", F(plot_bytes), .parse = opt_plot,
+      .help = "silhouette error against the model's bytes in flash, a line per mode through the pairs' coarse "
+              "meshes" },
+    { .name = "--dump", .kind = CLI_DIR, .meta = "DIR", F(dump),
+      .help = "every rendered view as DIR/MESH-PROJ-VIEW-MODE.png (DIR is made when missing)" },
+    { .name = "--quiet", .kind = CLI_FLAG, F(quiet), .help = "no progress line on a terminal" },
+    { .name = "--visibility-pass", .kind = CLI_FLAG, F(visibility),
+      .help = "the visibility benchmark instead (silk bench --visibility-pass --help)" },
+    { .name = "--grid", .kind = CLI_FLAG, F(grid),
+      .help = "smooth outlines over a grid of views instead (silk bench --grid --help)" },
+    { .name = NULL },
+};
+#undef F
+
+/* The scene option --visibility chooses how visible normals are found. */
+static const char *const bench_renamed[] = { "--visibility", "--visibility-pass", NULL };
+
+const cli_command cmd_bench_spec = {
+    .name = "bench",
+    .usage =
+        "usage: silk bench [options] MESH... [--pair COARSE:FINE]...\n"
+        "       silk bench --visibility-pass MESH...   (visibility benchmark, see its --help)\n"
+        "       silk bench --grid COARSE[:FINE]...   (smooth outlines over a grid of views, see its --help)\n",
+    .about =
+        "Render every mesh in every mode from N views around it, orthographic and\n"
+        "perspective, and report per mode: triangles in, triangles drawn per frame,\n"
+        "milliseconds per frame, and - for a --pair - the silhouette error against\n"
+        "the fine mesh drawn flat from the same camera (as silk diff measures it).\n"
+        "One line per mesh, mode and projection:\n"
+        "  bench MESH MODE PROJ triangles=N drawn=N ms=X fps=X error_mean_px=X error_max_px=X arena_bytes=N bytes=N\n"
+        "docs/measurements.md defines the camera path and every number.\n",
+    .examples = "  silk bench --pair bunny-500.obj:bunny-fine.obj --views 8 --md out.md\n",
+    .sets = { { bench_rows, 0, sizeof(bench_cfg), bench_defaults, NULL } },
+    .nsets = 1,
+    .positional = bench_positional,
+    .renamed = bench_renamed,
+};
+
 /* ---- meshes and cameras ------------------------------------------------------------ */
 
 static void mesh_name(const char *path, char *out, size_t n)
@@ -244,7 +335,8 @@ static void unload(loaded *l)
 
 /* View k of the path around m, framed as silk render frames the model (the
  * sphere around it just fits), so view 0 is silk render's default camera. */
-static int path_camera(const silk_mesh *m, const bench_cfg *c, int k, int proj, silk_camera *cam)
+static int path_camera(const silk_mesh *m, const silk_mesh *also, const bench_cfg *c, int k, int proj,
+                       silk_camera *cam)
 {
     const double deg = CLI_DEG;
     cli_scene_opts o;
@@ -264,7 +356,7 @@ static int path_camera(const silk_mesh *m, const bench_cfg *c, int k, int proj, 
     double dir[3] = { cos(el) * sin(az), sin(el), cos(el) * cos(az) };
     o.have_eye = 1;
     for (int i = 0; i < 3; i++) o.eye[i] = ctr[i] + dir[i] * dist;
-    return cli_camera(&o, m, cam);
+    return cli_camera(&o, m, also, cam);
 }
 
 /* ---- measuring ----------------------------------------------------------------------- */
@@ -427,7 +519,8 @@ static int bench_proj(ctx *x, loaded *coarse, loaded *fine, uint32_t modes, int 
         silk_camera cam;
         silk_view view;
         silk_error err;
-        int r = path_camera(&coarse->mesh, c, k, proj, &cam);
+        /* one camera for every mode, near and far bracketing the hull too */
+        int r = path_camera(&coarse->mesh, coarse->hull ? &coarse->hull->mesh : NULL, c, k, proj, &cam);
         if (r) return r;
         if (silk_view_init(&view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s: %s", coarse->path, err.msg);
         silk_phong_default(&x->phong, &view);   /* the benchmark's look is fixed */
@@ -873,115 +966,34 @@ static int write_plot_bytes(const char *path, const row_list *L, const bench_cfg
 int cmd_bench(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++)
-        if (cli_is(argv[i], "--visibility")) return bench_visibility(argc, argv);
+        if (strcmp(argv[i], "--visibility-pass") == 0) return bench_visibility(argc, argv);
     for (int i = 1; i < argc; i++)
         if (strcmp(argv[i], "--grid") == 0) return bench_grid(argc, argv);
 
     bench_cfg c;
-    memset(&c, 0, sizeof c);
-    c.views = 12;
-    c.reps = 3;
-    c.width = 640;
-    c.height = 480;
-    c.proj_mask = 3;
-    c.bg = 0xFFFFFF;
-    parse_modes("flat,smooth,blend,pn2,pn3", &c);
-    const char **coarse = calloc((size_t)argc, sizeof *coarse), **fine = calloc((size_t)argc, sizeof *fine);
-    char **pair_buf = calloc((size_t)argc, sizeof *pair_buf);
-    const char **pair_modes = calloc((size_t)argc, sizeof *pair_modes);
+    bench_defaults(&c);
+    c.coarse = calloc((size_t)argc, sizeof *c.coarse);
+    c.fine = calloc((size_t)argc, sizeof *c.fine);
+    c.pair_buf = calloc((size_t)argc, sizeof *c.pair_buf);
+    c.pair_modes = calloc((size_t)argc, sizeof *c.pair_modes);
     uint32_t *mode_mask = calloc((size_t)argc, sizeof *mode_mask);
-    int n = 0, rc = 0;
-    if (!coarse || !fine || !pair_buf || !pair_modes || !mode_mask) {
+    int rc = 0, n = 0;
+    const char **coarse = c.coarse, **fine = c.fine;
+    cli_args args = { 0, NULL, 0, { NULL } };
+    void *bases[] = { &c };
+    if (!c.coarse || !c.fine || !c.pair_buf || !c.pair_modes || !mode_mask) {
         rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
         goto done;
     }
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i], *v;
-        long num;
-/* not wrapped in do-while: its break must leave the option loop */
-#define VALUE() if (!(v = cli_value(argc, argv, &i))) { rc = CLI_EXIT_USAGE; break; }
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            goto done;
-        } else if (cli_is(a, "--pair")) {
-            VALUE();
-            if (!(pair_buf[i] = malloc(strlen(v) + 1))) {
-                rc = cli_fail(CLI_EXIT_INPUT, "out of memory");
-                break;
-            }
-            strcpy(pair_buf[i], v);
-            char *eq = strrchr(pair_buf[i], '=');   /* the pair's own modes */
-            if (eq) *eq = 0;
-            char *colon = strrchr(pair_buf[i], ':');
-            if (!colon || colon == pair_buf[i] || !colon[1] || (eq && !eq[1])) {
-                rc = cli_fail(CLI_EXIT_USAGE, "--pair must be COARSE:FINE or COARSE:FINE=MODES (got \"%s\")", v);
-                break;
-            }
-            *colon = 0;
-            coarse[n] = pair_buf[i];
-            pair_modes[n] = eq ? eq + 1 : NULL;
-            fine[n++] = colon + 1;
-        } else if (cli_is(a, "--views")) {
-            VALUE();
-            if (cli_parse_long("--views", v, 1, MAX_VIEWS, &num)) rc = CLI_EXIT_USAGE;
-            c.views = (int)num;
-        } else if (cli_is(a, "--reps")) {
-            VALUE();
-            if (cli_parse_long("--reps", v, 1, 1000, &num)) rc = CLI_EXIT_USAGE;
-            c.reps = (int)num;
-        } else if (cli_is(a, "--size")) {
-            VALUE();
-            if (cli_parse_size("--size", v, &c.width, &c.height)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--modes")) {
-            VALUE();
-            if (parse_modes(v, &c)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--projection")) {
-            VALUE();
-            if (strcmp(v, "ortho") == 0) c.proj_mask = 1 << PROJ_ORTHO;
-            else if (strcmp(v, "perspective") == 0) c.proj_mask = 1 << PROJ_PERSP;
-            else if (strcmp(v, "both") == 0) c.proj_mask = 3;
-            else rc = cli_fail(CLI_EXIT_USAGE, "--projection must be ortho, perspective or both (got \"%s\")", v);
-        } else if (cli_is(a, "--tolerance")) {
-            VALUE();
-            double t;
-            if (cli_parse_double("--tolerance", v, 0.25, 4, &t)) rc = CLI_EXIT_USAGE;
-            c.tolerance = cli_fx_from_double(t);
-        } else if (cli_is(a, "--bg")) {
-            VALUE();
-            if (cli_parse_rgb("--bg", v, &c.bg)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--csv")) {
-            VALUE();
-            c.csv = v;
-        } else if (cli_is(a, "--json")) {
-            VALUE();
-            c.json = v;
-        } else if (strcmp(a, "--quiet") == 0) {
-            c.quiet = 1;
-        } else if (cli_is(a, "--md")) {
-            VALUE();
-            c.md = v;
-        } else if (cli_is(a, "--plot")) {
-            VALUE();
-            c.plot = v;
-            if (silk_image_format_for_path(v) != SILK_IMAGE_PNG)
-                rc = cli_fail(CLI_EXIT_USAGE, "--plot: %s: the chart is a PNG (use .png)", v);
-        } else if (cli_is(a, "--plot-bytes")) {
-            VALUE();
-            c.plot_bytes = v;
-            if (silk_image_format_for_path(v) != SILK_IMAGE_PNG)
-                rc = cli_fail(CLI_EXIT_USAGE, "--plot-bytes: %s: the chart is a PNG (use .png)", v);
-        } else if (cli_is(a, "--dump")) {
-            VALUE();
-            c.dump = v;
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_unknown_option("bench", a);
-        } else {
-            coarse[n++] = a;
-        }
-#undef VALUE
+    rc = cli_parse(&cmd_bench_spec, bases, argc, argv, &args);
+    if (rc == CLI_HELP) {
+        rc = 0;
+        goto done;
     }
+    n = c.n;
     if (!rc && n == 0) rc = cli_fail(CLI_EXIT_USAGE, "bench: no mesh given (silk bench MESH... or --pair COARSE:FINE)");
-    for (int i = 0; i < n && !rc; i++) rc = pair_mode_mask(pair_modes[i], &c, &mode_mask[i]);
+    for (int i = 0; i < n && !rc; i++) rc = pair_mode_mask(c.pair_modes[i], &c, &mode_mask[i]);
+    if (!rc && c.dump) rc = cli_make_dir(c.dump);
     if (rc) goto done;
 
     ctx x;
@@ -1011,8 +1023,8 @@ int cmd_bench(int argc, char **argv)
     free(rows.r);
     free(x.fb.color), free(x.fb.depth), free(x.fb.mask), free(x.fb.ref);
 done:
-    if (pair_buf)
-        for (int i = 0; i < argc; i++) free(pair_buf[i]);
-    free(pair_buf), free(coarse), free(fine), free(pair_modes), free(mode_mask);
+    if (c.pair_buf)
+        for (int i = 0; i < argc; i++) free(c.pair_buf[i]);
+    free(c.pair_buf), free(c.coarse), free(c.fine), free(c.pair_modes), free(mode_mask), cli_args_free(&args);
     return rc;
 }

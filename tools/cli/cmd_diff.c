@@ -17,37 +17,56 @@
 #include "platform/platform.h"
 #include "platform/png_read.h"
 
-static void help(FILE *f)
+typedef struct diff_args {
+    uint32_t bg;
+    const char *out;
+    int json;
+} diff_args;
+
+static void diff_defaults(void *base)
 {
-    fprintf(f,
-            "usage: silk diff A.png B.png [--bg RRGGBB] [-o DIFF.png] [--json]\n"
-            "\n"
-            "Compare the silhouettes of two renders of the same size (PNG or PPM; - reads\n"
-            "one from standard input).  A pixel belongs to the object when it differs from\n"
-            "the background colour (a transparent pixel counts as background); A is the\n"
-            "reference.  Prints one line:\n"
-            "  diff A B differing=N boundary=N mean_px=X hausdorff_px=X\n"
-            "  differing     pixels that are object in one image and background in the other\n"
-            "  boundary      length of A's outline in pixels (Cauchy-Crofton estimate)\n"
-            "  mean_px       differing / boundary: the mean distance between the outlines\n"
-            "  hausdorff_px  Hausdorff distance between the boundary pixels of A and B\n"
-            "                (exact Euclidean; inf when only one image has an object)\n"
-            "\n"
-            "  --bg RRGGBB           background colour of both images (default ffffff,\n"
-            "                        the background of silk render)\n"
-            "  -o, --output DIFF.png picture of the differences: both grey, only A red,\n"
-            "                        only B blue, neither white (a PNG, written atomically)\n"
-            "  --json                the result as one JSON object (docs/formats.md):\n"
-            "                        {\"schema\": \"silk-diff/1\", \"a\", \"b\", \"width\", \"height\",\n"
-            "                        \"differing\", \"boundary\", \"mean_px\", \"hausdorff_px\"}, with\n"
-            "                        null for inf\n"
-            "\n"
-            "example (the same camera for both: the default one frames each mesh by\n"
-            "its own bounding box):\n"
-            "  silk render bunny-fine.obj -o fine.png --mode flat --eye 1.5,1.2,3.5 --target 0,0,0\n"
-            "  silk render bunny-500.obj -o smooth.png --eye 1.5,1.2,3.5 --target 0,0,0\n"
-            "  silk diff fine.png smooth.png -o diff.png\n");
+    diff_args *a = base;
+    memset(a, 0, sizeof *a);
+    a->bg = 0xFFFFFF;
 }
+
+#define F(member) CLI_FIELD(diff_args, member)
+static const cli_opt diff_rows[] = {
+    { .name = "--bg", .group = "", .kind = CLI_RGB, .meta = "RRGGBB", F(bg),
+      .help = "background colour of both images (default %D, the background of silk render)" },
+    { .name = "--output", .alt = "-o", .kind = CLI_OUTPUT, .meta = "DIFF.png", F(out),
+      .help = "picture of the differences: both grey, only A red, only B blue, neither white (a PNG, written "
+              "atomically)" },
+    { .name = "--json", .kind = CLI_FLAG, F(json),
+      .help = "the result as one JSON object (docs/formats.md): {\"schema\": \"silk-diff/1\", \"a\", \"b\", "
+              "\"width\", \"height\", \"differing\", \"boundary\", \"mean_px\", \"hausdorff_px\"}, with null for inf" },
+    { .name = NULL },
+};
+#undef F
+
+const cli_command cmd_diff_spec = {
+    .name = "diff",
+    .usage = "usage: silk diff A.png B.png [--bg RRGGBB] [-o DIFF.png] [--json]\n",
+    .about =
+        "Compare the silhouettes of two renders of the same size (PNG or PPM; - reads\n"
+        "one from standard input).  A pixel belongs to the object when it differs from\n"
+        "the background colour (a transparent pixel counts as background); A is the\n"
+        "reference.  Prints one line:\n"
+        "  diff A B differing=N boundary=N mean_px=X hausdorff_px=X\n"
+        "  differing     pixels that are object in one image and background in the other\n"
+        "  boundary      length of A's outline in pixels (Cauchy-Crofton estimate)\n"
+        "  mean_px       differing / boundary: the mean distance between the outlines\n"
+        "  hausdorff_px  Hausdorff distance between the boundary pixels of A and B\n"
+        "                (exact Euclidean; inf when only one image has an object)\n",
+    .examples =
+        "  (the same camera for both: the default one frames each mesh by its own\n"
+        "  bounding box)\n"
+        "  silk render bunny-fine.obj -o fine.png --mode flat --eye 1.5,1.2,3.5 --target 0,0,0\n"
+        "  silk render bunny-500.obj -o smooth.png --eye 1.5,1.2,3.5 --target 0,0,0\n"
+        "  silk diff fine.png smooth.png -o diff.png\n",
+    .sets = { { diff_rows, 0, sizeof(diff_args), diff_defaults, NULL } },
+    .nsets = 1,
+};
 
 /* "inf" instead of printf's platform-dependent spelling. */
 static void print_px(const char *name, double v)
@@ -123,34 +142,24 @@ done:
 
 int cmd_diff(int argc, char **argv)
 {
-    const char *files[2] = { NULL, NULL }, *out = NULL;
-    int nfiles = 0, rc = 0, json = 0;
-    uint32_t bg = 0xFFFFFF;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i], *v;
-        if (cli_help(a, help)) return 0;
-        if (cli_is(a, "--bg")) {
-            if (!(v = cli_value(argc, argv, &i)) || cli_parse_rgb("--bg", v, &bg)) rc = CLI_EXIT_USAGE;
-        } else if (strcmp(a, "--json") == 0) {
-            json = 1;
-        } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_unknown_option("diff", a);
-        } else if (nfiles == 2) {
-            rc = cli_fail(CLI_EXIT_USAGE, "diff: two images only (got a third, %s)", a);
-        } else {
-            files[nfiles++] = a;
-        }
-    }
-    if (!rc && nfiles < 2) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images needed (silk diff A.png B.png)");
-    if (!rc && nfiles == 2 && silk_path_is_stdio(files[0]) && silk_path_is_stdio(files[1]))
+    diff_args da;
+    diff_defaults(&da);
+    cli_args args;
+    void *bases[] = { &da };
+    int rc = cli_parse(&cmd_diff_spec, bases, argc, argv, &args);
+    const char *files[2] = { args.npos > 0 ? args.pos[0] : NULL, args.npos > 1 ? args.pos[1] : NULL };
+    if (!rc && args.npos > 2) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images only (got a third, %s)", args.pos[2]);
+    cli_args_free(&args);
+    if (rc == CLI_HELP) return 0;
+    const char *out = da.out;
+    if (!rc && !files[1]) rc = cli_fail(CLI_EXIT_USAGE, "diff: two images needed (silk diff A.png B.png)");
+    if (!rc && silk_path_is_stdio(files[0]) && silk_path_is_stdio(files[1]))
         rc = cli_fail(CLI_EXIT_USAGE, "diff: only one image can come from standard input");
     if (!rc && out && silk_path_is_stdio(out))
         rc = cli_fail(CLI_EXIT_USAGE, "diff: -o -: standard output carries the result; give a file name");
     if (!rc && out && !silk_path_is_stdio(out) && silk_image_format_for_path(out) != SILK_IMAGE_PNG)
         rc = cli_fail(CLI_EXIT_USAGE, "diff: %s: the picture of the differences is a PNG (use .png)", out);
     /* A failed run leaves OUT as it was (written atomically). */
-    if (!rc) rc = diff(files[0], files[1], bg, out, json);
+    if (!rc) rc = diff(files[0], files[1], da.bg, out, da.json);
     return rc;
 }

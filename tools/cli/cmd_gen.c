@@ -5,6 +5,7 @@
 #include <ctype.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
@@ -12,60 +13,91 @@
 #include "prep/gen.h"
 #include "platform/platform.h"
 
-static void help(FILE *f)
-{
-    fprintf(f,
-            "usage: silk gen SHAPE [parameters] -o OUT.obj\n"
-            "\n"
-            "Write a closed, outward-oriented analytic mesh as OBJ, every vertex on the\n"
-            "exact surface.  The axis of revolution is y.\n"
-            "\n"
-            "shapes and their parameters (defaults in brackets):\n"
-            "  sphere    UV sphere, poles at +-y:  --radius [1]\n"
-            "            --segments around [10], --bands pole to pole [11]  -> 200 triangles\n"
-            "  torus     around the y axis:  --R major radius [1], --r tube radius [0.4]\n"
-            "            --segments around y [24], --bands around the tube [12]  -> 576\n"
-            "  cone      apex (0,H,0), base disc at y=0 with a sharp rim:  --radius [1]\n"
-            "            --height [1.5], --segments [35], --bands side rows [1]  -> 70\n"
-            "  cylinder  y from 0 to H, capped, sharp rims:  --radius [1], --height [2]\n"
-            "            --segments [24], --bands side rows [1]  -> 96\n"
-            "  knot      (p,q) torus knot, a tube around the curve on the torus R, r:\n"
-            "            --p [2] --q [3] --R [1] --r [0.4] --tube [0.25]\n"
-            "            --segments along the curve [64], --bands around the tube [8]  -> 1024\n"
-            "\n"
-            "  --uv                  sphere, torus: texture coordinates too, u around the y\n"
-            "                        axis and v pole to pole (sphere) or around the tube\n"
-            "  -o, --output OUT.obj  the file to write (written atomically); - for stdout\n"
-            "\n"
-            "examples:\n"
-            "  silk gen sphere -o sphere.obj\n"
-            "  silk gen torus --segments 48 --bands 24 -o torus.obj\n"
-            "  silk gen knot --p 3 --q 5 --tube 0.15 --segments 160 -o knot.obj\n"
-            "  silk gen sphere --uv --segments 24 --bands 16 -o globe.obj\n");
-}
-
-/* Which parameters each shape takes: bit s for gen_shape s. */
+/* Which parameters each shape takes: bit s for gen_shape s (a row's mask). */
 #define ALL ((1u << GEN_SHAPE_COUNT) - 1)
 #define BIT(s) (1u << (s))
 
-typedef struct gen_option {
-    const char *name;
-    unsigned shapes;
-    int is_int;
-    double lo, hi;
-    size_t offset;             /* into gen_params */
-} gen_option;
+typedef struct gen_args {
+    const char *out;
+    gen_params p;              /* the values given (the shape's defaults fill the rest) */
+} gen_args;
 
-static const gen_option gen_options[] = {
-    { "--segments", ALL, 1, 3, 100000, offsetof(gen_params, segments) },
-    { "--bands", ALL, 1, 1, 100000, offsetof(gen_params, bands) },
-    { "--radius", BIT(GEN_SPHERE) | BIT(GEN_CONE) | BIT(GEN_CYLINDER), 0, 0, 1024, offsetof(gen_params, radius) },
-    { "--height", BIT(GEN_CONE) | BIT(GEN_CYLINDER), 0, 0, 1024, offsetof(gen_params, height) },
-    { "--R", BIT(GEN_TORUS) | BIT(GEN_KNOT), 0, 0, 1024, offsetof(gen_params, R) },
-    { "--r", BIT(GEN_TORUS) | BIT(GEN_KNOT), 0, 0, 1024, offsetof(gen_params, r) },
-    { "--tube", BIT(GEN_KNOT), 0, 0, 1024, offsetof(gen_params, tube) },
-    { "--p", BIT(GEN_KNOT), 1, 1, 50, offsetof(gen_params, p) },
-    { "--q", BIT(GEN_KNOT), 1, 1, 50, offsetof(gen_params, q) },
+#define F(member) CLI_FIELD(gen_args, member)
+static const cli_opt gen_rows[] = {
+    { .name = "--output", .alt = "-o", .group = "", .kind = CLI_OUTPUT, .meta = "OUT.obj", F(out),
+      .help = "the file to write (written atomically); - for stdout" },
+    { .name = "--uv", .mask = BIT(GEN_SPHERE) | BIT(GEN_TORUS), .kind = CLI_FLAG, F(p.uv),
+      .help = "sphere, torus: texture coordinates too, u around the y axis and v pole to pole (sphere) or around "
+              "the tube" },
+    { .name = "--segments", .group = "Parameters (the shapes above take them)", .mask = ALL, .kind = CLI_INT,
+      .meta = "N", .lo = 3, .hi = 100000, F(p.segments),
+      .help = "around the y axis (the knot: along the curve)" },
+    { .name = "--bands", .mask = ALL, .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 100000, F(p.bands),
+      .help = "sphere: pole to pole; torus, knot: around the tube; cone, cylinder: rows of the side" },
+    { .name = "--radius", .mask = BIT(GEN_SPHERE) | BIT(GEN_CONE) | BIT(GEN_CYLINDER), .kind = CLI_REAL, .meta = "X",
+      .lo = 0, .hi = 1024, F(p.radius), .help = "sphere, cone (its base), cylinder" },
+    { .name = "--height", .mask = BIT(GEN_CONE) | BIT(GEN_CYLINDER), .kind = CLI_REAL, .meta = "X", .lo = 0,
+      .hi = 1024, F(p.height), .help = "cone (apex at y = height), cylinder (y from 0 to height)" },
+    { .name = "--R", .mask = BIT(GEN_TORUS) | BIT(GEN_KNOT), .kind = CLI_REAL, .meta = "X", .lo = 0, .hi = 1024,
+      F(p.R), .help = "torus: the major radius; knot: the torus it winds on" },
+    { .name = "--r", .mask = BIT(GEN_TORUS) | BIT(GEN_KNOT), .kind = CLI_REAL, .meta = "X", .lo = 0, .hi = 1024,
+      F(p.r), .help = "torus: the tube's radius; knot: the torus it winds on" },
+    { .name = "--tube", .mask = BIT(GEN_KNOT), .kind = CLI_REAL, .meta = "X", .lo = 0, .hi = 1024, F(p.tube),
+      .help = "knot: the radius of the tube around the curve" },
+    { .name = "--p", .mask = BIT(GEN_KNOT), .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 50, F(p.p),
+      .help = "knot: turns around the y axis" },
+    { .name = "--q", .mask = BIT(GEN_KNOT), .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 50, F(p.q),
+      .help = "knot: turns through the hole" },
+    { .name = NULL },
+};
+#undef F
+
+/* The shapes with their parameters' defaults and triangles, from gen.c. */
+static void gen_more(FILE *f)
+{
+    gen_params p[GEN_SHAPE_COUNT];
+    uint32_t tris[GEN_SHAPE_COUNT];
+    for (int k = 0; k < GEN_SHAPE_COUNT; k++) {
+        gen_defaults((gen_shape)k, &p[k]);
+        gen_mesh m;
+        tris[k] = gen_build(&p[k], &m) == 0 ? m.ntris : 0;
+        if (tris[k]) gen_free(&m);
+    }
+    const gen_params *s = &p[GEN_SPHERE], *t = &p[GEN_TORUS], *c = &p[GEN_CONE], *y = &p[GEN_CYLINDER],
+                     *k = &p[GEN_KNOT];
+    fprintf(f,
+            "\n"
+            "shapes and their parameters (defaults in brackets):\n"
+            "  sphere    UV sphere, poles at +-y:  --radius [%g]\n"
+            "            --segments around [%d], --bands pole to pole [%d]  -> %u triangles\n"
+            "  torus     around the y axis:  --R major radius [%g], --r tube radius [%g]\n"
+            "            --segments around y [%d], --bands around the tube [%d]  -> %u\n"
+            "  cone      apex (0,H,0), base disc at y=0 with a sharp rim:  --radius [%g]\n"
+            "            --height [%g], --segments [%d], --bands side rows [%d]  -> %u\n"
+            "  cylinder  y from 0 to H, capped, sharp rims:  --radius [%g], --height [%g]\n"
+            "            --segments [%d], --bands side rows [%d]  -> %u\n"
+            "  knot      (p,q) torus knot, a tube around the curve on the torus R, r:\n"
+            "            --p [%d] --q [%d] --R [%g] --r [%g] --tube [%g]\n"
+            "            --segments along the curve [%d], --bands around the tube [%d]  -> %u\n",
+            s->radius, s->segments, s->bands, tris[GEN_SPHERE], t->R, t->r, t->segments, t->bands, tris[GEN_TORUS],
+            c->radius, c->height, c->segments, c->bands, tris[GEN_CONE], y->radius, y->height, y->segments, y->bands,
+            tris[GEN_CYLINDER], k->p, k->q, k->R, k->r, k->tube, k->segments, k->bands, tris[GEN_KNOT]);
+}
+
+const cli_command cmd_gen_spec = {
+    .name = "gen",
+    .usage = "usage: silk gen SHAPE [parameters] -o OUT.obj\n",
+    .about =
+        "Write a closed, outward-oriented analytic mesh as OBJ, every vertex on the\n"
+        "exact surface.  The axis of revolution is y.\n",
+    .more = gen_more,
+    .examples =
+        "  silk gen sphere -o sphere.obj\n"
+        "  silk gen torus --segments 48 --bands 24 -o torus.obj\n"
+        "  silk gen knot --p 3 --q 5 --tube 0.15 --segments 160 -o knot.obj\n"
+        "  silk gen sphere --uv --segments 24 --bands 16 -o globe.obj\n",
+    .sets = { { gen_rows, ALL, sizeof(gen_args), NULL, NULL } },
+    .nsets = 1,
 };
 
 static int has_obj_extension(const char *path)
@@ -95,56 +127,32 @@ static int write_mesh(const gen_mesh *m, const gen_params *p, const char *out)
     return 0;
 }
 
-/* Returns the exit status, or -1 after --help.  A failed run leaves OUT as
- * it was (written atomically). */
-static int gen(int argc, char **argv)
+int cmd_gen(int argc, char **argv)
 {
-    const char *out = NULL;
-    if (argc < 2) return cli_fail(CLI_EXIT_USAGE, "gen: which shape? (sphere, torus, cone, cylinder or knot)");
-    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
-        help(stdout);
-        return -1;
-    }
-    gen_shape shape = gen_shape_from_name(argv[1]);
-    if (shape == GEN_SHAPE_COUNT)
-        return cli_fail(CLI_EXIT_USAGE, "gen: unknown shape \"%s\" (sphere, torus, cone, cylinder or knot)", argv[1]);
+    gen_args ga;
+    memset(&ga, 0, sizeof ga);
+    cli_args args;
+    void *bases[] = { &ga };
+    int rc = cli_parse(&cmd_gen_spec, bases, argc, argv, &args);
+    gen_shape shape = GEN_SHAPE_COUNT;
+    if (!rc && args.npos == 0) rc = cli_fail(CLI_EXIT_USAGE, "gen: which shape? (sphere, torus, cone, cylinder or knot)");
+    if (!rc && args.npos > 1) rc = cli_fail(CLI_EXIT_USAGE, "gen: one shape at a time (got %s and %s)", args.pos[0], args.pos[1]);
+    if (!rc && (shape = gen_shape_from_name(args.pos[0])) == GEN_SHAPE_COUNT)
+        rc = cli_fail(CLI_EXIT_USAGE, "gen: unknown shape \"%s\" (sphere, torus, cone, cylinder or knot)", args.pos[0]);
+    cli_args_free(&args);
+    if (rc == CLI_HELP) return 0;
+    if (rc) return rc;
+    /* the shape's defaults, and the parameters given over them */
     gen_params p;
     gen_defaults(shape, &p);
-
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i], *v;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return -1;
-        }
-        if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
-            continue;
-        }
-        if (cli_is(a, "--uv")) {
-            if (shape != GEN_SPHERE && shape != GEN_TORUS)
-                return cli_fail(CLI_EXIT_USAGE, "gen: --uv does not apply to a %s", gen_shape_name(shape));
-            p.uv = 1;
-            continue;
-        }
-        const gen_option *g = NULL;
-        for (size_t k = 0; k < sizeof gen_options / sizeof gen_options[0]; k++)
-            if (cli_is(a, gen_options[k].name)) g = &gen_options[k];
-        if (!g) return cli_unknown_option("gen", a);
-        if (!(g->shapes & BIT(shape)))
-            return cli_fail(CLI_EXIT_USAGE, "gen: %s does not apply to a %s", g->name, gen_shape_name(shape));
-        if (!(v = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
-        char *field = (char *)&p + g->offset;
-        if (g->is_int) {
-            long n;
-            if (cli_parse_long(g->name, v, (long)g->lo, (long)g->hi, &n) != 0) return CLI_EXIT_USAGE;
-            *(int *)field = (int)n;
-        } else {
-            double d;
-            if (cli_parse_double(g->name, v, g->lo, g->hi, &d) != 0) return CLI_EXIT_USAGE;
-            *(double *)field = d;
-        }
+    for (int k = 0; k < args.ngiven; k++) {
+        const cli_opt *o = args.given[k];
+        if (o->mask && !(o->mask & BIT(shape)))
+            return cli_fail(CLI_EXIT_USAGE, "gen: %s does not apply to a %s", o->name, gen_shape_name(shape));
+        size_t in_p = o->off - offsetof(gen_args, p);
+        if (o->off >= offsetof(gen_args, p)) memcpy((char *)&p + in_p, (const char *)&ga.p + in_p, o->size);
     }
+    const char *out = ga.out;
     if (!out) return cli_fail(CLI_EXIT_USAGE, "gen: no output given (-o OUT.obj)");
     if (strcmp(out, "-") != 0 && !has_obj_extension(out))
         return cli_fail(CLI_EXIT_USAGE, "gen: %s: the output must be a .obj file", out);
@@ -153,13 +161,7 @@ static int gen(int argc, char **argv)
 
     gen_mesh m;
     if (gen_build(&p, &m) != 0) return cli_fail(CLI_EXIT_INPUT, "gen: out of memory");
-    int rc = write_mesh(&m, &p, out);
+    rc = write_mesh(&m, &p, out);
     gen_free(&m);
     return rc;
-}
-
-int cmd_gen(int argc, char **argv)
-{
-    int rc = gen(argc, argv);
-    return rc < 0 ? 0 : rc;   /* -1: --help */
 }

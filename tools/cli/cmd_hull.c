@@ -7,40 +7,46 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 #include "commands.h"
+#include "meshcmd.h"
 #include "prep/hull.h"
 #include "platform/platform.h"
 
-static void help(FILE *f)
-{
-    fprintf(f,
-            "usage: silk hull FINE -o HULL.obj --triangles N [options]\n"
-            "\n"
-            "Make a coarse outer hull of the closed mesh FINE (OBJ, PLY or STL; - for\n"
-            "standard input): a mesh of N\n"
-            "triangles that contains every point of FINE, by edge collapses that only\n"
-            "ever move the surface outward, each placed to add the least volume.  With\n"
-            "--inner, the inner hull: a mesh inside FINE.  Vertices lie on silk's fixed-\n"
-            "point grid, so the hull holds FINE as the renderer loads it.  Writes HULL.obj\n"
-            "(atomically; - for stdout) with a normal per vertex, the detailed surface's\n"
-            "where the vertex stands for it (silk render --normals file shades with them),\n"
-            "and prints one line:\n"
-            "  hull FINE HULL.obj triangles=N vertices=N target=N collapses=N volume=X (+P%%)\n"
-            "It stops above N when no collapse that keeps the hull is left (a warning).\n"
-            "\n"
-            "options:\n"
-            "  -o, --output HULL.obj  the hull, as OBJ (ascii PLY for a .ply name)\n"
-            "  --triangles N          the triangle count to reach (at least 4)\n"
-            "  --inner                the inner hull instead of the outer\n"
-            "  --scale S              multiply coordinates by S while reading (as silk render)\n"
-            "  --quiet                no progress line on a terminal\n"
-            "\n"
-            "example:\n"
-            "  silk hull bunny-fine.obj -o bunny-hull-500.obj --triangles 500\n");
-}
+typedef struct hull_args {
+    const char *out;
+    int inner;
+} hull_args;
+
+static const cli_opt hull_rows[] = {
+    { .name = "--output", .alt = "-o", .group = "options", .kind = CLI_OUTPUT, .meta = "HULL.obj",
+      CLI_FIELD(hull_args, out), .help = "the hull, as OBJ (ascii PLY for a .ply name)" },
+    { .name = "--inner", .kind = CLI_FLAG, CLI_FIELD(hull_args, inner), .help = "the inner hull instead of the outer" },
+    { .name = NULL },
+};
+
+const cli_command cmd_hull_spec = {
+    .name = "hull",
+    .usage = "usage: silk hull FINE -o HULL.obj --triangles N [options]\n",
+    .about =
+        "Make a coarse outer hull of the closed mesh FINE (OBJ, PLY or STL; - for\n"
+        "standard input): a mesh of N\n"
+        "triangles that contains every point of FINE, by edge collapses that only\n"
+        "ever move the surface outward, each placed to add the least volume.  With\n"
+        "--inner, the inner hull: a mesh inside FINE.  Vertices lie on silk's fixed-\n"
+        "point grid, so the hull holds FINE as the renderer loads it.  Writes HULL.obj\n"
+        "(atomically; - for stdout) with a normal per vertex, the detailed surface's\n"
+        "where the vertex stands for it (silk render --normals file shades with them),\n"
+        "and prints one line:\n"
+        "  hull FINE HULL.obj triangles=N vertices=N target=N collapses=N volume=X (+P%)\n"
+        "It stops above N when no collapse that keeps the hull is left (a warning).\n",
+    .examples = "  silk hull bunny-fine.obj -o bunny-hull-500.obj --triangles 500\n",
+    .sets = { { hull_rows, 0, sizeof(hull_args), NULL, NULL }, SIMP_SET(SIMP_OPT_COMMON) },
+    .nsets = 2,
+};
 
 static int hull(const char *in, const char *out, const hull_opts *ho, const simp_args *args)
 {
@@ -89,31 +95,22 @@ static int hull(const char *in, const char *out, const hull_opts *ho, const simp
 
 int cmd_hull(int argc, char **argv)
 {
+    hull_args ha = { NULL, 0 };
+    simp_args args;
+    simp_args_default(&args);
+    cli_args ca;
+    void *bases[] = { &ha, &args };
     const char *in = NULL;
-    simp_args args = { NULL, -1, { 1, 0 }, 0 };
-    hull_opts ho;
-    hull_opts_default(&ho, 0);
-    int rc = 0, k;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i];
-        if (cli_help(a, help)) return 0;
-        if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
-            if (k < 0) rc = CLI_EXIT_USAGE;
-        } else if (strcmp(a, "--inner") == 0) {
-            ho.inner = 1;
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_unknown_option("hull", a);
-        } else if (!in) {
-            in = a;
-        } else {
-            rc = cli_fail(CLI_EXIT_USAGE, "hull: one input mesh (got a second, %s; the output goes after -o)", a);
-        }
-    }
-    if (!rc && !in) rc = cli_fail(CLI_EXIT_USAGE, "hull: give the mesh (silk hull FINE -o HULL.obj --triangles N)");
-    if (!rc && !args.out) rc = cli_fail(CLI_EXIT_USAGE, "hull: -o HULL.obj is needed");
+    int rc = cli_parse(&cmd_hull_spec, bases, argc, argv, &ca);
+    if (!rc) rc = simp_one_input("hull", ca.npos, ca.pos, "silk hull FINE -o HULL.obj --triangles N", &in);
+    cli_args_free(&ca);
+    if (rc == CLI_HELP) return 0;
+    if (!rc && !ha.out) rc = cli_fail(CLI_EXIT_USAGE, "hull: -o HULL.obj is needed");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "hull: --triangles N is needed");
-    ho.target_tris = (uint32_t)args.target;
+    if (rc) return rc;
+    hull_opts ho;
+    hull_opts_default(&ho, (uint32_t)args.target);
+    ho.inner = ha.inner;
     /* A failed run leaves OUT as it was (written atomically). */
-    if (!rc) rc = hull(in, args.out, &ho, &args);
-    return rc;
+    return hull(in, ha.out, &ho, &args);
 }

@@ -9,6 +9,7 @@
  */
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
@@ -18,25 +19,33 @@
  * options would change nothing. */
 #define INFO_OPTIONS (CLI_OPT_LOAD | CLI_OPT_CAMERA | CLI_OPT_FRAME | CLI_OPT_MODE)
 
-static void help(FILE *f)
-{
-    fprintf(f,
-            "usage: silk info MESH [--json] [options]\n"
-            "\n"
-            "Print MESH's counts (vertices, triangles, normals, edges, feature, boundary\n"
-            "and non-manifold edges, degenerate triangles), the arena memory each part\n"
-            "takes, and the per-frame counts of one frame rendered (not written) with\n"
-            "the camera and frame options below.  MESH - reads standard input.\n"
-            "\n"
-            "  --json               the same as one JSON object (docs/formats.md)\n");
-    cli_print_scene_help(f, INFO_OPTIONS);
-    fprintf(f,
-            "\n"
-            "examples:\n"
-            "  silk info bunny.obj\n"
-            "  silk info bunny.obj --eye 0,0,3 --size 512x512 --tolerance 1\n"
-            "  silk info bunny.obj --json | python3 -m json.tool\n");
-}
+typedef struct info_args {
+    int json;
+} info_args;
+
+static const cli_opt info_rows[] = {
+    { .name = "--json", .group = "", .kind = CLI_FLAG, CLI_FIELD(info_args, json),
+      .help = "the same as one JSON object (docs/formats.md)" },
+    { .name = NULL },
+};
+
+const cli_command cmd_info_spec = {
+    .name = "info",
+    .usage = "usage: silk info MESH [--json] [options]\n",
+    .about =
+        "Print MESH's counts (vertices, triangles, normals, edges, feature, boundary\n"
+        "and non-manifold edges, degenerate and reoriented triangles), the sections\n"
+        "of a prepared model, the arena memory each part takes, and the per-frame\n"
+        "counts of one frame rendered (not written) with the camera and frame\n"
+        "options below.  MESH - reads standard input.\n",
+    .examples =
+        "  silk info bunny.obj\n"
+        "  silk info bunny.obj --eye 0,0,3 --size 512x512 --tolerance 1\n"
+        "  silk info bunny.silk --mode clip\n"
+        "  silk info bunny.obj --json | python3 -m json.tool\n",
+    .sets = { { info_rows, 0, sizeof(info_args), NULL, NULL }, CLI_SCENE_SET(INFO_OPTIONS) },
+    .nsets = 2,
+};
 
 /* "name:" padded to a column, then the value. */
 static void line(const char *name, const char *fmt, ...)
@@ -60,10 +69,63 @@ static void print_vec(const char *name, silk_vec3 v)
     line(name, "%.5g %.5g %.5g", cli_fx_to_double(v.x), cli_fx_to_double(v.y), cli_fx_to_double(v.z));
 }
 
+/* The section types of a prepared model ("MESH" ...) with their sizes and
+ * whether they are required; 0 sections for a mesh file. */
+typedef struct model_info {
+    int is_model;
+    uint32_t major, minor, n;
+    char type[SILK_MODEL_MAX_SECTIONS][5];
+    uint32_t bytes[SILK_MODEL_MAX_SECTIONS];
+    int required[SILK_MODEL_MAX_SECTIONS];
+} model_info;
+
+static void model_sections(const cli_scene *s, model_info *mi)
+{
+    memset(mi, 0, sizeof *mi);
+    silk_model m;
+    silk_error err;
+    if (!silk_is_model(s->file, s->file_len) || silk_model_open(s->file, s->file_len, "", &m, &err) != SILK_OK) return;
+    mi->is_model = 1;
+    mi->major = m.version_major;
+    mi->minor = m.version_minor;
+    for (uint32_t i = 0; i < m.nsections && i < SILK_MODEL_MAX_SECTIONS; i++) {
+        silk_model_section sec;
+        silk_model_section_at(&m, i, &sec);
+        for (int k = 0; k < 4; k++) {
+            char c = (char)(sec.type >> (8 * k));
+            mi->type[i][k] = c >= 0x20 && c < 0x7f ? c : '?';
+        }
+        mi->bytes[i] = sec.size;
+        mi->required[i] = (sec.flags & SILK_SECTION_REQUIRED) != 0;
+        mi->n++;
+    }
+}
+
+/* Which section of a prepared model the counts describe: the mesh the mode
+ * draws, the hull in clip and siltex mode and when the model has no MESH. */
+static const char *part_name(const cli_scene *s, const cli_scene_opts *o, const model_info *mi)
+{
+    if (cli_scene_mesh(s, o->render.mode) == &s->hull) return "HULL";
+    for (uint32_t i = 0; i < mi->n; i++)
+        if (strcmp(mi->type[i], "MESH") == 0) return "MESH";
+    return "HULL";
+}
+
 static void print_mesh(const cli_scene *s, const cli_scene_opts *o)
 {
-    const silk_mesh *m = &s->mesh;
+    const silk_mesh *m = cli_scene_mesh(s, o->render.mode);
     line("file", "%s (%zu bytes)", cli_input_name(o->mesh_path), s->file_len);
+    model_info mi;
+    model_sections(s, &mi);
+    if (mi.is_model) {
+        char list[SILK_MODEL_MAX_SECTIONS * 32] = "";
+        for (uint32_t i = 0; i < mi.n; i++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s %u bytes%s", i ? ", " : "", mi.type[i],
+                     mi.bytes[i], mi.required[i] ? " (required)" : "");
+        line("model", "prepared, version %u.%u", mi.major, mi.minor);
+        line("sections", "%s", list);
+        line("counts of", "%s", part_name(s, o, &mi));
+    }
     line("vertices", "%u", m->nverts);
     line("triangles", "%u", m->ntris);
     line("normals", "%u", m->nnormals);
@@ -80,10 +142,11 @@ static void print_mesh(const cli_scene *s, const cli_scene_opts *o)
     print_vec("bbox max", m->bbox_max);
 }
 
-static void print_memory(const cli_scene *s)
+static void print_memory(const cli_scene *s, const cli_scene_opts *o)
 {
     silk_mesh_bytes b;
-    silk_mesh_bytes_used(&s->mesh, &b);
+    const silk_mesh *m = cli_scene_mesh(s, o->render.mode);
+    silk_mesh_bytes_used(m, &b);
     printf("\nmesh memory (bytes)\n");
     line("  positions", "%zu", b.positions);
     line("  normals", "%zu", b.normals);
@@ -93,7 +156,7 @@ static void print_memory(const cli_scene *s)
     line("  vertex edges", "%zu", b.vertex_edges);
     line("  features", "%zu", b.features);
     line("  mesh total", "%zu", b.total);
-    line("  visibility hierarchy", "%zu", silk_vis_bytes(s->mesh.vis));
+    line("  visibility hierarchy", "%zu", silk_vis_bytes(m->vis));
 
     const silk_arena *a = &s->arena;
     printf("\narena (bytes)\n");
@@ -154,15 +217,29 @@ static void json_vec(const char *name, silk_vec3 v, const char *end)
 
 static void print_json(const cli_scene *s, const cli_scene_opts *o, const silk_frame_stats *st)
 {
-    const silk_mesh *m = &s->mesh;
+    const silk_mesh *m = cli_scene_mesh(s, o->render.mode);
     printf("{\n  \"schema\": \"silk-info/1\",\n  \"file\": ");
     cli_json_string(stdout, cli_input_name(o->mesh_path));
     printf(",\n  \"file_bytes\": %zu,\n", s->file_len);
-    printf("  \"mesh\": {\"vertices\": %u, \"triangles\": %u, \"normals\": %u, \"uvs\": %u, \"edges\": %u,\n"
+    model_info mi;
+    model_sections(s, &mi);
+    if (mi.is_model) {
+        printf("  \"model\": {\"version\": \"%u.%u\", \"counts_of\": \"%s\", \"sections\": [", mi.major, mi.minor,
+               part_name(s, o, &mi));
+        for (uint32_t i = 0; i < mi.n; i++)
+            printf("%s{\"type\": \"%s\", \"bytes\": %u, \"required\": %s}", i ? ", " : "", mi.type[i], mi.bytes[i],
+                   mi.required[i] ? "true" : "false");
+        printf("]},\n");
+    } else {
+        printf("  \"model\": null,\n");
+    }
+    printf("  \"mesh\": {\"vertices\": %u, \"triangles\": %u, \"normals\": %u, \"normals_from\": \"%s\", "
+           "\"uvs\": %u, \"edges\": %u,\n"
            "    \"feature_edges\": %u, \"boundary_edges\": %u, \"nonmanifold_edges\": %u,\n"
-           "    \"degenerate_triangles\": %u, ",
-           m->nverts, m->ntris, m->nnormals, m->nuvs, m->nedges, m->nfeature_edges, m->nboundary_edges,
-           m->nnonmanifold_edges, m->ndegenerate_tris);
+           "    \"degenerate_triangles\": %u, \"reoriented_triangles\": %u, \"nonorientable_triangles\": %u,\n    ",
+           m->nverts, m->ntris, m->nnormals, m->normals_used == SILK_NORMALS_FILE ? "file" : "computed", m->nuvs,
+           m->nedges, m->nfeature_edges, m->nboundary_edges, m->nnonmanifold_edges, m->ndegenerate_tris,
+           m->nreoriented_tris, m->nnonorientable_tris);
     json_vec("bbox_min", m->bbox_min, ", ");
     json_vec("bbox_max", m->bbox_max, "},\n");
 
@@ -213,21 +290,17 @@ int cmd_info(int argc, char **argv)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);
-    o.groups = INFO_OPTIONS;
     o.orient_note = 0;        /* the report has the line */
-    int rc = 0, json = 0;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i];
-        if (cli_help(a, help)) return 0;
-        if (strcmp(a, "--json") == 0) {
-            json = 1;
-            continue;
-        }
-        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
-        rc = cli_mesh_arg("info", a, &o.mesh_path);
-    }
-    if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "info: no mesh given (silk info MESH)");
+    info_args ia = { 0 };
+    cli_args args;
+    void *bases[] = { &ia, &o };
+    int rc = cli_parse(&cmd_info_spec, bases, argc, argv, &args);
+    if (!rc) rc = cli_one_mesh("info", args.npos, args.pos, "silk info MESH", &o.mesh_path);
+    cli_args_free(&args);
+    if (rc == CLI_HELP) return 0;
+    if (!rc) rc = cli_mode_check("info", o.render.mode, &o.render);
     if (rc) return rc;
+    int json = ia.json;
 
     /* As `silk render` does: without --arena, an arena whose frame fell back
      * for lack of scratch is doubled, so the report shows a full frame. */
@@ -241,7 +314,9 @@ int cmd_info(int argc, char **argv)
         }
         silk_frame_stats st;
         silk_error err;
-        silk_status r = silk_render(&s.arena, &s.mesh, &s.view, &s.hal, &o.render, &s.target, &st, &err);
+        silk_render_opts ro = o.render;
+        cli_scene_render_opts(&s, &ro);
+        silk_status r = silk_render(&s.arena, cli_scene_mesh(&s, ro.mode), &s.view, &s.hal, &ro, &s.target, &st, &err);
         if (r != SILK_OK) {
             cli_scene_free(&s);
             return cli_fail(CLI_EXIT_INPUT, "%s: %s", cli_input_name(o.mesh_path), err.msg);
@@ -254,7 +329,7 @@ int cmd_info(int argc, char **argv)
             print_json(&s, &o, &st);
         } else {
             print_mesh(&s, &o);
-            print_memory(&s);
+            print_memory(&s, &o);
             print_frame(&s, &o, &st);
         }
         cli_scene_free(&s);

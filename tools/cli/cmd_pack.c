@@ -19,7 +19,7 @@
  * `silk render` computes them for the same options, and each camera's
  * comment gives the --eye that makes `silk render` use it: a device
  * rendering camera k with the packed mesh must produce the bytes
- * `silk render` writes (tests/cli_qemu.sh checks it).
+ * `silk render` writes (tests/boards/cli_qemu.sh checks it).
  *
  * Indices are written as silk_index (32 bits in every build) and
  * SILK_NO_INDEX, so the header compiles with any of the core's options.
@@ -36,47 +36,65 @@
 #include "platform/platform.h"
 
 #define PACK_MAX_EYES 16
-/* pack renders nothing: mode and look options would change nothing. */
-#define PACK_OPTIONS (CLI_OPT_LOAD | CLI_OPT_CAMERA | CLI_OPT_FRAME)
+/* pack renders nothing: mode and look options would change nothing; the
+ * texture goes into the header. */
+#define PACK_OPTIONS (CLI_OPT_LOAD | CLI_OPT_CAMERA | CLI_OPT_FRAME | CLI_OPT_TEXTURE)
 
-static void help(FILE *f)
+typedef struct pack_args {
+    const char *out, *name;
+    int views;                 /* 0: --eye or the default view */
+    int neyes;
+    double eyes[PACK_MAX_EYES][3];
+} pack_args;
+
+/* Each --eye is one camera (the scene option keeps only the last). */
+static int parse_eye(const cli_opt *o, const char *v, void *base)
 {
-    fprintf(f,
-            "usage: silk pack MESH -o MODEL.h [--name NAME] [--eye x,y,z]... [options]\n"
-            "\n"
-            "Write MESH, loaded and with everything precomputed (normals, edges, feature\n"
-            "segments, visibility hierarchy), as a C header of const arrays that a device\n"
-            "renders from flash: NAME_mesh(&mesh) fills a silk_mesh pointing at them.\n"
-            "The header also holds the cameras NAME_camera(k) that `silk render` would\n"
-            "use with the same options: one per --eye (repeat it for up to %d views), N of\n"
-            "--views, or the default view;\n"
-            "each camera's comment names the --eye that gives `silk render` the same view.\n"
-            "\n"
-            "  -o, --output FILE    the header to write (atomically); - writes it to\n"
-            "                       standard output\n"
-            "  --name NAME          prefix of every symbol (default: FILE's base name, or\n"
-            "                       MESH's with -o -, or \"model\" when both are -)\n"
-            "  --views N            N cameras around the model (1..%d): the default view\n"
-            "                       turned by k*360/N degrees about the vertical through the\n"
-            "                       target, odd k mirrored to look from below\n"
-            "  --texture FILE.png   the texture, as `silk render --texture` takes it, packed\n"
-            "                       with its mipmaps; NAME_look(&phong) sets it, the OBJ\n"
-            "                       material and the vertex colours as `silk render` does\n"
-            "  --texture-format rgb888|rgb565|pal8\n"
-            "  --texture-filter bilinear|nearest\n"
-            "  --texture-wrap repeat|clamp   how the texture is stored and sampled, as for\n"
-            "                       `silk render`\n",
-            PACK_MAX_EYES, PACK_MAX_EYES);
-    cli_print_scene_help(f, PACK_OPTIONS);
-    fprintf(f,
-            "\n"
-            "examples:\n"
-            "  silk pack bunny-500.obj -o bunny.h\n"
-            "  silk pack bunny-500.obj -o bunny.h --size 320x240 --eye 0,0,3 --eye 3,1,0\n"
-            "  silk pack knot-480.obj -o knot.h --size 320x240 --format rgb565 --views 3\n"
-            "  silk gen sphere -o - | silk pack - -o - --name sphere > sphere.h\n"
-            "  silk gen sphere --uv -o globe.obj && silk pack globe.obj --texture checker:64 -o globe.h\n");
+    pack_args *p = base;
+    if (p->neyes == PACK_MAX_EYES) return cli_fail(-1, "pack: at most %d --eye options", PACK_MAX_EYES);
+    return cli_parse_vec3(o->name, v, CLI_MAX_COORD, p->eyes[p->neyes++]);
 }
+
+static int parse_name(const cli_opt *o, const char *v, void *base);
+
+#define XSTR(x) STR(x)
+#define STR(x) #x
+static const cli_opt pack_rows[] = {
+    { .name = "--output", .alt = "-o", .group = "", .kind = CLI_OUTPUT, .meta = "FILE",
+      CLI_FIELD(pack_args, out), .help = "the header to write (atomically); - writes it to standard output" },
+    { .name = "--name", .kind = CLI_TEXT, .meta = "NAME", CLI_FIELD(pack_args, name), .parse = parse_name,
+      .help = "prefix of every symbol (default: FILE's base name, or MESH's with -o -, or \"model\" when both are "
+              "-)" },
+    { .name = "--eye", .kind = CLI_CUSTOM, .meta = "x,y,z", .parse = parse_eye,
+      .help = "a camera at x,y,z (repeat for up to " XSTR(PACK_MAX_EYES) " views)" },
+    { .name = "--views", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = PACK_MAX_EYES, CLI_FIELD(pack_args, views),
+      .help = "N cameras around the model (%R): the default view turned by k*360/N degrees about the vertical "
+              "through the target, odd k mirrored to look from below" },
+    { .name = NULL },
+};
+
+const cli_command cmd_pack_spec = {
+    .name = "pack",
+    .usage = "usage: silk pack MESH -o MODEL.h [--name NAME] [--eye x,y,z]... [options]\n",
+    .about =
+        "Write MESH, loaded and with everything precomputed (normals, edges, feature\n"
+        "segments, visibility hierarchy), as a C header of const arrays that a device\n"
+        "renders from flash: NAME_mesh(&mesh) fills a silk_mesh pointing at them.\n"
+        "The header also holds the cameras NAME_camera(k) that `silk render` would\n"
+        "use with the same options: one per --eye, N of --views, or the default view;\n"
+        "each camera's comment names the --eye that gives `silk render` the same view.\n"
+        "--texture packs the texture, as `silk render --texture` takes it, with its\n"
+        "mipmaps; NAME_look(&phong) sets it, the OBJ material and the vertex colours\n"
+        "as `silk render` does.\n",
+    .examples =
+        "  silk pack bunny-500.obj -o bunny.h\n"
+        "  silk pack bunny-500.obj -o bunny.h --size 320x240 --eye 0,0,3 --eye 3,1,0\n"
+        "  silk pack knot-480.obj -o knot.h --size 320x240 --format rgb565 --views 3\n"
+        "  silk gen sphere -o - | silk pack - -o - --name sphere > sphere.h\n"
+        "  silk gen sphere --uv -o globe.obj && silk pack globe.obj --texture checker:64 -o globe.h\n",
+    .sets = { { pack_rows, 0, sizeof(pack_args), NULL, NULL }, CLI_SCENE_SET(PACK_OPTIONS) },
+    .nsets = 2,
+};
 
 /* ---- C text ------------------------------------------------------------------- */
 
@@ -377,7 +395,7 @@ static int valid_name(const char *s)
 static int orbit_eyes(const cli_scene_opts *o, const silk_mesh *m, int n, double eyes[][3])
 {
     silk_camera c0;
-    int rc = cli_camera(o, m, &c0);
+    int rc = cli_camera(o, m, NULL, &c0);
     if (rc) return rc;
     double t[3] = { cli_fx_to_double(c0.target.x), cli_fx_to_double(c0.target.y), cli_fx_to_double(c0.target.z) };
     double d[3] = { cli_fx_to_double(c0.eye.x) - t[0], cli_fx_to_double(c0.eye.y) - t[1],
@@ -394,47 +412,30 @@ static int orbit_eyes(const cli_scene_opts *o, const silk_mesh *m, int n, double
     return 0;
 }
 
+static int parse_name(const cli_opt *o, const char *v, void *base)
+{
+    (void)o;
+    if (!valid_name(v))
+        return cli_fail(-1, "pack: --name must be a C identifier of at most 40 characters (got \"%s\")", v);
+    ((pack_args *)base)->name = v;
+    return 0;
+}
+
 int cmd_pack(int argc, char **argv)
 {
     cli_scene_opts o;
     cli_scene_opts_default(&o);
-    o.groups = PACK_OPTIONS;
-    const char *out = NULL, *name_opt = NULL;
-    double eyes[PACK_MAX_EYES][3];
-    int neyes = 0, nviews = 0, rc = 0;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i];
-        if (cli_help(a, help)) return 0;
-        if (cli_is(a, "--eye")) {
-            /* Each --eye is one camera; the scene option keeps only the last. */
-            if (neyes == PACK_MAX_EYES) {
-                rc = cli_fail(CLI_EXIT_USAGE, "pack: at most %d --eye options", PACK_MAX_EYES);
-                break;
-            }
-            const char *v = cli_value(argc, argv, &i);
-            if (!v || cli_parse_vec3("--eye", v, CLI_MAX_COORD, eyes[neyes]) != 0) rc = CLI_EXIT_USAGE;
-            neyes++;
-            continue;
-        }
-        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
-        if (cli_texture_arg(&o, argc, argv, &i, &rc)) continue;
-        if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--views")) {
-            const char *v = cli_value(argc, argv, &i);
-            long n = 0;
-            if (!v || cli_parse_long("--views", v, 1, PACK_MAX_EYES, &n) != 0) rc = CLI_EXIT_USAGE;
-            nviews = (int)n;
-        } else if (cli_is(a, "--name")) {
-            if (!(name_opt = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (!valid_name(name_opt))
-                rc = cli_fail(CLI_EXIT_USAGE, "pack: --name must be a C identifier of at most 40 characters (got \"%s\")",
-                              name_opt);
-        } else {
-            rc = cli_mesh_arg("pack", a, &o.mesh_path);
-        }
-    }
-    if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "pack: no mesh given (silk pack MESH -o MODEL.h)");
+    pack_args pa;
+    memset(&pa, 0, sizeof pa);
+    cli_args args;
+    void *bases[] = { &pa, &o };
+    int rc = cli_parse(&cmd_pack_spec, bases, argc, argv, &args);
+    if (!rc) rc = cli_one_mesh("pack", args.npos, args.pos, "silk pack MESH -o MODEL.h", &o.mesh_path);
+    cli_args_free(&args);
+    if (rc == CLI_HELP) return 0;
+    const char *out = pa.out, *name_opt = pa.name;
+    double (*eyes)[3] = pa.eyes;
+    int neyes = pa.neyes, nviews = pa.views;
     if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "pack: no output given (-o MODEL.h)");
     if (!rc && neyes && nviews) rc = cli_fail(CLI_EXIT_USAGE, "pack: give --eye or --views, not both");
     /* A failed run leaves OUT as it was (written atomically). */
@@ -450,7 +451,7 @@ int cmd_pack(int argc, char **argv)
             memcpy(o.eye, eyes[k], sizeof o.eye);
             o.have_eye = 1;
         }
-        rc = cli_camera(&o, &s.mesh, &cams[k]);
+        rc = cli_scene_camera(&s, &o, &cams[k]);
         silk_view check;
         silk_error err;
         if (!rc && silk_view_init(&check, &cams[k], &err) != SILK_OK) rc = cli_fail(CLI_EXIT_USAGE, "%s", err.msg);

@@ -12,6 +12,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,61 +23,12 @@
 #include "prep/silmap.h"
 #include "prep/silmap_simplify.h"
 #include "commands.h"
+#include "meshcmd.h"
 #include "prep/model_file.h"
-#include "prep/simplify.h"
 #include "prep/stex_build.h"
 #include "prep/surface.h"
+#include "progress.h"
 #include "platform/platform.h"
-
-static void help(FILE *f)
-{
-    fprintf(f,
-            "usage: silk prepare FINE -o MODEL.silk --triangles N [options]\n"
-            "\n"
-            "Make the detailed mesh FINE (OBJ, PLY or STL; - for standard input) into a\n"
-            "prepared model: a coarse mesh of N triangles whose vertices are vertices of\n"
-            "FINE (so they lie on its surface) and whose normals are FINE's normals there,\n"
-            "split along feature edges and each turned (up to 30 degrees) so that the\n"
-            "curves smooth mode builds over its edges follow FINE: the mesh smooth mode\n"
-            "draws best.  flat, smooth, pn and blend draw it; every silk command that\n"
-            "takes a mesh takes MODEL.silk.\n"
-            "With it, for clip mode: FINE's outer hull of N triangles, shaded with FINE's\n"
-            "normals, and FINE's silhouette map (its outlines from many views).\n"
-            "Written atomically.  Prints:\n"
-            "  prepare FINE MODEL triangles=N vertices=N normals=N hull_triangles=N\n"
-            "          map_views=N map_bytes=N bytes=N fitted=N fit_rms_before=X fit_rms_after=X\n"
-            "and with --siltex: siltex_bytes=N siltex_error=E siltex_multi=S (the share\n"
-            "of view directions the texture gets wrong, averaged over the hull; the\n"
-            "share of texels whose visibility is not one lobe).\n"
-            "\n"
-            "options:\n"
-            "  -o, --output FILE   the prepared model (.silk)\n"
-            "  --triangles N       triangles of the coarse mesh (at least 4)\n"
-            "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
-            "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
-            "  --views N           silhouette map views: 12, 42, 162 (default), 642, ...\n"
-            "  --map-resolution R  each map view's image, R x R pixels [256]\n"
-            "  --map-error PX      simplify the map while a dropped view's outline is\n"
-            "                      predicted within PX pixels [0: keep every view]\n"
-            "  --siltex            the hull's silhouette texture too (siltex mode)\n"
-            "  --atlas N           its atlas, N x N texels, 8..4096 [128]\n"
-            "  --angles K          its azimuths per texel, 4..64 [12]\n"
-            "  --siltex-svd E      store the angles compressed to E eigenfunctions,\n"
-            "                      1..K [0: whole]\n"
-            "  --siltex-compare    also print the error and size for E = 4, 8 and 16\n"
-            "                      (those up to K) and whole\n"
-            "  --no-clip           no outer hull and silhouette map (clip mode)\n"
-            "  --no-mesh           only the hull and map (flat mode then draws the hull)\n"
-            "  --fit               move each normal (up to 30 degrees) so that the curves\n"
-            "                      smooth mode builds over its edges follow FINE closer\n"
-            "                      (the default)\n"
-            "  --no-fit            keep FINE's own normals\n"
-            "  --scale S           multiply coordinates by S while reading (as silk render)\n"
-            "  --quiet             no progress line on a terminal\n"
-            "\n"
-            "example:\n"
-            "  silk prepare bunny-fine.obj -o bunny.silk --triangles 500\n");
-}
 
 /* What clip mode needs (docs/clipping.md): the outer hull and the
  * silhouette map of the detailed mesh. */
@@ -88,8 +40,115 @@ typedef struct clip_opts {
     double map_error;        /* --map-error: 0 keeps every view */
     int siltex;              /* --siltex: the silhouette texture too */
     int siltex_compare;      /* --siltex-compare */
+    int quiet;               /* no progress line */
     stex_opts so;
 } clip_opts;
+
+/* prepare's own options. */
+typedef struct prepare_args {
+    const char *out;
+    int fit, no_clip, no_mesh;
+    int map_views;            /* 12, 42, 162, ...: 10 * 4^level + 2 */
+    int siltex_opt;           /* an option of --siltex given */
+    clip_opts co;
+} prepare_args;
+
+static void prepare_defaults(void *base)
+{
+    prepare_args *a = base;
+    memset(a, 0, sizeof *a);
+    a->map_views = 162;
+    a->fit = 1;
+    a->co.on = a->co.mesh = 1;
+    a->co.level = 2;
+    a->co.res = 256;
+    stex_opts_default(&a->co.so);
+}
+
+/* --map-views N: a subdivided icosahedron's vertices. */
+static int parse_map_views(const cli_opt *o, const char *v, void *base)
+{
+    prepare_args *a = base;
+    long n;
+    if (cli_parse_long(o->name, v, (long)o->lo, (long)o->hi, &n)) return -1;
+    int level = 0;
+    while (10L * (1L << (2 * level)) + 2 < n) level++;
+    if (10L * (1L << (2 * level)) + 2 != n)
+        return cli_fail(-1, "prepare: --map-views must be 12, 42, 162, 642, 2562, 10242 or 40962 (a subdivided "
+                        "icosahedron's vertices), got %s", v);
+    a->map_views = (int)n;
+    a->co.level = level;
+    return 0;
+}
+
+/* --fit (the default) and --no-fit: the last given wins. */
+static int parse_fit(const cli_opt *o, const char *v, void *base)
+{
+    (void)v;
+    ((prepare_args *)base)->fit = strcmp(o->name, "--fit") == 0;
+    return 0;
+}
+
+#define F(member) CLI_FIELD(prepare_args, member)
+#define SILTEX_OPT CLI_SEEN(prepare_args, siltex_opt)
+static const cli_opt prepare_rows[] = {
+    { .name = "--output", .alt = "-o", .group = "options", .kind = CLI_OUTPUT, .meta = "FILE", F(out),
+      .help = "the prepared model (.silk)" },
+    { .name = "--map-views", .kind = CLI_INT, .meta = "N", .lo = 12, .hi = 40962, F(map_views),
+      .parse = parse_map_views,
+      .help = "silhouette map views: 12, 42, 162 (default), 642, ... (a subdivided icosahedron's vertices)" },
+    { .name = "--map-resolution", .kind = CLI_INT, .meta = "R", .lo = 16, .hi = 4096, F(co.res),
+      .help = "each map view's image, R x R pixels (%R, default %D)" },
+    { .name = "--map-error", .kind = CLI_REAL, .meta = "PX", .lo = 0, .hi = 100, F(co.map_error),
+      .help = "simplify the map while a dropped view's outline is predicted within PX pixels (%R; default 0: keep "
+              "every view)" },
+    { .name = "--siltex", .kind = CLI_FLAG, F(co.siltex), .help = "the hull's silhouette texture too (siltex mode)" },
+    { .name = "--atlas", .kind = CLI_INT, .meta = "N", .lo = 8, .hi = 4096, F(co.so.atlas), SILTEX_OPT,
+      .help = "its atlas, N x N texels (%R, default %D)" },
+    { .name = "--angles", .kind = CLI_INT, .meta = "K", .lo = 4, .hi = 64, F(co.so.angles), SILTEX_OPT,
+      .help = "its azimuths per texel (%R, default %D)" },
+    { .name = "--siltex-svd", .kind = CLI_INT, .meta = "E", .lo = 0, .hi = 64, F(co.so.svd), SILTEX_OPT,
+      .help = "store the angles compressed to E eigenfunctions, 1..K (default 0: whole)" },
+    { .name = "--siltex-compare", .kind = CLI_FLAG, F(co.siltex_compare), SILTEX_OPT,
+      .help = "also print the error and size for E = 4, 8 and 16 (those up to K) and whole" },
+    { .name = "--no-clip", .kind = CLI_FLAG, F(no_clip), .help = "no outer hull and silhouette map (clip mode)" },
+    { .name = "--no-mesh", .kind = CLI_FLAG, F(no_mesh), .help = "only the hull and map (flat mode then draws the hull)" },
+    { .name = "--fit", .kind = CLI_CUSTOM, .parse = parse_fit,
+      .help = "move each normal (up to 30 degrees) so that the curves smooth mode builds over its edges follow FINE "
+              "closer (the default)" },
+    { .name = "--no-fit", .kind = CLI_CUSTOM, .parse = parse_fit, .help = "keep FINE's own normals" },
+    { .name = NULL },
+};
+#undef F
+
+static const char *const prepare_renamed[] = { "--views", "--map-views", NULL };
+
+const cli_command cmd_prepare_spec = {
+    .name = "prepare",
+    .usage = "usage: silk prepare FINE -o MODEL.silk --triangles N [options]\n",
+    .about =
+        "Make the detailed mesh FINE (OBJ, PLY or STL; - for standard input) into a\n"
+        "prepared model: a coarse mesh of N triangles whose vertices are vertices of\n"
+        "FINE (so they lie on its surface) and whose normals are FINE's normals there,\n"
+        "split along feature edges and each turned (up to 30 degrees) so that the\n"
+        "curves smooth mode builds over its edges follow FINE: the mesh smooth mode\n"
+        "draws best.  flat, smooth, pn and blend draw it; every silk command that\n"
+        "takes a mesh takes MODEL.silk.\n"
+        "With it, for clip mode: FINE's outer hull of N triangles, shaded with FINE's\n"
+        "normals, and FINE's silhouette map (its outlines from many views).\n"
+        "Written atomically.  Prints:\n"
+        "  prepare FINE MODEL triangles=N vertices=N normals=N hull_triangles=N\n"
+        "          map_views=N map_bytes=N bytes=N fitted=N fit_rms_before=X fit_rms_after=X\n"
+        "and with --siltex: siltex_bytes=N siltex_error=E siltex_multi=S (the share\n"
+        "of view directions the texture gets wrong, averaged over the hull; the\n"
+        "share of texels whose visibility is not one lobe).\n",
+    .examples = "  silk prepare bunny-fine.obj -o bunny.silk --triangles 500\n"
+                "  silk prepare armadillo-fine.obj -o armadillo.silk --triangles 500 --siltex\n",
+    .sets = { { prepare_rows, 0, sizeof(prepare_args), prepare_defaults, NULL },
+              SIMP_SET(SIMP_OPT_COMMON | SIMP_OPT_SHAPE) },
+    .nsets = 2,
+    .renamed = prepare_renamed,
+};
 
 typedef struct clip_stats {
     uint32_t hull_tris, hull_verts, views, views_before, map_bytes, map_bytes_before;
@@ -98,6 +157,9 @@ typedef struct clip_stats {
     double stex_error, stex_multi;
 } clip_stats;
 
+/* stex_build's progress: the progress line. */
+static void on_texels(void *user, double done, double total) { progress_update(user, done, total); }
+
 /* The STEX section for hull h of fine (stex_build.h).  0, or an exit
  * status after a one-line error. */
 static int add_siltex(model_out *mo, const char *in, const simp_mesh *fine, const uint32_t *fine_color,
@@ -105,7 +167,13 @@ static int add_siltex(model_out *mo, const char *in, const simp_mesh *fine, cons
 {
     stex st;
     stex_svd svd;
-    int rc = stex_build(fine, fine_color, h, &co->so, &st);
+    stex_opts so = co->so;
+    progress pr;
+    progress_start(&pr, co->quiet, "siltex");
+    so.progress = on_texels;
+    so.progress_user = &pr;
+    int rc = stex_build(fine, fine_color, h, &so, &st);
+    progress_end(&pr);
     if (rc == -2)
         return cli_fail(CLI_EXIT_INPUT, "%s: the hull's %u triangles do not fit a %d x %d atlas (raise --atlas)", in,
                         h->ntris, co->so.atlas, co->so.atlas);
@@ -323,75 +391,21 @@ static int prepare(const char *in, const char *out, const simp_opts *so, silk_de
 
 int cmd_prepare(int argc, char **argv)
 {
+    prepare_args pa;
+    prepare_defaults(&pa);
+    simp_args args;
+    simp_args_default(&args);
+    cli_args ca;
+    void *bases[] = { &pa, &args };
     const char *in = NULL;
-    simp_args args = { NULL, -1, { 1, 0 }, 0 };
-    simp_opts so;
-    simp_opts_default(&so, 0);
-    so.subset = 1;
-    int rc = 0, fit = 1, k;
-    clip_opts co = { 1, 1, 2, 256, 0, 0, 0, { 0, 0, 0, 0, 0, 0 } };
-    stex_opts_default(&co.so);
-    long lv;
-    const char *siltex_opt = NULL;   /* a --siltex option given */
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help(stdout);
-            return 0;
-        } else if ((k = simp_common_option(argc, argv, &i, &args)) != 0 || (k = simplify_option(argc, argv, &i, &so)) != 0) {
-            if (k < 0) rc = CLI_EXIT_USAGE;
-        } else if (strcmp(a, "--fit") == 0) {
-            fit = 1;
-        } else if (strcmp(a, "--no-fit") == 0) {
-            fit = 0;
-        } else if (strcmp(a, "--no-clip") == 0) {
-            co.on = 0;
-        } else if (strcmp(a, "--no-mesh") == 0) {
-            co.mesh = 0;
-        } else if (strcmp(a, "--siltex") == 0) {
-            co.siltex = 1;
-        } else if (strcmp(a, "--siltex-compare") == 0) {
-            co.siltex_compare = 1;
-            siltex_opt = a;
-        } else if (cli_is(a, "--atlas") || cli_is(a, "--angles") || cli_is(a, "--siltex-svd")) {
-            const char *v = cli_value(argc, argv, &i);
-            int atlas = cli_is(a, "--atlas"), angles = cli_is(a, "--angles");
-            const char *name = atlas ? "--atlas" : angles ? "--angles" : "--siltex-svd";
-            siltex_opt = name;
-            if (!v || cli_parse_long(name, v, atlas ? 8 : angles ? 4 : 0, atlas ? 4096 : 64, &lv) != 0)
-                rc = CLI_EXIT_USAGE;
-            else
-                *(atlas ? &co.so.atlas : angles ? &co.so.angles : &co.so.svd) = (int)lv;
-        } else if (strcmp(a, "--views") == 0 || strcmp(a, "--map-resolution") == 0 || strcmp(a, "--map-error") == 0) {
-            double v;
-            if (i + 1 >= argc) rc = cli_fail(CLI_EXIT_USAGE, "prepare: %s needs a value", a);
-            else if (strcmp(a, "--views") == 0) {
-                if (cli_parse_double(a, argv[++i], 12, 40962, &v) == 0) {
-                    co.level = 0;
-                    while (10.0 * (1 << (2 * co.level)) + 2 < v) co.level++;
-                    if (10.0 * (1 << (2 * co.level)) + 2 != v)
-                        rc = cli_fail(CLI_EXIT_USAGE, "prepare: --views must be 12, 42, 162, 642, 2562, 10242 or 40962 "
-                                      "(a subdivided icosahedron's vertices), got %s", argv[i]);
-                } else {
-                    rc = CLI_EXIT_USAGE;
-                }
-            } else if (strcmp(a, "--map-resolution") == 0) {
-                if (cli_parse_double(a, argv[++i], 16, 4096, &v) != 0) rc = CLI_EXIT_USAGE;
-                else if (v != floor(v)) rc = cli_fail(CLI_EXIT_USAGE, "--map-resolution must be a whole number of pixels");
-                else co.res = (int)v;
-            } else if (cli_parse_double(a, argv[++i], 0, 100, &co.map_error) != 0) {
-                rc = CLI_EXIT_USAGE;
-            }
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_fail(CLI_EXIT_USAGE, "prepare: unknown option %s (try silk prepare --help)", a);
-        } else if (!in) {
-            in = a;
-        } else {
-            rc = cli_fail(CLI_EXIT_USAGE, "prepare: one input (got a second, %s; the output goes after -o)", a);
-        }
-    }
-    if (!rc && !in) rc = cli_fail(CLI_EXIT_USAGE, "prepare: give FINE (silk prepare FINE -o MODEL.silk --triangles N)");
-    if (!rc && !args.out) rc = cli_fail(CLI_EXIT_USAGE, "prepare: -o MODEL.silk is needed");
+    int rc = cli_parse(&cmd_prepare_spec, bases, argc, argv, &ca);
+    if (!rc) rc = simp_one_input("prepare", ca.npos, ca.pos, "silk prepare FINE -o MODEL.silk --triangles N", &in);
+    cli_args_free(&ca);
+    if (rc == CLI_HELP) return 0;
+    clip_opts co = pa.co;
+    co.on = !pa.no_clip;
+    co.mesh = !pa.no_mesh;
+    if (!rc && !pa.out) rc = cli_fail(CLI_EXIT_USAGE, "prepare: -o MODEL.silk is needed");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --triangles N is needed");
     if (!rc && !co.on && !co.mesh) rc = cli_fail(CLI_EXIT_USAGE, "prepare: --no-clip and --no-mesh leave nothing to write");
     if (!rc && co.siltex && !co.on)
@@ -399,12 +413,18 @@ int cmd_prepare(int argc, char **argv)
     if (!rc && co.so.svd > co.so.angles)
         rc = cli_fail(CLI_EXIT_USAGE, "prepare: --siltex-svd %d is more eigenfunctions than --angles %d", co.so.svd,
                       co.so.angles);
-    if (!rc && !co.siltex && siltex_opt) rc = cli_fail(CLI_EXIT_USAGE, "prepare: %s goes with --siltex", siltex_opt);
+    for (int k = 0; !rc && !co.siltex && k < ca.ngiven; k++)
+        if (ca.given[k]->seen == offsetof(prepare_args, siltex_opt) + 1)   /* one of --siltex's options */
+            rc = cli_fail(CLI_EXIT_USAGE, "prepare: %s goes with --siltex", ca.given[k]->name);
     if (rc) return rc;
-    so.target_tris = (uint32_t)args.target;
-    if (silk_file_same(in, args.out))
+    simp_opts so;
+    simp_opts_default(&so, (uint32_t)args.target);
+    so.subset = 1;
+    so.crease_deg = args.crease_deg;
+    so.feature_weight = args.feature_weight;
+    if (silk_file_same(in, pa.out))
         return cli_fail(CLI_EXIT_USAGE, "prepare: the output would overwrite the input %s", in);
     /* A failed run leaves OUT as it was (written atomically), as every command. */
-    co.so.quiet = args.quiet;
-    return prepare(in, args.out, &so, args.scale, args.quiet, fit, &co);
+    co.quiet = args.quiet;
+    return prepare(in, pa.out, &so, args.scale, args.quiet, pa.fit, &co);
 }

@@ -87,7 +87,7 @@ static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, fram
 {
     silk_sink sink = { band_none, NULL };
     silk_camera c0;
-    int rc = cli_camera(o, &s->mesh, &c0);
+    int rc = cli_camera(o, &s->mesh, NULL, &c0);
     int views = SILK_BOARD_VIEWS;
     for (int k = 0; !rc && k < views; k++) {
         double a = 2 * CLI_PI * k / views;
@@ -101,7 +101,7 @@ static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, fram
         silk_camera cam;
         silk_view view;
         silk_error err;
-        if ((rc = cli_camera(o, &s->mesh, &cam)) != 0) break;
+        if ((rc = cli_camera(o, &s->mesh, NULL, &cam)) != 0) break;
         if (silk_view_init(&view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         silk_phong_default(&s->phong, &view);
         silk_hal_phong(&s->hal, &s->phong);
@@ -110,6 +110,7 @@ static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, fram
             silk_render_opts ro = o->render;
             ro.mode = clip || siltex ? o->render.mode : mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
             if (clip && mode) ro.aa = 0;   /* both kinds of stencil */
+            cli_scene_render_opts(s, &ro);
             silk_frame_stats fs;
             if (silk_render_bands(&s->arena, &s->mesh, &view, &s->hal, &ro, band, &sink, &fs, &err) != SILK_OK)
                 return cli_fail(CLI_EXIT_INPUT, "%s: %s", o->mesh_path, err.msg);
@@ -197,6 +198,7 @@ static int profile(const char *mesh, const char *csv_path, int check, int hull_m
     cli_scene_opts o;
     cli_scene_opts_default(&o);   /* the board's frame size and format */
     o.mesh_path = mesh;
+    o.only_drawn = 1;             /* a device holds only the mesh it draws */
     if (hull_mode) o.render.mode = (silk_mode)hull_mode;
     int rows = SILK_BOARD_BAND_ROWS < 1 || SILK_BOARD_BAND_ROWS > o.height ? o.height : SILK_BOARD_BAND_ROWS;
 
@@ -233,60 +235,79 @@ static int profile(const char *mesh, const char *csv_path, int check, int hull_m
 
 /* ---- the command ----------------------------------------------------------------- */
 
-static void help(FILE *f)
+typedef struct profile_args {
+    const char *csv;
+    int check, mode;           /* mode 0, or SILK_MODE_CLIP or SILK_MODE_SILTEX */
+} profile_args;
+
+static int parse_board(const cli_opt *o, const char *v, void *base)
 {
-    fprintf(f,
-            "usage: silk profile MESH [--board " SILK_BOARD_NAME "] [--csv FILE] [--check] [--mode clip|siltex]\n"
-            "\n"
-            "Where every byte of RAM goes when this board (" SILK_BOARD_NAME ", the board this silk was\n"
-            "built for: %dx%d, bands of %d rows) renders MESH: the mesh in the arena by\n"
-            "part, the arena by purpose with high-water marks and the band buffers, as a\n"
-            "table, a CSV file and a last line\n"
-            "  footprint BOARD MESH ram_total_bytes=N model_bytes=N\n"
-            "It renders %d views around the model, each flat and smooth, in this process.\n"
-            "A firmware board (mps2-an385) measures itself under QEMU, with its flash:\n"
-            "run `make profile PROFILE_BOARD=NAME` in the silk sources for it.\n"
-            "\n"
-            "  --board NAME         the board; only " SILK_BOARD_NAME " (the one built for)\n"
-            "  --csv FILE           the table as CSV (area,item,bytes) too\n"
-            "  --check              exit 1 when a frame fell back (the arena ran out)\n"
-            "  --mode clip|siltex   profile clip mode instead (a prepared model's hull and\n"
-            "                       map: the map's flash bytes, the stencil's RAM), or\n"
-            "                       siltex mode (its hull and silhouette texture: the\n"
-            "                       texture's flash bytes)\n"
-            "\n"
-            "examples:\n"
-            "  silk profile ../shared/meshes/bunny-500.obj\n"
-            "  make profile PROFILE_BOARD=mps2-an385 PROFILE_MESH=../shared/meshes/knot-480.obj\n",
-            SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT, SILK_BOARD_BAND_ROWS, SILK_BOARD_VIEWS);
+    (void)o, (void)base;
+    if (strcmp(v, SILK_BOARD_NAME) != 0)
+        return cli_fail(-1, "profile: this silk was built for board %s; for %s run `make profile PROFILE_BOARD=%s` in "
+                        "the silk sources", SILK_BOARD_NAME, v, v);
+    return 0;
 }
+
+/* --mode as every command reads it; profile takes the two hull modes. */
+static int parse_mode(const cli_opt *o, const char *v, void *base)
+{
+    silk_mode m;
+    uint32_t level;
+    if (silk_mode_parse(v, &m, &level) != 0 || (m != SILK_MODE_CLIP && m != SILK_MODE_SILTEX))
+        return cli_fail(-1, "%s must be clip or siltex (got \"%s\"; flat and smooth are profiled without it)", o->name,
+                        v);
+    ((profile_args *)base)->mode = (int)m;
+    return 0;
+}
+
+static const cli_opt profile_rows[] = {
+    { .name = "--board", .group = "", .kind = CLI_CUSTOM, .meta = "NAME", .parse = parse_board,
+      .help = "the board; only " SILK_BOARD_NAME " (the one built for)" },
+    { .name = "--csv", .kind = CLI_OUTPUT, .meta = "FILE", CLI_FIELD(profile_args, csv),
+      .help = "the table as CSV (area,item,bytes) too" },
+    { .name = "--check", .kind = CLI_FLAG, CLI_FIELD(profile_args, check),
+      .help = "exit 1 when a frame fell back (the arena ran out)" },
+    { .name = "--mode", .kind = CLI_CUSTOM, .meta = "clip|siltex", .parse = parse_mode,
+      .help = "profile clip mode instead of flat and smooth (a prepared model's hull and map: the map's flash bytes, "
+              "the stencil's RAM), or siltex mode (its hull and silhouette texture: the texture's flash bytes)" },
+    { .name = NULL },
+};
+
+static void profile_more(FILE *f)
+{
+    fprintf(f, "This board: " SILK_BOARD_NAME ", %dx%d, bands of %d rows; %d views around the model, each flat and\n"
+            "smooth, rendered in this process.  A firmware board (mps2-an385) measures itself\n"
+            "under QEMU, with its flash: run `make profile PROFILE_BOARD=NAME` in the silk\n"
+            "sources for it.\n", SILK_BOARD_WIDTH, SILK_BOARD_HEIGHT, SILK_BOARD_BAND_ROWS, SILK_BOARD_VIEWS);
+}
+
+const cli_command cmd_profile_spec = {
+    .name = "profile",
+    .usage = "usage: silk profile MESH [--board " SILK_BOARD_NAME "] [--csv FILE] [--check] [--mode clip|siltex]\n",
+    .about =
+        "Where every byte of RAM goes when the board this silk was built for renders\n"
+        "MESH: the mesh in the arena by part, the arena by purpose with high-water\n"
+        "marks and the band buffers, as a table, a CSV file and a last line\n"
+        "  footprint BOARD MESH ram_total_bytes=N model_bytes=N\n",
+    .examples =
+        "  silk profile ../shared/meshes/bunny-500.obj\n"
+        "  make profile PROFILE_BOARD=mps2-an385 PROFILE_MESH=../shared/meshes/knot-480.obj\n",
+    .more = profile_more,
+    .sets = { { profile_rows, 0, sizeof(profile_args), NULL, NULL } },
+    .nsets = 1,
+};
 
 int cmd_profile(int argc, char **argv)
 {
-    const char *mesh = NULL, *csv = NULL;
-    int check = 0, hull_mode = 0;   /* 0, or SILK_MODE_CLIP or SILK_MODE_SILTEX */
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v;
-        if (cli_help(a, help)) return 0;
-        if (cli_is(a, "--board")) {
-            if (!(v = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
-            if (strcmp(v, SILK_BOARD_NAME) != 0)
-                return cli_fail(CLI_EXIT_USAGE, "profile: this silk was built for board %s; for %s run "
-                                "`make profile PROFILE_BOARD=%s` in the silk sources", SILK_BOARD_NAME, v, v);
-        } else if (cli_is(a, "--csv")) {
-            if (!(csv = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
-        } else if (strcmp(a, "--check") == 0) {
-            check = 1;
-        } else if (cli_is(a, "--mode")) {
-            if (!(v = cli_value(argc, argv, &i))) return CLI_EXIT_USAGE;
-            if (strcmp(v, "clip") != 0 && strcmp(v, "siltex") != 0)
-                return cli_fail(CLI_EXIT_USAGE,
-                                "profile: --mode takes clip or siltex (flat and smooth are profiled without it)");
-            hull_mode = strcmp(v, "clip") == 0 ? SILK_MODE_CLIP : SILK_MODE_SILTEX;
-        } else if (cli_mesh_arg("profile", a, &mesh)) {
-            return CLI_EXIT_USAGE;
-        }
-    }
-    if (!mesh) return cli_fail(CLI_EXIT_USAGE, "profile: no mesh given (silk profile MESH)");
-    return profile(mesh, csv, check, hull_mode);
+    profile_args pa = { NULL, 0, 0 };
+    cli_args args;
+    void *bases[] = { &pa };
+    const char *mesh = NULL;
+    int rc = cli_parse(&cmd_profile_spec, bases, argc, argv, &args);
+    if (!rc) rc = cli_one_mesh("profile", args.npos, args.pos, "silk profile MESH", &mesh);
+    cli_args_free(&args);
+    if (rc == CLI_HELP) return 0;
+    if (rc) return rc;
+    return profile(mesh, pa.csv, pa.check, pa.mode);
 }

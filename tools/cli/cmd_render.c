@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "progress.h"
 #include "image/sheet.h"
+#include "opt.h"
 #include "platform/platform.h"
 
 /* Frame series: --turntable, --modes, --sheet, --zoom. */
@@ -33,48 +34,85 @@ typedef struct series {
     int pixels;                      /* --pixels N: cells drawn N times smaller, magnified N times; 1 without */
 } series;
 
-static void help(FILE *f)
+/* render's own options; the scene options are cli_scene_opts. */
+typedef struct render_args {
+    const char *out;
+    silk_image_format out_fmt;       /* --image-format, for -o - */
+    int compare;
+    int ssaa;                        /* 1: without */
+    series se;
+    int use_series;                  /* a series option was given */
+} render_args;
+
+static void render_defaults(void *base)
 {
-    fprintf(f,
-            "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n"
-            "\n"
-            "Render MESH (OBJ, PLY, STL or a prepared .silk model; - for standard input)\n"
-            "to an image; the format follows OUT's extension.\n"
-            "\n"
-            "  -o, --output OUT     the image to write (.png or .ppm); written atomically;\n"
-            "                       - writes it to standard output\n"
-            "  --image-format png|ppm  the format for -o - (default png)\n"
-            "  --compare            flat and smooth side by side (an image twice as wide)\n"
-            "  --ssaa N             reference picture: draw N x N times larger (2..8) without\n"
-            "                       anti-aliasing and average each N x N block (alpha: the\n"
-            "                       share of the block the object covers)\n"
-            "Series (docs/viewer.md):\n"
-            "  --turntable N        N views around the model (1..%d), turning about the up\n"
-            "                       axis from the first view; OUT holds the frame number,\n"
-            "                       e.g. -o out/turn_%%03d.png, unless --sheet\n"
-            "  --modes LIST         render modes to compare, e.g. flat,smooth,blend,pn\n"
-            "                       (pnL: PN triangles at level L); needs --sheet for more\n"
-            "                       than one\n"
-            "  --sheet              one contact sheet at OUT: the modes side by side, the\n"
-            "                       views in rows, each labelled with mode and triangles drawn\n"
-            "  --zoom Z             close-up, Z times (1..64) magnified around a point of\n"
-            "                       the silhouette (the rightmost silhouette triangle)\n"
-            "  --pixels N           with --sheet: draw each cell N times smaller (2..16) and\n"
-            "                       magnify it N times, pixel by pixel, to show its pixels\n",
-            SERIES_MAX_VIEWS);
-    cli_print_scene_help(f, CLI_OPT_ALL);
-    fprintf(f,
-            "\n"
-            "examples:\n"
-            "  silk render sphere.obj -o sphere.png\n"
-            "  silk render bunny.obj -o bunny.png --size 1024x768 --mode flat --wire\n"
-            "  silk render torus.obj -o t.ppm --eye 0,3,3 --ortho 1.6 --format rgb565\n"
-            "  silk render bunny.obj -o bunny.png --yaw 90 --pitch 30 --color e0a040 --bg none\n"
-            "  silk render bunny.obj -o lit.png --light -1,1,1 --light point:2,0,2:ff8040\n"
-            "  silk gen sphere -o - | silk render - -o - > sphere.png\n"
-            "  silk render bunny.obj --turntable 36 -o out/turn_%%03d.png\n"
-            "  silk render bunny.obj --modes flat,smooth,blend,pn --sheet -o modes.png --size 320x240\n");
+    render_args *r = base;
+    memset(r, 0, sizeof *r);
+    r->ssaa = 1;
+    r->se.views = 1;
+    r->se.pixels = 1;
 }
+
+static int parse_modes(const cli_opt *o, const char *v, void *base)
+{
+    render_args *r = base;
+    return cli_parse_modes(o->name, v, r->se.mode, SERIES_MAX_MODES, &r->se.nmodes);
+}
+
+#define F(member) CLI_FIELD(render_args, member)
+#define SERIES CLI_SEEN(render_args, use_series)
+static const int image_fmt_v[] = { SILK_IMAGE_PNG, SILK_IMAGE_PPM };
+static const cli_opt render_rows[] = {
+    { .name = "--output", .alt = "-o", .group = "", .kind = CLI_OUTPUT, .meta = "OUT", F(out),
+      .help = "the image to write (.png or .ppm), atomically; - is standard output" },
+    { .name = "--image-format", .kind = CLI_CHOICE, .choices = "png|ppm", .values = image_fmt_v, F(out_fmt),
+      .help = "the format for -o - (default png)" },
+    { .name = "--compare", .kind = CLI_FLAG, F(compare),
+      .help = "flat and the mode of --mode (default smooth) side by side: an image twice as wide" },
+    { .name = "--ssaa", .kind = CLI_INT, .meta = "N", .lo = 2, .hi = 8, F(ssaa),
+      .help = "reference picture: draw N x N times larger (%R) without anti-aliasing and average each N x N block "
+              "(alpha: the share of the block the object covers)" },
+    { .name = "--turntable", .group = "Series (docs/viewer.md)", .kind = CLI_INT, .meta = "N", .lo = 1,
+      .hi = SERIES_MAX_VIEWS, F(se.views), SERIES,
+      .help = "N views around the model (%R), turning about the up axis from the first view; OUT holds the frame "
+              "number, e.g. -o out/turn_%%03d.png, unless --sheet" },
+    { .name = "--modes", .kind = CLI_CUSTOM, .meta = "LIST", SERIES, .parse = parse_modes,
+      .help = "render modes to compare, e.g. flat,smooth,blend,pn (pnL: PN triangles at level L; clip and siltex: a "
+              "prepared model's; MODE-noaa: without anti-aliasing); needs --sheet for more than one" },
+    { .name = "--sheet", .kind = CLI_FLAG, F(se.sheet), SERIES,
+      .help = "one contact sheet at OUT: the modes side by side, the views in rows, each labelled with mode and "
+              "triangles drawn" },
+    { .name = "--zoom", .kind = CLI_REAL, .meta = "Z", .lo = 1, .hi = 64, F(se.zoom), SERIES,
+      .help = "close-up, Z times (%R) magnified around a point of the silhouette (the rightmost silhouette "
+              "triangle)" },
+    { .name = "--pixels", .kind = CLI_INT, .meta = "N", .lo = 2, .hi = 16, F(se.pixels), SERIES,
+      .help = "with --sheet: draw each cell N times smaller (%R) and magnify it N times, pixel by pixel, to show its "
+              "pixels" },
+    { .name = NULL },
+};
+#undef F
+
+const cli_command cmd_render_spec = {
+    .name = "render",
+    .usage = "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n",
+    .about =
+        "Render MESH (OBJ, PLY, STL or a prepared .silk model; - for standard input)\n"
+        "to an image; the format follows OUT's extension.  The default camera frames\n"
+        "the model's mesh in every mode (a prepared model's coarse mesh: clip and\n"
+        "siltex draw its hull from the same view).\n",
+    .examples =
+        "  silk render sphere.obj -o sphere.png\n"
+        "  silk render bunny.obj -o bunny.png --size 1024x768 --mode flat --wire\n"
+        "  silk render torus.obj -o t.ppm --eye 0,3,3 --ortho 1.6 --format rgb565\n"
+        "  silk render bunny.obj -o bunny.png --yaw 90 --pitch 30 --color e0a040 --bg none\n"
+        "  silk render bunny.obj -o lit.png --light -1,1,1 --light point:2,0,2:ff8040\n"
+        "  silk gen sphere -o - | silk render - -o - > sphere.png\n"
+        "  silk render bunny.obj --turntable 36 -o out/turn_%03d.png\n"
+        "  silk render bunny.obj --modes flat,smooth,blend,pn --sheet -o modes.png --size 320x240\n"
+        "  silk render bunny.silk --modes flat,smooth,clip,siltex --sheet -o modes.png --size 320x240\n",
+    .sets = { { render_rows, 0, sizeof(render_args), render_defaults, NULL }, CLI_SCENE_SET(CLI_OPT_ALL) },
+    .nsets = 2,
+};
 
 /* Copy a w x h frame into columns [x0, x0+w) of a wider image. */
 static void blit(const silk_target *src, uint8_t *dst, size_t dst_stride, int x0)
@@ -148,8 +186,15 @@ static int render(cli_scene_opts *o, const char *out, silk_image_format out_fmt,
         size_t bpp = silk_pixfmt_bytes(o->fmt), wide_stride = 2 * (size_t)o->width * bpp;
         silk_render_opts ro = o->render;
         for (int pass = 0; pass < (compare ? 2 : 1); pass++) {
-            if (compare) ro.mode = pass == 0 ? SILK_MODE_FLAT : SILK_MODE_SMOOTH;
-            silk_status st = silk_render(&s.arena, &s.mesh, &s.view, &s.hal, &ro, &s.target, &stats, &err);
+            /* --compare: flat, then the mode, each with its own look */
+            ro.mode = compare && pass == 0 ? SILK_MODE_FLAT : o->render.mode;
+            cli_scene_render_opts(&s, &ro);
+            silk_phong phong;
+            silk_hal hal;
+            cli_scene_phong(&s, o, ro.mode, &s.view, &phong);
+            silk_hal_phong(&hal, &phong);
+            silk_status st = silk_render(&s.arena, cli_scene_mesh(&s, ro.mode), &s.view, &hal, &ro, &s.target, &stats,
+                                         &err);
             if (st != SILK_OK) {
                 free(wide);
                 cli_scene_free(&s);
@@ -218,7 +263,7 @@ static int zoom_camera(const cli_scene *s, double zoom, silk_camera *cam)
     silk_view v;
     silk_error err;
     if (silk_view_init(&v, cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
-    const silk_mesh *m = &s->mesh;
+    const silk_mesh *m = &s->mesh;   /* the point every mode's close-up looks at */
     for (int pass = 0; pass < 2; pass++) {
         silk_fx best = SILK_FX_MIN;
         for (uint32_t t = 0; t < m->ntris; t++) {
@@ -279,7 +324,7 @@ static int series_view(const cli_scene_opts *o, const cli_scene *s, const series
             turned.target[i] = t[i];
             turned.up[i] = u[i];
         }
-        int rc = cli_camera(&turned, &s->mesh, &cam);
+        int rc = cli_scene_camera(s, &turned, &cam);
         if (rc) return rc;
     }
     if (se->zoom > 1) {
@@ -308,6 +353,10 @@ static void cell_label(const series *se, const silk_render_opts *ro, const silk_
         snprintf(more, sizeof more, "beta %g", cli_fx_to_double(ro->blend_beta));
     else if (ro->mode == SILK_MODE_PN)
         snprintf(more, sizeof more, "%s normals", ro->pn_normals == SILK_PN_LINEAR ? "linear" : "quadratic");
+    else if (ro->mode == SILK_MODE_CLIP)
+        snprintf(more, sizeof more, "hull, map");
+    else if (ro->mode == SILK_MODE_SILTEX)
+        snprintf(more, sizeof more, "hull, texture");
     else
         snprintf(more, sizeof more, "coarse mesh");
     snprintf(buf, n, "%s  %u tris\n%s", mode, (unsigned)st->tris_drawn, more);
@@ -349,9 +398,10 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
     if (se->sheet) {
         char title[200];
         sheet_title(o, se, title, sizeof title);
-        if (sheet_init(&sh, cols, rows, o->width * se->pixels, o->height * se->pixels, title)) {
+        silk_error err;
+        if (sheet_init(&sh, cols, rows, o->width * se->pixels, o->height * se->pixels, title, &err) != SILK_OK) {
             sheet_free(&sh);
-            return CLI_EXIT_INPUT;
+            return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
         }
     }
     silk_target big;
@@ -371,10 +421,6 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
         progress_update(&pr, k, se->views);
         silk_view view;
         if ((rc = series_view(o, s, se, k, &view)) != 0) break;
-        silk_phong phong;
-        silk_hal hal;
-        cli_scene_phong(s, o, &view, &phong);
-        silk_hal_phong(&hal, &phong);
         for (int m = 0; m < nmodes && !rc; m++) {
             silk_render_opts ro = o->render;
             if (se->nmodes) {
@@ -382,9 +428,14 @@ static int series_frames(const cli_scene_opts *o, const char *out, silk_image_fo
                 if (se->mode[m].aa_off) ro.aa = 0;
                 if (se->mode[m].level) ro.level = se->mode[m].level;
             }
+            cli_scene_render_opts(s, &ro);
+            silk_phong phong;
+            silk_hal hal;
+            cli_scene_phong(s, o, ro.mode, &view, &phong);
+            silk_hal_phong(&hal, &phong);
             silk_error err;
             silk_frame_stats st;
-            if (silk_render(&s->arena, &s->mesh, &view, &hal, &ro, &s->target, &st, &err) != SILK_OK) {
+            if (silk_render(&s->arena, cli_scene_mesh(s, ro.mode), &view, &hal, &ro, &s->target, &st, &err) != SILK_OK) {
                 rc = cli_fail(CLI_EXIT_INPUT, "%s: %s", cli_input_name(o->mesh_path), err.msg);
                 break;
             }
@@ -448,86 +499,58 @@ static int render_series(cli_scene_opts *o, const char *out, silk_image_format o
 int cmd_render(int argc, char **argv)
 {
     cli_scene_opts o;
+    render_args r;
     cli_scene_opts_default(&o);
-    const char *out = NULL;
-    int compare = 0, rc = 0, use_series = 0;
-    long ssaa = 1;
-    silk_image_format out_fmt = SILK_IMAGE_NONE;
-    series se;
-    memset(&se, 0, sizeof se);
-    se.views = 1;
-    se.pixels = 1;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i];
-        if (cli_help(a, help)) return 0;
-        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
-        if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(out = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--image-format")) {
-            const char *v = cli_value(argc, argv, &i);
-            int ppm;
-            if (!v || cli_parse_choice("--image-format", v, "png", "ppm", &ppm)) rc = CLI_EXIT_USAGE;
-            else out_fmt = ppm ? SILK_IMAGE_PPM : SILK_IMAGE_PNG;
-        } else if (strcmp(a, "--compare") == 0) {
-            compare = 1;
-        } else if (cli_is(a, "--turntable")) {
-            const char *v = cli_value(argc, argv, &i);
-            long n;
-            if (!v || cli_parse_long("--turntable", v, 1, SERIES_MAX_VIEWS, &n)) rc = CLI_EXIT_USAGE;
-            else se.views = (int)n;
-            use_series = 1;
-        } else if (cli_is(a, "--modes")) {
-            const char *v = cli_value(argc, argv, &i);
-            if (!v || cli_parse_modes("--modes", v, se.mode, SERIES_MAX_MODES, &se.nmodes)) rc = CLI_EXIT_USAGE;
-            use_series = 1;
-        } else if (strcmp(a, "--sheet") == 0) {
-            se.sheet = use_series = 1;
-        } else if (cli_is(a, "--pixels")) {
-            const char *v = cli_value(argc, argv, &i);
-            long n;
-            if (!v || cli_parse_long("--pixels", v, 2, 16, &n)) rc = CLI_EXIT_USAGE;
-            else se.pixels = (int)n;
-            use_series = 1;
-        } else if (cli_is(a, "--ssaa")) {
-            const char *v = cli_value(argc, argv, &i);
-            if (!v || cli_parse_long("--ssaa", v, 2, 8, &ssaa)) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--zoom")) {
-            const char *v = cli_value(argc, argv, &i);
-            if (!v || cli_parse_double("--zoom", v, 1, 64, &se.zoom)) rc = CLI_EXIT_USAGE;
-            use_series = 1;
-        } else {
-            rc = cli_mesh_arg("render", a, &o.mesh_path);
-        }
-    }
-    if (!rc && !o.mesh_path) rc = cli_fail(CLI_EXIT_USAGE, "render: no mesh given (silk render MESH -o OUT.png)");
-    if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "render: no output given (-o OUT.png or OUT.ppm)");
+    render_defaults(&r);
+    cli_args args;
+    void *bases[] = { &r, &o };
+    int rc = cli_parse(&cmd_render_spec, bases, argc, argv, &args);
+    if (!rc) rc = cli_one_mesh("render", args.npos, args.pos, "silk render MESH -o OUT.png", &o.mesh_path);
+    cli_args_free(&args);
+    if (rc == CLI_HELP) return 0;
+    if (rc) return rc;
+    series *se = &r.se;
+    const char *out = r.out;
+    silk_image_format out_fmt = r.out_fmt;
+    int compare = r.compare, use_series = r.use_series;
+    long ssaa = r.ssaa;
+    for (int m = 0; m < se->nmodes; m++) o.modes |= 1u << se->mode[m].mode;
+
+    if (!out) rc = cli_fail(CLI_EXIT_USAGE, "render: no output given (-o OUT.png or OUT.ppm)");
     if (!rc && !silk_path_is_stdio(out) && silk_image_format_for_path(out) == SILK_IMAGE_NONE)
         rc = cli_fail(CLI_EXIT_USAGE, "render: %s: unknown image format (use .png or .ppm)", out);
     if (!rc && out_fmt && !silk_path_is_stdio(out) && out_fmt != silk_image_format_for_path(out))
         rc = cli_fail(CLI_EXIT_USAGE, "render: --image-format is for -o - (%s names its format)", out);
-    if (!rc && o.bg_none && (compare || se.sheet))
+    if (!rc && o.bg_none && (compare || se->sheet))
         rc = cli_fail(CLI_EXIT_USAGE, "render: --bg none is for single frames (not --compare or --sheet)");
-    if (!rc && silk_path_is_stdio(out) && se.views > 1 && !se.sheet)
+    if (!rc && silk_path_is_stdio(out) && se->views > 1 && !se->sheet)
         rc = cli_fail(CLI_EXIT_USAGE, "render: --turntable writes one file per view; -o - needs --sheet");
+    if (!rc && compare && o.render.mode == SILK_MODE_FLAT)
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --compare puts flat beside the mode of --mode; give another mode than "
+                      "flat (or --modes flat,... --sheet)");
     if (!rc && use_series) {
         if (compare)
-            rc = cli_fail(CLI_EXIT_USAGE, "render: --compare is flat|smooth in one image; for a series use --modes flat,smooth --sheet");
-        else if (se.nmodes > 1 && !se.sheet)
-            rc = cli_fail(CLI_EXIT_USAGE, "render: --modes with %d modes needs --sheet (they go side by side into one image)", se.nmodes);
-        else if (se.views > 1 && !se.sheet && pattern_check(out) != 1)
+            rc = cli_fail(CLI_EXIT_USAGE, "render: --compare is flat|MODE in one image; for a series use --modes flat,MODE --sheet");
+        else if (se->nmodes > 1 && !se->sheet)
+            rc = cli_fail(CLI_EXIT_USAGE, "render: --modes with %d modes needs --sheet (they go side by side into one image)", se->nmodes);
+        else if (se->views > 1 && !se->sheet && pattern_check(out) != 1)
             rc = cli_fail(CLI_EXIT_USAGE, "render: --turntable %d writes %d images: -o needs one frame number such as "
-                          "turn_%%03d.png (or use --sheet for one image)", se.views, se.views);
+                          "turn_%%03d.png (or use --sheet for one image)", se->views, se->views);
     }
+    /* every mode drawn must take the line options */
+    if (!rc) rc = cli_mode_check("render", o.render.mode, &o.render);
+    if (!rc && compare) rc = cli_mode_check("render", SILK_MODE_FLAT, &o.render);
+    for (int m = 0; !rc && m < se->nmodes; m++) rc = cli_mode_check("render", se->mode[m].mode, &o.render);
     /* A failed run leaves OUT as it was: images are written atomically, and
      * an earlier run's image stays. */
-    if (!rc && se.pixels > 1 && !se.sheet) rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels magnifies the cells of a --sheet");
-    if (!rc && se.pixels > 1 && (o.width < se.pixels || o.height < se.pixels))
-        rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels %d: the cells of %dx%d would be smaller than a pixel", se.pixels,
+    if (!rc && se->pixels > 1 && !se->sheet) rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels magnifies the cells of a --sheet");
+    if (!rc && se->pixels > 1 && (o.width < se->pixels || o.height < se->pixels))
+        rc = cli_fail(CLI_EXIT_USAGE, "render: --pixels %d: the cells of %dx%d would be smaller than a pixel", se->pixels,
                       o.width, o.height);
-    if (!rc && se.pixels > 1) {
+    if (!rc && se->pixels > 1) {
         /* the cells drawn that much smaller; the sheet keeps --size */
-        o.width /= se.pixels;
-        o.height /= se.pixels;
+        o.width /= se->pixels;
+        o.height /= se->pixels;
     }
     if (!rc && ssaa > 1 && (compare || use_series))
         rc = cli_fail(CLI_EXIT_USAGE, "render: --ssaa is for single frames (not --compare or a series)");
@@ -540,6 +563,6 @@ int cmd_render(int argc, char **argv)
         o.height *= (int)ssaa;
         o.render.aa = 0;
     }
-    if (!rc) rc = use_series ? render_series(&o, out, out_fmt, &se) : render(&o, out, out_fmt, compare, (int)ssaa);
+    if (!rc) rc = use_series ? render_series(&o, out, out_fmt, se) : render(&o, out, out_fmt, compare, (int)ssaa);
     return rc;
 }

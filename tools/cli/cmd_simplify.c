@@ -14,43 +14,84 @@
 #include "cli.h"
 #include "commands.h"
 #include "progress.h"
-#include "prep/simplify.h"
-#include "prep/surface.h"
+#include "meshcmd.h"
 #include "platform/platform.h"
 
-static void help(FILE *f)
+/* ---- the options simplify, hull and prepare share (meshcmd.h) --------------------------- */
+
+void simp_args_default(void *base)
 {
-    fprintf(f,
-            "usage: silk simplify IN OUT.obj|OUT.ply --triangles N [options]\n"
-            "\n"
-            "Simplify the mesh IN (OBJ, PLY, STL or .silk; - for standard input) to N\n"
-            "triangles by quadric-error edge collapse (Garland-Heckbert) and write OUT\n"
-            "atomically: as ascii PLY when its name ends in .ply, else as OBJ (- for\n"
-            "standard output).\n"
-            "Boundary and crease edges are kept where possible; a closed manifold input\n"
-            "gives a closed manifold output (no collapse that breaks the surface or turns\n"
-            "a triangle over).  Prints one line:\n"
-            "  simplify IN OUT triangles=N vertices=N target=N collapses=N feature_edges=N\n"
-            "\n"
-            "options:\n"
-            "  -o, --output OUT    OUT as an option instead of the second argument\n"
-            "  --triangles N       the triangle count to reach (at least 4)\n"
-            "  --crease DEG        dihedral angle above which an edge is a feature [60]\n"
-            "  --feature-weight W  weight of the feature constraint planes, 0..1e6 [100]\n"
-            "  --for flat|smooth   flat: quadric-optimal vertex placement [default];\n"
-            "                      smooth: the mesh smooth mode wants: every vertex stays a\n"
-            "                      vertex of IN (on its surface), and OUT carries IN's\n"
-            "                      normals there (vn), split along feature edges\n"
-            "                      (OBJ only)\n"
-            "  --scale S           multiply coordinates by S while reading (as silk render)\n"
-            "  --quiet             no progress line on a terminal\n"
-            "\n"
-            "examples:\n"
-            "  silk simplify bunny-fine.obj bunny-500.obj --triangles 500\n"
-            "  silk simplify bunny-fine.obj bunny-500.ply --triangles 500\n");
+    simp_args *a = base;
+    simp_opts so;
+    simp_opts_default(&so, 0);
+    a->target = -1;
+    a->scale = (silk_decimal){ 1, 0 };
+    a->quiet = 0;
+    a->crease_deg = so.crease_deg;
+    a->feature_weight = so.feature_weight;
 }
 
-/* The mesh as silk loads it, positions widened to double (simplify.h). */
+#define F(member) CLI_FIELD(simp_args, member)
+const cli_opt simp_rows[] = {
+    { .name = "--triangles", .mask = SIMP_OPT_COMMON, .kind = CLI_INT, .meta = "N", .lo = 4, .hi = 100000000,
+      F(target), .help = "the triangle count to reach (at least 4)" },
+    { .name = "--crease", .mask = SIMP_OPT_SHAPE, .kind = CLI_REAL, .meta = "DEG", .lo = 0, .hi = 180, F(crease_deg),
+      .help = "dihedral angle above which an edge is a feature (%R, default %D)" },
+    { .name = "--feature-weight", .mask = SIMP_OPT_SHAPE, .kind = CLI_REAL, .meta = "W", .lo = 0, .hi = 1e6,
+      F(feature_weight), .help = "weight of the feature constraint planes (%R, default %D)" },
+    { .name = "--scale", .mask = SIMP_OPT_COMMON, .kind = CLI_DECIMAL, .meta = "S", F(scale),
+      .help = "multiply coordinates by S while reading (as silk render)" },
+    { .name = "--quiet", .mask = SIMP_OPT_COMMON, .kind = CLI_FLAG, F(quiet), .help = "no progress line on a terminal" },
+    { .name = NULL },
+};
+#undef F
+
+int simp_one_input(const char *cmd, int npos, const char *const *pos, const char *usage, const char **in)
+{
+    if (npos == 0) return cli_fail(CLI_EXIT_USAGE, "%s: give FINE (%s)", cmd, usage);
+    if (npos > 1)
+        return cli_fail(CLI_EXIT_USAGE, "%s: one input (got a second, %s; the output goes after -o)", cmd, pos[1]);
+    *in = pos[0];
+    return 0;
+}
+
+/* ---- silk simplify ------------------------------------------------------------------------ */
+
+typedef struct simplify_args {
+    const char *out;
+    int subset;                /* --for smooth */
+} simplify_args;
+
+static const cli_opt simplify_rows[] = {
+    { .name = "--output", .alt = "-o", .group = "options", .kind = CLI_OUTPUT, .meta = "OUT",
+      CLI_FIELD(simplify_args, out), .help = "OUT as an option instead of the second argument" },
+    { .name = "--for", .kind = CLI_CHOICE, .choices = "flat|smooth", CLI_FIELD(simplify_args, subset),
+      .help = "flat: quadric-optimal vertex placement [default]; smooth: the mesh smooth mode wants: every vertex "
+              "stays a vertex of IN (on its surface), and OUT carries IN's normals there (vn), split along feature "
+              "edges (OBJ only)" },
+    { .name = NULL },
+};
+
+const cli_command cmd_simplify_spec = {
+    .name = "simplify",
+    .usage = "usage: silk simplify IN OUT.obj|OUT.ply --triangles N [options]\n",
+    .about =
+        "Simplify the mesh IN (OBJ, PLY, STL or .silk; - for standard input) to N\n"
+        "triangles by quadric-error edge collapse (Garland-Heckbert) and write OUT\n"
+        "atomically: as ascii PLY when its name ends in .ply, else as OBJ (- for\n"
+        "standard output).\n"
+        "Boundary and crease edges are kept where possible; a closed manifold input\n"
+        "gives a closed manifold output (no collapse that breaks the surface or turns\n"
+        "a triangle over).  Prints one line:\n"
+        "  simplify IN OUT triangles=N vertices=N target=N collapses=N feature_edges=N\n",
+    .examples =
+        "  silk simplify bunny-fine.obj bunny-500.obj --triangles 500\n"
+        "  silk simplify bunny-fine.obj bunny-500.ply --triangles 500\n",
+    .sets = { { simplify_rows, 0, sizeof(simplify_args), NULL, NULL }, SIMP_SET(SIMP_OPT_COMMON | SIMP_OPT_SHAPE) },
+    .nsets = 2,
+};
+
+/* The mesh as silk loads it, positions widened to double (meshcmd.h). */
 int simp_load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold)
 {
     return simp_load_colors(path, scale, quiet, out, closed_manifold, NULL);
@@ -151,27 +192,6 @@ int simp_write_obj_corners(const simp_mesh *m, const double *normals, uint32_t n
     return write_mesh(m, normals, nnormals, tri_normal, path, comment);
 }
 
-int simp_common_option(int argc, char **argv, int *i, simp_args *args)
-{
-    const char *a = argv[*i], *v, *end;
-    if (cli_is(a, "--triangles")) {
-        if (!(v = cli_value(argc, argv, i)) || cli_parse_long("--triangles", v, 4, 100000000, &args->target)) return -1;
-    } else if (cli_is(a, "--scale")) {
-        if (!(v = cli_value(argc, argv, i))) return -1;
-        if (silk_decimal_parse(v, &end, &args->scale) != 0 || *end || args->scale.mant <= 0) {
-            cli_fail(CLI_EXIT_USAGE, "--scale must be a positive decimal number, e.g. 0.01 (got \"%s\")", v);
-            return -1;
-        }
-    } else if (cli_is(a, "-o") || cli_is(a, "--output")) {
-        if (!(args->out = cli_value(argc, argv, i))) return -1;
-    } else if (strcmp(a, "--quiet") == 0) {
-        args->quiet = 1;
-    } else {
-        return 0;
-    }
-    return 1;
-}
-
 static void on_collapse(void *user, uint32_t tris_in, uint32_t tris_left)
 {
     const simp_opts *so = ((const simp_opts **)user)[0];
@@ -226,20 +246,6 @@ void simp_result_free(simp_result *r)
     free(r->fine_color);
 }
 
-int simplify_option(int argc, char **argv, int *i, simp_opts *so)
-{
-    const char *a = argv[*i], *v;
-    if (cli_is(a, "--crease")) {
-        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--crease", v, 0, 180, &so->crease_deg)) return -1;
-    } else if (cli_is(a, "--feature-weight")) {
-        if (!(v = cli_value(argc, argv, i)) || cli_parse_double("--feature-weight", v, 0, 1e6, &so->feature_weight))
-            return -1;
-    } else {
-        return 0;
-    }
-    return 1;
-}
-
 static int simplify(const char *in, const char *out, const simp_opts *so, silk_decimal scale, int quiet)
 {
     simp_result r;
@@ -261,41 +267,34 @@ static int simplify(const char *in, const char *out, const simp_opts *so, silk_d
 
 int cmd_simplify(int argc, char **argv)
 {
-    const char *in = NULL;
-    simp_args args = { NULL, -1, { 1, 0 }, 0 };
-    simp_opts so;
-    simp_opts_default(&so, 0);
-    int rc = 0, k;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i], *v;
-        if (cli_help(a, help)) return 0;
-        if ((k = simp_common_option(argc, argv, &i, &args)) != 0) {
-            if (k < 0) rc = CLI_EXIT_USAGE;
-        } else if ((k = simplify_option(argc, argv, &i, &so)) != 0) {
-            if (k < 0) rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--for")) {
-            if (!(v = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (strcmp(v, "smooth") == 0) so.subset = 1;
-            else if (strcmp(v, "flat") == 0) so.subset = 0;
-            else rc = cli_fail(CLI_EXIT_USAGE, "--for must be flat or smooth (got \"%s\")", v);
-        } else if (a[0] == '-' && a[1]) {
-            rc = cli_unknown_option("simplify", a);
-        } else if (!in) {
-            in = a;
-        } else if (!args.out) {
-            args.out = a;
-        } else {
-            rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", a);
-        }
+    simplify_args sa = { NULL, 0 };
+    simp_args args;
+    simp_args_default(&args);
+    cli_args ca;
+    void *bases[] = { &sa, &args };
+    int rc = cli_parse(&cmd_simplify_spec, bases, argc, argv, &ca);
+    const char *in = ca.npos > 0 ? ca.pos[0] : NULL;
+    if (!rc && ca.npos > 1 && sa.out)
+        rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got %s and -o %s)", ca.pos[1], sa.out);
+    if (!rc && ca.npos > 2) rc = cli_fail(CLI_EXIT_USAGE, "simplify: one input and one output (got a third, %s)", ca.pos[2]);
+    if (!rc && ca.npos > 1) {
+        sa.out = ca.pos[1];
+        if (!silk_path_is_stdio(sa.out) && cli_check_output_dir("simplify", sa.out)) rc = CLI_EXIT_INPUT;
     }
-    if (!rc && (!in || !args.out))
+    cli_args_free(&ca);
+    if (rc == CLI_HELP) return 0;
+    if (!rc && (!in || !sa.out))
         rc = cli_fail(CLI_EXIT_USAGE, "simplify: give IN and OUT (silk simplify IN OUT --triangles N)");
     if (!rc && args.target < 0) rc = cli_fail(CLI_EXIT_USAGE, "simplify: --triangles N is needed");
-    if (!rc && so.subset && wants_ply(args.out))
+    if (!rc && sa.subset && wants_ply(sa.out))
         rc = cli_fail(CLI_EXIT_USAGE, "simplify: --for smooth writes OBJ (its normals are split along feature edges, "
                       "which PLY cannot hold); name OUT .obj");
-    so.target_tris = (uint32_t)args.target;
     if (rc) return rc;
+    simp_opts so;
+    simp_opts_default(&so, (uint32_t)args.target);
+    so.subset = sa.subset;
+    so.crease_deg = args.crease_deg;
+    so.feature_weight = args.feature_weight;
     /* A failed run leaves OUT as it was (written atomically). */
-    return simplify(in, args.out, &so, args.scale, args.quiet);
+    return simplify(in, sa.out, &so, args.scale, args.quiet);
 }

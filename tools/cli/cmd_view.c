@@ -52,29 +52,40 @@ static int load_scene(viewer *v)
      * the scene gets a 1x1 target and no raster bytes to speak of. */
     o.width = o.height = 1;
     o.arena_doublings = v->doublings;
-    int rc = cli_scene_load(&v->s, &o);
-    /* clip and siltex mode draw the model's hull through its map or
-     * texture (cli_scene_load) */
-    v->ro.silmap = o.render.mode == SILK_MODE_CLIP ? &v->s.silmap : NULL;
-    v->ro.siltex = o.render.mode == SILK_MODE_SILTEX ? &v->s.siltex : NULL;
-    return rc;
+    /* a prepared model's hull, map and texture too, for keys 5 and 6: every
+     * mode is drawn from one camera, the mesh's */
+    o.parts_if_any = 1;
+    return cli_scene_load(&v->s, &o);
 }
 
-/* What the scene holds for a mode: the coarse mesh (0), the hull and map
- * (clip, 1) or the hull and texture (siltex, 2). */
-static int scene_kind(silk_mode m) { return m == SILK_MODE_CLIP ? 1 : m == SILK_MODE_SILTEX ? 2 : 0; }
-
-/* Into clip or siltex mode or out of it: the scene's mesh is then the
- * hull, or the coarse mesh.  A model without a hull and map or texture
- * says so and stays. */
-static int switch_scene(viewer *v)
+/* Into clip or siltex mode: a model without a hull and map or texture says
+ * why (cli_silmap, cli_siltex) and the viewer stays in the mode it was. */
+static void check_mode(viewer *v, silk_mode was)
 {
-    silk_mode was = v->o.render.mode;
-    if (scene_kind(v->ro.mode) == scene_kind(was)) return 0;
-    v->o.render.mode = v->ro.mode;
-    if (load_scene(v) == 0) return 0;
-    v->ro.mode = v->o.render.mode = was;
-    return load_scene(v);
+    const cli_scene *s = &v->s;
+    const char *name = cli_input_name(v->o.mesh_path);
+    silk_silmap map;
+    silk_siltex tex;
+    if (v->ro.mode == SILK_MODE_CLIP && !s->have_silmap) {
+        if (!cli_silmap(s->file, s->file_len, name, &map))
+            cli_fail(0, "%s: clip mode needs the model's hull", name);
+        v->ro.mode = was;
+    } else if (v->ro.mode == SILK_MODE_SILTEX && !s->have_siltex) {
+        if (!cli_siltex(s->file, s->file_len, name, &tex))
+            cli_fail(0, "%s: siltex mode needs the model's hull", name);
+        v->ro.mode = was;
+    }
+}
+
+/* The options as this mode draws them: the lines it has (pn and blend the
+ * polygonal ones, clip none), the model's map or texture. */
+static silk_render_opts frame_opts(const viewer *v)
+{
+    silk_render_opts ro = v->ro;
+    if (ro.lines && (ro.mode == SILK_MODE_PN || ro.mode == SILK_MODE_BLEND)) ro.lines_polygonal = 1;
+    if (ro.mode == SILK_MODE_CLIP) ro.lines = SILK_LINES_NONE;
+    cli_scene_render_opts(&v->s, &ro);
+    return ro;
 }
 
 /* The camera of the orbit state, for a w x h frame. */
@@ -82,7 +93,7 @@ static int update_camera(viewer *v)
 {
     cli_scene_opts o = v->o;
     o.width = v->w;
-    o.height = v->h;
+    o.height = v->vh;
     double d[3], up[3];
     cli_orbit_dir(&o, v->az, v->el, d);
     cli_up_axis(&o, up);
@@ -106,11 +117,11 @@ static int update_camera(viewer *v)
     o.ortho_auto = 0;
     o.ortho_half = half < 1.0 / 256 ? 1.0 / 256 : half;
     silk_camera cam;
-    int rc = cli_camera(&o, &v->s.mesh, &cam);
+    int rc = cli_scene_camera(&v->s, &o, &cam);
     if (rc) return rc;
     silk_error err;
     if (silk_view_init(&v->view, &cam, &err) != SILK_OK) return cli_fail(CLI_EXIT_USAGE, "view: %s", err.msg);
-    cli_scene_phong(&v->s, &v->o, &v->view, &v->phong);
+    cli_scene_phong(&v->s, &v->o, v->ro.mode, &v->view, &v->phong);
     silk_hal_phong(&v->hal, &v->phong);
     return 0;
 }
@@ -149,7 +160,7 @@ int viewer_resize(viewer *v, int w, int h)
     v->color = color;
     v->depth = depth;
     v->w = w;
-    v->h = h;
+    v->h = v->vh = h;
     silk_target_init(&v->t, w, h, 0, h, v->o.fmt, color, depth);
     v->dirty = 1;
     return update_camera(v);
@@ -164,13 +175,14 @@ int viewer_open(viewer *v, const cli_scene_opts *o, const char *shot_pattern)
     v->ro.line_feature_rgb = LINE_FEAT;
     v->ortho = o->ortho;
     v->hud = 1;
+    v->spin_step = VIEWER_SPIN_DEG;
     v->shot_pattern = shot_pattern;
     int rc = load_scene(v);
     if (rc) return rc;
 
     /* Start where `silk render` looks from: its camera for this size. */
     silk_camera cam;
-    if ((rc = cli_camera(o, &v->s.mesh, &cam)) != 0) return rc;
+    if ((rc = cli_scene_camera(&v->s, o, &cam)) != 0) return rc;
     const silk_mesh *m = &v->s.mesh;
     double lo[3] = { cli_fx_to_double(m->bbox_min.x), cli_fx_to_double(m->bbox_min.y), cli_fx_to_double(m->bbox_min.z) };
     double hi[3] = { cli_fx_to_double(m->bbox_max.x), cli_fx_to_double(m->bbox_max.y), cli_fx_to_double(m->bbox_max.z) };
@@ -219,7 +231,7 @@ void viewer_orbit(viewer *v, double dx_px, double dy_px)
 /* Move the target in the view plane so that the model follows the mouse. */
 void viewer_pan(viewer *v, double dx_px, double dy_px)
 {
-    double per_px = 2 * v->dist * tan(v->o.fov * DEG / 2) / v->h;
+    double per_px = 2 * v->dist * tan(v->o.fov * DEG / 2) / v->vh;
     double r[3] = { cli_fx_to_double(v->view.right.x), cli_fx_to_double(v->view.right.y), cli_fx_to_double(v->view.right.z) };
     double u[3] = { cli_fx_to_double(v->view.upv.x), cli_fx_to_double(v->view.upv.y), cli_fx_to_double(v->view.upv.z) };
     for (int k = 0; k < 3; k++) v->target[k] += (-dx_px * r[k] + dy_px * u[k]) * per_px;
@@ -239,15 +251,23 @@ int viewer_key(viewer *v, int key)
     static const silk_mode cycle[] = { SILK_MODE_FLAT, SILK_MODE_SMOOTH, SILK_MODE_BLEND, SILK_MODE_PN,
                                        SILK_MODE_CLIP, SILK_MODE_SILTEX };
     int was_dirty = v->dirty;
+    silk_mode was = v->ro.mode;
     v->dirty = 1;
     switch (key) {
     case '1': case '2': case '3': case '4': case '5': case '6':
         v->ro.mode = cycle[key - '1'];
+        check_mode(v, was);
         break;
     case 'm':
         for (int i = 0; i < 6; i++)
-            if (cycle[i] == v->ro.mode) {
-                v->ro.mode = cycle[(i + 1) % 6];
+            if (cycle[i] == was) {
+                /* past the modes the model has not */
+                for (int k = 1; k <= 6 && v->ro.mode == was; k++) {
+                    silk_mode next = cycle[(i + k) % 6];
+                    if ((next == SILK_MODE_CLIP && !v->s.have_silmap) || (next == SILK_MODE_SILTEX && !v->s.have_siltex))
+                        continue;
+                    v->ro.mode = next;
+                }
                 break;
             }
         break;
@@ -299,44 +319,78 @@ void viewer_status(const viewer *v, char *buf, size_t n)
     char mode[40];
     mode_text(&v->ro, mode, sizeof mode);
     /* This frame's render, and the last copy to the window: the status
-     * line is drawn before the frame is finished. */
+     * line is drawn before the frame is finished.  What matters most
+     * first: a small window shows only the first parts. */
     double ms = v->render_ms + v->present_ms;
     size_t used = v->s.load_bytes + v->stats.frame_bytes;
-    snprintf(buf, n, "%s | %s | %.1f ms %.0f fps | %u tris, %u silhouette | arena %zuK of %zuK%s%s%s%s", mode,
-             v->ortho ? "ortho" : "persp", ms, ms > 0 ? 1000 / ms : 0.0, (unsigned)v->stats.tris_drawn,
+    snprintf(buf, n, "%s%s | %.1f ms %.0f fps | %u tris, %u silhouette | arena %zuK of %zuK | %s%s%s%s", mode,
+             v->stats.fell_back ? " | FELL BACK" : "", ms, ms > 0 ? 1000 / ms : 0.0, (unsigned)v->stats.tris_drawn,
              (unsigned)v->stats.silhouette_tris, (used + 1023) / 1024, (v->s.arena.size + 1023) / 1024,
-             v->ro.wire ? " | wire" : "", lines[v->ro.lines % 3], v->ro.lines && v->ro.lines_polygonal ? " coarse" : "",
-             v->stats.fell_back ? " | FELL BACK" : "");
+             v->ortho ? "ortho" : "persp", v->ro.wire ? " | wire" : "", lines[v->ro.lines % 3],
+             v->ro.lines && v->ro.lines_polygonal ? " coarse" : "");
 }
 
-/* The status line in a dark band at the bottom of the frame, wrapped at
- * its " | " separators when the frame is too narrow for one line. */
-static void draw_hud(viewer *v)
+/* The status line's font scale, and how many lines of it the frame takes:
+ * a sixth of its height, and one line at least as long as that is at most
+ * a third of it (none in a smaller frame). */
+static int hud_scale(const viewer *v) { return v->w >= 1280 && v->h >= 480 ? 2 : 1; }
+static int hud_max_lines(const viewer *v)
 {
-    int scale = v->w >= 1280 ? 2 : 1, fit = (v->w - 8 * scale) / (FONT_ADVANCE * scale);
-    char text[256], lines[256];
+    int scale = hud_scale(v), line = FONT_LINE * scale;
+    int n = (v->h / 6 - 4 * scale) / line;
+    if (n < 1) n = (line + 4 * scale) * 3 <= v->h;
+    return n;
+}
+
+/* The status line wrapped at its " | " separators into at most max lines
+ * of the frame's width, the parts that do not fit left out; returns the
+ * lines used. */
+static int hud_text(const viewer *v, int max, char *out, size_t n)
+{
+    int scale = hud_scale(v), fit = (v->w - 8 * scale) / (FONT_ADVANCE * scale);
+    char text[256];
     viewer_status(v, text, sizeof text);
-    size_t n = 0, col = 0;
+    size_t k = 0, col = 0;
     int nlines = 1;
+    out[0] = 0;
     for (char *seg = text; *seg;) {
         char *bar = strstr(seg, " | ");
         size_t len = bar ? (size_t)(bar - seg) : strlen(seg);
         if (col > 0 && col + 3 + len > (size_t)(fit > 0 ? fit : 1)) {
-            lines[n++] = '\n';
+            if (nlines == max) break;
+            out[k++] = '\n';
             col = 0;
             nlines++;
         } else if (col > 0) {
-            memcpy(lines + n, " | ", 3);
-            n += 3;
+            memcpy(out + k, " | ", 3);
+            k += 3;
             col += 3;
         }
-        memcpy(lines + n, seg, len);
-        n += len;
+        if (k + len + 1 >= n) break;
+        memcpy(out + k, seg, len);
+        k += len;
         col += len;
         seg += len + (bar ? 3 : 0);
     }
-    lines[n] = 0;
-    int band = (nlines * FONT_LINE + 4) * scale;
+    out[k] = 0;
+    return nlines;
+}
+
+/* Rows of the status band for this frame: 0 without it. */
+static int hud_band(const viewer *v)
+{
+    int max = hud_max_lines(v);
+    if (!v->hud || max < 1) return 0;
+    char lines[256];
+    return (hud_text(v, max, lines, sizeof lines) * FONT_LINE + 4) * hud_scale(v);
+}
+
+/* The status line in a dark band of rows under the model's view. */
+static void draw_hud(viewer *v, int band)
+{
+    int scale = hud_scale(v);
+    char lines[256];
+    hud_text(v, (band / scale - 4) / FONT_LINE, lines, sizeof lines);
     for (int y = v->h - band; y < v->h; y++)
         for (int x = 0; x < v->w; x++) silk_target_put(&v->t, x, y, HUD_BG);
     font_draw(&v->t, 4 * scale, v->h - band + 3 * scale, lines, HUD_TEXT, scale);
@@ -348,16 +402,23 @@ int viewer_frame(viewer *v)
 {
     if (!v->dirty && !v->spin) return 0;
     if (v->spin) {
-        v->az += VIEWER_SPIN_DEG;
+        v->az += v->spin_step;
         clamp_orbit(v);
     }
     for (;;) {
-        int rc = switch_scene(v);
-        if (!rc) rc = update_camera(v);
+        /* the model in the rows above the status band, never under it (the
+         * band's lines from the last frame's status) */
+        int band = hud_band(v);
+        v->vh = v->h - band;
+        silk_target view;
+        silk_target_init(&view, v->w, v->vh, 0, v->vh, v->o.fmt, v->color, v->depth);
+        int rc = update_camera(v);
         if (rc) return rc;
         silk_error err;
+        silk_render_opts ro = frame_opts(v);
         double t0 = now_ms();
-        if (silk_render(&v->s.arena, &v->s.mesh, &v->view, &v->hal, &v->ro, &v->t, &v->stats, &err) != SILK_OK)
+        if (silk_render(&v->s.arena, cli_scene_mesh(&v->s, ro.mode), &v->view, &v->hal, &ro, &view, &v->stats, &err) !=
+            SILK_OK)
             return cli_fail(CLI_EXIT_INPUT, "%s: %s", v->o.mesh_path, err.msg);
         /* the next frame's search for the eye starts where this one's ended */
         v->ro.silmap_hint = v->stats.clip_tri;
@@ -370,7 +431,7 @@ int viewer_frame(viewer *v)
             continue;
         }
         v->render_ms = t1 - t0;
-        if (v->hud) draw_hud(v);
+        if (band) draw_hud(v, band);
         v->frame_ms = now_ms() - t0;
         break;
     }
@@ -492,18 +553,101 @@ static int run_events(viewer *v, const char *script)
 
 /* ---- the command ------------------------------------------------------------------------ */
 
-static void help(FILE *f)
+typedef struct view_args {
+    const char *pattern, *events;
+    int spin;
+    double spin_step;          /* 0: the display's default */
+    long frames, benchmark;
+    view_fb_opts fb;
+    int have_geo;
+} view_args;
+
+static void view_defaults(void *base)
+{
+    view_args *a = base;
+    memset(a, 0, sizeof *a);
+    a->pattern = "silk-view-%03d.png";
+}
+
+static int parse_pattern(const cli_opt *o, const char *v, void *base)
+{
+    if (pattern_check(v) < 0) return cli_fail(-1, "view: -o %s: at most one %%d (and %%%% for a percent sign)", v);
+    if (silk_image_format_for_path(v) == SILK_IMAGE_NONE)
+        return cli_fail(-1, "view: -o %s: unknown image format (use .png or .ppm)", v);
+    if (cli_check_output_dir(o->name, v)) return CLI_EXIT_INPUT;
+    ((view_args *)base)->pattern = v;
+    return 0;
+}
+
+/* --fb-geometry WxHxBPP */
+static int parse_geometry(const cli_opt *o, const char *s, void *base)
+{
+    (void)o;
+    view_fb_opts *f = &((view_args *)base)->fb;
+    char *end;
+    long v[3];
+    const char *p = s;
+    for (int k = 0; k < 3; k++) {
+        if (*p < '0' || *p > '9') goto bad;
+        v[k] = strtol(p, &end, 10);
+        if (k < 2 && *end != 'x') goto bad;
+        p = end + (k < 2);
+    }
+    if (*end) goto bad;
+    if (v[0] < 1 || v[1] < 1 || v[0] > CLI_MAX_SIDE || v[1] > CLI_MAX_SIDE)
+        return cli_fail(-1, "--fb-geometry: width and height must be 1 to %d (got %s)", CLI_MAX_SIDE, s);
+    if (v[2] != 16 && v[2] != 24 && v[2] != 32)
+        return cli_fail(-1, "--fb-geometry: bits per pixel must be 16, 24 or 32 (got %s)", s);
+    f->geo_w = (int)v[0];
+    f->geo_h = (int)v[1];
+    f->geo_bpp = (int)v[2];
+    return 0;
+bad:
+    return cli_fail(-1, "--fb-geometry must be WIDTHxHEIGHTxBPP, e.g. 320x240x16 (got \"%s\")", s);
+}
+
+#define F(member) CLI_FIELD(view_args, member)
+#define XSTR(x) STR(x)
+#define STR(x) #x
+static const cli_opt view_rows[] = {
+    { .name = "--output", .alt = "-o", .group = "", .kind = CLI_TEXT, .meta = "PATTERN", F(pattern),
+      .parse = parse_pattern, .help = "screenshot names; a %%d in it counts them (default %D)" },
+    { .name = "--spin", .kind = CLI_FLAG, F(spin),
+      .help = "start spinning (on a framebuffer the model always spins)" },
+    { .name = "--spin-step", .kind = CLI_REAL, .meta = "DEG", .lo = -360, .hi = 360, F(spin_step),
+      .help = "degrees the model turns a frame while spinning (%R; default 2 in the window, 3 on a framebuffer)" },
+    { .name = "--frames", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 100000000, F(frames),
+      .help = "quit after N frames (in the window saving the last as a screenshot)" },
+    { .name = "--benchmark", .group = "Without a window", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = 100000,
+      F(benchmark), .help = "render N frames, each turned 360/N degrees, and print the median time per frame:\n"
+      "view-benchmark MESH mode=M size=WxH frames=N render_ms=X frame_ms=X fps=X ..." },
+    { .name = "--events", .kind = CLI_TEXT, .meta = "\"...\"", F(events),
+      .help = "apply these events in order, then quit: keys as above (space left right up down plus minus by "
+              "name), drag:DX,DY  pan:DX,DY  wheel:N  size:WxH  shot:PATH" },
+    { .name = "--fb", .group = "On a Linux framebuffer (docs/small-devices.md)", .kind = CLI_TEXT, .meta = "DEVICE",
+      F(fb.fb_dev),
+      .help = "show the model turning on a framebuffer device, e.g. /dev/fb0, until Ctrl-C, rendered in bands of "
+              "--rows lines straight into the screen (no frame buffer of silk's own): size and pixel format from "
+              "the device (16, 24 or 32 bits per pixel)"
+#ifdef SILK_BOARD_FB
+              "; default on this board: " SILK_BOARD_FB
+#endif
+    },
+    { .name = "--fb-file", .kind = CLI_TEXT, .meta = "PATH", F(fb.fb_file),
+      .help = "a file-backed framebuffer instead (created or truncated)" },
+    { .name = "--fb-geometry", .kind = CLI_CUSTOM, .meta = "WxHxBPP", CLI_SEEN(view_args, have_geo),
+      .parse = parse_geometry, .help = "its size and bits per pixel (16, 24 or 32)" },
+    { .name = "--rows", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = CLI_MAX_SIDE, F(fb.rows),
+      .help = "band height in rows (%R, default " XSTR(VIEW_FB_ROWS) "); the frame fills the screen unless --size "
+              "is given (then it is centred), in RGB565 on a 16-bit screen, RGB888 otherwise, unless --format says "
+              "otherwise" },
+    { .name = NULL },
+};
+#undef F
+
+static void view_more(FILE *f)
 {
     fprintf(f,
-            "usage: silk view MESH [options]            a window (SDL2)%s\n"
-            "       silk view MESH --benchmark N        no window: time N frames\n"
-            "       silk view MESH --events \"KEYS...\"   no window: apply events, save screenshots\n"
-            "       silk view MESH --fb DEVICE          a Linux framebuffer (silk view --fb DEV --help),\n"
-            "       silk view MESH --fb-file PATH ...   or a file standing in for one\n"
-            "\n"
-            "Show MESH in a window and turn it with the mouse.  The status line at the\n"
-            "bottom shows the mode, the frame time, the triangles drawn and on the\n"
-            "silhouette, and the arena in use (mesh + this frame's scratch).\n"
             "\n"
             "mouse:\n"
             "  left drag            orbit around the target\n"
@@ -511,6 +655,7 @@ static void help(FILE *f)
             "  wheel                zoom\n"
             "keys:\n"
             "  1 2 3 4 5 6          mode: flat, smooth, blend, pn, clip, siltex  m  next mode\n"
+            "                       (clip and siltex: a prepared model's hull, from the same view)\n"
             "  w                    wireframe; triangles added by re-meshing in red\n"
             "  l                    lines: silhouette (blue) and feature curves (green) over\n"
             "                       the surface, then alone, then off\n"
@@ -519,119 +664,110 @@ static void help(FILE *f)
             "  [ ]                  PN level down / up\n"
             "  o                    perspective / orthographic\n"
             "  s  F12               screenshot (PNG) to the -o pattern\n"
-            "  h                    status line on / off\n"
+            "  h                    status line on / off (a band under the model)\n"
             "  space                spin the model\n"
             "  arrows               orbit by 15 degrees\n"
             "  r                    back to the first view\n"
-            "  q  Esc               quit\n"
-            "\n"
-            "options:\n"
-            "  -o, --output PATTERN  screenshot names; a %%d in it counts them\n"
-            "                       (default silk-view-%%03d.png)\n"
-            "  --spin               start spinning\n"
-            "  --frames N           quit after N frames, saving the last as a screenshot\n"
-            "  --benchmark N        no window: render N frames, each turned 360/N degrees,\n"
-            "                       and print the median time per frame:\n"
-            "    view-benchmark MESH mode=M size=WxH frames=N render_ms=X frame_ms=X fps=X ...\n"
-            "  --events \"...\"       no window: apply these events in order, then quit:\n"
-            "                       keys as above (space left right up down plus minus by\n"
-            "                       name), drag:DX,DY  pan:DX,DY  wheel:N  size:WxH  shot:PATH\n",
-#ifdef SILK_HAVE_SDL2
-            ""
-#else
-            " - not in this build (no SDL2)"
-#endif
-    );
-    cli_print_scene_help(f, CLI_OPT_ALL);
-    fprintf(f,
-            "\n"
-            "examples:\n"
-            "  silk view bunny.obj\n"
-            "  silk view bunny.obj --size 1024x768 --mode pn -o shots/bunny-%%02d.png\n"
-            "  silk view bunny.obj --benchmark 100 --size 640x480\n"
-            "  silk view sphere.obj --events \"1 shot:flat.png 2 w shot:smooth.png\"\n"
-            "docs/viewer.md has more.\n");
+            "  q  Esc               quit\n");
 }
 
-/* Does the command line ask for a framebuffer (tools/view/view_fb.c)? */
-static int wants_framebuffer(int argc, char **argv)
+const cli_command cmd_view_spec = {
+    .name = "view",
+    .usage =
+        "usage: silk view MESH [options]            a window (SDL2)"
+        #ifndef SILK_HAVE_SDL2
+        " - not in this build (no SDL2)"
+        #endif
+        "\n"
+        "       silk view MESH --benchmark N        no window: time N frames\n"
+        "       silk view MESH --events \"KEYS...\"   no window: apply events, save screenshots\n"
+        "       silk view MESH --fb DEVICE          a Linux framebuffer,\n"
+        "       silk view MESH --fb-file PATH --fb-geometry WxHxBPP   or a file standing in for one\n",
+    .about =
+        "Show MESH in a window and turn it with the mouse.  The status line under\n"
+        "the model shows the mode, the frame time, the triangles drawn and on the\n"
+        "silhouette, and the arena in use (mesh + this frame's scratch).\n",
+    .examples =
+        "  silk view bunny.obj\n"
+        "  silk view bunny.obj --size 1024x768 --mode pn -o shots/bunny-%02d.png\n"
+        "  silk view bunny.obj --benchmark 100 --size 640x480\n"
+        "  silk view sphere.obj --events \"1 shot:flat.png 2 w shot:smooth.png\"\n"
+        "  silk view bunny.obj --fb /dev/fb0\n"
+        "  silk view bunny.obj --fb-file /tmp/fb.raw --fb-geometry 320x240x16 --frames 10\n"
+        "docs/viewer.md has more.\n",
+    .more = view_more,
+    .sets = { { view_rows, 0, sizeof(view_args), view_defaults, NULL }, CLI_SCENE_SET(CLI_OPT_ALL) },
+    .nsets = 2,
+};
+
+/* The options of one display only, refused on the other. */
+static int check_display(const view_args *a, const cli_args *args, int fb)
 {
-    int headless = 0;
-    for (int i = 1; i < argc; i++) {
-        if (cli_is(argv[i], "--fb") || cli_is(argv[i], "--fb-file")) return 1;
-        if (cli_is(argv[i], "--benchmark") || cli_is(argv[i], "--events")) headless = 1;
-    }
-#ifdef SILK_BOARD_FB
-    /* A framebuffer board shows `silk view` on its screen. */
-    return !headless;
-#else
-    (void)headless;
+    static const char *const window_only[] = { "--benchmark", "--events", "--output" };
+    static const char *const fb_only[] = { "--fb-geometry", "--rows" };
+    for (int k = 0; fb && k < 3; k++)
+        if (cli_given(args, window_only[k]))
+            return cli_fail(CLI_EXIT_USAGE, "view: %s is not for a framebuffer (--fb, --fb-file)", window_only[k]);
+    for (int k = 0; !fb && k < 2; k++)
+        if (cli_given(args, fb_only[k]))
+            return cli_fail(CLI_EXIT_USAGE, "view: %s is for --fb and --fb-file", fb_only[k]);
+    if (a->fb.fb_dev && a->fb.fb_file) return cli_fail(CLI_EXIT_USAGE, "view: give --fb or --fb-file, not both");
+    if (a->fb.fb_file && !a->have_geo)
+        return cli_fail(CLI_EXIT_USAGE, "view: --fb-file needs --fb-geometry WxHxBPP, e.g. 320x240x16");
+    if (a->have_geo && !a->fb.fb_file)
+        return cli_fail(CLI_EXIT_USAGE, "view: --fb-geometry is for --fb-file (a device has its own)");
+    if (a->benchmark && a->events) return cli_fail(CLI_EXIT_USAGE, "view: --benchmark or --events, not both");
     return 0;
-#endif
 }
 
 int cmd_view(int argc, char **argv)
 {
-    if (wants_framebuffer(argc, argv)) return view_fb(argc, argv);
     cli_scene_opts o;
     cli_scene_opts_default(&o);
-    const char *pattern = "silk-view-%03d.png", *events = NULL;
-    long frames = 0, bench = 0;
-    int rc = 0, spin = 0;
-    for (int i = 1; i < argc && !rc; i++) {
-        const char *a = argv[i], *val;
-        if (cli_help(a, help)) return 0;
-        if (cli_scene_arg(&o, argc, argv, &i, &rc)) continue;
-        if (cli_is(a, "-o") || cli_is(a, "--output")) {
-            if (!(pattern = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-            else if (pattern_check(pattern) < 0)
-                rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: at most one %%d (and %%%% for a percent sign)", pattern);
-            else if (silk_image_format_for_path(pattern) == SILK_IMAGE_NONE)
-                rc = cli_fail(CLI_EXIT_USAGE, "view: -o %s: unknown image format (use .png or .ppm)", pattern);
-        } else if (strcmp(a, "--spin") == 0) {
-            spin = 1;
-        } else if (cli_is(a, "--frames")) {
-            if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--frames", val, 1, 100000000, &frames))
-                rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--benchmark")) {
-            if (!(val = cli_value(argc, argv, &i)) || cli_parse_long("--benchmark", val, 1, 100000, &bench))
-                rc = CLI_EXIT_USAGE;
-        } else if (cli_is(a, "--events")) {
-            if (!(events = cli_value(argc, argv, &i))) rc = CLI_EXIT_USAGE;
-        } else {
-            rc = cli_mesh_arg("view", a, &o.mesh_path);
-        }
+    view_args a;
+    view_defaults(&a);
+    cli_args args;
+    void *bases[] = { &a, &o };
+    int rc = cli_parse(&cmd_view_spec, bases, argc, argv, &args);
+    if (!rc) rc = cli_one_mesh("view", args.npos, args.pos, "silk view MESH", &o.mesh_path);
+    if (rc == CLI_HELP) rc = 0, o.mesh_path = NULL;
+    int fb = !rc && o.mesh_path && (a.fb.fb_dev || a.fb.fb_file);
+#ifdef SILK_BOARD_FB
+    /* A framebuffer board shows `silk view` on its screen. */
+    if (!rc && o.mesh_path && !a.benchmark && !a.events && !fb) {
+        a.fb.fb_dev = SILK_BOARD_FB;
+        fb = 1;
     }
-    if (rc) return rc;
-    if (!o.mesh_path) return cli_fail(CLI_EXIT_USAGE, "view: no mesh given (silk view MESH)");
+#endif
+    if (!rc && o.mesh_path) rc = check_display(&a, &args, fb);
+    a.fb.have_size = cli_given(&args, "--size");
+    a.fb.have_format = cli_given(&args, "--format");
+    cli_args_free(&args);
+    if (rc || !o.mesh_path) return rc;
     if (o.bg_none) return cli_fail(CLI_EXIT_USAGE, "view: --bg none is for images (silk render); give a colour");
-    if (bench && events) return cli_fail(CLI_EXIT_USAGE, "view: --benchmark or --events, not both");
+    if ((rc = cli_mode_check("view", o.render.mode, &o.render)) != 0) return rc;
+    if (fb) {
+        a.fb.frames = a.frames;
+        a.fb.spin = a.spin_step;
+        return view_fb(&o, &a.fb);
+    }
 #ifndef SILK_HAVE_SDL2
-    if (!bench && !events)
+    if (!a.benchmark && !a.events)
         return cli_fail(CLI_EXIT_USAGE, "view: this silk was built without SDL2, so it has no window; use --fb DEVICE, "
                         "--benchmark N or --events (install libsdl2-dev and rebuild for the window)");
 #endif
 
     viewer *v = malloc(sizeof *v);
     if (!v) return cli_fail(CLI_EXIT_INPUT, "view: out of memory");
-    rc = viewer_open(v, &o, pattern);
-    v->spin = spin;
+    rc = viewer_open(v, &o, a.pattern);
+    v->spin = a.spin;
+    if (a.spin_step) v->spin_step = a.spin_step;
     if (!rc) {
-        if (bench) rc = run_benchmark(v, bench);
-        else if (events) rc = run_events(v, events);
-        else rc = viewer_run_sdl(v, frames);
+        if (a.benchmark) rc = run_benchmark(v, a.benchmark);
+        else if (a.events) rc = run_events(v, a.events);
+        else rc = viewer_run_sdl(v, a.frames);
     }
     viewer_close(v);
     free(v);
     return rc;
 }
-
-#ifndef SILK_HAVE_SDL2
-/* Without SDL2 there is no window; cmd_view never gets here. */
-int viewer_run_sdl(viewer *v, long frames)
-{
-    (void)v;
-    (void)frames;
-    return cli_fail(CLI_EXIT_USAGE, "view: this silk was built without SDL2");
-}
-#endif

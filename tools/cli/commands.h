@@ -19,11 +19,16 @@ int cmd_view(int argc, char **argv);
 int cmd_profile(int argc, char **argv);
 int cmd_hull(int argc, char **argv);
 
-/* Parts: `silk bench --visibility` (tools/cli/bench_visibility.c), `silk
- * bench --grid` (tools/cli/bench_grid.c) and the framebuffer side of `silk
- * view` (tools/view/view_fb.c). */
+/* Parts: `silk bench --visibility-pass` (tools/cli/bench_visibility.c) and
+ * `silk bench --grid` (tools/cli/bench_grid.c). */
 int bench_visibility(int argc, char **argv);
 int bench_grid(int argc, char **argv);
-int view_fb(int argc, char **argv);
+
+/* Each command's options and help (opt.h), for `silk help`. */
+struct cli_command;
+extern const struct cli_command cmd_render_spec, cmd_info_spec, cmd_gen_spec, cmd_bench_spec, cmd_bench_visibility_spec,
+    cmd_bench_grid_spec,
+    cmd_simplify_spec, cmd_prepare_spec, cmd_diff_spec, cmd_pack_spec, cmd_view_spec, cmd_profile_spec,
+    cmd_hull_spec;
 
 #endif

@@ -1,15 +1,15 @@
 /*
  * man.c - the manual page silk.1 in man(7) roff, from the help texts (see
- * man.h).  Each help text goes in as printed, between .nf and .fi, with the
+ * man.h), the very text `silk help COMMAND` prints from the option tables.  Each help text goes in as printed, between .nf and .fi, with the
  * characters roff would read as requests or escapes escaped: a backslash as
  * \e, a minus as \- (so options copy as ASCII hyphen-minus), and \& before a
  * line that starts with a dot or a quote.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
-#include <unistd.h>
 
 #include "man.h"
+#include "opt.h"
 
 /* One character of help text as roff. */
 static void put_roff(FILE *out, int c, int line_start)
@@ -37,33 +37,24 @@ void man_heading(FILE *out, const char *level, const char *title)
     fputc('\n', out);
 }
 
-int man_help_block(FILE *out, man_help_fn help, const char *name)
+int man_help_block(FILE *out, void (*text)(FILE *f), const struct cli_command *c)
 {
-    /* The help printers write to stdout: point stdout at a temporary file
-     * while one runs. */
     FILE *tmp = tmpfile();
-    if (!tmp || fflush(stdout) != 0) return 1;
-    int saved = dup(STDOUT_FILENO);
-    if (saved < 0 || dup2(fileno(tmp), STDOUT_FILENO) < 0) {
-        fclose(tmp);
-        return 1;
-    }
-    char *argv[] = { (char *)name, "--help", NULL };
-    int rc = help(2, argv);
-    fflush(stdout);
-    dup2(saved, STDOUT_FILENO);
-    close(saved);
+    if (!tmp) return 1;
+    if (text) text(tmp);
+    else cli_help_print(tmp, c);
+    int bad = ferror(tmp) != 0;
     rewind(tmp);
     fputs(".nf\n", out);
-    int c, start = 1;
-    while ((c = fgetc(tmp)) != EOF) {
-        put_roff(out, c, start);
-        start = c == '\n';
+    int ch, start = 1;
+    while ((ch = fgetc(tmp)) != EOF) {
+        put_roff(out, ch, start);
+        start = ch == '\n';
     }
     if (!start) fputc('\n', out);
     fputs(".fi\n", out);
     fclose(tmp);
-    return rc;
+    return bad;
 }
 
 void man_end(FILE *out)
@@ -71,7 +62,7 @@ void man_end(FILE *out)
     fputs(".SH LICENSE\n"
           "MIT; see the file LICENSE that comes with silk.\n"
           ".SH SEE ALSO\n"
-          "README.md and docs/ in the silk sources: the library, the render modes, the\n"
-          "file formats, memory, small devices and the measurements.\n",
+          "README.md and docs/ (installed in share/doc/silk): the library, the render\n"
+          "modes, the file formats, memory, small devices and the measurements.\n",
           out);
 }

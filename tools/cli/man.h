@@ -8,17 +8,16 @@
 
 #include <stdio.h>
 
-/* A help printer: writes its text to stdout and returns 0 (the subcommands'
- * entry points called with { NAME, "--help" } are such printers). */
-typedef int (*man_help_fn)(int argc, char **argv);
+struct cli_command;
 
 /* The page's title block and NAME section. */
 void man_begin(FILE *out, const char *version);
 /* A section (".SH") or subsection (".SS") heading. */
 void man_heading(FILE *out, const char *level, const char *title);
-/* What help(2, { name, "--help" }) prints, as a block of lines kept as they
- * are.  Returns help's status, or 1 when its output cannot be captured. */
-int man_help_block(FILE *out, man_help_fn help, const char *name);
+/* A help text as a block of lines kept as they are: what text(f) prints,
+ * or else the command's help (cli_help_print).  Returns 0, or 1 when the
+ * text cannot be captured. */
+int man_help_block(FILE *out, void (*text)(FILE *f), const struct cli_command *c);
 /* LICENSE and SEE ALSO. */
 void man_end(FILE *out);
 

@@ -17,6 +17,10 @@
 #include "prep/gen.h"
 #include "silk/platform.h"
 
+/* The largest material file and texture image an OBJ may name. */
+#define MATERIAL_MTL_MAX ((size_t)4 << 20)
+#define MATERIAL_IMAGE_MAX ((size_t)64 << 20)
+
 int cli_texture_from_rgb(const uint8_t *rgb, int width, int height, const cli_texture_opts *to,
                          const uint32_t *palette, silk_texture *t, uint8_t **pixels, char *msg, size_t msglen)
 {
@@ -72,9 +76,11 @@ static void make_palette(const uint8_t *rgb, size_t n, uint32_t pal[256])
     }
 }
 
-/* Read an image (or draw the built-in checker) into mt's texture; 0, or -1
- * with msg filled. */
-static int read_texture(cli_material *mt, const char *path, const cli_texture_opts *to, char *msg, size_t msglen)
+/* Read an image (or draw the built-in checker) into mt's texture; a file
+ * the model names (named) only when it is a regular file of at most
+ * MATERIAL_IMAGE_MAX bytes.  0, or -1 with msg filled. */
+static int read_texture(cli_material *mt, const char *path, int named, const cli_texture_opts *to, char *msg,
+                        size_t msglen)
 {
     uint8_t *rgb = NULL;
     int w = 0, h = 0;
@@ -95,6 +101,18 @@ static int read_texture(cli_material *mt, const char *path, const cli_texture_op
             return -1;
         }
         gen_checker(rgb, w, 8);
+    } else if (named) {
+        uint8_t *data;
+        size_t len;
+        silk_status st = silk_file_read_regular(path, MATERIAL_IMAGE_MAX, &data, &len, &err);
+        if (st == SILK_OK) {
+            st = silk_image_decode(data, len, path, 0, &rgb, &w, &h, &err);
+            free(data);
+        }
+        if (st != SILK_OK) {
+            snprintf(msg, msglen, "%s", err.msg);
+            return -1;
+        }
     } else if (silk_image_read(path, 0, &rgb, &w, &h, &err) != SILK_OK) {
         snprintf(msg, msglen, "%s", err.msg);
         return -1;
@@ -138,29 +156,6 @@ static void beside(const char *base, const char *name, char *out, size_t n)
     const char *slash = base ? strrchr(base, '/') : NULL;
     if (name[0] == '/' || !slash) snprintf(out, n, "%s", name);
     else snprintf(out, n, "%.*s/%s", (int)(slash - base + 1), base, name);
-}
-
-static int read_file(const char *path, char **data, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return -1;
-    size_t cap = 1 << 16, n = 0;
-    char *d = malloc(cap);
-    while (d) {
-        size_t r = fread(d + n, 1, cap - n, f);
-        n += r;
-        if (n < cap) break;
-        char *g = realloc(d, cap * 2);
-        if (!g) { free(d); d = NULL; break; }
-        d = g;
-        cap *= 2;
-    }
-    int bad = ferror(f) || !d;
-    fclose(f);
-    if (bad) { free(d); return -1; }
-    *data = d;
-    *len = n;
-    return 0;
 }
 
 static void warn(int quiet, const char *fmt, const char *a, const char *b)
@@ -215,7 +210,7 @@ int cli_material_load(cli_material *mt, const char *path, const uint8_t *file, s
         if (!m->uv)
             return cli_fail(CLI_EXIT_USAGE, "--texture: %s has no texture coordinates",
                             mesh_name ? mesh_name : SILK_STDIN_NAME);
-        if (read_texture(mt, texture_path, to, msg, sizeof msg) != 0) return cli_fail(CLI_EXIT_INPUT, "%s", msg);
+        if (read_texture(mt, texture_path, 0, to, msg, sizeof msg) != 0) return cli_fail(CLI_EXIT_INPUT, "%s", msg);
     }
     /* an OBJ file's material: mtllib and the first usemtl */
     char lib[1024] = "", use[1024] = "", rest[1024];
@@ -229,19 +224,21 @@ int cli_material_load(cli_material *mt, const char *path, const uint8_t *file, s
     if (!lib[0]) return 0;
     char mtl_path[2100], map[1024] = "";
     beside(mesh_name, lib, mtl_path, sizeof mtl_path);
-    char *data;
+    uint8_t *data;
     size_t dlen;
-    if (read_file(mtl_path, &data, &dlen) != 0) {
-        warn(quiet, "%s: cannot read the material file%s", mtl_path, "");
+    silk_error err;
+    /* a file the model names: only a regular one, of a sensible size */
+    if (silk_file_read_regular(mtl_path, MATERIAL_MTL_MAX, &data, &dlen, &err) != SILK_OK) {
+        warn(quiet, "%s (the material file)%s", err.msg, "");
         return 0;
     }
-    parse_mtl(mt, mtl_path, data, dlen, use, map, sizeof map, quiet);
+    parse_mtl(mt, mtl_path, (const char *)data, dlen, use, map, sizeof map, quiet);
     free(data);
     if (map[0] && !mt->have_texture) {
         char tex_path[2100];
         beside(mtl_path, map, tex_path, sizeof tex_path);
         if (!m->uv) warn(quiet, "%s: the mesh has no texture coordinates for %s", mesh_name ? mesh_name : SILK_STDIN_NAME, map);
-        else if (read_texture(mt, tex_path, to, msg, sizeof msg) != 0) warn(quiet, "%s%s", msg, "");
+        else if (read_texture(mt, tex_path, 1, to, msg, sizeof msg) != 0) warn(quiet, "%s (its map_Kd)%s", msg, "");
     }
     return 0;
 }

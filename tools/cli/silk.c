@@ -10,26 +10,34 @@
 #include "cli.h"
 #include "commands.h"
 #include "man.h"
+#include "opt.h"
 
 typedef struct command {
     const char *name;
     int (*run)(int argc, char **argv);
     const char *synopsis, *summary;
+    const cli_command *spec;   /* its options and help (opt.h) */
+    const cli_command *part[2];   /* its other parts' (bench --visibility-pass, --grid), or NULL */
 } command;
 
 static const command commands[] = {
-    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY, STL, .silk) to PNG or PPM" },
-    { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics" },
-    { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot" },
-    { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility" },
+    { "render", cmd_render, "render MESH -o OUT.png", "render a mesh (OBJ, PLY, STL, .silk) to PNG or PPM",
+      &cmd_render_spec, { NULL } },
+    { "info", cmd_info, "info MESH", "counts, memory use and per-frame statistics", &cmd_info_spec, { NULL } },
+    { "gen", cmd_gen, "gen SHAPE -o OUT.obj", "write a sphere, torus, cone, cylinder or knot", &cmd_gen_spec, { NULL } },
+    { "bench", cmd_bench, "bench MESH...", "time and silhouette error per render mode; --visibility-pass, --grid",
+      &cmd_bench_spec, { &cmd_bench_visibility_spec, &cmd_bench_grid_spec } },
     { "prepare", cmd_prepare, "prepare FINE -o MODEL.silk --triangles N",
-      "a detailed mesh made into a prepared model for silk" },
-    { "simplify", cmd_simplify, "simplify IN OUT --triangles N", "fewer triangles, by quadric edge collapse" },
-    { "hull", cmd_hull, "hull FINE -o HULL.obj", "a coarse mesh around FINE (--triangles N; --inner)" },
-    { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are" },
-    { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash" },
-    { "view", cmd_view, "view MESH [--fb /dev/fb0]", "look at it: a window (mouse, keys) or a framebuffer" },
-    { "profile", cmd_profile, "profile MESH", "where every byte of RAM goes on this board" },
+      "a detailed mesh made into a prepared model for silk", &cmd_prepare_spec, { NULL } },
+    { "simplify", cmd_simplify, "simplify IN OUT --triangles N", "fewer triangles, by quadric edge collapse",
+      &cmd_simplify_spec, { NULL } },
+    { "hull", cmd_hull, "hull FINE -o HULL.obj", "a coarse mesh around FINE (--triangles N; --inner)", &cmd_hull_spec,
+      { NULL } },
+    { "diff", cmd_diff, "diff A.png B.png", "how far apart the silhouettes of two renders are", &cmd_diff_spec, { NULL } },
+    { "pack", cmd_pack, "pack MESH -o MODEL.h", "the loaded mesh as C arrays for flash", &cmd_pack_spec, { NULL } },
+    { "view", cmd_view, "view MESH [--fb /dev/fb0]", "look at it: a window (mouse, keys) or a framebuffer",
+      &cmd_view_spec, { NULL } },
+    { "profile", cmd_profile, "profile MESH", "where every byte of RAM goes on this board", &cmd_profile_spec, { NULL } },
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 
@@ -47,18 +55,11 @@ static void usage(FILE *f)
             "\n"
             "  silk help COMMAND                every option of one command (or COMMAND --help)\n"
             "  silk help --man                  all of this help as a manual page (silk.1)\n"
+            "  silk help --options [COMMAND]    every option as a table line, for scripts\n"
             "  silk --version                   the version\n"
             "\n"
             "Exit status: 0 success, 1 bad input (a file, a mesh, a failed write),\n"
             "2 bad usage (an unknown option or a value out of range).\n");
-}
-
-static int overview(int argc, char **argv)
-{
-    (void)argc;
-    (void)argv;
-    usage(stdout);
-    return 0;
 }
 
 /* `silk help --man`: this help and every command's as one manual page. */
@@ -66,13 +67,13 @@ static int man_page(void)
 {
     man_begin(stdout, SILK_VERSION);
     man_heading(stdout, "SH", "DESCRIPTION");
-    int rc = man_help_block(stdout, overview, "silk");
+    int rc = man_help_block(stdout, usage, NULL);
     man_heading(stdout, "SH", "COMMANDS");
     for (int i = 0; i < NCOMMANDS; i++) {
         char title[64];
         snprintf(title, sizeof title, "silk %s", commands[i].name);
         man_heading(stdout, "SS", title);
-        rc |= man_help_block(stdout, commands[i].run, commands[i].name);
+        rc |= man_help_block(stdout, NULL, commands[i].spec);
     }
     man_end(stdout);
     if (fflush(stdout) != 0) return cli_fail(CLI_EXIT_INPUT, "stdout: cannot write");
@@ -107,10 +108,22 @@ int main(int argc, char **argv)
             return 0;
         }
         if (strcmp(argv[2], "--man") == 0) return man_page();
+        if (strcmp(argv[2], "--options") == 0) {
+            /* every command's rows, or one command's (and its part's) */
+            const command *only = argc > 3 ? find(argv[3]) : NULL;
+            if (argc > 3 && !only) return cli_fail(CLI_EXIT_USAGE, "unknown command \"%s\" (try silk --help)", argv[3]);
+            for (int i = 0; i < NCOMMANDS; i++) {
+                if (only && only != &commands[i]) continue;
+                cli_options_print(stdout, commands[i].spec);
+                for (int k = 0; k < 2; k++)
+                    if (commands[i].part[k]) cli_options_print(stdout, commands[i].part[k]);
+            }
+            return fflush(stdout) == 0 ? 0 : cli_fail(CLI_EXIT_INPUT, "stdout: cannot write");
+        }
         const command *c = find(argv[2]);
         if (!c) return cli_fail(CLI_EXIT_USAGE, "unknown command \"%s\" (try silk --help)", argv[2]);
-        char *help_argv[] = { argv[2], "--help", NULL };
-        return c->run(2, help_argv);
+        cli_help_print(stdout, c->spec);
+        return 0;
     }
     const command *c = find(name);
     if (!c) return cli_fail(CLI_EXIT_USAGE, "unknown command \"%s\" (try silk --help)", name);

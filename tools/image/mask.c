@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "host.h"
 #include "mask.h"
 
 void mask_from_rgb(const uint8_t *rgb, size_t stride, int w, int h, uint32_t bg, uint8_t *mask)
@@ -54,7 +54,7 @@ double mask_outline_length(const uint8_t *m, int w, int h)
             if (x > 0) na += row[x] != below[x - 1];
         }
     }
-    return CLI_PI / 8 * ((double)(nh + nv) + (double)(nd + na) / sqrt(2.0));
+    return HOST_PI / 8 * ((double)(nh + nv) + (double)(nd + na) / sqrt(2.0));
 }
 
 /* One row of the transform: d[x] = min over q of (x - q)^2 + f[q], f[q] ==

@@ -11,8 +11,7 @@
 
 #include "sheet.h"
 #include "font.h"
-#include "cli/cli.h"
-#include "platform/platform.h"
+#include "silk/platform.h"   /* silk_target_row_rgb888 */
 
 #define SHEET_BG    0xDCDCDCu
 #define SHEET_TEXT  0x202020u
@@ -25,10 +24,10 @@ static int cell_y(const sheet *s, int row)
     return SHEET_GAP + s->title_h + row * (s->cell_h + s->label_h + SHEET_GAP);
 }
 
-int sheet_init(sheet *s, int cols, int rows, int cell_w, int cell_h, const char *title)
+silk_status sheet_init(sheet *s, int cols, int rows, int cell_w, int cell_h, const char *title, silk_error *err)
 {
     memset(s, 0, sizeof *s);
-    if (cols < 1 || rows < 1 || cell_w < 1 || cell_h < 1) return cli_fail(-1, "sheet: no cells");
+    if (cols < 1 || rows < 1 || cell_w < 1 || cell_h < 1) return silk_fail(err, SILK_ERR_ARG, NULL, 0, "sheet: no cells");
     s->cols = cols;
     s->rows = rows;
     s->cell_w = cell_w;
@@ -42,11 +41,12 @@ int sheet_init(sheet *s, int cols, int rows, int cell_w, int cell_h, const char 
     long long w = SHEET_GAP + (long long)cols * (cell_w + SHEET_GAP);
     long long h = SHEET_GAP + s->title_h + (long long)rows * (cell_h + s->label_h + SHEET_GAP);
     if (w > SHEET_MAX_SIDE || h > SHEET_MAX_SIDE)
-        return cli_fail(-1, "the contact sheet would be %lldx%lld pixels (at most %d a side): use a smaller --size",
-                        w, h, SHEET_MAX_SIDE);
+        return silk_fail(err, SILK_ERR_RANGE, NULL, 0,
+                         "the contact sheet would be %lldx%lld pixels (at most %d a side): use a smaller --size", w, h,
+                         SHEET_MAX_SIDE);
     size_t stride = (size_t)w * 3;
     uint8_t *px = malloc(stride * (size_t)h);
-    if (!px) return cli_fail(-1, "out of memory for a %lldx%lld contact sheet", w, h);
+    if (!px) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "out of memory for a %lldx%lld contact sheet", w, h);
     silk_target_init(&s->img, (int)w, (int)h, 0, (int)h, SILK_PIX_RGB888, px, NULL);
     silk_target_clear(&s->img, SHEET_BG);
     if (s->title_h) font_draw(&s->img, SHEET_GAP, SHEET_GAP, title, SHEET_TITLE, s->scale);

@@ -27,9 +27,9 @@ typedef struct sheet {
 } sheet;
 
 /* A sheet of cols x rows cells of cell_w x cell_h pixels with title (may be
- * NULL) on top.  Returns 0, or -1 after printing why (too large, out of
- * memory); sheet_free is safe either way. */
-int sheet_init(sheet *s, int cols, int rows, int cell_w, int cell_h, const char *title);
+ * NULL) on top.  SILK_OK, or an error in err (too large, out of memory);
+ * sheet_free is safe either way. */
+silk_status sheet_init(sheet *s, int cols, int rows, int cell_w, int cell_h, const char *title, silk_error *err);
 
 /* Copy frame (a full frame of the cell size, any pixel format) into cell
  * (col, row) and write label under it: up to SHEET_LABEL_LINES lines

@@ -16,11 +16,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "host.h"
 #include "gen.h"
 
-static const double PI = CLI_PI;
-static const double TAU = 2 * CLI_PI;
+static const double PI = HOST_PI;
+static const double TAU = 2 * HOST_PI;
 
 static const char *const shape_names[GEN_SHAPE_COUNT] = { "sphere", "torus", "cone", "cylinder", "knot" };
 

@@ -10,7 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "silk/silk.h"
-#include "src/silmap_interp.h"
+#include "silk/silmap.h"
 
 typedef struct model_out {
     uint32_t n;

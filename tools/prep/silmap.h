@@ -11,7 +11,7 @@
 #define SILK_TOOLS_SILMAP_H
 
 #include <stdint.h>
-#include "src/silmap_interp.h"
+#include "silk/silmap.h"
 
 /* The polytope: unit directions from the centre (its vertices on the unit
  * sphere) and its triangles, counter-clockwise seen from outside. */
@@ -133,7 +133,7 @@ typedef struct silmap_fixed {
     void *block;
 } silmap_fixed;
 
-/* Round the map to the layout of src/silmap_interp.h: cameras and world
+/* Round the map to the layout of silk/silmap.h: cameras and world
  * points to Q16.16, outlines to Q16.16 pixels.  0, or -1 when out of memory
  * or a number does not fit Q16.16. */
 int silmap_export(const silmap *m, silmap_fixed *out);

@@ -86,16 +86,10 @@ static int setup_view(simp *s, uint32_t w)
     if (silk_view_init(&s->cur[w], &cam, &err)) return -1;
     silk_silmap_cam cc;
     silk_silmap_cam_of_view(&s->cur[w], &cc);
-    silk_h3 h;
     silk_arena a;
     silk_arena_init(&a, s->arena_buf, s->arena_bytes);
     silk_outline own = silk_silmap_outline(&s->f.map, w), mapped;
-    uint32_t *start = silk_arena_array_top(&a, own.nloops + 1, sizeof *start, SILK_MEM_FRAME);
-    if (!start) return -1;
-    for (uint32_t i = 0; i <= own.nloops; i++) start[i] = own.start[i] - own.start[0];
-    silk_outline rebased = { own.nloops, own.npts, start, own.pt + own.start[0] };
-    if (silk_h3_between(&s->f.map.views[w].cam, &cc, NULL, NULL, &h) || silk_outline_map(&rebased, &h, &a, &mapped))
-        return -1;
+    if (silk_outline_reproject(&own, &s->f.map.views[w].cam, &cc, &a, &mapped)) return -1;
     int res = c->res;
     s->truth[w] = malloc((size_t)res * res);
     if (!s->truth[w]) return -1;

@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "host.h"
 #include "simplify.h"
 #include "vec3.h"
 
@@ -392,7 +392,7 @@ static int collapse(state *s, const cand *c)
 /* Face quadrics, then constraint planes along boundary and crease edges. */
 static int init_quadrics(state *s)
 {
-    double cos_crease = cos(s->o->crease_deg * CLI_DEG);
+    double cos_crease = cos(s->o->crease_deg * HOST_DEG);
     for (uint32_t f = 0; f < s->nt; f++) {
         const uint32_t *t = &s->tri[3 * f];
         double n[3];

@@ -23,8 +23,6 @@
 #include <stdint.h>
 #include "silk/fixed.h"
 
-#include "silk/silk.h"
-
 typedef struct simp_mesh {
     uint32_t nverts, ntris;
     double *pos;             /* 3 * nverts, malloc'd */
@@ -74,40 +72,5 @@ int simp_topology_check(const simp_mesh *m, simp_topology *t);
  * out of memory. */
 int simp_copy(const simp_mesh *m, simp_mesh *out);
 void simp_free(simp_mesh *m);
-
-/* The command's input and output (tools/cli/cmd_simplify.c), shared by the
- * commands that make meshes from meshes.  simp_load: the mesh as silk's
- * loader reads it (every format, every error message; "-" is standard
- * input, a progress line for a large file unless quiet), coordinates times
- * scale, widened to double, and whether it is closed and manifold; 0 or an
- * exit code after printing the error.  simp_write_mesh: ascii PLY when path
- * ends in .ply ("comment COMMENT", x y z and, unless normals is NULL, nx ny
- * nz per vertex), else OBJ with the comment line "# COMMENT: N triangles, N
- * vertices" and the normals as "vn" lines (faces "f a//a ..."); atomically,
- * "-" for stdout; 0 or an exit code after printing the error. */
-int simp_load(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold);
-/* The same, and the vertex colours (0xRRGGBB each, malloc'd) in *color, or
- * NULL when the file has none. */
-int simp_load_colors(const char *path, silk_decimal scale, int quiet, simp_mesh *out, int *closed_manifold,
-                     uint32_t **color);
-int simp_write_mesh(const simp_mesh *m, const double *normals, const char *path, const char *comment);
-/* OBJ with nnormals normals and the normal of each corner named by
- * tri_normal (3 per triangle): faces "f a//n ..." (PLY has one normal per
- * vertex, so normals split along feature edges are written as OBJ only). */
-int simp_write_obj_corners(const simp_mesh *m, const double *normals, uint32_t nnormals, const uint32_t *tri_normal,
-                           const char *path, const char *comment);
-
-/* Their common options: --triangles N (4..1e8), --scale S, -o/--output OUT,
- * --quiet.
- * simp_common_option: 1 when argv[*i] is one of them (consumed with its
- * value, *i advanced), 0 when not, -1 after printing a usage error. */
-typedef struct simp_args {
-    const char *out;           /* NULL: not given */
-    long target;               /* -1: not given */
-    silk_decimal scale;        /* {1, 0}: none */
-    int quiet;                 /* --quiet: no progress line */
-} simp_args;
-int simp_common_option(int argc, char **argv, int *i, simp_args *args);
-
 
 #endif

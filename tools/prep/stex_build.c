@@ -10,7 +10,6 @@
 
 #include "bvh.h"
 #include "closest.h"
-#include "cli/progress.h"
 #include "stex_build.h"
 #include "vec3.h"
 
@@ -26,7 +25,8 @@ void stex_opts_default(stex_opts *o)
     o->svd = 0;
     o->samples = 512;
     o->threads = 2;
-    o->quiet = 0;
+    o->progress = NULL;
+    o->progress_user = NULL;
 }
 
 typedef struct ctx {
@@ -41,7 +41,7 @@ typedef struct ctx {
     int phase;
     size_t next, done, total;
     pthread_mutex_t lock;
-    progress pr;
+    const stex_opts *o;
 } ctx;
 
 static void normalize3(double *v)
@@ -214,7 +214,7 @@ static void *worker(void *arg)
         c->done += last - first;
         double done = (double)c->done;
         pthread_mutex_unlock(&c->lock);
-        if (j->draws) progress_update(&c->pr, (double)c->phase * n + done, 2.0 * n);
+        if (j->draws && c->o->progress) c->o->progress(c->o->progress_user, (double)c->phase * n + done, 2.0 * n);
     }
     return NULL;
 }
@@ -510,7 +510,7 @@ int stex_build(const simp_mesh *fine, const uint32_t *fine_color, const simp_mes
     double diag[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
     c.eps = 1e-7 * len3(diag);
     pthread_mutex_init(&c.lock, NULL);
-    progress_start(&c.pr, o->quiet, "siltex");
+    c.o = o;
     run_phase(&c, 0, o->threads);
     if (vertex_frames(&c, hull_vn) == 0) {
         for (size_t t = 0; t < nt; t++)
@@ -518,7 +518,6 @@ int stex_build(const simp_mesh *fine, const uint32_t *fine_color, const simp_mes
         run_phase(&c, 1, o->threads);
         rc = 0;
     }
-    progress_end(&c.pr);
     pthread_mutex_destroy(&c.lock);
     if (rc == 0) {
         uint32_t multi = 0;

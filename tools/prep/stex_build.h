@@ -59,7 +59,10 @@ typedef struct stex_opts {
     int svd;                 /* E eigenfunctions; 0: angles stored whole [0] */
     int samples;             /* sphere directions per texel for C_p and eq. 3 [512] */
     int threads;             /* [2] */
-    int quiet;               /* no progress line */
+    /* Called now and then (from one thread) with the work done of total:
+     * a progress line, say; NULL: nothing. */
+    void (*progress)(void *user, double done, double total);
+    void *progress_user;
 } stex_opts;
 
 void stex_opts_default(stex_opts *o);

@@ -37,28 +37,4 @@ typedef struct surf_normals {
 int surf_normals_compute(const simp_mesh *fine, const simp_mesh *coarse, double crease_deg, surf_normals *out);
 void surf_normals_free(surf_normals *n);
 
-/* What `silk simplify` and `silk prepare` share (tools/cli/cmd_simplify.c). */
-typedef struct simp_result {
-    simp_mesh mesh;          /* the simplified mesh */
-    simp_mesh fine;          /* with subset placement: the input (mesh.origin indexes it) */
-    surf_normals normals;    /* with subset placement: the detailed surface's normals */
-    uint32_t *fine_color;    /* with subset placement: fine's vertex colours 0xRRGGBB, or NULL */
-    simp_stats stats;
-} simp_result;
-
-/* Load IN, simplify it by so (a progress line named what unless quiet),
- * check that a closed manifold stays one and, with subset placement, take
- * the detailed surface's normals.  0, or the exit status after a one-line
- * error; r is to be freed either way. */
-int simplify_pipeline(const char *in, const simp_opts *so, silk_decimal scale, int quiet, const char *what,
-                      simp_result *r);
-void simp_result_free(simp_result *r);
-/* The warning when the target was not reached (every further collapse
- * would break the surface). */
-void simplify_warn_short(const char *in, const simp_mesh *m, uint32_t target);
-/* The simplification's options both commands take besides
- * simp_common_option's: --crease, --feature-weight.  1 when argv[*i] is one
- * of them (consumed with its value), 0 when not, -1 after a usage error. */
-int simplify_option(int argc, char **argv, int *i, simp_opts *so);
-
 #endif

@@ -39,8 +39,10 @@ typedef struct viewer {
 
     silk_render_opts ro;
     int hud, spin, quit;
+    double spin_step;          /* degrees a frame while spinning */
 
     int w, h;                  /* the frame (the window's client area) */
+    int vh;                    /* the rows the model is drawn in: above the status band */
     uint8_t *color;            /* heap, re-created on resize */
     uint32_t *depth;
     silk_target t;
@@ -86,5 +88,28 @@ void viewer_status(const viewer *v, char *buf, size_t n);
 /* viewer_sdl.c: the window loop; returns the exit status.  frames > 0:
  * quit after that many frames, saving the last one as a screenshot. */
 int viewer_run_sdl(viewer *v, long frames);
+
+/* ---- view_fb.c: `silk view --fb DEVICE` and `--fb-file PATH` ------------------------- */
+
+/* The band height by default (boards/linux-fb/board.mk sets the board's). */
+#ifdef SILK_BOARD_BAND_ROWS
+#define VIEW_FB_ROWS SILK_BOARD_BAND_ROWS
+#else
+#define VIEW_FB_ROWS 32
+#endif
+#define VIEW_FB_SPIN 3.0           /* degrees the model turns per frame on a framebuffer */
+
+typedef struct view_fb_opts {
+    const char *fb_dev, *fb_file;
+    int geo_w, geo_h, geo_bpp;     /* --fb-geometry, for --fb-file */
+    long frames;                   /* 0: until a signal */
+    double spin;                   /* degrees per frame; 0: VIEW_FB_SPIN */
+    int rows;                      /* band height; 0: VIEW_FB_ROWS */
+    int have_size, have_format;    /* --size, --format given: else the screen's */
+} view_fb_opts;
+
+/* The model turning on the framebuffer until a signal or v->frames;
+ * returns the exit status. */
+int view_fb(cli_scene_opts *o, const view_fb_opts *v);
 
 #endif
