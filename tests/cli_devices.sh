@@ -67,6 +67,23 @@ else
     fail "pack: the firmware scene builds for the host" "$(head -c 300 "$tmp/cc.err")"
 fi
 
+# The same scene with an arena that holds the band buffers (160 x 8 x 6
+# bytes) and a flat frame but not a smooth frame's plan: every smooth frame
+# falls back to flat, and the scene says so instead of "ok", with the count
+# and a non-zero exit status.
+if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -Iinclude -Iplatform/mps2 -I"$tmp" \
+    -DFW_ARENA_BYTES=10752 -o "$tmp/fw-small" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
+    "$build/libsilk.a" 2>"$tmp/cc.err"; then
+    "$tmp/fw-small" >"$tmp/small.report" 2>&1
+    status=$?
+    check "pack: a scene whose smooth frames fall back says so (exit $status)" \
+        grep -qx 'fw result=fell_back frames=6 fell_back=3 smooth_fell_back=3' "$tmp/small.report"
+    check "pack: ... and exits 2" [ "$status" -eq 2 ]
+    check "pack: ... its frame lines say which" [ "$(grep -c '^fw frame=.* mode=smooth .*fell_back=1 ' "$tmp/small.report")" -eq 3 ]
+else
+    fail "pack: the firmware scene builds for the host with a small arena" "$(head -c 300 "$tmp/cc.err")"
+fi
+
 # Usage and input errors: one line, the right status, no header left behind.
 echo stale >"$tmp/stale.h"
 expect_usage "pack: no output" pack "$mesh"

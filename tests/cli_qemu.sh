@@ -16,7 +16,8 @@
 #                           fw/ram256k/machine)
 # Each firmware renders 3 views x (flat, smooth) in bands and writes the
 # frames to the host through semihosting.  Checks:
-#   - it runs to "fw result=ok" and exits 0 (semihosting SYS_EXIT);
+#   - it runs to "fw result=ok" and exits 0 (semihosting SYS_EXIT): a frame
+#     that fell back for lack of RAM ends it with "fw result=fell_back";
 #   - no frame falls back for lack of RAM, and every frame equals `silk
 #     render` of the same mesh, view and settings (the --eye is the exact
 #     one the header records);
@@ -24,7 +25,8 @@
 #     fall-back, checksum) equal fw-host's;
 #   - the measured RAM (static + arena high-water + stack high-water) is
 #     within the linked budget, and the stack did not reach its end;
-#   - `make profile --check` passes for each board.
+#   - `make profile --check` passes for each board, and the profile of a
+#     run whose smooth frames fall back says so and fails --check.
 # Without the ARM toolchain or QEMU this skips with a message, except in CI
 # (CI set), where they must be installed.  Without ../shared/meshes the
 # mps2-an385 board is skipped (its models are shared meshes) and the
@@ -204,10 +206,35 @@ for board in mps2-an385 mps2-an385-full microbit; do
         check "$board: make profile: flash by module" \
             grep -qE '^  core raster +[0-9]+  code [0-9]+, constants [0-9]+$' "$tmp/profile.out"
         check "$board: make profile: the footprint line" \
-            grep -qE "^footprint $board [^ ]+ ram_total_bytes=[0-9]+ code_bytes=[0-9]+ model_bytes=[0-9]+$" "$tmp/profile.out"
+            grep -qE "^footprint $board [^ ]+ ram_total_bytes=[0-9]+ code_bytes=[0-9]+ model_bytes=[0-9]+ fell_back_frames=0$" "$tmp/profile.out"
         check "$board: make profile: instructions per frame" \
-            grep -qE "^speed $board [^ ]+ flat_instructions=[1-9][0-9]* smooth_instructions=[1-9][0-9]*$" "$tmp/profile.out"
+            grep -qE "^speed $board [^ ]+ flat_instructions=[1-9][0-9]* smooth_instructions=[1-9][0-9]* smooth_fell_back=0$" "$tmp/profile.out"
         check "$board: make profile: the CSV" grep -q '^ram,ram total,' "$tmp/profile.csv"
+    fi
+
+    # A run whose smooth frames fall back is profiled, and says so: the
+    # profile script run on this board's map with the scene built for the
+    # host with an arena that holds the bands and a flat frame only, in
+    # place of the emulator.
+    if [ "$board" = mps2-an385 ] && [ -z "${SILK_FW_DIR:-}" ] && [ -n "$pmesh" ]; then
+        pname=$(basename "$pmesh"); pname=${pname%.*}
+        mkdir -p "$tmp/fb/$pname"
+        cp "$fwroot/$pname/fw.elf" "$fwroot/$pname/fw.map" "$tmp/fb/$pname/"
+        if ${CC:-cc} -std=c11 -O2 -Iinclude -Iplatform/mps2 -I"$fwroot/$pname" -DFW_ARENA_BYTES=18432 \
+            -o "$tmp/fw-small" platform/mps2/fw_main.c platform/mps2/fw_io_host.c "$build/libsilk.a" 2>"$err"; then
+            BOARD=$board FW_DIR=$tmp/fb BOARD_RUN=$tmp/fw-small BOARD_FLASH_BYTES=524288 BOARD_WIDTH=320 \
+                BOARD_HEIGHT=240 BOARD_BAND_ROWS=8 PROFILE_CSV=$tmp/fb.csv sh tools/profile_fw.sh "$pmesh" --check \
+                >"$tmp/fb.out" 2>"$tmp/fb.err"
+            rc=$?
+            check "$board: a profile whose smooth frames fall back fails --check ($rc)" [ "$rc" -eq 1 ]
+            check "$board: ... says so at the top" grep -q '^FELL BACK: 3 of 6 frames (3 smooth)' "$tmp/fb.out"
+            check "$board: ... and on its last line" \
+                grep -qE "^footprint $board $pname ram_total_bytes=[0-9]+ code_bytes=[0-9]+ model_bytes=[0-9]+ fell_back_frames=3$" \
+                "$tmp/fb.out"
+            check "$board: ... and on stderr" grep -q 'silk: profile: 3 of 6 frames fell back (3 smooth)' "$tmp/fb.err"
+        else
+            fail "$board: the scene builds for the host with a small arena" "$(head -c 300 "$err")"
+        fi
     fi
 done
 done_testing

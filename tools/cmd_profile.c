@@ -9,7 +9,8 @@
  * tool does, and the frames are rendered in the board's bands from the views
  * of `silk pack --views N` (BOARD_VIEWS, default 3), each in flat and smooth
  * mode.  The last line is
- *   footprint BOARD MESH ram_total_bytes=N model_bytes=N
+ *   footprint BOARD MESH ram_total_bytes=N model_bytes=N fell_back_frames=N
+ * (frames that fell back to flat for lack of arena are also said above it).
  *
  * A firmware board (mps2-an385) is measured on the firmware itself, by
  * `make profile` (tools/profile_fw.sh reads its linker map and its report
@@ -188,7 +189,8 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     }
     char name[128];
     model_name(mesh, name, sizeof name);
-    printf("footprint %s %s ram_total_bytes=%zu model_bytes=%zu\n", SILK_BOARD_NAME, name, total, model);
+    printf("footprint %s %s ram_total_bytes=%zu model_bytes=%zu fell_back_frames=%ld\n", SILK_BOARD_NAME, name, total,
+           model, ff->fell);
     return 0;
 }
 
@@ -242,7 +244,7 @@ static void help(FILE *f)
             "built for: %dx%d, bands of %d rows) renders MESH: the mesh in the arena by\n"
             "part, the arena by purpose with high-water marks and the band buffers, as a\n"
             "table, a CSV file and a last line\n"
-            "  footprint BOARD MESH ram_total_bytes=N model_bytes=N\n"
+            "  footprint BOARD MESH ram_total_bytes=N model_bytes=N fell_back_frames=N\n"
             "It renders %d views around the model, each flat and smooth, in this process.\n"
             "A firmware board (mps2-an385) measures itself under QEMU, with its flash:\n"
             "run `make profile PROFILE_BOARD=NAME` in the silk sources for it.\n"

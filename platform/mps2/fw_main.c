@@ -16,7 +16,10 @@
  *
  * Command line: PROGRAM [PREFIX]; with PREFIX, camera C's two frames are
  * written to PREFIX-cC-flat.ppm and PREFIX-cC-smooth.ppm.  Report lines are
- * "fw NAME key=value ..." on the console (docs/small-devices.md).
+ * "fw NAME key=value ..." on the console (docs/small-devices.md).  The last
+ * is "fw result=ok" (exit status 0), "fw result=error" (1), or, when frames
+ * were drawn unsmoothed because the arena could not hold their plan,
+ * "fw result=fell_back frames=N fell_back=N smooth_fell_back=N" (2).
  *
  * Speed: fw_ticks() is read around each silk_render_bands() call and around
  * each band handed to the sink, so "fw time" gives the renderer's own ticks
@@ -237,6 +240,7 @@ typedef struct fw_pass {
     int stages;                  /* time the HAL's stages, write nothing */
     uint32_t overhead;           /* timing_overhead(), for the report */
     uint32_t clock_overhead;     /* clock_overhead(), for the report */
+    int frames, fell_back, smooth_fell_back;   /* the frames written, and how many fell back */
 } fw_pass;
 
 /* The stage pass of one frame: unwritten, the HAL's stages timed.  Never
@@ -316,7 +320,7 @@ static int open_frame(band_out *o, int k, const char *mname, const silk_camera *
 }
 
 static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
-                      const fw_pass *pass, int frame)
+                      fw_pass *pass, int frame)
 {
     const silk_camera *cam = fwmodel_camera(k);
     silk_view view;
@@ -353,6 +357,9 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
         "crc=%08lx",
         frame, k, mname, (unsigned long)st.tris_drawn, (unsigned long)st.silhouette_tris,
         (unsigned long)st.samples, (unsigned long)st.frame_bytes, st.fell_back, (unsigned long)o.crc);
+    pass->frames++;
+    pass->fell_back += st.fell_back != 0;
+    pass->smooth_fell_back += st.fell_back && mode == SILK_MODE_SMOOTH;
     say("fw time frame=%d camera=%d mode=%s ticks=%lu sink_ticks=%lu render_ticks=%lu", frame, k, mname,
         (unsigned long)o.frame_ticks, (unsigned long)o.ticks, (unsigned long)(o.frame_ticks - o.ticks));
 
@@ -429,17 +436,30 @@ int fw_scene(void)
     silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
 
     int rc = 0;
-    fw_pass pass = { files, 0, 0, 0 };
+    fw_pass pass = { files, 0, 0, 0, 0, 0, 0 }, written = pass;
     for (int p = 0; p < 2; p++) {
         if (p == 1) {   /* the stage pass last, so that its timing adds nothing to the memory reported */
             report_memory(&arena, band_bytes);
+            written = pass;
             if (rc) break;
-            pass = (fw_pass){ 0, 1, timing_overhead(), clock_overhead() };
+            pass = (fw_pass){ 0, 1, timing_overhead(), clock_overhead(), 0, 0, 0 };
         }
         for (int k = 0, frame = 0; k < fwmodel_NCAMERAS && !rc; k++)
             for (int mode = 0; mode < 2 && !rc; mode++)
                 rc = render_one(&arena, &mesh, k, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, &band, &pass, frame++);
     }
-    say("fw result=%s", rc ? "error" : "ok");
-    return rc;
+    /* A frame drawn unsmoothed for lack of RAM is not a success: say how
+     * many, and exit 2 (1 is an error), so that a run that only checks the
+     * status sees it too. */
+    if (rc) {
+        say("fw result=error");
+        return 1;
+    }
+    if (written.fell_back) {
+        say("fw result=fell_back frames=%d fell_back=%d smooth_fell_back=%d", written.frames, written.fell_back,
+            written.smooth_fell_back);
+        return 2;
+    }
+    say("fw result=ok");
+    return 0;
 }
