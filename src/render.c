@@ -1439,6 +1439,8 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     memset(stats, 0, sizeof *stats);
     if (!a || !band || !sink || !sink->band || band->rows < 1 || band->height < 1)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: missing argument");
+    if ((sink->color2 == NULL) != (sink->wait == NULL))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: a second band buffer needs the sink's wait");
     if (check_frame_size(band, err) != SILK_OK) return SILK_ERR_RANGE;
 
     silk_arena_mark mark = silk_arena_top_mark(a);
@@ -1452,7 +1454,15 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         frame_extras(&f, a, m, h, o, band);
         share_rows(&f, o, band);
     }
-    for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
+    /* With two colour buffers the bands alternate, each drawn once the sink
+     * says it has done sending it (render.h). */
+    uint8_t *const color[2] = { band->color, sink->color2 ? sink->color2 : band->color };
+    for (int y0 = 0, k = 0; st == SILK_OK && y0 < band->height; y0 += rows, k ^= 1) {
+        band->color = color[k];
+        if (sink->wait && sink->wait(sink->user, band->color)) {
+            st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
+            break;
+        }
         band->y0 = y0;
         band->rows = band->height - y0 < rows ? band->height - y0 : rows;
         frame_draw(&f, o, band);
@@ -1460,6 +1470,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         if (sink->band(sink->user, band))
             st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }
+    band->color = color[0];
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;

@@ -86,7 +86,7 @@ typedef struct frame_figures {
  * rendered in the board's bands into `band`. */
 static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, frame_figures *ff)
 {
-    silk_sink sink = { band_none, NULL };
+    silk_sink sink = { .band = band_none, .user = NULL };
     silk_camera c0;
     int rc = cli_camera(o, &s->mesh, &c0);
     int views = SILK_BOARD_VIEWS;

@@ -256,7 +256,7 @@ static int time_stages(silk_arena *a, const silk_mesh *m, const silk_view *view,
 {
     timed_hal th;
     timed_hal_init(&th, hal);
-    silk_sink none = { discard_band, NULL };
+    silk_sink none = { .band = discard_band, .user = NULL };
     silk_stage_clock clock = { clock_now, NULL, { 0 }, { 0 } };
     ro->clock = &clock;
     silk_status s = silk_render_bands(a, m, view, hal, ro, band, &none, st, err);
@@ -344,7 +344,7 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
 
     band_out o = { -1, 0, 2166136261u, 0, 0 };
     if (pass->files && !open_frame(&o, k, mname, cam)) return 1;
-    silk_sink sink = { send_band, &o };
+    silk_sink sink = { .band = send_band, .user = &o };
     o.frame_ticks = fw_ticks();
     silk_status s = silk_render_bands(a, m, &view, &hal, &ro, band, &sink, &st, &err);
     o.frame_ticks = fw_ticks() - o.frame_ticks;
