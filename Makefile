@@ -26,7 +26,8 @@ PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 
 CORE_SRC  := $(wildcard src/*.c)
-PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/ppm_read.c platform/fb_sink.c
+PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/ppm_read.c platform/fb_sink.c \
+             platform/panel/silk_panel.c
 TOOL_SRC  := $(wildcard tools/*.c)
 # The window of `silk view` needs SDL2 (docs/viewer.md); without it the rest
 # builds, and `silk view` offers only --fb, --benchmark and --events.
@@ -93,7 +94,7 @@ $(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o
 $(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
 $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines $(BUILD)/tests/test_aa $(BUILD)/tests/test_texture \
-             $(BUILD)/tests/test_bands
+             $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel
 $(GEN_TESTS): $(BUILD)/obj/tools/gen.o
 $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
 # clip mode's golden frames draw a model prepared as silk prepare makes one
