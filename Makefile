@@ -28,7 +28,9 @@ PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 CORE_SRC  := $(wildcard src/*.c)
 PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/ppm_read.c platform/fb_sink.c \
              platform/panel/silk_panel.c
-TOOL_SRC  := $(wildcard tools/*.c)
+# The silk command's parts, a folder each (tools/README.md): the command line,
+# host-side preparation, the viewer and image helpers.
+TOOL_SRC  := $(wildcard tools/cli/*.c tools/prep/*.c tools/view/*.c tools/image/*.c)
 # The window of `silk view` needs SDL2 (docs/viewer.md); without it the rest
 # builds, and `silk view` offers only --fb, --benchmark and --events.
 SDL2_OK   := $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
@@ -36,7 +38,7 @@ ifeq ($(SDL2_OK),1)
   SDL2_CFLAGS := $(shell pkg-config --cflags sdl2)
   SDL2_LIBS   := $(shell pkg-config --libs sdl2)
 else
-  TOOL_SRC  := $(filter-out tools/viewer_sdl.c,$(TOOL_SRC))
+  TOOL_SRC  := $(filter-out tools/view/viewer_sdl.c,$(TOOL_SRC))
   $(info silk: SDL2 not found (pkg-config sdl2): building without the viewer window)
 endif
 TEST_SRC  := $(wildcard tests/test_*.c)
@@ -47,7 +49,7 @@ TOOL_OBJ  := $(TOOL_SRC:%.c=$(BUILD)/obj/%.o)
 TEST_BIN  := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%) $(BUILD)/tests/test_cxx
 TEST_SUPPORT := $(wildcard tests/support/*.c)
 # (stexgen.c writes prepared models with the tool's writer)
-TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tools/model_file.o
+TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tools/prep/model_file.o
 
 .PHONY: all lib test test-fast check-nofloat demo install clean tests bench bench-peers fuzz fuzz-build
 all: $(BUILD)/libsilk.a $(BUILD)/silk $(BUILD)/silk.1
@@ -61,12 +63,16 @@ $(BUILD)/obj/%.o: %.c
 # The tool takes its defaults (image size, pixel format) from the board, and
 # `silk profile` the board's bands and views.
 BOARD_TOOL_CFLAGS := $(BOARD_CFLAGS) -DSILK_BOARD_NAME='"$(BOARD)"' -DSILK_BOARD_VIEWS=$(or $(BOARD_VIEWS),3)
-$(BUILD)/obj/tools/cmd_profile.o: BOARD_TOOL_CFLAGS += -DSILK_BOARD_BAND_ROWS=$(BOARD_BAND_ROWS)
+$(BUILD)/obj/tools/cli/cmd_profile.o: BOARD_TOOL_CFLAGS += -DSILK_BOARD_BAND_ROWS=$(BOARD_BAND_ROWS)
+# Tools include each other by folder ("prep/hull.h") and the host I/O as
+# "platform/...".
+TOOL_INC := -Itools -I.
+$(TOOL_OBJ) $(TEST_SUPPORT_OBJ): ALL_CFLAGS += $(TOOL_INC)
 $(TOOL_OBJ): ALL_CFLAGS += $(BOARD_TOOL_CFLAGS)
 $(TOOL_OBJ): boards/$(BOARD)/board.mk
 ifeq ($(SDL2_OK),1)
-$(BUILD)/obj/tools/cmd_view.o: ALL_CFLAGS += -DSILK_HAVE_SDL2
-$(BUILD)/obj/tools/viewer_sdl.o: ALL_CFLAGS += $(SDL2_CFLAGS) -DSILK_HAVE_SDL2
+$(BUILD)/obj/tools/cli/cmd_view.o: ALL_CFLAGS += -DSILK_HAVE_SDL2
+$(BUILD)/obj/tools/view/viewer_sdl.o: ALL_CFLAGS += $(SDL2_CFLAGS) -DSILK_HAVE_SDL2
 endif
 
 $(BUILD)/libsilk.a: $(CORE_OBJ)
@@ -79,33 +85,34 @@ $(BUILD)/libsilk_platform.a: $(PLAT_OBJ)
 $(BUILD)/silk: $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) $(SDL2_LIBS) -lm -pthread
 
-# The manual page is the help text (tools/man.c).
+# The manual page is the help text (tools/cli/man.c).
 $(BUILD)/silk.1: $(BUILD)/silk
 	$(BUILD)/silk help --man >$@.tmp && mv $@.tmp $@
 
 $(BUILD)/tests/%: tests/%.c $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a tests/check.h
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests -o $@ $< $(TEST_TOOL_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -Itests $(TOOL_INC) -o $@ $< $(TEST_TOOL_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(PNG_LIBS) -lm
 
 # Tests of host tools link the tools' objects they test; tests that draw
 # meshes made by `silk gen`'s generator link it.
-$(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o closest.o)
-$(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/,hull.o lp.o simplify.o gen.o closest.o)
-$(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
-$(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/,silmap.o gen.o)
+$(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,hull.o lp.o simplify.o gen.o closest.o)
+$(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/prep/,hull.o lp.o simplify.o gen.o closest.o)
+$(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
+$(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines $(BUILD)/tests/test_aa $(BUILD)/tests/test_texture \
              $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel
-$(GEN_TESTS): $(BUILD)/obj/tools/gen.o
-$(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/gen.o
+$(GEN_TESTS): $(BUILD)/obj/tools/prep/gen.o
+$(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/prep/gen.o
 # clip mode's golden frames draw a model prepared as silk prepare makes one
-CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,gen.o hull.o lp.o simplify.o closest.o silmap.o)
+CLIP_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,gen.o hull.o lp.o simplify.o closest.o silmap.o)
 $(BUILD)/tests/test_golden: $(CLIP_TOOL_OBJ)
 $(BUILD)/tests/test_golden: TEST_TOOL_OBJ = $(CLIP_TOOL_OBJ)
-STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o progress.o)
+STEX_TOOL_OBJ := $(addprefix $(BUILD)/obj/tools/prep/,stex_build.o stex_atlas.o stex_svd.o bvh.o closest.o gen.o) \
+                 $(BUILD)/obj/tools/cli/progress.o
 $(BUILD)/tests/test_stex: $(STEX_TOOL_OBJ)
 $(BUILD)/tests/test_stex: TEST_TOOL_OBJ = $(STEX_TOOL_OBJ) -pthread
-$(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
-$(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/,silmap.o silmap_simplify.o gen.o)
+$(BUILD)/tests/test_silmap_interp: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o silmap_simplify.o gen.o)
+$(BUILD)/tests/test_silmap_interp: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o silmap_simplify.o gen.o)
 
 # The public headers from C++ (extern "C"): compiles and links against the core.
 $(BUILD)/tests/test_cxx: tests/test_cxx.cpp $(BUILD)/libsilk_platform.a $(BUILD)/libsilk.a $(wildcard include/silk/*.h)
@@ -160,7 +167,7 @@ bench-peers: $(BUILD)/libsilk.a
 	sh bench/peers.sh out
 
 demo: $(BUILD)/silk
-	sh tools/demo.sh $(BUILD)/silk out
+	sh tools/scripts/demo.sh $(BUILD)/silk out
 
 # The core (silk.pc) and the host I/O around it (silk-platform.pc: the PNG
 # and PPM writers and readers of silk/platform.h), the command, its manual
@@ -182,7 +189,7 @@ install: $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(BUILD)/silk $(BUILD)/s
 clean:
 	rm -rf build build-san build-fuzz out
 
--include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d)
+-include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d $(BUILD)/obj/*/*/*/*.d)
 
 # ---- fuzzing (docs/overflow.md, fuzz/run.sh) --------------------------------
 # `make fuzz FUZZ_SECONDS=N` builds every fuzz/fuzz_*.c harness with clang's
@@ -250,7 +257,7 @@ deps:
 # [PROFILE_MESH=..] [PROFILE_ARGS=--check]`, the table also as
 # BUILD/profile-MESH.csv.  Another board's profile runs in that board's
 # build; a firmware board's firmware is built for the mesh and run by
-# tools/profile_fw.sh with this board.mk's settings; any other board is
+# tools/scripts/profile_fw.sh with this board.mk's settings; any other board is
 # measured in-process by its own `silk profile`.
 PROFILE_BOARD ?= $(if $(BOARD_RULES),$(BOARD),mps2-an385)
 PROFILE_MESH  ?= $(MESHES_DIR)/bunny-500.obj
@@ -266,7 +273,7 @@ profile:
 	  BOARD_FLASH_BYTES='$(BOARD_FLASH_BYTES)' BOARD_WIDTH='$(BOARD_WIDTH)' BOARD_HEIGHT='$(BOARD_HEIGHT)' \
 	  BOARD_BAND_ROWS='$(BOARD_BAND_ROWS)' BOARD_CLOCK_HZ='$(BOARD_CLOCK_HZ)' BOARD_CPI='$(BOARD_CPI)' \
 	  BOARD_INSTR_PER_TICK='$(BOARD_INSTR_PER_TICK)' BOARD_CODE_BYTES='$(BOARD_CODE_BYTES)' \
-	  PROFILE_CSV='$(PROFILE_CSV)' sh tools/profile_fw.sh '$(PROFILE_MESH)' $(PROFILE_ARGS)
+	  PROFILE_CSV='$(PROFILE_CSV)' sh tools/scripts/profile_fw.sh '$(PROFILE_MESH)' $(PROFILE_ARGS)
 else
 profile: $(BUILD)/silk
 	$(BUILD)/silk profile '$(PROFILE_MESH)' --csv '$(PROFILE_CSV)' $(PROFILE_ARGS)

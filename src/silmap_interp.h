@@ -5,7 +5,7 @@
  *
  * The map is plain arrays of fixed-point numbers and indices, no pointers
  * into itself, so a file section or a C array in flash can hold it as it
- * is: the loader only points a silk_silmap at the arrays.  tools/silmap.c
+ * is: the loader only points a silk_silmap at the arrays.  tools/prep/silmap.c
  * makes it from the double-precision map (silmap_export).
  *
  * Outlines are closed polygons under the parity (even-odd) rule: a point

@@ -42,7 +42,7 @@ echo "$variants" | while IFS='|' read -r name args; do
     option_lines <"$tmp/help-$name" >>"$universe"
     usage_opts <"$tmp/help-$name" >>"$universe"
 done
-grep -ohE '"--[a-z][a-z0-9-]*' "$src"/*.c | tr -d '"' >>"$universe"
+grep -ohE '"--[a-z][a-z0-9-]*' "$src"/*/*.c | tr -d '"' >>"$universe"
 sort -u "$universe" | grep -vxE -- '--help|-h|--version' >"$universe.sorted"
 check "options found ($(wc -l <"$universe.sorted"))" test "$(wc -l <"$universe.sorted")" -gt 60
 

@@ -56,7 +56,7 @@ check "turntable --sheet writes no frames" test ! -e "$tmp/turn-sheet0.png"
 
 run_silk render "$sphere" --size 100x80 --modes flat,smooth,blend,pn2 --sheet -o "$tmp/modes.ppm"
 check "modes sheet: exit 0, silent ($(head -c 200 "$err"))" test "$rc" -eq 0 -a ! -s "$err"
-# Layout (tools/sheet.h): a 6 px gap around and between cells, a title line
+# Layout (tools/image/sheet.h): a 6 px gap around and between cells, a title line
 # of 9 px + gap, two 9 px label lines + 4 under each cell (font scale 1
 # below 240 px cells): 4 cells of 100 px, one row of 80.
 check "modes sheet: 4 cells side by side ($(ppm_size "$tmp/modes.ppm"))" test "$(ppm_size "$tmp/modes.ppm")" = 430x129

@@ -35,7 +35,7 @@
 
 #include "check.h"
 #include "silk/silk.h"
-#include "../tools/gen.h"
+#include "../tools/prep/gen.h"
 #include "support/exact_silhouette.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"

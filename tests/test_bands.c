@@ -18,7 +18,7 @@
 #include "check.h"
 #include "support/testframe.h"
 #include "support/testmesh.h"
-#include "../tools/gen.h"
+#include "../tools/prep/gen.h"
 #include "silk/silk.h"
 
 #define W 320

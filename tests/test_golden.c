@@ -1,7 +1,7 @@
 /*
  * test_golden.c - golden frames: the exact pixels of every mode.
  *
- * Meshes made by `silk gen`'s generator (tools/gen.c, with explicit
+ * Meshes made by `silk gen`'s generator (tools/prep/gen.c, with explicit
  * parameters so that a change of its defaults does not move them: sphere,
  * torus, cone and a clean (2,3) knot) and the shared bunny-500 (skipped
  * with one line when ../shared/meshes is missing), each from three views
@@ -36,10 +36,10 @@
 #include "silk/silk.h"
 #include "../platform/platform.h"
 #include "../platform/png_read.h"
-#include "../tools/gen.h"
-#include "../tools/hull.h"
-#include "../tools/model_file.h"
-#include "../tools/silmap.h"
+#include "../tools/prep/gen.h"
+#include "../tools/prep/hull.h"
+#include "../tools/prep/model_file.h"
+#include "../tools/prep/silmap.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"
 #include "support/stexgen.h"

@@ -1,5 +1,5 @@
 /*
- * test_hull.c - the progressive hulls of tools/hull.c ("Silhouette
+ * test_hull.c - the progressive hulls of tools/prep/hull.c ("Silhouette
  * Mapping", section 7).  Outer hulls of the shared bunny, armadillo and
  * spot at 1000, 500 and 200 triangles (each made from the one before: the
  * sequence is progressive) and of generated spheres and tori: every vertex
@@ -17,9 +17,9 @@
 #include "check.h"
 #include "support/testmesh.h"
 #include "support/testvec.h"
-#include "../tools/closest.h"
-#include "../tools/gen.h"
-#include "../tools/hull.h"
+#include "../tools/prep/closest.h"
+#include "../tools/prep/gen.h"
+#include "../tools/prep/hull.h"
 
 static const double PI = 3.14159265358979323846;
 

@@ -35,7 +35,7 @@
 #include "silk/silk.h"
 #include "support/scene.h"
 #include "support/testmesh.h"
-#include "../tools/gen.h"
+#include "../tools/prep/gen.h"
 
 #define PI 3.14159265358979323846
 #define W 320
@@ -699,7 +699,7 @@ TEST(bad_setting_and_short_arena)
 
 /* ---- the outline of every mesh ------------------------------------------------------ */
 
-/* A `silk gen` mesh (tools/gen.c) as a scene. */
+/* A `silk gen` mesh (tools/prep/gen.c) as a scene. */
 static int gen_scene(scene *s, gen_shape shape, void (*set)(gen_params *))
 {
     gen_params p;

@@ -1,5 +1,5 @@
 /*
- * test_lp.c - the three-variable linear program of tools/lp.c against
+ * test_lp.c - the three-variable linear program of tools/prep/lp.c against
  * brute force: every vertex of the arrangement (each triple of planes,
  * box faces included, solved by Cramer's rule) that meets every
  * constraint, the best of them by the objective.  Random problems that are
@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "../tools/lp.c"
+#include "../tools/prep/lp.c"
 
 enum { MAXH = 60 };
 #define TOL 1e-9

@@ -1,6 +1,6 @@
 /*
  * test_mask.c - the silhouette comparison of `silk diff` and `silk bench`
- * (tools/mask.c): the distance transform and the Hausdorff distance equal a
+ * (tools/image/mask.c): the distance transform and the Hausdorff distance equal a
  * brute-force double reference exactly, the outline length is within the
  * Crofton bound of the true length for discs and squares, and the mean
  * boundary error of two concentric discs is the gap between their radii.
@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "../tools/mask.c"
+#include "../tools/image/mask.c"
 
 /* Brute force: squared distance to the nearest feature pixel. */
 static uint32_t brute_d2(const uint8_t *f, int w, int h, int x, int y)

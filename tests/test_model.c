@@ -1,5 +1,5 @@
 /*
- * test_model.c - prepared models (src/model.c, tools/model_file.c,
+ * test_model.c - prepared models (src/model.c, tools/prep/model_file.c,
  * `silk prepare`'s pipeline): a model written and read back gives the
  * mesh it was made of, through silk_load_mesh's format detection too; the
  * container takes sections it does not know unless they are required, and
@@ -18,11 +18,11 @@
 #include "silk/validate.h"
 #include "support/scene.h"
 #include "support/testmesh.h"
-#include "../tools/model_file.h"   /* linked with every test (tests/support/stexgen.c) */
-#include "../tools/simplify.c"
-#include "../tools/surface.c"
-#include "../tools/closest.c"
-#include "../tools/fit.c"
+#include "../tools/prep/model_file.h"   /* linked with every test (tests/support/stexgen.c) */
+#include "../tools/prep/simplify.c"
+#include "../tools/prep/surface.c"
+#include "../tools/prep/closest.c"
+#include "../tools/prep/fit.c"
 
 static uint8_t arena_buf[1 << 22];
 

@@ -22,7 +22,7 @@
 #include "support/panel_model.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"
-#include "../tools/gen.h"
+#include "../tools/prep/gen.h"
 #include "../platform/panel/silk_panel.h"
 #include "silk/silk.h"
 

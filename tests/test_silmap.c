@@ -1,5 +1,5 @@
 /*
- * test_silmap.c - the building blocks of a silhouette map (tools/silmap.c):
+ * test_silmap.c - the building blocks of a silhouette map (tools/prep/silmap.c):
  * the subdivided icosahedron of views (counts, unit directions, closed and
  * oriented outward); binary images against a per-pixel barycentric
  * reference; outlines traced from random and hand-made images (areas add
@@ -14,8 +14,8 @@
 
 #include "check.h"
 #include "support/testmesh.h"
-#include "../tools/gen.h"
-#include "../tools/silmap.h"
+#include "../tools/prep/gen.h"
+#include "../tools/prep/silmap.h"
 
 TEST(icosphere_views)
 {

@@ -12,9 +12,9 @@
 
 #include "check.h"
 #include "support/testmesh.h"
-#include "../tools/gen.h"
-#include "../tools/silmap.h"
-#include "../tools/silmap_simplify.h"
+#include "../tools/prep/gen.h"
+#include "../tools/prep/silmap.h"
+#include "../tools/prep/silmap_simplify.h"
 
 static silk_fx fx(double v) { return (silk_fx)floor(v * 65536 + 0.5); }
 static double dbl(silk_fx v) { return v / 65536.0; }

@@ -1,5 +1,5 @@
 /*
- * test_simplify.c - `silk simplify`'s edge collapse (tools/simplify.c):
+ * test_simplify.c - `silk simplify`'s edge collapse (tools/prep/simplify.c):
  * bunny-fine, sphere-fine and fandisk-fine simplified to 500, 200 and 128
  * triangles stay closed, manifold and consistently oriented, with the
  * genus of the input, land within 2% of the target, and are as close to
@@ -15,9 +15,9 @@
 #include "support/testmesh.h"
 #include "silk/silk.h"
 #include "../platform/platform.h"
-#include "../tools/simplify.c"
-#include "../tools/surface.c"
-#include "../tools/closest.c"
+#include "../tools/prep/simplify.c"
+#include "../tools/prep/surface.c"
+#include "../tools/prep/closest.c"
 
 /* Load with silk's loader, as the command does. */
 static int load(const char *name, simp_mesh *out)
@@ -190,7 +190,7 @@ static void on_surface(const char *fine_name, const char *ref_name, uint32_t tar
     simp_free(&ref);
 }
 
-/* The box hierarchy (tools/closest.c) against brute force: the same
+/* The box hierarchy (tools/prep/closest.c) against brute force: the same
  * squared distance, bit for bit, from points near and far from bunny-fine. */
 TEST(closest_point_tree)
 {

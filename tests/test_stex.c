@@ -1,6 +1,6 @@
 /*
  * test_stex.c - the host side of silhouette textures (tools/stex_*.c,
- * tools/bvh.c) against double-precision references written here: ray hits
+ * tools/prep/bvh.c) against double-precision references written here: ray hits
  * through the hierarchy against every triangle tried; the atlas (corners
  * inside it, texel centres on their charts, gutters around every chart);
  * the single-lobe encoding of a sphere inside a hull sphere, whose
@@ -19,10 +19,10 @@
 
 #include "check.h"
 #include "silk/siltex.h"
-#include "../tools/bvh.h"
-#include "../tools/gen.h"
-#include "../tools/stex_build.h"
-#include "../tools/vec3.h"
+#include "../tools/prep/bvh.h"
+#include "../tools/prep/gen.h"
+#include "../tools/prep/stex_build.h"
+#include "../tools/prep/vec3.h"
 
 static const double PI = 3.14159265358979323846;
 

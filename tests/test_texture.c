@@ -22,7 +22,7 @@
 
 #include "check.h"
 #include "silk/silk.h"
-#include "../tools/gen.h"
+#include "../tools/prep/gen.h"
 #include "support/testmesh.h"
 #include "support/testframe.h"
 

@@ -25,7 +25,7 @@
  * each band handed to the sink, so "fw time" gives the renderer's own ticks
  * per frame (the frame's minus the sink's: checksum, widening and the
  * writes to the host are the output's cost, not the renderer's).  Under
- * QEMU's -icount these are instructions (tools/profile_fw.sh converts them;
+ * QEMU's -icount these are instructions (tools/scripts/profile_fw.sh converts them;
  * "fw timer" runs a loop of known length to check the rate).  After the
  * memory report, each frame is rendered twice more, unwritten ("fw
  * stages"): once with the renderer's stage clock (render_opts.clock, the

@@ -7,7 +7,7 @@
 #include "stexgen.h"
 #include "silk/silk.h"
 #include "silk/siltex.h"
-#include "../../tools/model_file.h"
+#include "../../tools/prep/model_file.h"
 
 void stexgen_defaults(stexgen_opts *o)
 {
