@@ -223,7 +223,7 @@ for board in mps2-an385 mps2-an385-full microbit; do
         if ${CC:-cc} -std=c11 -O2 -Iinclude -Iplatform/mps2 -I"$fwroot/$pname" -DFW_ARENA_BYTES=18432 \
             -o "$tmp/fw-small" platform/mps2/fw_main.c platform/mps2/fw_io_host.c "$build/libsilk.a" 2>"$err"; then
             BOARD=$board FW_DIR=$tmp/fb BOARD_RUN=$tmp/fw-small BOARD_FLASH_BYTES=524288 BOARD_WIDTH=320 \
-                BOARD_HEIGHT=240 BOARD_BAND_ROWS=8 PROFILE_CSV=$tmp/fb.csv sh tools/profile_fw.sh "$pmesh" --check \
+                BOARD_HEIGHT=240 BOARD_BAND_ROWS=8 PROFILE_CSV=$tmp/fb.csv sh tools/scripts/profile_fw.sh "$pmesh" --check \
                 >"$tmp/fb.out" 2>"$tmp/fb.err"
             rc=$?
             check "$board: a profile whose smooth frames fall back fails --check ($rc)" [ "$rc" -eq 1 ]
