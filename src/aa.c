@@ -143,12 +143,22 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     aa->curve = silk_arena_array_top(a, 1, sizeof *aa->curve, SILK_MEM_FRAME);
     /* An outline crosses a band about once per row or column it spans:
      * room for three times the band's width and height (a knot at 640x480
-     * needs 2.4 times), within half of what is left (the rest is left
-     * aliased, and counted). */
-    uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
+     * needs 2.4 times), or what is left (the rest is left aliased, and
+     * counted).  The renderer leaves silk_aa_bytes free for it. */
+    uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
     return aa->pt && aa->walk && aa->out && aa->curve && aa->px;
+}
+
+size_t silk_aa_bytes(int width, int rows, silk_pixfmt fmt, uint32_t max_recs)
+{
+#define AL(n) (((size_t)(n) + SILK_ARENA_ALIGN - 1) & ~(size_t)(SILK_ARENA_ALIGN - 1))
+    size_t w = (size_t)width;
+    return 2 * (AL(w * silk_pixfmt_bytes(fmt)) + AL(w * sizeof(uint32_t))) + AL(max_recs * sizeof(silk_aa_pt)) +
+           AL(SILK_AA_WALK * sizeof(silk_aa_pt)) + AL(sizeof(silk_vertex_out)) + AL(sizeof(silk_curve)) +
+           AL(3 * (w + (size_t)rows) * sizeof(silk_aa_px));
+#undef AL
 }
 
 /* Pixel (x, y) of the band or its aprons: colour and depth; 0 if neither has it. */

@@ -131,6 +131,7 @@ typedef struct frame {
     size_t vc_bytes;          /* the arena it and the facing memo take */
     size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
     size_t peak_before;       /* the arena's top high-water before those */
+    size_t reserve;           /* what a band's outline takes (outline_reserve): those leave it free */
     uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
     uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
                                  frame is on a small board's stack) */
@@ -450,6 +451,30 @@ static void share_part(frame *f, uint32_t t)
 #endif
 }
 
+/* What frame_aa's silk_aa_begin takes for a band of t, or 0 where the
+ * frame draws no outline.  What the frame keeps for speed comes from what
+ * the arena has beyond it (spare), so that a frame given exactly its need
+ * (silk_frame_stats.frame_bytes) draws every outline pixel. */
+static size_t outline_reserve(const frame *f, const silk_render_opts *o, const silk_target *t)
+{
+#ifdef SILK_NO_AA
+    (void)f;
+    (void)o;
+    (void)t;
+    return 0;
+#else
+    if (!o->aa || o->wire || f->part != share_part || !t->depth || f->clip || f->siltex) return 0;
+    return silk_aa_bytes(t->width, t->rows, t->fmt, f->smooth ? f->sil.max_recs : 3);
+#endif
+}
+
+/* The arena free beyond the outline's reserve. */
+static size_t spare(const frame *f, const silk_arena *a)
+{
+    size_t free_bytes = silk_arena_free_bytes(a);
+    return free_bytes > f->reserve ? free_bytes - f->reserve : 0;
+}
+
 /* The vertex cache (corner_cached), from at most half of the arena left
  * once the frame has what it needs: a power of two slots, enough for every
  * normal of the mesh when there is room, else fewer (more misses, the same
@@ -465,7 +490,7 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 #else
     const silk_mesh *m = f->geom.mesh;
     if (f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = silk_arena_free_bytes(a) / 2,
+    const size_t slot = sizeof *f->vc + 3 * sizeof *f->vc_tag, half = spare(f, a) / 2,
                  free0 = silk_arena_free_bytes(a);
     size_t room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
     /* where each vertex of the mesh is placed (draw_direct: FLAT's
@@ -502,10 +527,10 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 {
 #ifndef SILK_NO_AA
-    size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a),
+    size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a), room = spare(f, a),
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!o->aa || o->wire || f->part != share_part || f->clip || n + SILK_ARENA_ALIGN > budget ||
-        n + SILK_ARENA_ALIGN > free0 / 2)
+        n + SILK_ARENA_ALIGN > room / 2)
         return;
     f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);   /* zeroed: nothing known yet */
     if (!f->facing) return;
@@ -514,7 +539,7 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
     size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
     if (f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
-        n + nc + 2 * SILK_ARENA_ALIGN <= free0 / 2)
+        n + nc + 2 * SILK_ARENA_ALIGN <= room / 2)
         f->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
 #endif
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
@@ -526,45 +551,31 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 }
 
 /* SMOOTH: the carrying edges' tangents kept (silk_sil_keep_tangents), as
- * many as fit the arena left once the frame has what it needs and its
- * vertex cache (half of it when anti-aliased outlines take their scratch
- * per band after it): 24 bytes an edge (a few KiB for all) that spare
- * remaking a bridge whenever an edge's curve is asked for, a tenth to a
- * sixth of a smooth frame's instructions.  Not part of the frame's need
- * either: a part without the room computes the same tangents. */
-static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
+ * many as fit the arena left once the frame has what it needs, its vertex
+ * cache and the outline's reserve: 24 bytes an edge (a few KiB for all)
+ * that spare remaking a bridge whenever an edge's curve is asked for, a
+ * tenth to a sixth of a smooth frame's instructions.  Not part of the
+ * frame's need either: a part without the room computes the same
+ * tangents. */
+static void keep_tangents(frame *f, silk_arena *a)
 {
-    size_t room = silk_arena_free_bytes(a);
-#ifndef SILK_NO_AA
-    if (o->aa && !o->wire) room /= 2;
-#else
-    (void)o;
-#endif
-    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
+    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, spare(f, a));
 }
 
 /* SMOOTH: room for the shares of the triangles on, carrying or moved by
  * the silhouette as they are first built (share_part), which a frame builds again for the depth pass
  * and for the anti-aliased outline: under the vertex cache's budget, from
- * half of what the arena has left beyond what the outline of a band of t
- * takes (silk_aa_begin: its room is unchanged), as many as fit.  Not part
- * of the frame's need either. */
-static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
+ * half of what the arena has left beyond the outline's reserve, as many as
+ * fit.  Not part of the frame's need either. */
+static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o)
 {
 #ifndef SILK_NO_VERTEX_CACHE
     uint32_t n = f->smooth ? f->geom.mesh->ntris : 0;   /* ks_at: per input triangle (share_kept) */
     if (!n || n >= UINT32_MAX / 4) return;
-    size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN;
-#ifndef SILK_NO_AA
-    reserve += 2 * (3 * ((size_t)t->width + (size_t)t->rows) * sizeof(silk_aa_px)) +
-               2 * (size_t)t->width * (silk_pixfmt_bytes(t->fmt) + sizeof(uint32_t)) +
-               ((size_t)f->sil.max_recs + SILK_AA_WALK) * sizeof(silk_aa_pt) + sizeof(silk_vertex_out);
-#else
-    (void)t;
-#endif
+    size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN, left = spare(f, a);
     size_t budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
-    size_t room = free0 > reserve ? (free0 - reserve) / 2 : 0, per = share_bytes(f->sil.max_recs, f->sil.max_tris,
-                                                                                  f->sil.max_curves);
+    size_t room = left > reserve ? (left - reserve) / 2 : 0, per = share_bytes(f->sil.max_recs, f->sil.max_tris,
+                                                                                f->sil.max_curves);
     if (room > budget) room = budget;
     if (room < (size_t)n * sizeof *f->ks_at + per + 2 * SILK_ARENA_ALIGN) return;
     room -= (size_t)n * sizeof *f->ks_at + 2 * SILK_ARENA_ALIGN;
@@ -592,7 +603,6 @@ static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, cons
     (void)f;
     (void)a;
     (void)o;
-    (void)t;
 #endif
 }
 
@@ -626,10 +636,10 @@ static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const
     uint64_t n = f->geom.mesh->ntris;
     size_t free0 = silk_arena_free_bytes(a), bytes = (size_t)n * sizeof *f->won + SILK_ARENA_ALIGN,
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
-    if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
+    if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > spare(f, a) / 2) return;
     f->won = silk_arena_array_top(a, n, sizeof *f->won, SILK_MEM_FRAME);   /* each written in the depth pass */
     /* the back faces put off, from what is left of the budget and of half the arena */
-    size_t left = budget - bytes, free1 = silk_arena_free_bytes(a) / 2, cap = BACK_MAX;
+    size_t left = budget - bytes, free1 = spare(f, a) / 2, cap = BACK_MAX;
     if (left > free1) left = free1;
     if (cap > left / sizeof *f->back) cap = left / sizeof *f->back;
     if (f->won && cap > 16 && (f->back = silk_arena_array_top_unfilled(a, cap, sizeof *f->back, SILK_MEM_FRAME)))
@@ -1362,17 +1372,18 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
     f->cull = back_faces_hidden(f, m, h, o);
 #endif
     f->peak_before = a->top_peak;
+    f->reserve = outline_reserve(f, o, t);
     vertex_cache(f, a, o);
 #ifndef SILK_NO_VERTEX_CACHE
     if (f->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
     f->cull = back_faces_hidden(f, m, h, o);
 #endif
     facing_memo(f, a, o);
-    keep_tangents(f, a, o);
+    keep_tangents(f, a);
 #ifndef SILK_NO_VERTEX_CACHE
     depth_wins(f, a, o, t);
 #endif
-    keep_shares(f, a, o, t);
+    keep_shares(f, a, o);
 }
 
 /* The top of the arena the frame needed since mark: its high-water, the

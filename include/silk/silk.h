@@ -18,6 +18,7 @@
 #include "texture.h"
 #include "siltex.h"
 #include "visibility.h"
+#include "budget.h"
 #include "render.h"
 
 #endif
