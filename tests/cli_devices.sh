@@ -32,7 +32,10 @@ check "pack: exit 0, one summary line" [ "$ok" -eq 1 ]
 check "pack: summary names the model data" grep -q "model data (bytes):.*triangles $((ntris * 12))" "$out"
 check "pack: three cameras recorded" [ "$(grep -c 'camera [0-9]*: --eye ' "$hdr")" -eq 3 ]
 
-printf '#include "fwmodel.h"\nint main(void) { silk_mesh m; fwmodel_mesh(&m); return fwmodel_camera(2) == 0; }\n' >"$tmp/use.c"
+# What a first program does with the header alone: the mesh, checked once
+# (silk_mesh_validate, which the header's includes declare), and a camera.
+printf '#include "fwmodel.h"\nint main(void) { silk_mesh m; silk_error e; fwmodel_mesh(&m);\n'\
+'    return silk_mesh_validate(&m, "fwmodel", &e) != SILK_OK || fwmodel_camera(2) == 0; }\n' >"$tmp/use.c"
 check "pack: the header compiles warning-free" \
     "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -Iinclude -I"$tmp" -c "$tmp/use.c" -o "$tmp/use.o"
 check "pack: ... and with 16-bit indices" \
