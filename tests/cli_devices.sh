@@ -49,7 +49,7 @@ fi
 
 # The firmware's scene on the host, with the packed model.
 if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -Iinclude -Iplatform/mps2 -I"$tmp" \
-    -DFW_ARENA_BYTES=4194304 -o "$tmp/fw-host" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
+    -DFW_ARENA_BYTES=4194304 -DFW_REPORT_BUDGET -o "$tmp/fw-host" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
     "$build/libsilk.a" 2>"$tmp/cc.err"; then
     pass "pack: the firmware scene builds for the host"
     "$tmp/fw-host" "$tmp/fw" >"$tmp/fw.report" 2>&1
@@ -75,7 +75,7 @@ fi
 # falls back to flat, and the scene says so instead of "ok", with the count
 # and a non-zero exit status.
 if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -Iinclude -Iplatform/mps2 -I"$tmp" \
-    -DFW_ARENA_BYTES=10752 -o "$tmp/fw-small" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
+    -DFW_ARENA_BYTES=10752 -DFW_REPORT_BUDGET -o "$tmp/fw-small" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
     "$build/libsilk.a" 2>"$tmp/cc.err"; then
     "$tmp/fw-small" >"$tmp/small.report" 2>&1
     status=$?

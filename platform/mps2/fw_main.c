@@ -319,6 +319,37 @@ static int open_frame(band_out *o, int k, const char *mname, const silk_camera *
     return 1;
 }
 
+#ifdef FW_REPORT_BUDGET
+/* The arena silk_budget_frame() says a frame of each mode can take at
+ * most (silk/budget.h), and each frame's own need checked against it: a
+ * build with -DFW_REPORT_BUDGET (the host build of the scene, and boards
+ * with the code bytes to spare) says "fw budget mode=M bands=N frame=N
+ * total=N" and refuses a frame that needed more than its bound. */
+static size_t budget_frame[2];
+
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int report_budget(const silk_mesh *m, const silk_camera *c0, int rows)
+{
+    for (int mode = 0; mode < 2; mode++) {
+        silk_render_opts ro;
+        silk_render_opts_default(&ro);
+        ro.mode = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+        silk_budget b;
+        silk_error err;
+        if (silk_budget_frame(m, &ro, c0->width, c0->height, rows, FW_FORMAT, 0, &b, &err) != SILK_OK) {
+            say("fw error %s", err.msg);
+            return 0;
+        }
+        budget_frame[mode] = b.frame;
+        say("fw budget mode=%s bands=%lu frame=%lu total=%lu", mode ? "smooth" : "flat", (unsigned long)b.bands,
+            (unsigned long)b.frame, (unsigned long)b.total);
+    }
+    return 1;
+}
+#endif
+
 static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
                       fw_pass *pass, int frame)
 {
@@ -357,6 +388,13 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
         "crc=%08lx",
         frame, k, mname, (unsigned long)st.tris_drawn, (unsigned long)st.silhouette_tris,
         (unsigned long)st.samples, (unsigned long)st.frame_bytes, st.fell_back, (unsigned long)o.crc);
+#ifdef FW_REPORT_BUDGET
+    if (st.frame_bytes > budget_frame[mode == SILK_MODE_SMOOTH]) {
+        say("fw error frame=%d needed %lu bytes, over its bound %lu", frame, (unsigned long)st.frame_bytes,
+            (unsigned long)budget_frame[mode == SILK_MODE_SMOOTH]);
+        return 1;
+    }
+#endif
     pass->frames++;
     pass->fell_back += st.fell_back != 0;
     pass->smooth_fell_back += st.fell_back && mode == SILK_MODE_SMOOTH;
@@ -432,6 +470,9 @@ int fw_scene(void)
         return 1;
     }
     size_t band_bytes = arena.bottom;
+#ifdef FW_REPORT_BUDGET
+    if (!report_budget(&mesh, c0, rows)) return 1;
+#endif
     silk_target band;
     silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
 
