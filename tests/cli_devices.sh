@@ -41,6 +41,9 @@ check "pack: the header compiles warning-free" \
 check "pack: ... and with 16-bit indices" \
     "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -DSILK_INDEX_T=uint16_t -Iinclude -I"$tmp" -c "$tmp/use.c" \
     -o "$tmp/use16.o"
+# An Arduino sketch includes it from C++ (gnu++11, its warnings on).
+check "pack: ... and from C++" "${CXX:-c++}" -std=gnu++11 -Wall -Wextra -Werror -Iinclude -I"$tmp" -x c++ \
+    -c "$tmp/use.c" -o "$tmp/usexx.o"
 if "$CC" -std=c11 -DSILK_INDEX_T=uint8_t -Iinclude -I"$tmp" -c "$tmp/use.c" -o "$tmp/use8.o" 2>"$tmp/cc8.err"; then
     fail "pack: 8-bit indices are refused" "compiled"
 else

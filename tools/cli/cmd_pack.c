@@ -122,7 +122,9 @@ static void array_open(writer *w, const char *type, const char *field, size_t n,
 
 static void array_close(writer *w, size_t n)
 {
-    if (n == 0) fputs(" 0", w->fp);   /* C has no empty arrays; the count says 0 */
+    /* C has no empty arrays (nor, before C23, empty initializers); the count
+     * says 0.  C++ takes the empty one, without a warning. */
+    if (n == 0) fputs("\n#ifndef __cplusplus\n    0\n#endif", w->fp);
     fputs("\n};\n\n", w->fp);
 }
 
@@ -346,8 +348,9 @@ static int write_header(writer *w, const char *mesh_path, const char *texture, c
             w->name, w->name);
     fprintf(f, "#define %s_NCAMERAS %d\n\n", w->name, ncams);
     fprintf(f,
-            "_Static_assert(SILK_NO_INDEX > %luu, \"%s: this model needs a wider SILK_INDEX_T\");\n\n",
-            max_index(m), w->name);
+            "#ifdef __cplusplus\n#define %s_STATIC_ASSERT static_assert\n#else\n#define %s_STATIC_ASSERT _Static_assert\n"
+            "#endif\n%s_STATIC_ASSERT(SILK_NO_INDEX > %luu, \"%s: this model needs a wider SILK_INDEX_T\");\n\n",
+            w->name, w->name, w->name, max_index(m), w->name);
 
     put_vec3_array(w, "pos", m->pos, m->nverts, K_POS);
     put_vec3_array(w, "normal", m->normal, m->nnormals, K_NORMAL);
