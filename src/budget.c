@@ -70,7 +70,12 @@ static size_t outline_bytes(const silk_render_opts *o, int width, int rows, silk
     (void)recs;
     return 0;
 #else
-    return o->aa ? silk_aa_bytes(width, rows, fmt, (uint32_t)recs) : 0;
+    silk_target t;
+    memset(&t, 0, sizeof t);
+    t.width = width;
+    t.rows = rows;
+    t.fmt = fmt;
+    return o->aa ? silk_aa_bytes(&t, (uint32_t)recs) : 0;
 #endif
 }
 

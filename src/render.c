@@ -451,6 +451,20 @@ static void share_part(frame *f, uint32_t t)
 #endif
 }
 
+#ifndef SILK_NO_AA
+/* Whether frame_aa anti-aliases the outline of frame f in band t: not
+ * with wire, not a stored frame's, not where there is no depth, not clip
+ * mode's (clip.c does its own), not siltex's (the hull's edges are not its
+ * outline).  Not inlined: frame_aa and outline_reserve share it. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int outline_wanted(const frame *f, const silk_render_opts *o, const silk_target *t)
+{
+    return o->aa && !o->wire && f->part == share_part && t->depth && !f->clip && !f->siltex;
+}
+#endif
+
 /* What frame_aa's silk_aa_begin takes for a band of t, or 0 where the
  * frame draws no outline.  What the frame keeps for speed comes from what
  * the arena has beyond it (spare), so that a frame given exactly its need
@@ -463,8 +477,7 @@ static size_t outline_reserve(const frame *f, const silk_render_opts *o, const s
     (void)t;
     return 0;
 #else
-    if (!o->aa || o->wire || f->part != share_part || !t->depth || f->clip || f->siltex) return 0;
-    return silk_aa_bytes(t->width, t->rows, t->fmt, f->smooth ? f->sil.max_recs : 3);
+    return outline_wanted(f, o, t) ? silk_aa_bytes(t, f->smooth ? f->sil.max_recs : 3) : 0;
 #endif
 }
 
@@ -522,11 +535,12 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 
 /* The outline's memo of which way each input triangle faces
  * (silk_aa.facing), under the same budget as the vertex cache and, like
- * it, not part of the frame's need: without it each triangle's facing is
- * worked out up to four times a band, with the same answers. */
+ * it, not part of the frame's need (and left out with its code,
+ * -DSILK_NO_VERTEX_CACHE): without it each triangle's facing is worked out
+ * up to four times a band, with the same answers. */
 static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 {
-#ifndef SILK_NO_AA
+#if !defined(SILK_NO_AA) && !defined(SILK_NO_VERTEX_CACHE)
     size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a), room = spare(f, a),
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!o->aa || o->wire || f->part != share_part || f->clip || n + SILK_ARENA_ALIGN > budget ||
@@ -534,14 +548,12 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
         return;
     f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);   /* zeroed: nothing known yet */
     if (!f->facing) return;
-#ifndef SILK_NO_VERTEX_CACHE
     /* A closed mesh: the outline's candidates for all bands at once
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
     size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
     if (f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
         n + nc + 2 * SILK_ARENA_ALIGN <= room / 2)
         f->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
-#endif
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 #else
     (void)f;
@@ -1314,8 +1326,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 #else
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    int wanted = o->aa && !o->wire && f->part == share_part && t->depth && !f->clip &&   /* clip.c does its own */
-                 !f->siltex;   /* the hull's edges are not siltex's outline */
+    int wanted = outline_wanted(f, o, t);
     if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);
@@ -1448,10 +1459,10 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     silk_frame_stats local;
     if (!stats) stats = &local;
     memset(stats, 0, sizeof *stats);
-    if (!a || !band || !sink || !sink->band || band->rows < 1 || band->height < 1)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: missing argument");
-    if ((sink->color2 == NULL) != (sink->wait == NULL))
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: a second band buffer needs the sink's wait");
+    if (!a || !band || !sink || !sink->band || band->rows < 1 || band->height < 1 ||
+        (sink->color2 == NULL) != (sink->wait == NULL))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: missing argument (a second band buffer "
+                         "needs the sink's wait)");
     if (check_frame_size(band, err) != SILK_OK) return SILK_ERR_RANGE;
 
     silk_arena_mark mark = silk_arena_top_mark(a);
@@ -1467,21 +1478,19 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     }
     /* With two colour buffers the bands alternate, each drawn once the sink
      * says it has done sending it (render.h). */
-    uint8_t *const color[2] = { band->color, sink->color2 ? sink->color2 : band->color };
+    uint8_t *const color0 = band->color;
     for (int y0 = 0, k = 0; st == SILK_OK && y0 < band->height; y0 += rows, k ^= 1) {
-        band->color = color[k];
-        if (sink->wait && sink->wait(sink->user, band->color)) {
-            st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
-            break;
+        band->color = k && sink->color2 ? sink->color2 : color0;
+        if (!sink->wait || !sink->wait(sink->user, band->color)) {
+            band->y0 = y0;
+            band->rows = band->height - y0 < rows ? band->height - y0 : rows;
+            frame_draw(&f, o, band);
+            frame_aa(&f, a, v, o, band, stats);
+            if (!sink->band(sink->user, band)) continue;
         }
-        band->y0 = y0;
-        band->rows = band->height - y0 < rows ? band->height - y0 : rows;
-        frame_draw(&f, o, band);
-        frame_aa(&f, a, v, o, band, stats);
-        if (sink->band(sink->user, band))
-            st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
+        st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }
-    band->color = color[0];
+    band->color = color0;
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && f.clip) stats->clip_spans = f.clip->spans;
