@@ -243,7 +243,7 @@ endif
 # `make clean` leaves the boards' build directories; this removes them.
 .PHONY: clean-boards
 clean-boards:
-	rm -rf build-mps2-an385 build-mps2-an385-full build-microbit build-linux-fb
+	rm -rf build-mps2-an385 build-mps2-an385-full build-mps2-an386 build-mps2-an500 build-microbit build-linux-fb
 
 # The ARM toolchain and QEMU for the firmware (Debian, Ubuntu).
 DEPS_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
@@ -286,14 +286,17 @@ ifeq ($(BOARD)$(HAVE_ARM),host1)
 ifneq ($(SAN),1)
 tests: firmware-for-tests
 .PHONY: firmware-for-tests
-# The Cortex-M3 board's models are shared meshes: without them
-# tests/cli_qemu.sh skips it.  The Cortex-M0 board always has its `silk gen`
-# model.
+# The Cortex-M3, M4 and M7 boards' models are shared meshes: without them
+# tests/cli_qemu.sh skips those boards.  The Cortex-M0 board always has its
+# `silk gen` model.
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
-	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k; \
-	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host; \
-	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD) firmware for the tests (its models are shared meshes)"; fi
+	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k && \
+	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host && \
+	  $(MAKE) BOARD=mps2-an386 BUILD=build-mps2-an386 SAN= CFLAGS= firmware firmware-host && \
+	  $(MAKE) BOARD=mps2-an500 BUILD=build-mps2-an500 SAN= CFLAGS= firmware firmware-host; \
+	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD), mps2-an386 or mps2-an500 firmware for the tests" \
+	  "(their models are shared meshes)"; fi
 	$(MAKE) BOARD=microbit BUILD=build-microbit SAN= CFLAGS= firmware firmware-host firmware-256k
 endif
 endif

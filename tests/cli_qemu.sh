@@ -1,8 +1,11 @@
 #!/bin/sh
 # cli_qemu.sh - the firmware boards under QEMU, byte for byte against the
 # host: the Cortex-M3 with 32 KiB of RAM (boards/mps2-an385, 320x240), the
-# same with 64 KiB, anti-aliasing and textures (boards/mps2-an385-full) and
-# the Cortex-M0 with 16 KiB of RAM (boards/microbit, 160x128).
+# same with 64 KiB, anti-aliasing and textures (boards/mps2-an385-full),
+# the Cortex-M4 with 128 KiB (boards/mps2-an386) and the Cortex-M7 with
+# 512 KiB (boards/mps2-an500, anti-aliased), both drawing a 2 000- and a
+# 5 000-triangle model at 320x240, and the Cortex-M0 with 16 KiB of RAM
+# (boards/microbit, 160x128).
 #
 # `make test` builds, per model of each board (mps2-an385: bunny-500 and
 # knot-480; mps2-an385-full: bunny-500 and a globe from `silk gen --uv` with
@@ -70,19 +73,22 @@ report_value() {
     grep -E "^fw $2( |=)" "$1" | head -n 1 | tr ' ' '\n' | sed -n "s/^$3=//p" | head -n 1
 }
 
-for board in mps2-an385 mps2-an385-full microbit; do
+for board in mps2-an385 mps2-an385-full mps2-an386 mps2-an500 microbit; do
     fwroot=${SILK_FW_DIR:-build-$board/fw}
     variants="board ram256k"
     if [ -n "${SILK_FW_DIR:-}" ]; then
         [ "$board" = mps2-an385 ] || continue
         want_models=2
-    elif [ "$board" = mps2-an385 ] || [ "$board" = mps2-an385-full ]; then
+    elif [ "$board" != microbit ]; then
         if [ "$have_meshes" = 0 ]; then
             echo "skip: $board: $meshes is missing, and the firmware's models are shared meshes"
             continue
         fi
-        want_models=2   # bunny-500 and knot-480; on the -full board bunny-500 and the textured globe
-        [ "$board" = mps2-an385-full ] && variants=board
+        # bunny-500 and knot-480; on the -full board bunny-500 and the textured
+        # globe; on the Cortex-M4 bunny-2k and dragon-5k, on the M7 feline-2k
+        # and dragon-5k (their RAM needs no 256 KiB variant)
+        want_models=2
+        [ "$board" != mps2-an385 ] && variants=board
     else
         want_models=$((1 + have_meshes))  # bunny-500 when the shared meshes are there, and a torus
     fi

@@ -256,7 +256,7 @@ static int time_stages(silk_arena *a, const silk_mesh *m, const silk_view *view,
 {
     timed_hal th;
     timed_hal_init(&th, hal);
-    silk_sink none = { .band = discard_band, .user = NULL };
+    static const silk_sink none = { .band = discard_band, .user = NULL };   /* not on the stack */
     silk_stage_clock clock = { clock_now, NULL, { 0 }, { 0 } };
     ro->clock = &clock;
     silk_status s = silk_render_bands(a, m, view, hal, ro, band, &none, st, err);
@@ -350,6 +350,47 @@ static int report_budget(const silk_mesh *m, const silk_camera *c0, int rows)
 }
 #endif
 
+/* The frame written: to PREFIX's file (or nowhere), checksummed and
+ * reported.  Not inlined, like time_stages: each pass's own locals are not
+ * on the stack under the other's frames. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int write_frame(silk_arena *a, const silk_mesh *m, const silk_view *view, const silk_hal *hal,
+                       const silk_render_opts *ro, silk_target *band, fw_pass *pass, int frame, int k,
+                       silk_frame_stats *st, silk_error *err)
+{
+    const char *mname = ro->mode == SILK_MODE_FLAT ? "flat" : "smooth";
+    band_out o = { -1, 0, 2166136261u, 0, 0 };
+    if (pass->files && !open_frame(&o, k, mname, fwmodel_camera(k))) return 1;
+    silk_sink sink = { .band = send_band, .user = &o };
+    o.frame_ticks = fw_ticks();
+    silk_status s = silk_render_bands(a, m, view, hal, ro, band, &sink, st, err);
+    o.frame_ticks = fw_ticks() - o.frame_ticks;
+    if (o.handle >= 0 && fw_close(o.handle) != 0) o.failed = 1;
+    if (s != SILK_OK || o.failed) {
+        say("fw error frame=%d %s", frame, s != SILK_OK ? err->msg : "writing to the host failed");
+        return 1;
+    }
+    say("fw frame=%d camera=%d mode=%s tris=%lu silhouette_tris=%lu samples=%lu frame_bytes=%lu fell_back=%d "
+        "crc=%08lx",
+        frame, k, mname, (unsigned long)st->tris_drawn, (unsigned long)st->silhouette_tris,
+        (unsigned long)st->samples, (unsigned long)st->frame_bytes, st->fell_back, (unsigned long)o.crc);
+#ifdef FW_REPORT_BUDGET
+    if (st->frame_bytes > budget_frame[ro->mode == SILK_MODE_SMOOTH]) {
+        say("fw error frame=%d needed %lu bytes, over its bound %lu", frame, (unsigned long)st->frame_bytes,
+            (unsigned long)budget_frame[ro->mode == SILK_MODE_SMOOTH]);
+        return 1;
+    }
+#endif
+    pass->frames++;
+    pass->fell_back += st->fell_back != 0;
+    pass->smooth_fell_back += st->fell_back && ro->mode == SILK_MODE_SMOOTH;
+    say("fw time frame=%d camera=%d mode=%s ticks=%lu sink_ticks=%lu render_ticks=%lu", frame, k, mname,
+        (unsigned long)o.frame_ticks, (unsigned long)o.ticks, (unsigned long)(o.frame_ticks - o.ticks));
+    return 0;
+}
+
 static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
                       fw_pass *pass, int frame)
 {
@@ -369,39 +410,9 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
     silk_render_opts_default(&ro);
     ro.mode = mode;
     ro.vertex_cache_bytes = FW_VERTEX_CACHE_BYTES;
-    const char *mname = mode == SILK_MODE_FLAT ? "flat" : "smooth";
     silk_frame_stats st;
     if (pass->stages) return time_stages(a, m, &view, &hal, &ro, band, pass, frame, k, &st, &err);
-
-    band_out o = { -1, 0, 2166136261u, 0, 0 };
-    if (pass->files && !open_frame(&o, k, mname, cam)) return 1;
-    silk_sink sink = { .band = send_band, .user = &o };
-    o.frame_ticks = fw_ticks();
-    silk_status s = silk_render_bands(a, m, &view, &hal, &ro, band, &sink, &st, &err);
-    o.frame_ticks = fw_ticks() - o.frame_ticks;
-    if (o.handle >= 0 && fw_close(o.handle) != 0) o.failed = 1;
-    if (s != SILK_OK || o.failed) {
-        say("fw error frame=%d %s", frame, s != SILK_OK ? err.msg : "writing to the host failed");
-        return 1;
-    }
-    say("fw frame=%d camera=%d mode=%s tris=%lu silhouette_tris=%lu samples=%lu frame_bytes=%lu fell_back=%d "
-        "crc=%08lx",
-        frame, k, mname, (unsigned long)st.tris_drawn, (unsigned long)st.silhouette_tris,
-        (unsigned long)st.samples, (unsigned long)st.frame_bytes, st.fell_back, (unsigned long)o.crc);
-#ifdef FW_REPORT_BUDGET
-    if (st.frame_bytes > budget_frame[mode == SILK_MODE_SMOOTH]) {
-        say("fw error frame=%d needed %lu bytes, over its bound %lu", frame, (unsigned long)st.frame_bytes,
-            (unsigned long)budget_frame[mode == SILK_MODE_SMOOTH]);
-        return 1;
-    }
-#endif
-    pass->frames++;
-    pass->fell_back += st.fell_back != 0;
-    pass->smooth_fell_back += st.fell_back && mode == SILK_MODE_SMOOTH;
-    say("fw time frame=%d camera=%d mode=%s ticks=%lu sink_ticks=%lu render_ticks=%lu", frame, k, mname,
-        (unsigned long)o.frame_ticks, (unsigned long)o.ticks, (unsigned long)(o.frame_ticks - o.ticks));
-
-    return 0;
+    return write_frame(a, m, &view, &hal, &ro, band, pass, frame, k, &st, &err);
 }
 
 /* What the frames written needed: the arena's high-water marks by purpose,
@@ -477,13 +488,15 @@ int fw_scene(void)
     silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
 
     int rc = 0;
-    fw_pass pass = { files, 0, 0, 0, 0, 0, 0 }, written = pass;
+    fw_pass pass = { files, 0, 0, 0, 0, 0, 0 };
     for (int p = 0; p < 2; p++) {
         if (p == 1) {   /* the stage pass last, so that its timing adds nothing to the memory reported */
             report_memory(&arena, band_bytes);
-            written = pass;
             if (rc) break;
-            pass = (fw_pass){ 0, 1, timing_overhead(), clock_overhead(), 0, 0, 0 };
+            pass.files = 0;   /* the counts of the frames written stay */
+            pass.stages = 1;
+            pass.overhead = timing_overhead();
+            pass.clock_overhead = clock_overhead();
         }
         for (int k = 0, frame = 0; k < fwmodel_NCAMERAS && !rc; k++)
             for (int mode = 0; mode < 2 && !rc; mode++)
@@ -496,9 +509,9 @@ int fw_scene(void)
         say("fw result=error");
         return 1;
     }
-    if (written.fell_back) {
-        say("fw result=fell_back frames=%d fell_back=%d smooth_fell_back=%d", written.frames, written.fell_back,
-            written.smooth_fell_back);
+    if (pass.fell_back) {
+        say("fw result=fell_back frames=%d fell_back=%d smooth_fell_back=%d", pass.frames, pass.fell_back,
+            pass.smooth_fell_back);
         return 2;
     }
     say("fw result=ok");
