@@ -186,6 +186,35 @@ install: $(BUILD)/libsilk.a $(BUILD)/libsilk_platform.a $(BUILD)/silk $(BUILD)/s
 	    $$pc.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/$$pc.pc || exit 1; \
 	done
 
+# The library managers' packages (docs/porting.md): PlatformIO builds the
+# tree as it is (library.json); an Arduino library needs its own layout,
+# made here in ARDUINO_OUT/silk: library.properties, the core, its headers
+# and the panel sink under src/ (the one folder Arduino puts on the include
+# path), and the example sketch with its model.
+ARDUINO_OUT ?= $(BUILD)/arduino
+# The project's home page, which the library managers list.
+SILK_URL ?= https://silk.invalid
+.PHONY: arduino example-model
+arduino:
+	rm -rf $(ARDUINO_OUT)/silk
+	mkdir -p $(ARDUINO_OUT)/silk/src/silk $(ARDUINO_OUT)/silk/src/core $(ARDUINO_OUT)/silk/examples/silk_panel
+	sed -e 's|@VERSION@|$(VERSION)|' -e 's|@URL@|$(SILK_URL)|' platform/arduino/library.properties \
+	    >$(ARDUINO_OUT)/silk/library.properties
+	cp LICENSE $(ARDUINO_OUT)/silk/
+	cp include/silk/*.h $(ARDUINO_OUT)/silk/src/silk/
+	cp src/*.c src/*.h $(ARDUINO_OUT)/silk/src/core/
+	cp include/silk.h platform/panel/silk_panel.c platform/panel/silk_panel.h $(ARDUINO_OUT)/silk/src/
+	cp examples/silk_panel/silk_panel.ino examples/silk_panel/model.h $(ARDUINO_OUT)/silk/examples/silk_panel/
+	@echo "silk: the Arduino library is in $(ARDUINO_OUT)/silk (copy it into your sketchbook's libraries folder)"
+
+# The example sketch's model: a torus made and packed by this silk (the
+# test checks that the committed header is what this writes).
+example-model: $(BUILD)/silk
+	mkdir -p $(BUILD)/example-model
+	cd $(BUILD)/example-model && ../silk gen torus --segments 16 --bands 8 -o torus.obj && \
+	  ../silk pack torus.obj -o model.h --name model --size 320x240 --format rgb565 --views 12 --visibility brute
+	cp $(BUILD)/example-model/model.h examples/silk_panel/model.h
+
 clean:
 	rm -rf build build-san build-fuzz out
 
