@@ -3,14 +3,15 @@
  * crosses gets the surface's coverage of it, computed from the outline
  * itself, and is blended with what lies behind.
  *
- * The outline is geometry silk already has, not something found in the
- * image: in SMOOTH mode the silhouette segment of every silhouette
+ * In FLAT and SMOOTH mode the outline is geometry silk already has, not
+ * something found in the image: in SMOOTH mode the silhouette segment of every silhouette
  * triangle (the Hermite curve of eq. 5, drawn as chords between its
  * samples of eq. 8); in FLAT mode (and for the triangles SMOOTH leaves as
  * they are, unless next to a silhouette triangle) every mesh edge between
  * a front- and a back-facing triangle (the face-based silhouette), and
  * every edge against nothing.  Interior pixels are never visited: the
- * cost is a walk along the outline.
+ * cost is a walk along the outline.  (SILTEX's, below, is found in the
+ * band.)
  *
  * Coverage.  Along a side whose x extent is the larger, each pixel column
  * whose centre the side spans is crossed at height y_e; the pixel the
@@ -64,6 +65,18 @@
  * than drawn is blended from them when it and both hold the surface.
  * -DSILK_NO_AA_CREASE (and silk_render_opts.aa = 2) leave creases aliased.
  *
+ * SILTEX.  The outline is where eq. 4 of the silhouette texture starts
+ * discarding the hull's front faces, inside their triangles: no geometry
+ * holds it, so it is found in the band, where a pixel showing the front
+ * face (its depth there is the front faces', drawn again alone) meets one
+ * showing what lies behind it or nothing, and measured by the test itself:
+ * the front faces drawn once more through siltex.c's margin stage at those
+ * pixels and their neighbours give the angle acos(d.C) - phi, negative
+ * where drawn.  An outline pixel's coverage is the part of it where that
+ * angle, linear across the pixel with its slopes to the neighbours, is
+ * negative (the box filter of a straight edge, exact), and it is blended
+ * with its neighbour across the outline as above.
+ *
  * Every new value is computed from the band as drawn and written only when
  * all outlines are walked, so no pixel reads another's blended value; the
  * rows just above and below a band are drawn into an apron for the pixels
@@ -73,6 +86,7 @@
 #include <string.h>
 #include "aa.h"
 #include "remesh.h"
+#include "silk/siltex.h"
 
 #define LIMIT ((int64_t)1 << 24)   /* subpixel coordinates walked (far past the guard band; differences fit 32 bits) */
 #define FRAC  4096                 /* crossing positions in 1/FRAC pixel */
@@ -698,6 +712,167 @@ void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const si
         seg_walk(aa, g, &at);
     }
 }
+
+#ifndef SILK_NO_SILTEX_MODE
+/* Row y's depths as drawn (the band's or an apron's), *dk, and the hull's
+ * front faces' in s, *dh; 0 when either has no such row. */
+static int depth_rows(const silk_aa *aa, const silk_target *s, int y, const uint32_t **dk, const uint32_t **dh)
+{
+    const silk_target *t = aa->t;
+    if (y < t->y0 || y >= t->y0 + t->rows) t = &aa->apron[y < aa->t->y0 ? 0 : 1];
+    if (!t->rows || y < t->y0 || y >= t->y0 + t->rows || y < s->y0 || y >= s->y0 + s->rows) return 0;
+    *dk = t->depth + (size_t)(y - t->y0) * (size_t)t->width;
+    *dh = s->depth + (size_t)(y - s->y0) * (size_t)s->width;
+    return 1;
+}
+
+/* Whether the pixel shows the hull's front face: drawn there, at its depth. */
+static inline int front_at(const uint32_t *dk, const uint32_t *dh, int x) { return dh[x] && dk[x] == dh[x]; }
+
+/* Whether pixel x of a row (dk, dh; the rows above and below, u and l, or
+ * NULL) is on the outline: on the hull, with a neighbour across the change
+ * between front face shown and not. */
+static inline int on_outline(const uint32_t *dk, const uint32_t *dh, const uint32_t *uk, const uint32_t *uh,
+                             const uint32_t *lk, const uint32_t *lh, int x, int width)
+{
+    if (!dh[x]) return 0;
+    int f = dk[x] == dh[x];
+    return (x > 0 && front_at(dk, dh, x - 1) != f) || (x + 1 < width && front_at(dk, dh, x + 1) != f) ||
+           (uk && front_at(uk, uh, x) != f) || (lk && front_at(lk, lh, x) != f);
+}
+
+static void mask_set(silk_target *s, uint8_t *mask, int x, int y)
+{
+    if (x < 0 || x >= s->width || y < s->y0 || y >= s->y0 + s->rows) return;
+    mask[(size_t)(y - s->y0) * (((size_t)s->width + 7) / 8) + (size_t)(x >> 3)] |= (uint8_t)(1u << (x & 7));
+}
+
+uint32_t silk_aa_margin_mask(silk_aa *aa, silk_target *s, uint8_t *mask)
+{
+    const silk_target *t = aa->t;
+    memset(mask, 0, (size_t)s->rows * (((size_t)s->width + 7) / 8));
+    s->mask = mask;
+    uint32_t n = 0;
+    for (int y = t->y0; y < t->y0 + t->rows; y++) {
+        const uint32_t *dk, *dh, *uk = NULL, *uh = NULL, *lk = NULL, *lh = NULL;
+        if (!depth_rows(aa, s, y, &dk, &dh)) continue;
+        if (!depth_rows(aa, s, y - 1, &uk, &uh)) uk = NULL;
+        if (!depth_rows(aa, s, y + 1, &lk, &lh)) lk = NULL;
+        for (int x = 0; x < t->width; x++) {
+            if (!on_outline(dk, dh, uk, uh, lk, lh, x, t->width)) continue;
+            n++;
+            mask_set(s, mask, x, y);
+            mask_set(s, mask, x - 1, y);
+            mask_set(s, mask, x + 1, y);
+            mask_set(s, mask, x, y - 1);
+            mask_set(s, mask, x, y + 1);
+        }
+    }
+    return n;
+}
+
+/* The margin at (x, y) as s holds it (silk_siltex_margin_hal's code less
+ * its zero); 0 where the margin stage drew nothing there. */
+static int margin_at(const silk_target *s, int x, int y, int64_t *m)
+{
+    if (x < 0 || x >= s->width || y < s->y0 || y >= s->y0 + s->rows) return 0;
+    size_t r = (size_t)(y - s->y0), i = r * (size_t)s->width + (size_t)x;
+    if (!s->depth[i] || !(s->mask[r * (((size_t)s->width + 7) / 8) + (size_t)(x >> 3)] >> (x & 7) & 1)) return 0;
+    *m = (int64_t)silk_target_get(s, x, y) - SILK_SILTEX_MARGIN_ZERO;
+    return 1;
+}
+
+/* The field's change per pixel along one axis at a pixel where it is m,
+ * from the neighbours a (before) and b (after) that have it (ha, hb):
+ * from the one across the outline alone (the two values bracket the
+ * crossing, and the field bends where phi's texels change), else
+ * central, else one-sided, else 0. */
+static int64_t slope(int ha, int64_t a, int64_t m, int hb, int64_t b)
+{
+    int xa = ha && (a <= 0) != (m <= 0), xb = hb && (b <= 0) != (m <= 0);
+    if (xa != xb) return xa ? m - a : b - m;
+    return ha && hb ? (b - a) / 2 : hb ? b - m : ha ? m - a : 0;
+}
+
+/* The part of a pixel, in 1/FRAC, where the linear field m + gx x + gy y
+ * (x, y over [-1/2, 1/2]) is negative: the box filter of a straight edge,
+ * exact (the field's distribution over the pixel is a trapezoid). */
+static uint32_t box_cover(int64_t m, int64_t gx, int64_t gy)
+{
+    int64_t a = absl(gx), b = absl(gy);
+    if (a < b) {
+        int64_t s = a;
+        a = b, b = s;
+    }
+    if (!a) return m <= 0 ? FRAC : 0;
+    int64_t d2 = -2 * m, s2 = a + b, t2 = a - b;   /* twice the distances: d, the half width and the flat top's */
+    if (d2 <= -s2) return 0;
+    if (d2 >= s2) return FRAC;
+    while (s2 >= (int64_t)1 << 21) {   /* |d2| < s2: every product below fits 64 bits */
+        a >>= 1, b >>= 1, d2 = floor_div(d2, 2);
+        s2 = a + b, t2 = a - b;
+    }
+    int64_t c;
+    if (d2 < -t2) c = (d2 + s2) * (d2 + s2) * FRAC / (8 * a * b);
+    else if (d2 > t2) c = FRAC - (s2 - d2) * (s2 - d2) * FRAC / (8 * a * b);
+    else c = (a + d2) * FRAC / (2 * a);
+    return (uint32_t)(c < 0 ? 0 : (c > FRAC ? FRAC : c));
+}
+
+/* Outline pixel (x, y) of the band: the front face's coverage of it from
+ * the margin there and its slope (the field linear over the pixel), the
+ * surface's colour over what lies behind, the two taken from it and its
+ * neighbour across the outline (the way the margin grows: the outside),
+ * along the axis it grows faster on, else the other: as crossing() does. */
+static void margin_px(silk_aa *aa, const silk_target *s, int x, int y, int front)
+{
+    int64_t m, a = 0, b = 0, c = 0, e = 0;
+    if (!margin_at(s, x, y, &m) || front != (m <= 0)) return;
+    int ha = margin_at(s, x - 1, y, &a), hb = margin_at(s, x + 1, y, &b);
+    int hc = margin_at(s, x, y - 1, &c), he = margin_at(s, x, y + 1, &e);
+    int64_t gx = slope(ha, a, m, hb, b), gy = slope(hc, c, m, he, e);
+    uint32_t cov = box_cover(m, gx, gy);
+    cov = cov < SNAP ? 0 : cov > FRAC - SNAP ? FRAC : cov;
+    if (cov == (front ? FRAC : 0)) return;   /* as drawn */
+    uint32_t cr, dr, cn, dn;
+    if (!fetch(aa, x, y, &cr, &dr)) return;
+    for (int k = 0; k < 2; k++) {
+        int xfirst = (absl(gx) >= absl(gy)) == !k;
+        int64_t g = xfirst ? gx : gy;
+        if (!g) continue;
+        int dir = (g > 0) == front ? 1 : -1;   /* front: towards the outside; else towards the inside */
+        int nx = xfirst ? x + dir : x, ny = xfirst ? y : y + dir;
+        const uint32_t *nk, *nh;
+        if (!depth_rows(aa, s, ny, &nk, &nh) || nx < 0 || nx >= s->width || front_at(nk, nh, nx) == front ||
+            !fetch(aa, nx, ny, &cn, &dn))
+            continue;
+        if (front) blend(aa, x, y, cov, cr, cn, 255, dn ? 255 : 0);
+        else blend(aa, x, y, cov, cn, cr, 255, dr ? 255 : 0);
+        return;
+    }
+}
+
+void silk_aa_margin(silk_aa *aa, const silk_target *s)
+{
+    const silk_target *t = aa->t;
+    size_t stride = ((size_t)s->width + 7) / 8;
+    for (int y = t->y0; y < t->y0 + t->rows; y++) {
+        const uint32_t *dk, *dh, *uk = NULL, *uh = NULL, *lk = NULL, *lh = NULL;
+        if (!depth_rows(aa, s, y, &dk, &dh)) continue;
+        if (!depth_rows(aa, s, y - 1, &uk, &uh)) uk = NULL;
+        if (!depth_rows(aa, s, y + 1, &lk, &lh)) lk = NULL;
+        const uint8_t *bits = s->mask + (size_t)(y - s->y0) * stride;
+        for (int x = 0; x < t->width; x++) {
+            if (!bits[x >> 3]) {   /* eight pixels at once: most are nowhere near the outline */
+                x |= 7;
+                continue;
+            }
+            if (bits[x >> 3] >> (x & 7) & 1 && on_outline(dk, dh, uk, uh, lk, lh, x, t->width))
+                margin_px(aa, s, x, y, front_at(dk, dh, x));
+        }
+    }
+}
+#endif
 
 void silk_aa_alpha(silk_target *t)
 {

@@ -84,6 +84,21 @@ void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uin
 void silk_aa_share(silk_aa *aa, const silk_mesh *m, const silk_view *v, const silk_frame_geom *g,
                    const silk_vertex_out *out, uint32_t t);
 
+/* SILTEX: the outline where the hull's front faces stop being drawn
+ * (eq. 4).  s is a target over the band's rows and its aprons' holding the
+ * depth of the hull's front faces alone (culled back faces, no discard).
+ * silk_aa_margin_mask sets the bits of mask (s's stencil, which s->mask
+ * then points at) where eq. 4's margin is needed: every pixel of the band
+ * on the hull next to one across the change between showing the front
+ * face and not (the outline pixels), and their four neighbours; it returns
+ * how many outline pixels there are.  The caller then draws the front
+ * faces through silk_siltex_margin_hal into s where its stencil says
+ * (depth_equal), and silk_aa_margin blends each outline pixel by the front
+ * face's coverage of it, from the margin there and its slope to the
+ * neighbours (the margin taken as linear over the pixel). */
+uint32_t silk_aa_margin_mask(silk_aa *aa, silk_target *s, uint8_t *mask);
+void silk_aa_margin(silk_aa *aa, const silk_target *s);
+
 /* Write the pending pixels (and t->alpha, when the target has one). */
 void silk_aa_finish(silk_aa *aa);
 

@@ -18,7 +18,9 @@
  * steps); the stencil then holds every pixel the polygon touches, and a
  * pixel covered only partly is blended between the hull drawn there and
  * what lies behind the outline.  The map's outline is the whole model's,
- * so behind it there is only the background.  Without anti-aliasing the
+ * so behind it there is only the background: with an alpha plane (a PNG
+ * with --bg none) the coverage is the pixel's alpha and its colour the
+ * hull's, blended with nothing.  Without anti-aliasing the
  * stencil holds the pixels whose centre is inside, the rasterizer's rule.
  *
  * Integers only; all memory is the arena's top, released with the frame.
@@ -229,14 +231,15 @@ void silk_clip_stencil(silk_clip *c, silk_target *t)
     t->mask = c->mask;
 }
 
-/* a + (b - a) * w / FULL per channel. */
-static uint32_t mix(uint32_t a, uint32_t b, uint32_t w)
+/* The coverage w (of FULL) as an alpha, 0..255. */
+static uint32_t alpha_of(uint32_t w) { return (w * 255 + FULL / 2) / FULL; }
+
+/* b over a with alpha al per channel, rounded: the colour b with alpha al
+ * laid over a (a PNG's alpha) gives the same. */
+static uint32_t mix(uint32_t a, uint32_t b, uint32_t al)
 {
     uint32_t out = 0;
-    for (int s = 0; s < 24; s += 8) {
-        int32_t ca = (int32_t)(a >> s & 255), cb = (int32_t)(b >> s & 255);
-        out |= (uint32_t)(ca + ((cb - ca) * (int32_t)w + FULL / 2) / FULL) << s;
-    }
+    for (int s = 0; s < 24; s += 8) out |= (((b >> s & 255) * al + (a >> s & 255) * (255 - al) + 127) / 255) << s;
     return out;
 }
 
@@ -254,7 +257,9 @@ void silk_clip_antialias(silk_clip *c, silk_target *t, uint32_t bg_rgb)
             uint32_t drawn = silk_target_get(t, x, y);
             /* nothing drawn there (the hull fell short of the outline): background stays */
             if (zrow ? zrow[x] == 0 : drawn == (bg_rgb & 0xFFFFFF)) continue;
-            silk_target_put(t, x, y, mix(bg_rgb, drawn, w));
+            /* with an alpha plane the coverage is the alpha and the colour the hull's own */
+            if (t->alpha) t->alpha[(size_t)r * (size_t)t->width + (size_t)x] = (uint8_t)alpha_of(w);
+            else silk_target_put(t, x, y, mix(bg_rgb, drawn, alpha_of(w)));
         }
     }
 }

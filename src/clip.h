@@ -59,7 +59,9 @@ void silk_clip_stencil(silk_clip *c, silk_target *t);
 
 /* After the hull is drawn (t->mask cleared): the band's pixels the outline
  * covers only partly, blended between what was drawn there and bg_rgb by
- * the polygon's coverage, as silk_clip_stencil found it for this band. */
+ * the polygon's coverage, as silk_clip_stencil found it for this band; with
+ * t->alpha (filled for the band already) that coverage is their alpha
+ * instead, and their colour the hull's. */
 void silk_clip_antialias(silk_clip *c, silk_target *t, uint32_t bg_rgb);
 
 #endif

@@ -452,16 +452,31 @@ static void share_part(frame *f, uint32_t t)
 }
 
 #ifndef SILK_NO_AA
-/* Whether frame_aa anti-aliases the outline of frame f in band t: not
- * with wire, not a stored frame's, not where there is no depth, not clip
- * mode's (clip.c does its own), not siltex's (the hull's edges are not its
- * outline).  Not inlined: frame_aa and outline_reserve share it. */
+/* Whether frame_aa anti-aliases the outline of frame f in band t with
+ * silk_aa_begin's scratch: not with wire, not a stored frame's, not where
+ * there is no depth, not siltex's with lines (its fragment stage draws
+ * them, aliased).  (Clip mode's is its own, clip.c.)  Not inlined:
+ * frame_aa and outline_reserve share it. */
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
 static int outline_wanted(const frame *f, const silk_render_opts *o, const silk_target *t)
 {
-    return o->aa && !o->wire && f->part == share_part && t->depth && !f->clip && !f->siltex;
+    int wanted = o->aa && !o->wire && f->part == share_part && t->depth;
+#ifndef SILK_NO_SILTEX_MODE
+    wanted = wanted && !(f->siltex && o->lines);
+#endif
+    return wanted;
+}
+#endif
+
+#if !defined(SILK_NO_AA) && !defined(SILK_NO_SILTEX_MODE)
+/* What siltex_outline takes for a band of t at most: colour, depth and
+ * mask over its rows and their two aprons. */
+static size_t siltex_outline_bytes(const silk_target *t)
+{
+    size_t w = (size_t)t->width, rows = (size_t)t->rows + 2, al = SILK_ARENA_ALIGN - 1;
+    return ((w * rows * 3 + al) & ~al) + ((w * rows * sizeof(uint32_t) + al) & ~al) + ((rows * ((w + 7) / 8) + al) & ~al);
 }
 #endif
 
@@ -477,7 +492,12 @@ static size_t outline_reserve(const frame *f, const silk_render_opts *o, const s
     (void)t;
     return 0;
 #else
-    return outline_wanted(f, o, t) ? silk_aa_bytes(t, f->smooth ? f->sil.max_recs : 3) : 0;
+    if (f->clip || !outline_wanted(f, o, t)) return 0;
+    size_t bytes = silk_aa_bytes(t, f->smooth ? f->sil.max_recs : 3);
+#ifndef SILK_NO_SILTEX_MODE
+    if (f->siltex) bytes += siltex_outline_bytes(t);
+#endif
+    return bytes;
 #endif
 }
 
@@ -1213,10 +1233,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     }
     t->depth_equal = t->cull_back = 0;
 #ifndef SILK_NO_CLIP_MODE
-    if (f->clip) {
-        t->mask = NULL;
-        silk_clip_antialias(f->clip, t, o->bg_rgb);
-    }
+    if (f->clip) t->mask = NULL;   /* frame_aa anti-aliases its outline */
 #endif
 #ifndef SILK_NO_LINES
     for (uint32_t i = 0; o->lines && i < g->nlines; i++) {
@@ -1306,16 +1323,76 @@ static inline void aa_prefetch(const frame *f, uint32_t k, uint32_t next[2])
 }
 #endif
 
-/* Anti-aliased outlines (aa.c) over band t, just drawn (-DSILK_NO_AA
+#if !defined(SILK_NO_SILTEX_MODE) && !defined(SILK_NO_AA)
+/* SILTEX: the hull's front faces into s, every part that reaches its
+ * rows, as frame_draw draws them (back faces culled): through stage h, or
+ * depth alone (h NULL). */
+static void hull_draw(frame *f, const silk_render_opts *o, silk_target *s, const silk_hal *h)
+{
+    const silk_hal *shade = f->hal;
+    for (uint32_t k = 0; k < f->nparts; k++) {
+        if (part_misses(f, k, s->y0, s->y0 + s->rows - 1)) continue;
+        f->part(f, k);
+        s->cull_back = 1;
+        uint32_t t0 = silk_stage_start(f->clock);
+        f->hal = h ? h : shade;   /* the same vertex stage: the part's output stands */
+        draw_tris(f, o, s, h ? 0 : -1, NULL);
+        f->hal = shade;
+        silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
+    }
+    s->cull_back = 0;
+}
+
+/* SILTEX's outline over aa's band (aa.c, silk_aa_margin): the hull's
+ * front faces drawn again, depth alone, over the band's rows and its
+ * aprons'; where the pixels drawn from a front face meet those that show
+ * what lies behind it, the front faces once more through the margin stage
+ * (siltex.c), only there; then those pixels blended by their coverage.  0
+ * when the arena has no room for it (siltex_outline_bytes: what the
+ * renderer leaves free for it). */
+static int siltex_outline(frame *f, silk_arena *a, const silk_render_opts *o, silk_aa *aa)
+{
+    const silk_target *t = aa->t;
+    int y0 = t->y0 > 0 ? t->y0 - 1 : 0, y1 = t->y0 + t->rows < t->height ? t->y0 + t->rows + 1 : t->height;
+    size_t w = (size_t)t->width, rows = (size_t)(y1 - y0);
+    /* unfilled: the clear writes them */
+    uint8_t *c = silk_arena_array_top_unfilled(a, w * rows, 3, SILK_MEM_FRAME);
+    uint32_t *d = silk_arena_array_top_unfilled(a, w * rows, sizeof *d, SILK_MEM_FRAME);
+    uint8_t *mask = silk_arena_array_top_unfilled(a, rows, (w + 7) / 8, SILK_MEM_FRAME);
+    if (!c || !d || !mask) return 0;
+    silk_target s;
+    silk_target_init(&s, t->width, t->height, y0, (int)rows, SILK_PIX_RGB888, c, d);
+    silk_target_clear(&s, 0);
+    hull_draw(f, o, &s, NULL);
+    if (silk_aa_margin_mask(aa, &s, mask)) {
+        silk_hal margin;
+        silk_siltex_margin_hal(&margin, &f->siltex_stage);
+        s.depth_equal = 1;   /* the front faces alone */
+        hull_draw(f, o, &s, &margin);
+        silk_aa_margin(aa, &s);
+    }
+    return 1;
+}
+#endif
+
+/* Anti-aliased outlines over band t, just drawn: CLIP's (clip.c: the
+ * map's outline, whatever the build), and those of aa.c (-DSILK_NO_AA
  * leaves them out: about 3.0 KiB of Cortex-M3 code and a band's worth of
- * scratch): the frames drawn
- * share by share (FLAT and SMOOTH without lines; CLIP's outline is the
- * map's, anti-aliased by clip.c), not under --wire's edges.  The shares that can
- * hold an outline are rebuilt once more; a band that is not the whole
- * frame first draws the rows next to it, which its edge pixels blend with. */
+ * scratch): of the frames drawn share by share (FLAT and SMOOTH without
+ * lines, and SILTEX's, from eq. 4 itself), not under --wire's edges.  The
+ * shares that can hold an outline are rebuilt once more; a band that is
+ * not the whole frame first draws the rows next to it, which its edge
+ * pixels blend with. */
 static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
                      silk_frame_stats *stats)
 {
+#ifndef SILK_NO_CLIP_MODE
+    if (f->clip) {
+        silk_aa_alpha(t);
+        silk_clip_antialias(f->clip, t, o->bg_rgb);
+        return;
+    }
+#endif
 #ifdef SILK_NO_AA
     (void)f;
     (void)a;
@@ -1337,6 +1414,15 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     aa.creases = o->aa == 1;
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
+#ifndef SILK_NO_SILTEX_MODE
+    if (f->siltex) {   /* the hull's edges are not its outline: eq. 4's edge is */
+        if (!siltex_outline(f, a, o, &aa)) stats->aa_aliased++;
+        silk_aa_finish(&aa);
+        stats->aa_aliased += aa.dropped;
+        silk_arena_top_release(a, &mark);
+        return;
+    }
+#endif
     aa.sil = f->smooth ? &f->sil : NULL;
     aa.hal = f->hal;
     aa.geom = &f->geom;

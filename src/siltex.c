@@ -192,6 +192,30 @@ int32_t silk_siltex_cos(uint32_t q16)
     return (int32_t)((c + ((int64_t)1 << 29)) >> 30);
 }
 
+uint32_t silk_siltex_acos(int64_t c)
+{
+    if (c >= cos_q[0]) return 0;
+    if (c <= cos_q[255]) return 255u << 16;
+    uint32_t lo = 0, hi = 255;   /* cos_q[lo] > c >= cos_q[hi] */
+    while (hi - lo > 1) {
+        uint32_t mid = (lo + hi) / 2;
+        if (cos_q[mid] > c) lo = mid;
+        else hi = mid;
+    }
+    int64_t span = (int64_t)cos_q[lo] - cos_q[hi];
+    int64_t q = ((int64_t)lo << 16) + (((int64_t)cos_q[lo] - c) * 65536 + span / 2) / span;
+    /* then one Newton step on cos(q) = c: the chord is off by up to a
+     * twelfth of a step next to the table's ends, where cos bends most
+     * against its slope; -dcos/dq is sin(q pi / 255) pi / 255 (Q30 per q) */
+    int64_t sn = sin_q[lo] + ((((int64_t)sin_q[hi] - sin_q[lo]) * (q & 0xffff)) >> 16);
+    int64_t slope = (sn * 13228468) >> 30;
+    if (slope > 0) {
+        int64_t dq = ((int64_t)silk_siltex_cos((uint32_t)q) - c) * 65536 / slope;
+        q += dq < -65536 ? -65536 : (dq > 65536 ? 65536 : dq);
+    }
+    return (uint32_t)(q < (int64_t)lo << 16 ? (int64_t)lo << 16 : (q > (int64_t)hi << 16 ? (int64_t)hi << 16 : q));
+}
+
 int silk_siltex_frame(const silk_fx c[3], const silk_fx t[3], int64_t C[3], int64_t T[3], int64_t B[3])
 {
     if (!silk_unit64(c[0], c[1], c[2], C)) return 0;
@@ -363,6 +387,20 @@ static void siltex_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec
     }
 }
 
+/* The unit view direction d at the point of varyings var, and in
+ * perspective the eye-to-point vector e (the line width's depth); 0 where
+ * the point is the eye. */
+static int view_dir(const silk_view *view, const silk_fx *var, int64_t d[3], silk_vec3 *e)
+{
+    *e = silk_v3(0, 0, 0);
+    if (view->cam.ortho) {
+        d[0] = view->forward.x, d[1] = view->forward.y, d[2] = view->forward.z;
+        return 1;
+    }
+    *e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
+    return silk_unit64(e->x, e->y, e->z, d);
+}
+
 /* Eq. 4, then the shading stage with the normal map's normal and the
  * colour map's colour. */
 static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
@@ -371,13 +409,8 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
     const silk_siltex *st = s->tex;
     int64_t d[3];
     const silk_view *view = s->view;
-    silk_vec3 e = { 0, 0, 0 };   /* eye to point, in perspective: the view direction and the line width's depth */
-    if (!view->cam.ortho) {
-        e = silk_v3_sub(silk_v3(var[VAR_POS], var[VAR_POS + 1], var[VAR_POS + 2]), view->cam.eye);
-        if (!silk_unit64(e.x, e.y, e.z, d)) return SILK_FRAGMENT_DISCARD;
-    } else {
-        d[0] = view->forward.x, d[1] = view->forward.y, d[2] = view->forward.z;
-    }
+    silk_vec3 e;
+    if (!view_dir(view, var, d, &e)) return SILK_FRAGMENT_DISCARD;
     silk_fx u = var[VAR_UV], v = var[VAR_UV + 1];
     texels tx;
     texels_at(st, u, v, &tx);
@@ -412,6 +445,40 @@ static uint32_t siltex_fragment(const silk_hal *h, const silk_fx *var)
                                   (silk_fx)(SILK_FX_ONE - v / (int32_t)st->h), 0, 0);
 #endif
     return silk_hal_phong_tinted(s->shade, shade_var, rgb);
+}
+
+/* Eq. 4's margin in place of the colour (silk_siltex_margin_hal): the
+ * angle acos(d.C) - phi, which crosses 0 where the lobe's edge is and,
+ * unlike d.C - cos(phi), grows as evenly as phi does across the lobe's
+ * edge (phi is bilinear between texels), as the 24-bit code
+ * SILK_SILTEX_MARGIN_ZERO + margin / 4 (q units in Q8.16 to Q8.14),
+ * clamped, and at most ZERO exactly where siltex_fragment draws the pixel
+ * (its test is the cosines'; the two disagree by a rounding at most, and
+ * then the code is the one next to ZERO on the drawn side).  No discard:
+ * every front pixel of the hull gets its margin, drawn or not. */
+static uint32_t margin_fragment(const silk_hal *h, const silk_fx *var)
+{
+    const silk_siltex_stage *s = (const silk_siltex_stage *)h->uniforms;
+    const int64_t far = SILK_SILTEX_MARGIN_ZERO - 1;
+    int64_t d[3];
+    silk_vec3 e;
+    texels tx;
+    uint32_t phi;
+    int64_t dc;
+    if (!view_dir(s->view, var, d, &e)) return (uint32_t)(SILK_SILTEX_MARGIN_ZERO + far);
+    texels_at(s->tex, var[VAR_UV], var[VAR_UV + 1], &tx);
+    if (!lobe_at(s->tex, &tx, &var[VAR_C], &var[VAR_T], d, &phi, &dc)) return (uint32_t)(SILK_SILTEX_MARGIN_ZERO + far);
+    int seen = dc >= silk_siltex_cos(phi);
+    int64_t m = ((int64_t)silk_siltex_acos(dc) - phi) / 4;
+    if (seen != (m <= 0)) m = seen ? 0 : 1;
+    m = m < -(int64_t)SILK_SILTEX_MARGIN_ZERO ? -(int64_t)SILK_SILTEX_MARGIN_ZERO : (m > far ? far : m);
+    return (uint32_t)(SILK_SILTEX_MARGIN_ZERO + m);
+}
+
+void silk_siltex_margin_hal(silk_hal *h, silk_siltex_stage *s)
+{
+    silk_siltex_hal(h, s);
+    h->fragment = margin_fragment;
 }
 
 void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s)

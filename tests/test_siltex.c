@@ -4,7 +4,8 @@
  * texel frame, the interpolated lookup and eq. 4, the compressed form's
  * reconstruction; the loader on an analytic model (tests/support/stexgen.c);
  * frames of siltex mode: bands equal to the whole frame, the outline of a
- * sphere against its exact outline, one sphere in front of another.
+ * sphere against its exact outline, the anti-aliased outline against a
+ * supersampled frame, one sphere in front of another.
  *
  *   test_siltex --write FILE [two|tiny|tiny-compressed]   write the analytic model (for
  *                                         the command's tests, tests/bad and
@@ -79,6 +80,28 @@ TEST(cos_matches)
     CHECK(silk_siltex_cos(0) == 1 << 30);
     CHECK(silk_siltex_cos(255u << 16) == -(1 << 30));
     printf("cos: largest error %.2g\n", worst);
+}
+
+TEST(acos_matches)
+{
+    double worst = 0;
+    for (int64_t c = -(1 << 30); c <= 1 << 30; c += 4099) {
+        double ref = acos(c / 1073741824.0) * 255 / PI, e = fabs(silk_siltex_acos(c) / 65536.0 - ref);
+        /* the ends, where acos is steepest, are linear over one table step */
+        if (fabs(c / 1073741824.0) < cos(PI / 255) && e > worst) worst = e;
+    }
+    CHECKF(worst < 4e-3, "acos error %.3g q", worst);   /* 5e-5 rad */
+    CHECK(silk_siltex_acos(1 << 30) == 0 && silk_siltex_acos(-(1 << 30)) == 255u << 16);
+    CHECK(silk_siltex_acos((int64_t)1 << 31) == 0 && silk_siltex_acos(-((int64_t)1 << 31)) == 255u << 16);
+    /* the inverse of silk_siltex_cos */
+    uint32_t off = 0;
+    for (uint32_t q16 = 1u << 16; q16 < 254u << 16; q16 += 101) {
+        uint32_t back = silk_siltex_acos(silk_siltex_cos(q16));
+        uint32_t d = back > q16 ? back - q16 : q16 - back;
+        off = d > off ? d : off;
+    }
+    CHECKF(off <= 256, "acos(cos(q)) off by %u / 65536 q", off);
+    printf("acos: largest error %.2g q inside the end steps; acos(cos(q)) within %u / 65536 q\n", worst, off);
 }
 
 /* A random hull frame: C and T unit (T across C), perturbed as
@@ -369,6 +392,7 @@ TEST(outline_matches_sphere)
         silk_camera cam = ts_camera(eye, tgt, ortho ? -1.3 : 40, dist - 2, dist + 2, W, H);
         silk_render_opts ro;
         render_opts(&ro, &s.st);
+        ro.aa = 0;   /* eq. 4's own outline: pixel centres */
         silk_error err;
         silk_status st = ts_render(&s.a, &s.hull, &cam, &ro, &img, NULL, &err);
         CHECKF(st == SILK_OK, "%s", err.msg);
@@ -394,6 +418,108 @@ TEST(outline_matches_sphere)
     free(exact);
     ts_image_free(&img);
     scene_close(&s);
+}
+
+static void two_spheres(stexgen_opts *o);
+
+/* A frame of the model at w x h from direction dir (as
+ * tf_view_around_size frames it), anti-aliased or not, into rgb (w h 3
+ * bytes), depth and alpha (w h bytes, or NULL: none).  0 on failure. */
+static int stex_frame(const scene *s, const double dir[3], int ortho, int w, int h, int aa, uint8_t *rgb,
+                      uint32_t *depth, uint8_t *alpha)
+{
+    silk_view v;
+    if (!tf_view_around_size(&s->hull, dir, 2.4, ortho, w, h, &v)) return 0;
+    silk_phong ph;
+    silk_hal hal;
+    silk_phong_default(&ph, &v);
+    silk_hal_phong(&hal, &ph);
+    silk_render_opts ro;
+    render_opts(&ro, &s->st);
+    ro.aa = aa;
+    silk_target t;
+    silk_target_init(&t, w, h, 0, h, SILK_PIX_RGB888, rgb, depth);
+    t.alpha = alpha;
+    silk_arena a = s->a;
+    silk_error err;
+    silk_frame_stats fs;
+    silk_status st = silk_render(&a, &s->hull, &v, &hal, &ro, &t, &fs, &err);
+    CHECKF(st == SILK_OK && fs.aa_aliased == 0, "%s (%u pixels left aliased)", st ? err.msg : "", fs.aa_aliased);
+    return st == SILK_OK;
+}
+
+/* The anti-aliased outline (eq. 4's margin, src/aa.c) against the same
+ * frame drawn 4 x 4 times larger without it, whose blocks average 16
+ * samples of eq. 4 a pixel: over the pixels the two differ on or the
+ * large frame covers partly, the mean error of the alpha (one sphere: the
+ * outline against the background) and of the colour laid over the
+ * background (two spheres: the near one's outline over the far one too),
+ * with and without anti-aliasing. */
+TEST(outline_antialiased)
+{
+    enum { W = 160, H = 120, N = 4 };
+    const double dirs[4][3] = { { 0.47, 0.342, 0.814 }, { -0.6, 0.2, 0.3 }, { 0.1, -0.8, 0.4 }, { 0.9, 0.1, -0.3 } };
+    uint8_t *rgb[2], *alpha[2], *big = malloc(W * H * N * N * 3);
+    uint32_t *depth = malloc(W * H * sizeof *depth), *bigd = malloc(W * H * N * N * sizeof *bigd);
+    for (int k = 0; k < 2; k++) {
+        rgb[k] = malloc(W * H * 3);
+        alpha[k] = malloc(W * H);
+    }
+    for (int two = 0; two <= 1; two++) {
+        stexgen_opts o;
+        if (two) two_spheres(&o);
+        else stexgen_defaults(&o);
+        scene s;
+        if (!scene_open(&s, &o)) break;
+        double err[2] = { 0, 0 }, worst = 0;
+        long n = 0, over_half = 0;
+        for (int view = 0; view < 4; view++) {
+            int ortho = view % 2, ok = stex_frame(&s, dirs[view], ortho, W * N, H * N, 0, big, bigd, NULL);
+            for (int k = 0; k < 2; k++) ok = ok && stex_frame(&s, dirs[view], ortho, W, H, !k, rgb[k], depth, alpha[k]);
+            if (!ok) break;
+            for (int p = 0; p < W * H; p++) {
+                int x = p % W, y = p / W, cover = 0;
+                double mean[3] = { 0, 0, 0 };
+                for (int j = 0; j < N * N; j++) {
+                    size_t q = (size_t)(y * N + j / N) * W * N + (size_t)(x * N + j % N);
+                    cover += bigd[q] != 0;
+                    for (int c = 0; c < 3; c++) mean[c] += big[3 * q + c] / (double)(N * N);
+                }
+                double ref = cover * 255.0 / (N * N), e[2];
+                int edge = (cover > 0 && cover < N * N) || alpha[0][p] != alpha[1][p];
+                for (int k = 0; k < 2; k++) {
+                    e[k] = 0;
+                    if (!two) e[k] = fabs(alpha[k][p] - ref);
+                    else   /* laid over the background, white */
+                        for (int c = 0; c < 3; c++)
+                            e[k] += fabs((alpha[k][p] * rgb[k][3 * p + c] + (255 - alpha[k][p]) * 255) / 255.0 - mean[c]) / 3;
+                    if (two && fabs(rgb[1][3 * p] - mean[0]) + fabs(rgb[1][3 * p + 1] - mean[1]) > 4) edge = 1;
+                }
+                if (!edge) continue;
+                n++;
+                err[0] += e[0];
+                err[1] += e[1];
+                over_half += e[0] > 128;
+                worst = e[0] > worst ? e[0] : worst;
+            }
+        }
+        CHECK(n > 300);
+        if (n) err[0] /= n, err[1] /= n;
+        CHECKF(err[0] <= 0.25 * err[1], "%s: mean error %.2f anti-aliased, %.2f without", two ? "colour" : "alpha",
+               err[0], err[1]);
+        CHECKF(over_half == 0, "%ld pixels off by more than half", over_half);
+        printf("siltex anti-aliased outline, %s, 4 views at %dx%d against 4x4 supersampling: %ld pixels, mean error "
+               "%.2f of 255 (%.2f without anti-aliasing), largest %.0f\n",
+               two ? "two spheres, colour" : "sphere, alpha", W, H, n, err[0], err[1], worst);
+        scene_close(&s);
+    }
+    for (int k = 0; k < 2; k++) {
+        free(rgb[k]);
+        free(alpha[k]);
+    }
+    free(big);
+    free(bigd);
+    free(depth);
 }
 
 static void two_spheres(stexgen_opts *o)
@@ -623,12 +749,14 @@ int main(int argc, char **argv)
     }
     RUN(azimuth_matches_atan2);
     RUN(cos_matches);
+    RUN(acos_matches);
     RUN(frame_matches);
     RUN(phi_interpolates);
     RUN(visible_matches_eq4);
     RUN(compressed_reconstruction);
     RUN(loads_analytic_model);
     RUN(outline_matches_sphere);
+    RUN(outline_antialiased);
     RUN(interior_silhouette);
     RUN(bands_equal_frame);
     RUN(lines_follow_outlines);

@@ -76,6 +76,11 @@ uint32_t silk_siltex_azimuth(int64_t x, int64_t y);
  * sin a sin h with h below one step by its Taylor terms. */
 int32_t silk_siltex_cos(uint32_t q16);
 
+/* acos(c) for c in Q2.30 (clamped to [-1, 1]), as q in Q8.16 (phi = q pi
+ * / 255): the table of silk_siltex_cos searched, linear between its
+ * entries. */
+uint32_t silk_siltex_acos(int64_t c);
+
 /* The texel frame at a point: c and t the hull's C and T interpolated
  * (any length), into unit C, T' = normalize(T - (T.C) C) and B = C x T'
  * (Q16.16).  0 when C is zero; a T along C is replaced by an axis. */
@@ -133,6 +138,17 @@ int64_t silk_siltex_line_width(const silk_view *view, silk_fx reach);
  * this itself in SILK_MODE_SILTEX.  It fills s->color_map from s->tex, so
  * set s->tex first. */
 void silk_siltex_hal(silk_hal *h, silk_siltex_stage *s);
+
+/* The same stages with a fragment stage that returns, in place of a
+ * colour, how far the pixel lies from eq. 4's threshold: the angle
+ * acos(d.C) - phi (q units in Q8.16, positive where the pixel is not
+ * drawn) as the 24-bit code SILK_SILTEX_MARGIN_ZERO + angle / 4, clamped to
+ * 0 .. 2 ZERO - 1: at most ZERO exactly where silk_siltex_hal's stage
+ * draws the pixel.  It never discards.  silk_render
+ * draws the hull's front faces through it, near the outline only, for
+ * siltex mode's anti-aliased outline (src/aa.c). */
+#define SILK_SILTEX_MARGIN_ZERO 0x800000u
+void silk_siltex_margin_hal(silk_hal *h, silk_siltex_stage *s);
 
 /* Bytes the section takes in the model (what flash holds for it). */
 static inline uint32_t silk_siltex_bytes(const silk_siltex *st) { return st->bytes; }

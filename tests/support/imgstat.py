@@ -14,6 +14,14 @@ with luma >= 230), and for RGBA alpha0, alpha255, alpha_other.
 prints "match" when the alpha channel of RGBA.png is 255 exactly where the
 opaque render of the same view differs from BG and 0 elsewhere, else the
 number of pixels that disagree.
+
+    imgstat.py --composes RGBA.png OPAQUE BG
+
+lays RGBA.png over the colour BG (each channel a C + (255 - a) BG over 255,
+rounded) and compares it with OPAQUE, the same view rendered on BG: prints
+pixels=N off1=K off10=J worst=L, the pixels more than 1 level of 255
+apart in some channel, those more than 10% (25 levels) apart, and the
+largest difference.
 """
 import struct
 import sys
@@ -84,6 +92,15 @@ def main(argv):
         bad = sum(1 for (_, _, _, _, _, a), (_, _, _, _, c, _) in zip(pixels(argv[1]), pixels(argv[2]))
                   if a != (255 if c != bg else 0))
         print("match" if bad == 0 else "%d pixels disagree" % bad)
+        return
+    if argv[0] == "--composes":
+        bg = tuple(bytes.fromhex(argv[3]))
+        n, off1, off10, worst = 0, 0, 0, 0
+        for (_, _, _, _, c, a), (_, _, _, _, o, _) in zip(pixels(argv[1]), pixels(argv[2])):
+            a = 255 if a is None else a
+            d = max(abs((a * c[k] + (255 - a) * bg[k] + 127) // 255 - o[k]) for k in range(3))
+            n, off1, off10, worst = n + 1, off1 + (d > 1), off10 + (d > 25), max(worst, d)
+        print("pixels=%d off1=%d off10=%d worst=%d" % (n, off1, off10, worst))
         return
     path, bg, region = argv[0], (255, 255, 255), "all"
     for k in range(1, len(argv), 2):

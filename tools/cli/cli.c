@@ -381,9 +381,9 @@ void cli_print_scene_help(FILE *f, unsigned groups)
             "Look (docs/viewer.md, \"Material and light\"):\n"
             "  --bg RRGGBB|none     background colour in hex (default %06x); none: a PNG\n"
             "                       with alpha: the object's coverage of each pixel\n"
-            "  --aa on|off|outline  anti-aliased outlines and creases, flat and smooth without\n"
-            "                       lines (outline: the outlines only)\n"
-            "                       (default on)\n"
+            "  --aa on|off|outline  anti-aliased outlines (flat, smooth, clip and siltex\n"
+            "                       without lines) and creases (flat and smooth;\n"
+            "                       outline: the outlines only) (default on)\n"
             "  --wire               draw the edges; triangles added by smoothing in red\n"
             "  --lines over|only    pen-and-ink outlines over the shading or alone: the\n"
             "                       smoothed silhouette and visible feature curves (smooth),\n"
@@ -836,7 +836,12 @@ static size_t auto_arena_bytes(size_t file_len, size_t raster)
 static size_t raster_bytes(const cli_scene_opts *o)
 {
     size_t px = (size_t)o->width * (size_t)o->height;
-    return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + (o->bg_none ? px : 0) + 64;
+    /* siltex's anti-aliased outline draws the hull's front faces into a
+     * frame of its own: RGB888, depth and a stencil bit (src/render.c) */
+    size_t outline = o->render.mode == SILK_MODE_SILTEX && o->render.aa && o->render.lines == SILK_LINES_NONE
+                         ? px * (3 + sizeof(uint32_t)) + px / 8 + 64 * (size_t)o->width
+                         : 0;
+    return px * silk_pixfmt_bytes(o->fmt) + px * sizeof(uint32_t) + (o->bg_none ? px : 0) + outline + 64;
 }
 
 /* One load of m's file into an arena of size bytes; nothing printed. */
