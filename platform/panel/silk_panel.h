@@ -15,7 +15,7 @@
  * One bus carries both, so a band's window waits for the previous band's
  * pixels to be sent; silk_panel_flush() waits for the last one.
  *
- * No heap, no globals, libc's memset only: the same code runs on a host
+ * No heap, no globals, libc's memset and memcpy only: the same code runs on a host
  * (tests/test_panel.c decodes its byte stream with a model of the panels)
  * and on any Cortex-M; docs/porting.md wires it to a board.
  */
