@@ -5,9 +5,9 @@
 #     and the band function of platform/panel/silk_panel.c, character for
 #     character;
 #   - the example, with a model packed by `silk pack`, built for the host
-#     with tests/panel_board.c (the bus a model of the ILI9341, its DMA
-#     completing only when waited for), draws every packed view: the
-#     panel's pictures equal `silk render`'s byte for byte;
+#     with tests/panel_board.c (the bus a model of the ILI9341, and again
+#     of the ST7789, its DMA completing only when waited for), draws every
+#     packed view: the panel's pictures equal `silk render`'s byte for byte;
 #   - libsilk.a built for a Cortex-M4 (hard float) and a Cortex-M0+ as the
 #     guide says (make lib with the cross compiler), and the example linked
 #     against it with a board of empty functions, warning-free (skipped
@@ -52,26 +52,31 @@ check "pack: the example's model" [ "$rc" -eq 0 ]
 CC=${CC:-cc}
 SANFLAGS=
 [ -n "${SILK_SAN:-}" ] && SANFLAGS="-fsanitize=address,undefined"
-if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -Iinclude -Iplatform/panel -Iexamples/spi_panel \
-    -Itests -I"$tmp" -o "$tmp/panel_board" examples/spi_panel/spi_panel.c tests/panel_board.c \
-    tests/support/panel_model.c platform/panel/silk_panel.c "$build/libsilk.a" 2>"$err"; then
-    pass "the example builds for the host, warning-free"
-    "$tmp/panel_board" "$tmp/panel" >"$out" 2>"$err"
-    check "the example draws on the panel model ($(head -c 200 "$err"))" test $? -eq 0
-    check "... 4 frames, a memory write a band" grep -q 'panel_board: 4 frames shown, 60 memory writes of 307200 pixels' "$out"
-    n=0
-    grep -o 'camera [0-9]*: --eye [^ ]*' "$tmp/model.h" >"$tmp/eyes"
-    while read -r _ k _ eye; do
-        k=${k%:}
-        "$SILK" render "$mesh" --size 320x240 --format rgb565 --eye "$eye" --aa off -o "$tmp/ref.ppm"
-        if cmp -s "$tmp/ref.ppm" "$tmp/panel-c$k.ppm"; then n=$((n + 1)); else
-            fail "the panel's frame $k equals silk render" "$(cmp "$tmp/ref.ppm" "$tmp/panel-c$k.ppm" 2>&1)"
-        fi
-    done <"$tmp/eyes"
-    check "the panel's 4 frames equal silk render byte for byte ($n)" [ "$n" -eq 4 ]
-else
-    fail "the example builds for the host" "$(head -c 300 "$err")"
-fi
+grep -o 'camera [0-9]*: --eye [^ ]*' "$tmp/model.h" >"$tmp/eyes"
+for panel in ILI9341 ST7789; do
+    if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -DPANEL=SILK_PANEL_$panel -Iinclude \
+        -Iplatform/panel -Iexamples/spi_panel -Itests -I"$tmp" -o "$tmp/panel_board" examples/spi_panel/spi_panel.c \
+        tests/panel_board.c tests/support/panel_model.c platform/panel/silk_panel.c "$build/libsilk.a" 2>"$err"; then
+        pass "$panel: the example builds for the host, warning-free"
+        "$tmp/panel_board" "$tmp/panel" >"$out" 2>"$err"
+        status=$?
+        check "$panel: the example draws on the panel model ($(head -c 200 "$err"))" test "$status" -eq 0
+        check "$panel: ... 4 frames, a memory write a band" \
+            grep -q 'panel_board: 4 frames shown, 60 memory writes of 307200 pixels' "$out"
+        n=0
+        while read -r _ k _ eye; do
+            k=${k%:}
+            [ -e "$tmp/ref-$k.ppm" ] ||
+                "$SILK" render "$mesh" --size 320x240 --format rgb565 --eye "$eye" --aa off -o "$tmp/ref-$k.ppm"
+            if cmp -s "$tmp/ref-$k.ppm" "$tmp/panel-c$k.ppm"; then n=$((n + 1)); else
+                fail "$panel: the panel's frame $k equals silk render" "$(cmp "$tmp/ref-$k.ppm" "$tmp/panel-c$k.ppm" 2>&1)"
+            fi
+        done <"$tmp/eyes"
+        check "$panel: the panel's 4 frames equal silk render byte for byte ($n)" [ "$n" -eq 4 ]
+    else
+        fail "$panel: the example builds for the host" "$(head -c 300 "$err")"
+    fi
+done
 
 # ---- the example on Cortex-M parts ---------------------------------------------
 

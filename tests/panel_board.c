@@ -1,6 +1,7 @@
 /*
  * panel_board.c - examples/spi_panel/board.h for the host: the SPI bus is
- * a model of the ILI9341 (support/panel_model.c), its DMA completes only
+ * a model of the ILI9341, or with -DPANEL=SILK_PANEL_ST7789 the ST7789
+ * (support/panel_model.c), its DMA completes only
  * when it is waited for (so a band drawn into a buffer still being sent
  * would show), and each frame the panel shows is written as a PPM file,
  * widened from RGB565 by bit replication as silk's PPM writer does, so
@@ -16,6 +17,10 @@
 #include "board.h"
 #include "support/panel_model.h"
 #include "silk_panel.h"
+
+#ifndef PANEL                  /* the example's (spi_panel.c) */
+#define PANEL SILK_PANEL_ILI9341
+#endif
 
 int spi_panel_run(void);
 
@@ -88,7 +93,7 @@ int main(int argc, char **argv)
         return 2;
     }
     prefix = argv[1];
-    panel_model_init(&model, SILK_PANEL_ILI9341);
+    panel_model_init(&model, PANEL);
     int rc = spi_panel_run();
     const char *why = panel_model_problem(&model);
     if (why) fprintf(stderr, "panel_board: the panel refuses the stream: %s\n", why);

@@ -1,8 +1,9 @@
 /*
  * spi_panel.c - silk on an SPI panel: a model that `silk pack` put into
- * flash, drawn from each of its packed views on an ILI9341 at 320x240 in
- * bands of 16 rows, double-buffered: while DMA sends one band's pixels the
- * renderer draws the next into the other buffer.  One static arena holds
+ * flash, drawn from each of its packed views on an ILI9341 (or, with
+ * -DPANEL=SILK_PANEL_ST7789, an ST7789) at 320x240 in bands of 16 rows,
+ * double-buffered: while DMA sends one band's pixels the renderer draws
+ * the next into the other buffer.  One static arena holds
  * the two colour buffers, the depth band and every frame's scratch; the
  * model stays in flash.
  *
@@ -21,6 +22,9 @@
 #include "model.h"
 #include "board.h"
 
+#ifndef PANEL                  /* SILK_PANEL_ST7789 for a 320x240 ST7789 */
+#define PANEL SILK_PANEL_ILI9341
+#endif
 #define WIDTH 320
 #define HEIGHT 240
 #define BAND_ROWS 16
@@ -72,7 +76,7 @@ int spi_panel_run(void)
     silk_error err;
     silk_panel_io io = { bus_write, bus_start, bus_wait, bus_delay, NULL };
     silk_panel_config cfg;
-    silk_panel_config_default(&cfg, SILK_PANEL_ILI9341);   /* 320x240 landscape */
+    silk_panel_config_default(&cfg, PANEL);   /* 320x240 landscape */
     silk_panel panel;
     if (silk_panel_init(&panel, &cfg, &io, &err) != SILK_OK) return fail("panel", &err);
 
