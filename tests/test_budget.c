@@ -230,7 +230,8 @@ TEST(shared_meshes_draw_in_their_budget)
     check_shared("bunny-2k.obj");
 }
 
-/* The budget's parts and its refusals. */
+/* The budget's parts and its refusals; a frame short of the smooth
+ * plan's bytes falls back and says so. */
 TEST(budget_parts_and_errors)
 {
     tm_fixture f;
@@ -261,6 +262,38 @@ TEST(budget_parts_and_errors)
     CHECK(silk_budget_frame(&f.m, &ro, 0, 240, 8, SILK_PIX_RGB565, 0, &one, &err) == SILK_ERR_RANGE);
     CHECK(silk_budget_frame(&f.m, &ro, 320, 240, 0, SILK_PIX_RGB565, 0, &one, &err) == SILK_ERR_RANGE);
     CHECK(silk_budget_frame(NULL, &ro, 320, 240, 8, SILK_PIX_RGB565, 0, &one, &err) == SILK_ERR_ARG);
+
+    /* A smooth frame in an arena with room for a flat frame only is drawn
+     * flat, and its statistics say so: no silent fall-back. */
+    ro.mode = SILK_MODE_FLAT;
+    ro.aa = 0;
+    silk_budget flat;
+    CHECK(silk_budget_frame(&f.m, &ro, 320, 240, 8, SILK_PIX_RGB565, 0, &flat, &err) == SILK_OK);
+    ro.mode = SILK_MODE_SMOOTH;
+    ro.vertex_cache_bytes = 0;
+    static uint8_t small[32768];
+    silk_arena sa;
+    silk_arena_init(&sa, small, flat.total);
+    uint8_t *bc = silk_arena_alloc(&sa, 320 * 8 * 2, SILK_MEM_RASTER);
+    uint32_t *bd = silk_arena_array(&sa, 320 * 8, sizeof *bd, SILK_MEM_RASTER);
+    silk_view v;
+    const double dir[3] = { 0.5, 0.3, 1 };
+    int viewed = tf_view_around_size(&f.m, dir, 2.6, 0, 320, 240, &v);
+    CHECKF(bc && bd && flat.total <= sizeof small && viewed, "%p %p %zu %d", (void *)bc, (void *)bd, flat.total, viewed);
+    if (bc && bd) {
+        silk_phong ph;
+        silk_hal hal;
+        silk_phong_default(&ph, &v);
+        silk_hal_phong(&hal, &ph);
+        silk_target band;
+        silk_target_init(&band, 320, 240, 0, 8, SILK_PIX_RGB565, bc, bd);
+        collect c = { got };
+        silk_sink sink = { .band = take, .user = &c };
+        silk_frame_stats st;
+        CHECK(silk_render_bands(&sa, &f.m, &v, &hal, &ro, &band, &sink, &st, &err) == SILK_OK);
+        CHECKF(st.fell_back == 1 && st.silhouette_tris == 0 && st.tris_drawn == f.m.ntris,
+               "fell back %d, %u silhouette triangles, %u drawn", st.fell_back, st.silhouette_tris, st.tris_drawn);
+    }
     tm_fixture_free(&f);
 }
 
