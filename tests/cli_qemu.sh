@@ -73,7 +73,8 @@ report_value() {
     grep -E "^fw $2( |=)" "$1" | head -n 1 | tr ' ' '\n' | sed -n "s/^$3=//p" | head -n 1
 }
 
-for board in mps2-an385 mps2-an385-full mps2-an386 mps2-an500 microbit; do
+# SILK_QEMU_BOARDS: some of the boards only (while working on one).
+for board in ${SILK_QEMU_BOARDS:-mps2-an385 mps2-an385-full mps2-an386 mps2-an500 microbit}; do
     fwroot=${SILK_FW_DIR:-build-$board/fw}
     variants="board ram256k"
     if [ -n "${SILK_FW_DIR:-}" ]; then
