@@ -31,7 +31,7 @@ extern "C" {
 #endif
 
 typedef struct silk_budget {
-    size_t bands;            /* band buffers: colour (twice when double-buffered) and depth, from the arena's bottom */
+    size_t bands;            /* band buffers: colour (two with a second buffer for DMA) and depth, from the arena's bottom */
     size_t frame;            /* per-frame scratch at most, from the top: the plan, one share, rows, outline */
     size_t total;            /* bands + frame: the arena beside a mesh packed into flash */
 } silk_budget;
