@@ -37,7 +37,8 @@ PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 
 CORE_SRC  := $(wildcard src/*.c)
-PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/ppm_read.c platform/fb_sink.c
+PLAT_SRC  := platform/png_sink.c platform/ppm_sink.c platform/file.c platform/png_read.c platform/ppm_read.c platform/fb_sink.c \
+             platform/panel/silk_panel.c
 # The silk command's parts, a folder each (tools/README.md): the command line,
 # host-side preparation, the viewer and image helpers.
 TOOL_SRC  := $(wildcard tools/cli/*.c tools/prep/*.c tools/view/*.c tools/image/*.c)
@@ -126,7 +127,7 @@ $(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/prep/,hull.o lp.o simpl
 $(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines $(BUILD)/tests/test_aa $(BUILD)/tests/test_texture \
-             $(BUILD)/tests/test_bands
+             $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel $(BUILD)/tests/test_budget
 $(GEN_TESTS): $(BUILD)/obj/tools/prep/gen.o
 $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/prep/gen.o
 # clip mode's golden frames draw a model prepared as silk prepare makes one
@@ -257,6 +258,35 @@ uninstall:
 	  rmdir $(DESTDIR)$(PREFIX)/$$d 2>/dev/null || true; \
 	done
 
+# The library managers' packages (docs/porting.md): PlatformIO builds the
+# tree as it is (library.json); an Arduino library needs its own layout,
+# made here in ARDUINO_OUT/silk: library.properties, the core, its headers
+# and the panel sink under src/ (the one folder Arduino puts on the include
+# path), and the example sketch with its model.
+ARDUINO_OUT ?= $(BUILD)/arduino
+# The project's home page, which the library managers list.
+SILK_URL ?= https://silk.invalid
+.PHONY: arduino example-model
+arduino:
+	rm -rf $(ARDUINO_OUT)/silk
+	mkdir -p $(ARDUINO_OUT)/silk/src/silk $(ARDUINO_OUT)/silk/src/core $(ARDUINO_OUT)/silk/examples/silk_panel
+	sed -e 's|@VERSION@|$(VERSION)|' -e 's|@URL@|$(SILK_URL)|' platform/arduino/library.properties \
+	    >$(ARDUINO_OUT)/silk/library.properties
+	cp LICENSE $(ARDUINO_OUT)/silk/
+	cp include/silk/*.h $(ARDUINO_OUT)/silk/src/silk/
+	cp src/*.c src/*.h $(ARDUINO_OUT)/silk/src/core/
+	cp include/silk.h platform/panel/silk_panel.c platform/panel/silk_panel.h $(ARDUINO_OUT)/silk/src/
+	cp examples/silk_panel/silk_panel.ino examples/silk_panel/model.h $(ARDUINO_OUT)/silk/examples/silk_panel/
+	@echo "silk: the Arduino library is in $(ARDUINO_OUT)/silk (copy it into your sketchbook's libraries folder)"
+
+# The example sketch's model: a torus made and packed by this silk (the
+# test checks that the committed header is what this writes).
+example-model: $(BUILD)/silk
+	mkdir -p $(BUILD)/example-model
+	cd $(BUILD)/example-model && ../silk gen torus --segments 16 --bands 8 -o torus.obj && \
+	  ../silk pack torus.obj -o model.h --name model --size 320x240 --format rgb565 --views 12 --visibility brute
+	cp $(BUILD)/example-model/model.h examples/silk_panel/model.h
+
 clean:
 	rm -rf build build-san build-fuzz build-config out
 
@@ -324,7 +354,7 @@ endif
 # `make clean` leaves the boards' build directories; this removes them.
 .PHONY: clean-boards
 clean-boards:
-	rm -rf build-mps2-an385 build-mps2-an385-full build-microbit build-linux-fb
+	rm -rf build-mps2-an385 build-mps2-an385-full build-mps2-an386 build-mps2-an500 build-microbit build-linux-fb
 
 # The ARM toolchain and QEMU for the firmware (Debian, Ubuntu).
 DEPS_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
@@ -367,14 +397,17 @@ ifeq ($(BOARD)$(HAVE_ARM),host1)
 ifneq ($(SAN),1)
 tests: firmware-for-tests
 .PHONY: firmware-for-tests
-# The Cortex-M3 board's models are shared meshes: without them
-# tests/boards/cli_qemu.sh skips it.  The Cortex-M0 board always has its `silk gen`
-# model.
+# The Cortex-M3, M4 and M7 boards' models are shared meshes: without them
+# tests/boards/cli_qemu.sh skips those boards.  The Cortex-M0 board always
+# has its `silk gen` model.
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
-	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k soak-firmware; \
-	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host; \
-	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD) firmware for the tests (its models are shared meshes)"; fi
+	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k soak-firmware && \
+	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host && \
+	  $(MAKE) BOARD=mps2-an386 BUILD=build-mps2-an386 SAN= CFLAGS= firmware firmware-host && \
+	  $(MAKE) BOARD=mps2-an500 BUILD=build-mps2-an500 SAN= CFLAGS= firmware firmware-host; \
+	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD), mps2-an386 or mps2-an500 firmware for the tests" \
+	  "(their models are shared meshes)"; fi
 	$(MAKE) BOARD=microbit BUILD=build-microbit SAN= CFLAGS= firmware firmware-host firmware-256k
 endif
 endif

@@ -171,7 +171,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
         silk_target band;
         silk_target_init(&band, width, height, 0, rows, fmt, bcolor, bdepth);
         band_copy bc = { whole, (size_t)width * bpp, 0 };
-        silk_sink sink = { take_band, &bc };
+        silk_sink sink = { .band = take_band, .user = &bc };
         silk_frame_stats bstats;
         silk_status bst = silk_render_bands(&a, &m, &view, &hal, &ro, &band, &sink, &bstats, &err);
         fuzz_expect(a.top == 0 && a.bottom == bottom, "the banded frame kept memory: top %zu", a.top);

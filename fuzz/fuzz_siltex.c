@@ -92,7 +92,7 @@ static void siltex_draw(const silk_siltex *st, const uint8_t *b, size_t size)
     silk_target_init(&t, 32, 24, 0, 8, SILK_PIX_RGB888, bands + 0, depth);
     static uint8_t band[32 * 8 * 3];
     t.color = band;
-    silk_sink sink = { siltex_band, bands };
+    silk_sink sink = { .band = siltex_band, .user = bands };
     s = silk_render_bands(&a, &m, &v, &h, &ro, &t, &sink, NULL, &err);
     fuzz_expect(s == SILK_OK, "the bands failed where the frame did not");
     fuzz_expect(memcmp(whole, bands, sizeof whole) == 0, "bands differ from the whole frame");

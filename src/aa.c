@@ -137,34 +137,61 @@ static int64_t area2(const silk_aa_pt *a, const silk_aa_pt *b, const silk_aa_pt 
     return (int64_t)(b->x - a->x) * (c->y - a->y) - (int64_t)(b->y - a->y) * (c->x - a->x);
 }
 
+#define AL(n) (((size_t)(n) + SILK_ARENA_ALIGN - 1) & ~(size_t)(SILK_ARENA_ALIGN - 1))
+
+/* The one block silk_aa_begin takes, before its pixel list: aprons rows
+ * of colour and depth, then a projected point per record, the side
+ * walk's, one vertex-stage output and one curve, each part aligned. */
+static size_t fixed_bytes(size_t w, size_t bpp, int aprons, uint32_t max_recs)
+{
+    return (size_t)aprons * (AL(w * bpp) + AL(w * sizeof(uint32_t))) + AL(max_recs * sizeof(silk_aa_pt)) +
+           AL(SILK_AA_WALK * sizeof(silk_aa_pt)) + AL(sizeof(silk_vertex_out)) + AL(sizeof(silk_curve));
+}
+
+/* An outline crosses a band about once per row or column it spans: room
+ * for three times the band's width and height (a knot at 640x480 needs
+ * 2.4 times). */
+static size_t px_wanted(size_t w, int rows)
+{
+    return 3 * (w + (size_t)rows);
+}
+
 int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
 {
     memset(aa, 0, sizeof *aa);
     aa->t = t;
     size_t bpp = silk_pixfmt_bytes(t->fmt), w = (size_t)t->width;
+    int y[2] = { t->y0 - 1, t->y0 + t->rows }, aprons = 0;   /* none outside the frame */
+    for (int i = 0; i < 2; i++) aprons += y[i] >= 0 && y[i] < t->height;
+    size_t fixed = fixed_bytes(w, bpp, aprons, max_recs), free_bytes = silk_arena_free_bytes(a);
+    if (free_bytes < fixed) return 0;
+    /* the pixel list: what is wanted, or what is left (the rest is left
+     * aliased, and counted); the renderer leaves silk_aa_bytes free */
+    size_t want = px_wanted(w, t->rows), room = (free_bytes - fixed) / sizeof *aa->px;
+    aa->cap = (uint32_t)(want < room ? want : room);
+    uint8_t *p = silk_arena_alloc_top(a, fixed + aa->cap * sizeof *aa->px, SILK_MEM_FRAME);
+    if (!p) return 0;
     for (int i = 0; i < 2; i++) {
-        int y = i ? t->y0 + t->rows : t->y0 - 1;
-        if (y < 0 || y >= t->height) continue;   /* no apron outside the frame */
-        uint8_t *c = silk_arena_array_top(a, w, bpp, SILK_MEM_FRAME);
-        uint32_t *d = silk_arena_array_top(a, w, sizeof *d, SILK_MEM_FRAME);
-        if (!c || !d) return 0;
-        silk_target_init(&aa->apron[i], t->width, t->height, y, 1, t->fmt, c, d);
+        if (y[i] < 0 || y[i] >= t->height) continue;
+        silk_target_init(&aa->apron[i], t->width, t->height, y[i], 1, t->fmt, p, (uint32_t *)(void *)(p + AL(w * bpp)));
+        p += AL(w * bpp) + AL(w * sizeof(uint32_t));
     }
     aa->npt = max_recs;
-    aa->pt = silk_arena_array_top(a, max_recs, sizeof *aa->pt, SILK_MEM_FRAME);
+    aa->pt = (silk_aa_pt *)(void *)p;
     /* a side's scratch from the arena, not the stack: the walk is the deepest call of a frame */
-    aa->walk = silk_arena_array_top(a, SILK_AA_WALK, sizeof *aa->walk, SILK_MEM_FRAME);
-    aa->out = silk_arena_array_top(a, 1, sizeof *aa->out, SILK_MEM_FRAME);
-    aa->curve = silk_arena_array_top(a, 1, sizeof *aa->curve, SILK_MEM_FRAME);
-    /* An outline crosses a band about once per row or column it spans:
-     * room for three times the band's width and height (a knot at 640x480
-     * needs 2.4 times), within half of what is left (the rest is left
-     * aliased, and counted). */
-    uint64_t want = 3 * ((uint64_t)t->width + (uint64_t)t->rows), room = silk_arena_free_bytes(a) / 2 / sizeof *aa->px;
-    aa->cap = (uint32_t)(want < room ? want : room);
-    aa->px = silk_arena_array_top(a, aa->cap, sizeof *aa->px, SILK_MEM_FRAME);
-    return aa->pt && aa->walk && aa->out && aa->curve && aa->px;
+    aa->walk = (silk_aa_pt *)(void *)(p += AL(max_recs * sizeof(silk_aa_pt)));
+    aa->out = (silk_vertex_out *)(void *)(p += AL(SILK_AA_WALK * sizeof(silk_aa_pt)));
+    aa->curve = (silk_curve *)(void *)(p += AL(sizeof(silk_vertex_out)));
+    aa->px = (silk_aa_px *)(void *)(p + AL(sizeof(silk_curve)));
+    return 1;
 }
+
+size_t silk_aa_bytes(const silk_target *t, uint32_t max_recs)
+{
+    size_t w = (size_t)t->width;
+    return fixed_bytes(w, silk_pixfmt_bytes(t->fmt), 2, max_recs) + AL(px_wanted(w, t->rows) * sizeof(silk_aa_px));
+}
+#undef AL
 
 /* Pixel (x, y) of the band or its aprons: colour and depth; 0 if neither has it. */
 static int fetch(const silk_aa *aa, int x, int y, uint32_t *rgb, uint32_t *d)

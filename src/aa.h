@@ -57,6 +57,10 @@ typedef struct silk_aa {
  * which the caller then draws (aa->apron[i], rows 1).  0 when it does not
  * fit (the band is then left aliased). */
 int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs);
+/* The most silk_aa_begin takes for a band of t's width, rows and format
+ * (both aprons counted): what the renderer leaves free for it when it keeps
+ * things for speed, and what silk_budget_frame counts. */
+size_t silk_aa_bytes(const silk_target *t, uint32_t max_recs);
 
 /* Whether input triangle t's share can hold an outline side: a side of t
  * against nothing or between a front- and a back-facing triangle, or (with

@@ -174,6 +174,7 @@ typedef struct frame {
     size_t vc_bytes;          /* the arena the vertex cache, the facing memo and the rest of fast take */
     size_t tan_bytes;         /* the arena the kept edge tangents take (keep_tangents) */
     size_t peak_before;       /* the arena's top high-water before those */
+    size_t reserve;           /* what a band's outline takes (outline_reserve): those leave it free */
     uint8_t smooth;           /* SMOOTH's plan made (else the coarse mesh's shares) */
     uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
     uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
@@ -443,6 +444,46 @@ static void share_part(frame *f, uint32_t t)
     }
 }
 
+/* Whether frame_aa anti-aliases the outline of frame f in band t with
+ * silk_aa_begin's scratch: not with wire, not a stored frame's, not where
+ * there is no depth, not siltex's with lines (its fragment stage draws
+ * them, aliased).  (Clip mode's is its own, clip.c.)  Not inlined:
+ * frame_aa and outline_reserve share it. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int outline_wanted(const frame *f, const silk_render_opts *o, const silk_target *t)
+{
+    return SILK_AA && o->aa && !o->wire && f->part == share_part && t->depth && !(SILTEX_FRAME(f) && o->lines);
+}
+
+/* What siltex_outline takes for a band of t at most: colour, depth and
+ * mask over its rows and their two aprons. */
+static size_t siltex_outline_bytes(const silk_target *t)
+{
+    size_t w = (size_t)t->width, rows = (size_t)t->rows + 2, al = SILK_ARENA_ALIGN - 1;
+    return ((w * rows * 3 + al) & ~al) + ((w * rows * sizeof(uint32_t) + al) & ~al) + ((rows * ((w + 7) / 8) + al) & ~al);
+}
+
+/* What frame_aa's silk_aa_begin takes for a band of t, or 0 where the
+ * frame draws no outline.  What the frame keeps for speed comes from what
+ * the arena has beyond it (spare), so that a frame given exactly its need
+ * (silk_frame_stats.frame_bytes) draws every outline pixel. */
+static size_t outline_reserve(const frame *f, const silk_render_opts *o, const silk_target *t)
+{
+    if (!SILK_AA || CLIP_FRAME(f) || !outline_wanted(f, o, t)) return 0;
+    size_t bytes = silk_aa_bytes(t, f->smooth ? f->sil.max_recs : 3);
+    if (SILTEX_FRAME(f)) bytes += siltex_outline_bytes(t);
+    return bytes;
+}
+
+/* The arena free beyond the outline's reserve. */
+static size_t spare(const frame *f, const silk_arena *a)
+{
+    size_t free_bytes = silk_arena_free_bytes(a);
+    return free_bytes > f->reserve ? free_bytes - f->reserve : 0;
+}
+
 /* The vertex cache (corner_cached), from at most half of the arena left
  * once the frame has what it needs: a power of two slots, enough for every
  * normal of the mesh when there is room, else fewer (more misses, the same
@@ -454,7 +495,7 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
     const silk_mesh *m = f->geom.mesh;
     frame_fast *x = f->fast;
     if (!SILK_VERTEX_CACHE || f->part != share_part || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
-    const size_t slot = sizeof *x->vc + 3 * sizeof *x->vc_tag, half = silk_arena_free_bytes(a) / 2,
+    const size_t slot = sizeof *x->vc + 3 * sizeof *x->vc_tag, half = spare(f, a) / 2,
                  free0 = silk_arena_free_bytes(a);
     size_t room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
     /* where each vertex of the mesh is placed (draw_direct: FLAT's
@@ -485,15 +526,16 @@ static void vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 
 /* The outline's memo of which way each input triangle faces
  * (silk_aa.facing), under the same budget as the vertex cache and, like
- * it, not part of the frame's need: without it each triangle's facing is
- * worked out up to four times a band, with the same answers. */
+ * it, not part of the frame's need (and left out with its code,
+ * SILK_VERTEX_CACHE 0): without it each triangle's facing is worked out
+ * up to four times a band, with the same answers. */
 static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
 {
-    if (!SILK_AA) return;
-    size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a),
+    if (!SILK_AA || !SILK_VERTEX_CACHE) return;
+    size_t n = ((size_t)f->geom.mesh->ntris + 3) / 4, free0 = silk_arena_free_bytes(a), room = spare(f, a),
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
     if (!o->aa || o->wire || f->part != share_part || CLIP_FRAME(f) || n + SILK_ARENA_ALIGN > budget ||
-        n + SILK_ARENA_ALIGN > free0 / 2)
+        n + SILK_ARENA_ALIGN > room / 2)
         return;
     f->facing = silk_arena_array_top(a, n, 1, SILK_MEM_FRAME);   /* zeroed: nothing known yet */
     if (!f->facing) return;
@@ -501,44 +543,37 @@ static void facing_memo(frame *f, silk_arena *a, const silk_render_opts *o)
      * (silk_aa_candidates), a bit a triangle, when the budget has room too */
     size_t nc = ((size_t)f->geom.mesh->ntris + 7) / 8;
     if (SILK_AA_CANDIDATES && f->geom.mesh->closed_outward && n + nc + 2 * SILK_ARENA_ALIGN <= budget &&
-        n + nc + 2 * SILK_ARENA_ALIGN <= free0 / 2)
+        n + nc + 2 * SILK_ARENA_ALIGN <= room / 2)
         f->fast->cand = silk_arena_array_top(a, nc, 1, SILK_MEM_FRAME);
     f->vc_bytes += free0 - silk_arena_free_bytes(a);
 }
 
 /* SMOOTH: the carrying edges' tangents kept (silk_sil_keep_tangents), as
- * many as fit the arena left once the frame has what it needs and its
- * vertex cache (half of it when anti-aliased outlines take their scratch
- * per band after it): 24 bytes an edge (a few KiB for all) that spare
- * remaking a bridge whenever an edge's curve is asked for, a tenth to a
- * sixth of a smooth frame's instructions.  Not part of the frame's need
- * either: a part without the room computes the same tangents. */
-static void keep_tangents(frame *f, silk_arena *a, const silk_render_opts *o)
+ * many as fit the arena left once the frame has what it needs, its vertex
+ * cache and the outline's reserve: 24 bytes an edge (a few KiB for all)
+ * that spare remaking a bridge whenever an edge's curve is asked for, a
+ * tenth to a sixth of a smooth frame's instructions.  Not part of the
+ * frame's need either: a part without the room computes the same
+ * tangents. */
+static void keep_tangents(frame *f, silk_arena *a)
 {
-    size_t room = silk_arena_free_bytes(a);
-    if (SILK_AA && o->aa && !o->wire) room /= 2;
-    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, room);
+    if (f->smooth) f->tan_bytes = silk_sil_keep_tangents(&f->sil, spare(f, a));
 }
 
 /* SMOOTH: room for the shares of the triangles on, carrying or moved by
  * the silhouette as they are first built (share_part), which a frame builds again for the depth pass
  * and for the anti-aliased outline: under the vertex cache's budget, from
- * half of what the arena has left beyond what the outline of a band of t
- * takes (silk_aa_begin: its room is unchanged), as many as fit.  Not part
- * of the frame's need either. */
-static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o, const silk_target *t)
+ * half of what the arena has left beyond the outline's reserve, as many as
+ * fit.  Not part of the frame's need either. */
+static void keep_shares(frame *f, silk_arena *a, const silk_render_opts *o)
 {
     frame_fast *x = f->fast;
     uint32_t n = f->smooth ? f->geom.mesh->ntris : 0;   /* ks_at: per input triangle (share_kept) */
     if (!SILK_KEEP_SHARES || !n || n >= UINT32_MAX / 4) return;
-    size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN;
-    if (SILK_AA)
-        reserve += 2 * (3 * ((size_t)t->width + (size_t)t->rows) * sizeof(silk_aa_px)) +
-                   2 * (size_t)t->width * (silk_pixfmt_bytes(t->fmt) + sizeof(uint32_t)) +
-                   ((size_t)f->sil.max_recs + SILK_AA_WALK) * sizeof(silk_aa_pt) + sizeof(silk_vertex_out);
+    size_t free0 = silk_arena_free_bytes(a), reserve = 16 * SILK_ARENA_ALIGN, left = spare(f, a);
     size_t budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
-    size_t room = free0 > reserve ? (free0 - reserve) / 2 : 0, per = share_bytes(f->sil.max_recs, f->sil.max_tris,
-                                                                                  f->sil.max_curves);
+    size_t room = left > reserve ? (left - reserve) / 2 : 0, per = share_bytes(f->sil.max_recs, f->sil.max_tris,
+                                                                                f->sil.max_curves);
     if (room > budget) room = budget;
     if (room < (size_t)n * sizeof *x->ks_at + per + 2 * SILK_ARENA_ALIGN) return;
     room -= (size_t)n * sizeof *x->ks_at + 2 * SILK_ARENA_ALIGN;
@@ -597,10 +632,10 @@ static void depth_wins(frame *f, silk_arena *a, const silk_render_opts *o, const
     uint64_t n = f->geom.mesh->ntris;
     size_t free0 = silk_arena_free_bytes(a), bytes = (size_t)n * sizeof *x->won + SILK_ARENA_ALIGN,
            budget = o->vertex_cache_bytes > f->vc_bytes ? o->vertex_cache_bytes - f->vc_bytes : 0;
-    if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > free0 / 2) return;
+    if (!f->smooth || n * 16 > (uint64_t)t->width * t->height || bytes > budget || bytes > spare(f, a) / 2) return;
     x->won = silk_arena_array_top(a, n, sizeof *x->won, SILK_MEM_FRAME);   /* each written in the depth pass */
     /* the back faces put off, from what is left of the budget and of half the arena */
-    size_t left = budget - bytes, free1 = silk_arena_free_bytes(a) / 2, cap = BACK_MAX;
+    size_t left = budget - bytes, free1 = spare(f, a) / 2, cap = BACK_MAX;
     if (left > free1) left = free1;
     if (cap > left / sizeof *x->back) cap = left / sizeof *x->back;
     if (SILK_BACK_FACES_LAST && x->won && cap > 16 &&
@@ -1268,7 +1303,8 @@ static void hull_draw(frame *f, const silk_render_opts *o, silk_target *s, const
  * aprons'; where the pixels drawn from a front face meet those that show
  * what lies behind it, the front faces once more through the margin stage
  * (siltex.c), only there; then those pixels blended by their coverage.  0
- * when the arena has no room for it. */
+ * when the arena has no room for it (siltex_outline_bytes: what the
+ * renderer leaves free for it). */
 static int siltex_outline(frame *f, silk_arena *a, const silk_render_opts *o, silk_aa *aa)
 {
     const silk_target *t = aa->t;
@@ -1341,8 +1377,7 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
     }
     silk_aa aa;
     silk_arena_mark mark = silk_arena_top_mark(a);
-    int wanted = o->aa && !o->wire && f->part == share_part && t->depth &&
-                 !(SILTEX_FRAME(f) && o->lines);   /* its lines are drawn by its fragment stage, aliased */
+    int wanted = outline_wanted(f, o, t);
     if (!wanted || !silk_aa_begin(&aa, a, t, f->smooth ? f->sil.max_recs : 3)) {
         if (wanted) stats->aa_aliased++;
         silk_aa_alpha(t);
@@ -1373,13 +1408,14 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
                          const silk_target *t)
 {
     f->peak_before = a->top_peak;
+    f->reserve = outline_reserve(f, o, t);
     vertex_cache(f, a, o);
     if (SILK_DRAW_DIRECT && f->fast->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
     f->cull = back_faces_hidden(f, m, h, o);
     facing_memo(f, a, o);
-    keep_tangents(f, a, o);
+    keep_tangents(f, a);
     depth_wins(f, a, o, t);
-    keep_shares(f, a, o, t);
+    keep_shares(f, a, o);
 }
 
 /* The top of the arena the frame needed since mark: its high-water, the
@@ -1446,8 +1482,10 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     silk_frame_stats local;
     if (!stats) stats = &local;
     memset(stats, 0, sizeof *stats);
-    if (!a || !band || !sink || !sink->band || band->rows < 1 || band->height < 1)
-        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: missing argument");
+    if (!a || !band || !sink || !sink->band || band->rows < 1 || band->height < 1 ||
+        (sink->color2 == NULL) != (sink->wait == NULL))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_bands: missing argument (a second band buffer "
+                         "needs the sink's wait)");
     if (check_frame_size(band, err) != SILK_OK) return SILK_ERR_RANGE;
 
     silk_arena_mark mark = silk_arena_top_mark(a);
@@ -1464,14 +1502,21 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         frame_extras(&f, a, m, h, o, band);
         share_rows(&f, o, band);
     }
-    for (int y0 = 0; st == SILK_OK && y0 < band->height; y0 += rows) {
-        band->y0 = y0;
-        band->rows = band->height - y0 < rows ? band->height - y0 : rows;
-        frame_draw(&f, o, band);
-        frame_aa(&f, a, v, o, band, stats);
-        if (sink->band(sink->user, band))
-            st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
+    /* With two colour buffers the bands alternate, each drawn once the sink
+     * says it has done sending it (render.h). */
+    uint8_t *const color0 = band->color;
+    for (int y0 = 0, k = 0; st == SILK_OK && y0 < band->height; y0 += rows, k ^= 1) {
+        band->color = k && sink->color2 ? sink->color2 : color0;
+        if (!sink->wait || !sink->wait(sink->user, band->color)) {
+            band->y0 = y0;
+            band->rows = band->height - y0 < rows ? band->height - y0 : rows;
+            frame_draw(&f, o, band);
+            frame_aa(&f, a, v, o, band, stats);
+            if (!sink->band(sink->user, band)) continue;
+        }
+        st = silk_fail(err, SILK_ERR_IO, NULL, 0, "output sink stopped at row %d", y0);
     }
+    band->color = color0;
     band->y0 = 0;
     band->rows = rows;
     if (st == SILK_OK && CLIP_FRAME(&f)) stats->clip_spans = f.clip->spans;

@@ -169,11 +169,29 @@ silk_status silk_render(silk_arena *a, const silk_mesh *m, const silk_view *v, c
  * sink->band (as an SPI display driver takes it).  The per-frame silhouette
  * work runs once per frame, not once per band; a streamed frame rebuilds,
  * per band, only the triangles that reach into it (stored frames go through
- * the vertex stage once).  Pixels are identical to silk_render()'s. */
+ * the vertex stage once).  Pixels are identical to silk_render()'s.
+ *
+ * Double-buffered bands, for a sink that sends a band while the next one is
+ * drawn (a DMA transfer to an SPI panel, platform/panel/silk_panel.h): give
+ * color2, a second colour buffer of band->rows * band->stride bytes, and
+ * wait.  The bands are then drawn into band->color and color2 in turn
+ * (the first band of every frame into band->color), and before the
+ * renderer draws into either it calls wait(user, buffer), which returns 0
+ * once the sink has finished reading that buffer (at once when it is not
+ * being sent), or non-zero to stop the frame (SILK_ERR_IO).  band() may
+ * then return as soon as the transfer has started.  The call returns after
+ * handing over the last band, which may still be in transfer: the sink's
+ * own flush (silk_panel_flush) waits for it.  Only the colour is double
+ * buffered: the depth buffer (and alpha, if any) is the renderer's again
+ * when band() returns.  color2 and wait go together (one alone is
+ * SILK_ERR_ARG); both NULL, the default of a sink set up as { .band = f, .user = u },
+ * is one buffer, which the sink is done with when band() returns. */
 typedef struct silk_sink {
     /* return 0 to go on, non-zero to stop the frame (reported as SILK_ERR_IO) */
     int (*band)(void *user, const silk_target *band);
     void *user;
+    uint8_t *color2;                                  /* the second colour buffer, or NULL */
+    int (*wait)(void *user, const uint8_t *color);    /* that buffer free: 0 to go on */
 } silk_sink;
 
 silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *v, const silk_hal *h,

@@ -19,6 +19,7 @@
 #include "silmap.h"
 #include "siltex.h"
 #include "visibility.h"
+#include "budget.h"
 #include "render.h"
 
 #endif

@@ -43,7 +43,7 @@ FW_CONFIG := $(call config_flag,$(BOARD_CONFIG))
 FW_CFLAGS := -std=c11 $(WARN) $(BOARD_OPT) $(FW_CONFIG) -g $(BOARD_ARCH) -ffunction-sections -fdata-sections -Iinclude
 FW_HOST_CFLAGS = $(CFLAGS_BASE) $(FW_CONFIG) $(SANFLAGS) $(CFLAGS)
 FW_DEFS  := -DFW_BOARD='"$(BOARD)"' -DFW_BAND_ROWS=$(BOARD_BAND_ROWS) -DFW_ARENA_BYTES=$(BOARD_ARENA_BYTES) \
-            -DFW_FORMAT=$(BOARD_FORMAT)
+            -DFW_FORMAT=$(BOARD_FORMAT) $(BOARD_FW_DEFS)
 FW_LDFLAGS := $(BOARD_ARCH) -nostartfiles -specs=nano.specs -specs=nosys.specs -Wl,--gc-sections \
               -T platform/mps2/mps2.ld -Wl,--defsym=__flash_size=$(BOARD_FLASH_BYTES) \
               -Wl,--defsym=__ram_size=$(BOARD_RAM_BYTES) -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES)
@@ -118,7 +118,7 @@ FW_PACK_EXTRA_globe := --texture checker:64 --texture-format rgb565
 
 # The sizes are compiled and linked in: remembered like the pack options.
 FW_SIZES := $(BOARD_FLASH_BYTES) $(BOARD_RAM_BYTES) $(BOARD_STACK_BYTES) $(BOARD_ARENA_BYTES) \
-            $(BOARD_BAND_ROWS) $(BOARD_FORMAT) $(BOARD_TIMER)
+            $(BOARD_BAND_ROWS) $(BOARD_FORMAT) $(BOARD_TIMER) $(BOARD_FW_DEFS)
 $(FW_OUT)/defs.args: FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(FW_SIZES)' | cmp -s - $@ || echo '$(FW_SIZES)' > $@
@@ -138,7 +138,7 @@ $(FW_OUT)/$(1)/fw.elf: $(FW_OUT)/$(1)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk
 
 $(FW_OUT)/$(1)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
                         $(FW_OUT)/$(1)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
-	$(CC) $(FW_HOST_CFLAGS) $(FW_DEFS) -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) \
+	$(CC) $(FW_HOST_CFLAGS) $(FW_DEFS) -DFW_REPORT_BUDGET -DFW_MODEL_NAME='"$(1)"' -Iplatform/mps2 -I$(FW_OUT)/$(1) \
 	    -o $$@ platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
 
 run-$(1): $(FW_OUT)/$(1)/fw.elf
@@ -163,7 +163,7 @@ $(FW_SOAK)/soak.elf: $(FW_SOAK)/fw_soak.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a pla
 $(FW_SOAK)/soak-host: platform/mps2/fw_soak.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
                       $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(BOARD_CORE_DEFS) $(FW_DEFS) -Iplatform/mps2 -I$(FW_OUT)/$(FW_SOAK_MODEL) \
+	$(CC) $(FW_HOST_CFLAGS) $(FW_DEFS) -Iplatform/mps2 -I$(FW_OUT)/$(FW_SOAK_MODEL) \
 	    -o $@ platform/mps2/fw_soak.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
 
 -include $(wildcard $(FW_DIR)/obj/*/*.d $(FW_DIR)/obj/*/*/*.d $(FW_DIR)/host-obj/*/*.d)

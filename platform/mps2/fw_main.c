@@ -16,7 +16,10 @@
  *
  * Command line: PROGRAM [PREFIX]; with PREFIX, camera C's two frames are
  * written to PREFIX-cC-flat.ppm and PREFIX-cC-smooth.ppm.  Report lines are
- * "fw NAME key=value ..." on the console (docs/small-devices.md).
+ * "fw NAME key=value ..." on the console (docs/small-devices.md).  The last
+ * is "fw result=ok" (exit status 0), "fw result=error" (1), or, when frames
+ * were drawn unsmoothed because the arena could not hold their plan,
+ * "fw result=fell_back frames=N fell_back=N smooth_fell_back=N" (2).
  *
  * Speed: fw_ticks() is read around each silk_render_bands() call and around
  * each band handed to the sink, so "fw time" gives the renderer's own ticks
@@ -224,6 +227,7 @@ typedef struct fw_pass {
     int stages;                  /* time the HAL's stages, write nothing */
     uint32_t overhead;           /* timing_overhead(), for the report */
     uint32_t clock_overhead;     /* clock_overhead(), for the report */
+    int frames, fell_back, smooth_fell_back;   /* the frames written, and how many fell back */
 } fw_pass;
 
 /* The stage pass of one frame: unwritten, the HAL's stages timed.  Never
@@ -239,7 +243,7 @@ static int time_stages(silk_arena *a, const silk_mesh *m, const silk_view *view,
 {
     timed_hal th;
     timed_hal_init(&th, hal);
-    silk_sink none = { discard_band, NULL };
+    static const silk_sink none = { .band = discard_band, .user = NULL };   /* not on the stack */
     silk_stage_clock clock = { clock_now, NULL, { 0 }, { 0 } };
     ro->clock = &clock;
     silk_status s = silk_render_bands(a, m, view, hal, ro, band, &none, st, err);
@@ -302,8 +306,80 @@ static int open_frame(band_out *o, int k, const char *mname, const silk_camera *
     return 1;
 }
 
+#ifdef FW_REPORT_BUDGET
+/* The arena silk_budget_frame() says a frame of each mode can take at
+ * most (silk/budget.h), and each frame's own need checked against it: a
+ * build with -DFW_REPORT_BUDGET (the host build of the scene, and boards
+ * with the code bytes to spare) says "fw budget mode=M bands=N frame=N
+ * total=N" and refuses a frame that needed more than its bound. */
+static size_t budget_frame[2];
+
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int report_budget(const silk_mesh *m, const silk_camera *c0, int rows)
+{
+    for (int mode = 0; mode < 2; mode++) {
+        silk_render_opts ro;
+        silk_render_opts_default(&ro);
+        ro.mode = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+        silk_budget b;
+        silk_error err;
+        if (silk_budget_frame(m, &ro, c0->width, c0->height, rows, FW_FORMAT, 0, &b, &err) != SILK_OK) {
+            say("fw error %s", err.msg);
+            return 0;
+        }
+        budget_frame[mode] = b.frame;
+        say("fw budget mode=%s bands=%lu frame=%lu total=%lu", mode ? "smooth" : "flat", (unsigned long)b.bands,
+            (unsigned long)b.frame, (unsigned long)b.total);
+    }
+    return 1;
+}
+#endif
+
+/* The frame written: to PREFIX's file (or nowhere), checksummed and
+ * reported.  Not inlined, like time_stages: each pass's own locals are not
+ * on the stack under the other's frames. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int write_frame(silk_arena *a, const silk_mesh *m, const silk_view *view, const silk_hal *hal,
+                       const silk_render_opts *ro, silk_target *band, fw_pass *pass, int frame, int k,
+                       silk_frame_stats *st, silk_error *err)
+{
+    const char *mname = ro->mode == SILK_MODE_FLAT ? "flat" : "smooth";
+    band_out o = { -1, 0, 2166136261u, 0, 0 };
+    if (pass->files && !open_frame(&o, k, mname, fwmodel_camera(k))) return 1;
+    silk_sink sink = { .band = send_band, .user = &o };
+    o.frame_ticks = fw_ticks();
+    silk_status s = silk_render_bands(a, m, view, hal, ro, band, &sink, st, err);
+    o.frame_ticks = fw_ticks() - o.frame_ticks;
+    if (o.handle >= 0 && fw_close(o.handle) != 0) o.failed = 1;
+    if (s != SILK_OK || o.failed) {
+        say("fw error frame=%d %s", frame, s != SILK_OK ? err->msg : "writing to the host failed");
+        return 1;
+    }
+    say("fw frame=%d camera=%d mode=%s tris=%lu silhouette_tris=%lu samples=%lu frame_bytes=%lu fell_back=%d "
+        "crc=%08lx",
+        frame, k, mname, (unsigned long)st->tris_drawn, (unsigned long)st->silhouette_tris,
+        (unsigned long)st->samples, (unsigned long)st->frame_bytes, st->fell_back, (unsigned long)o.crc);
+#ifdef FW_REPORT_BUDGET
+    if (st->frame_bytes > budget_frame[ro->mode == SILK_MODE_SMOOTH]) {
+        say("fw error frame=%d needed %lu bytes, over its bound %lu", frame, (unsigned long)st->frame_bytes,
+            (unsigned long)budget_frame[ro->mode == SILK_MODE_SMOOTH]);
+        return 1;
+    }
+#endif
+    pass->frames++;
+    pass->fell_back += st->fell_back != 0;
+    pass->smooth_fell_back += st->fell_back && ro->mode == SILK_MODE_SMOOTH;
+    say("fw time frame=%d camera=%d mode=%s ticks=%lu sink_ticks=%lu render_ticks=%lu", frame, k, mname,
+        (unsigned long)o.frame_ticks, (unsigned long)o.ticks, (unsigned long)(o.frame_ticks - o.ticks));
+    return 0;
+}
+
 static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, silk_target *band,
-                      const fw_pass *pass, int frame)
+                      fw_pass *pass, int frame)
 {
     const silk_camera *cam = fwmodel_camera(k);
     silk_view view;
@@ -321,29 +397,9 @@ static int render_one(silk_arena *a, const silk_mesh *m, int k, silk_mode mode, 
     silk_render_opts_default(&ro);
     ro.mode = mode;
     ro.vertex_cache_bytes = FW_VERTEX_CACHE_BYTES;
-    const char *mname = mode == SILK_MODE_FLAT ? "flat" : "smooth";
     silk_frame_stats st;
     if (pass->stages) return time_stages(a, m, &view, &hal, &ro, band, pass, frame, k, &st, &err);
-
-    band_out o = { -1, 0, 2166136261u, 0, 0 };
-    if (pass->files && !open_frame(&o, k, mname, cam)) return 1;
-    silk_sink sink = { send_band, &o };
-    o.frame_ticks = fw_ticks();
-    silk_status s = silk_render_bands(a, m, &view, &hal, &ro, band, &sink, &st, &err);
-    o.frame_ticks = fw_ticks() - o.frame_ticks;
-    if (o.handle >= 0 && fw_close(o.handle) != 0) o.failed = 1;
-    if (s != SILK_OK || o.failed) {
-        say("fw error frame=%d %s", frame, s != SILK_OK ? err.msg : "writing to the host failed");
-        return 1;
-    }
-    say("fw frame=%d camera=%d mode=%s tris=%lu silhouette_tris=%lu samples=%lu frame_bytes=%lu fell_back=%d "
-        "crc=%08lx",
-        frame, k, mname, (unsigned long)st.tris_drawn, (unsigned long)st.silhouette_tris,
-        (unsigned long)st.samples, (unsigned long)st.frame_bytes, st.fell_back, (unsigned long)o.crc);
-    say("fw time frame=%d camera=%d mode=%s ticks=%lu sink_ticks=%lu render_ticks=%lu", frame, k, mname,
-        (unsigned long)o.frame_ticks, (unsigned long)o.ticks, (unsigned long)(o.frame_ticks - o.ticks));
-
-    return 0;
+    return write_frame(a, m, &view, &hal, &ro, band, pass, frame, k, &st, &err);
 }
 
 /* What the frames written needed: the arena's high-water marks by purpose,
@@ -412,21 +468,39 @@ int fw_scene(void)
         return 1;
     }
     size_t band_bytes = arena.bottom;
+#ifdef FW_REPORT_BUDGET
+    if (!report_budget(&mesh, c0, rows)) return 1;
+#endif
     silk_target band;
     silk_target_init(&band, c0->width, c0->height, 0, rows, FW_FORMAT, color, depth);
 
     int rc = 0;
-    fw_pass pass = { files, 0, 0, 0 };
+    fw_pass pass = { files, 0, 0, 0, 0, 0, 0 };
     for (int p = 0; p < 2; p++) {
         if (p == 1) {   /* the stage pass last, so that its timing adds nothing to the memory reported */
             report_memory(&arena, band_bytes);
             if (rc) break;
-            pass = (fw_pass){ 0, 1, timing_overhead(), clock_overhead() };
+            pass.files = 0;   /* the counts of the frames written stay */
+            pass.stages = 1;
+            pass.overhead = timing_overhead();
+            pass.clock_overhead = clock_overhead();
         }
         for (int k = 0, frame = 0; k < fwmodel_NCAMERAS && !rc; k++)
             for (int mode = 0; mode < 2 && !rc; mode++)
                 rc = render_one(&arena, &mesh, k, mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT, &band, &pass, frame++);
     }
-    say("fw result=%s", rc ? "error" : "ok");
-    return rc;
+    /* A frame drawn unsmoothed for lack of RAM is not a success: say how
+     * many, and exit 2 (1 is an error), so that a run that only checks the
+     * status sees it too. */
+    if (rc) {
+        say("fw result=error");
+        return 1;
+    }
+    if (pass.fell_back) {
+        say("fw result=fell_back frames=%d fell_back=%d smooth_fell_back=%d", pass.frames, pass.fell_back,
+            pass.smooth_fell_back);
+        return 2;
+    }
+    say("fw result=ok");
+    return 0;
 }

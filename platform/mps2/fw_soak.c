@@ -175,7 +175,7 @@ int fw_scene(void)
             ro.mode = m ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
             ro.vertex_cache_bytes = 0;
             uint32_t crc = 2166136261u;
-            silk_sink sink = { checksum_band, &crc };
+            silk_sink sink = { .band = checksum_band, .user = &crc };
             silk_frame_stats st;
             arena.peak = arena.bottom + arena.top;   /* this frame's high-water mark */
             if (silk_render_bands(&arena, &mesh, &view, &hal, &ro, &band, &sink, &st, &err) != SILK_OK) {

@@ -1,7 +1,8 @@
 /*
- * startup.c - reset and exceptions for the Cortex-M firmware (M3 and M0): the
- * vector table, copying .data from flash, zeroing .bss, painting the stack so
- * its high-water mark can be measured, starting the board's tick counter
+ * startup.c - reset and exceptions for the Cortex-M firmware (M0, M3, M4,
+ * M7): the vector table, copying .data from flash, zeroing .bss, painting
+ * the stack so its high-water mark can be measured, the FPU enabled on a
+ * hard-float build, starting the board's tick counter
  * (fw_timer_start, timer_cmsdk.c or timer_nrf51.c), then the program,
  * fw_scene().  Only Thumb-1 instructions: it runs on a Cortex-M0 too.
  *
@@ -24,6 +25,14 @@ void Fault_Handler(void);
 
 void Reset_Handler(void)
 {
+#if defined(__ARM_FP)
+    /* A part with an FPU built for the hard-float ABI (Cortex-M4F, M7):
+     * coprocessors 10 and 11 on (CPACR) before anything else runs; the
+     * core has no floating point, but the compiler may move data through
+     * the FPU's registers and libc may use them. */
+    *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
+    __asm__ volatile("dsb\n\tisb" ::: "memory");
+#endif
     uint32_t *src = &_sidata;
     for (uint32_t *dst = &_sdata; dst < &_edata;) *dst++ = *src++;
     for (uint32_t *dst = &_sbss; dst < &_ebss;) *dst++ = 0;

@@ -1,8 +1,11 @@
 #!/bin/sh
 # cli_qemu.sh - the firmware boards under QEMU, byte for byte against the
 # host: the Cortex-M3 with 32 KiB of RAM (boards/mps2-an385, 320x240), the
-# same with 64 KiB, anti-aliasing and textures (boards/mps2-an385-full) and
-# the Cortex-M0 with 16 KiB of RAM (boards/microbit, 160x128).
+# same with 64 KiB, anti-aliasing and textures (boards/mps2-an385-full),
+# the Cortex-M4 with 128 KiB (boards/mps2-an386) and the Cortex-M7 with
+# 512 KiB (boards/mps2-an500, anti-aliased), both drawing a 2 000- and a
+# 5 000-triangle model at 320x240, and the Cortex-M0 with 16 KiB of RAM
+# (boards/microbit, 160x128).
 #
 # `make test` builds, per model of each board (mps2-an385: bunny-500 and
 # knot-480; mps2-an385-full: bunny-500 and a globe from `silk gen --uv` with
@@ -16,7 +19,8 @@
 #                           fw/ram256k/machine)
 # Each firmware renders 3 views x (flat, smooth) in bands and writes the
 # frames to the host through semihosting.  Checks:
-#   - it runs to "fw result=ok" and exits 0 (semihosting SYS_EXIT);
+#   - it runs to "fw result=ok" and exits 0 (semihosting SYS_EXIT): a frame
+#     that fell back for lack of RAM ends it with "fw result=fell_back";
 #   - no frame falls back for lack of RAM, and every frame equals `silk
 #     render` of the same mesh, view and settings (the --eye is the exact
 #     one the header records);
@@ -24,7 +28,8 @@
 #     fall-back, checksum) equal fw-host's;
 #   - the measured RAM (static + arena high-water + stack high-water) is
 #     within the linked budget, and the stack did not reach its end;
-#   - `make profile --check` passes for each board.
+#   - `make profile --check` passes for each board, and the profile of a
+#     run whose smooth frames fall back says so and fails --check.
 # Without the ARM toolchain or QEMU this skips with a message, except in CI
 # (CI set), where they must be installed.  Without ../shared/meshes the
 # mps2-an385 board is skipped (its models are shared meshes) and the
@@ -68,19 +73,23 @@ report_value() {
     grep -E "^fw $2( |=)" "$1" | head -n 1 | tr ' ' '\n' | sed -n "s/^$3=//p" | head -n 1
 }
 
-for board in mps2-an385 mps2-an385-full microbit; do
+# SILK_QEMU_BOARDS: some of the boards only (while working on one).
+for board in ${SILK_QEMU_BOARDS:-mps2-an385 mps2-an385-full mps2-an386 mps2-an500 microbit}; do
     fwroot=${SILK_FW_DIR:-build-$board/fw}
     variants="board ram256k"
     if [ -n "${SILK_FW_DIR:-}" ]; then
         [ "$board" = mps2-an385 ] || continue
         want_models=2
-    elif [ "$board" = mps2-an385 ] || [ "$board" = mps2-an385-full ]; then
+    elif [ "$board" != microbit ]; then
         if [ "$have_meshes" = 0 ]; then
             echo "skip: $board: $meshes is missing, and the firmware's models are shared meshes"
             continue
         fi
-        want_models=2   # bunny-500 and knot-480; on the -full board bunny-500 and the textured globe
-        [ "$board" = mps2-an385-full ] && variants=board
+        # bunny-500 and knot-480; on the -full board bunny-500 and the textured
+        # globe; on the Cortex-M4 bunny-2k and dragon-5k, on the M7 feline-2k
+        # and dragon-5k (their RAM needs no 256 KiB variant)
+        want_models=2
+        [ "$board" != mps2-an385 ] && variants=board
     else
         want_models=$((1 + have_meshes))  # bunny-500 when the shared meshes are there, and a torus
     fi
@@ -204,10 +213,35 @@ for board in mps2-an385 mps2-an385-full microbit; do
         check "$board: make profile: flash by module" \
             grep -qE '^  core raster +[0-9]+  code [0-9]+, constants [0-9]+$' "$tmp/profile.out"
         check "$board: make profile: the footprint line" \
-            grep -qE "^footprint $board [^ ]+ ram_total_bytes=[0-9]+ code_bytes=[0-9]+ model_bytes=[0-9]+$" "$tmp/profile.out"
+            grep -qE "^footprint $board [^ ]+ ram_total_bytes=[0-9]+ code_bytes=[0-9]+ model_bytes=[0-9]+ fell_back_frames=0$" "$tmp/profile.out"
         check "$board: make profile: instructions per frame" \
-            grep -qE "^speed $board [^ ]+ flat_instructions=[1-9][0-9]* smooth_instructions=[1-9][0-9]*$" "$tmp/profile.out"
+            grep -qE "^speed $board [^ ]+ flat_instructions=[1-9][0-9]* smooth_instructions=[1-9][0-9]* smooth_fell_back=0$" "$tmp/profile.out"
         check "$board: make profile: the CSV" grep -q '^ram,ram total,' "$tmp/profile.csv"
+    fi
+
+    # A run whose smooth frames fall back is profiled, and says so: the
+    # profile script run on this board's map with the scene built for the
+    # host with an arena that holds the bands and a flat frame only, in
+    # place of the emulator.
+    if [ "$board" = mps2-an385 ] && [ -z "${SILK_FW_DIR:-}" ] && [ -n "$pmesh" ]; then
+        pname=$(basename "$pmesh"); pname=${pname%.*}
+        mkdir -p "$tmp/fb/$pname"
+        cp "$fwroot/$pname/fw.elf" "$fwroot/$pname/fw.map" "$tmp/fb/$pname/"
+        if ${CC:-cc} -std=c11 -O2 -Iinclude -Iplatform/mps2 -I"$fwroot/$pname" -DFW_ARENA_BYTES=18432 \
+            -o "$tmp/fw-small" platform/mps2/fw_main.c platform/mps2/fw_io_host.c "$build/libsilk.a" 2>"$err"; then
+            BOARD=$board FW_DIR=$tmp/fb BOARD_RUN=$tmp/fw-small BOARD_FLASH_BYTES=524288 BOARD_WIDTH=320 \
+                BOARD_HEIGHT=240 BOARD_BAND_ROWS=8 PROFILE_CSV=$tmp/fb.csv sh tools/scripts/profile_fw.sh "$pmesh" --check \
+                >"$tmp/fb.out" 2>"$tmp/fb.err"
+            rc=$?
+            check "$board: a profile whose smooth frames fall back fails --check ($rc)" [ "$rc" -eq 1 ]
+            check "$board: ... says so at the top" grep -q '^FELL BACK: 3 of 6 frames (3 smooth)' "$tmp/fb.out"
+            check "$board: ... and on its last line" \
+                grep -qE "^footprint $board $pname ram_total_bytes=[0-9]+ code_bytes=[0-9]+ model_bytes=[0-9]+ fell_back_frames=3$" \
+                "$tmp/fb.out"
+            check "$board: ... and on stderr" grep -q 'silk: profile: 3 of 6 frames fell back (3 smooth)' "$tmp/fb.err"
+        else
+            fail "$board: the scene builds for the host with a small arena" "$(head -c 300 "$err")"
+        fi
     fi
 done
 done_testing

@@ -32,16 +32,22 @@ check "pack: exit 0, one summary line" [ "$ok" -eq 1 ]
 check "pack: summary names the model data" grep -q "model data (bytes):.*triangles $((ntris * 12))" "$out"
 check "pack: three cameras recorded" [ "$(grep -c 'camera [0-9]*: --eye ' "$hdr")" -eq 3 ]
 
-printf '#include "fwmodel.h"\nint main(void) { silk_mesh m; fwmodel_mesh(&m); return fwmodel_camera(2) == 0; }\n' >"$tmp/use.c"
+# What a first program does with the header alone: the mesh, checked once
+# (silk_mesh_validate, which the header's includes declare), and a camera.
+printf '#include "fwmodel.h"\nint main(void) { silk_mesh m; silk_error e; fwmodel_mesh(&m);\n'\
+'    return silk_mesh_validate(&m, "fwmodel", &e) != SILK_OK || fwmodel_camera(2) == 0; }\n' >"$tmp/use.c"
 check "pack: the header compiles warning-free" \
     "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -Iinclude -I"$tmp" -c "$tmp/use.c" -o "$tmp/use.o"
 check "pack: ... and with a board's options" \
     "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror "-DSILK_CONFIG_FILE=\"$PWD/boards/microbit/config.h\"" \
     -Iinclude -I"$tmp" -c "$tmp/use.c" -o "$tmp/use16.o"
+# An Arduino sketch includes it from C++ (gnu++11, its warnings on).
+check "pack: ... and from C++" "${CXX:-c++}" -std=gnu++11 -Wall -Wextra -Werror -Iinclude -I"$tmp" -x c++ \
+    -c "$tmp/use.c" -o "$tmp/usexx.o"
 
 # The firmware's scene on the host, with the packed model.
 if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -Iinclude -Iplatform/mps2 -I"$tmp" \
-    -DFW_ARENA_BYTES=4194304 -o "$tmp/fw-host" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
+    -DFW_ARENA_BYTES=4194304 -DFW_REPORT_BUDGET -o "$tmp/fw-host" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
     "$build/libsilk.a" 2>"$tmp/cc.err"; then
     pass "pack: the firmware scene builds for the host"
     "$tmp/fw-host" "$tmp/fw" >"$tmp/fw.report" 2>&1
@@ -60,6 +66,23 @@ if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -Iinclude -Ipla
     check "pack: 6 frames equal silk render byte for byte ($n)" [ "$n" -eq 6 ]
 else
     fail "pack: the firmware scene builds for the host" "$(head -c 300 "$tmp/cc.err")"
+fi
+
+# The same scene with an arena that holds the band buffers (160 x 8 x 6
+# bytes) and a flat frame but not a smooth frame's plan: every smooth frame
+# falls back to flat, and the scene says so instead of "ok", with the count
+# and a non-zero exit status.
+if "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $SANFLAGS -Iinclude -Iplatform/mps2 -I"$tmp" \
+    -DFW_ARENA_BYTES=10752 -DFW_REPORT_BUDGET -o "$tmp/fw-small" platform/mps2/fw_main.c platform/mps2/fw_io_host.c \
+    "$build/libsilk.a" 2>"$tmp/cc.err"; then
+    "$tmp/fw-small" >"$tmp/small.report" 2>&1
+    status=$?
+    check "pack: a scene whose smooth frames fall back says so (exit $status)" \
+        grep -qx 'fw result=fell_back frames=6 fell_back=3 smooth_fell_back=3' "$tmp/small.report"
+    check "pack: ... and exits 2" [ "$status" -eq 2 ]
+    check "pack: ... its frame lines say which" [ "$(grep -c '^fw frame=.* mode=smooth .*fell_back=1 ' "$tmp/small.report")" -eq 3 ]
+else
+    fail "pack: the firmware scene builds for the host with a small arena" "$(head -c 300 "$tmp/cc.err")"
 fi
 
 # Usage and input errors: one line, the right status, no header left behind.

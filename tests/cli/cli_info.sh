@@ -91,6 +91,28 @@ run_silk info "$tmp/sphere.obj"
 check "info reports the default camera" grep -qE '^ +projection: +perspective, fov 35$' "$out"
 check "info fell back: no" test "$(info_value "$out" "  fell back")" = no
 
+# What the frame needs, not the whole arena: `needed` (what stays plus the
+# frame's own bytes) is an arena that draws the same picture, and the
+# bound for any view is at least the frame's bytes.
+run_silk info "$tmp/torus.obj" --size 160x120 --format rgb565
+needed=$(info_value "$out" "  needed"); fb=$(info_value "$out" "  frame bytes"); bound=$(info_value "$out" "  frame bytes bound")
+peak=$(info_value "$out" "  peak")
+check "info: needed $needed below the peak $peak" test "${needed:-0}" -gt 0 -a "${needed:-0}" -lt "${peak:-0}"
+check "info: the bound $bound at least the frame's $fb bytes" test "${bound:-0}" -ge "${fb:-1}"
+"$SILK" render "$tmp/torus.obj" --size 160x120 --format rgb565 -o "$tmp/roomy.ppm"
+"$SILK" render "$tmp/torus.obj" --size 160x120 --format rgb565 --arena "$needed" -o "$tmp/needed.ppm"
+check "info: an arena of the needed bytes draws the same frame" cmp -s "$tmp/roomy.ppm" "$tmp/needed.ppm"
+if command -v python3 >/dev/null; then
+    run_silk info "$tmp/torus.obj" --size 160x120 --format rgb565 --json
+    check "info --json: needed and the bound" python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d['arena']['needed'] == $needed and d['frame']['frame_bytes_bound'] == $bound
+" "$out"
+fi
+run_silk info "$tmp/torus.obj" --mode pn
+check "info: no bound for a stored frame" test -z "$(info_value "$out" "  frame bytes bound")"
+
 # An arena too small to load the mesh: one line, exit 1.
 run_silk info "$tmp/sphere.obj" --arena 4K
 check "info with a 4K arena fails cleanly" test "$rc" -eq 1 -a "$(wc -l <"$err")" -eq 1

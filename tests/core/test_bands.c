@@ -276,7 +276,7 @@ TEST(sink_stop_is_an_error)
     silk_target band;
     silk_target_init(&band, W, H, 0, ROWS, SILK_PIX_RGB565, bc, bd);
     tf_collect c = { copy, 0, ROWS, 0, 0, 3 };
-    silk_sink sink = { tf_collect_band, &c };
+    silk_sink sink = { .band = tf_collect_band, .user = &c };
     size_t top = a.top;
     silk_error err;
     silk_status st = silk_render_bands(&a, &m, &v, &hal, &ro, &band, &sink, NULL, &err);
@@ -287,9 +287,146 @@ TEST(sink_stop_is_an_error)
     CHECK(band.rows == ROWS && band.y0 == 0);
 
     /* Missing pieces are argument errors, not crashes. */
-    silk_sink none = { NULL, NULL };
+    silk_sink none = { .band = NULL, .user = NULL };
     CHECK(silk_render_bands(&a, &m, &v, &hal, &ro, &band, &none, NULL, &err) == SILK_ERR_ARG);
     CHECK(silk_render_bands(&a, &m, &v, &hal, &ro, NULL, &sink, NULL, &err) == SILK_ERR_ARG);
+    free(copy);
+}
+
+/* A sink that sends by "DMA" and completes late: band() only notes the
+ * buffer, and its rows are copied into the frame when wait() asks for that
+ * buffer back (or at the end, as a flush), so a renderer that drew into a
+ * buffer still being sent would show in the frame.  lies: wait() says a
+ * buffer is free without completing it (a broken sink the check must see). */
+typedef struct late_sink {
+    uint8_t *frame;
+    const uint8_t *buf[2];          /* the two colour buffers */
+    const uint8_t *pending[2];      /* per buffer: being sent (the band's rows below) */
+    int y0[2], rows[2];
+    int bands, waits, overlaps, wrong_buffer, reused, lies;
+} late_sink;
+
+static void late_complete(late_sink *s, int i)
+{
+    size_t row = (size_t)W * 2;
+    if (!s->pending[i]) return;
+    memcpy(s->frame + (size_t)s->y0[i] * row, s->pending[i], (size_t)s->rows[i] * row);
+    s->pending[i] = NULL;
+}
+
+static int late_band(void *user, const silk_target *t)
+{
+    late_sink *s = user;
+    int i = t->color == s->buf[1];
+    if (t->color != s->buf[s->bands & 1]) s->wrong_buffer++;   /* the first band of a frame in band->color */
+    if (s->pending[i]) s->reused++;                             /* handed back before it was free */
+    s->pending[i] = t->color;
+    s->y0[i] = t->y0;
+    s->rows[i] = t->rows;
+    s->bands++;
+    return 0;
+}
+
+static int late_wait(void *user, const uint8_t *color)
+{
+    late_sink *s = user;
+    int i = color == s->buf[1];
+    s->waits++;
+    if (s->pending[!i]) s->overlaps++;     /* the other band still being sent while this one is drawn */
+    if (!s->lies) late_complete(s, i);
+    else if (s->pending[i]) s->pending[i] = NULL;
+    return 0;
+}
+
+static int late_wait_fails(void *user, const uint8_t *color)
+{
+    late_sink *s = user;
+    (void)color;
+    return ++s->waits == 3;
+}
+
+/* Double-buffered bands (silk_sink.color2 and wait): the same bytes as the
+ * full frame with a sink whose transfers complete only when the renderer
+ * needs their buffer again, the bands alternating between the two buffers
+ * and drawn while the other one is in transfer; smooth, anti-aliased (the
+ * outline's pixels are written after the band is drawn) and flat; a wait
+ * that fails stops the frame, and a second buffer without a wait is refused. */
+TEST(double_buffered_bands_with_a_late_sink)
+{
+    silk_arena a;
+    silk_mesh m;
+    silk_view v;
+    if (!load(&a, "bunny-500.obj", &m) || !make_view(&m, 30, 20, 0, &v)) {
+        CHECKF(0, "cannot set up bunny-500");
+        return;
+    }
+    silk_phong ph;
+    silk_hal hal;
+    silk_phong_default(&ph, &v);
+    silk_hal_phong(&hal, &ph);
+    enum { ROWS = 7 };
+    size_t frame_bytes = (size_t)W * H * 2;
+    uint8_t *color = silk_arena_alloc(&a, frame_bytes, SILK_MEM_RASTER);
+    uint32_t *depth = silk_arena_array(&a, (size_t)W * H, sizeof *depth, SILK_MEM_RASTER);
+    uint8_t *b0 = silk_arena_alloc(&a, (size_t)ROWS * W * 2, SILK_MEM_RASTER);
+    uint8_t *b1 = silk_arena_alloc(&a, (size_t)ROWS * W * 2, SILK_MEM_RASTER);
+    uint32_t *bd = silk_arena_array(&a, (size_t)ROWS * W, sizeof *bd, SILK_MEM_RASTER);
+    uint8_t *copy = malloc(frame_bytes);
+    CHECK(color && depth && b0 && b1 && bd && copy);
+    if (!color || !depth || !b0 || !b1 || !bd || !copy) {
+        free(copy);
+        return;
+    }
+    const int nbands = (H + ROWS - 1) / ROWS;
+    for (int mode = 0; mode < 2; mode++) {
+        silk_render_opts ro;
+        silk_render_opts_default(&ro);
+        ro.mode = mode ? SILK_MODE_SMOOTH : SILK_MODE_FLAT;
+        ro.bg_rgb = BG;
+        silk_target full, band;
+        silk_target_init(&full, W, H, 0, H, SILK_PIX_RGB565, color, depth);
+        silk_error err;
+        CHECKF(silk_render(&a, &m, &v, &hal, &ro, &full, NULL, &err) == SILK_OK, "%s", err.msg);
+        for (int lies = 0; lies < 2; lies++) {
+            memset(copy, 0xA5, frame_bytes);
+            late_sink s = { copy, { b0, b1 }, { NULL, NULL }, { 0, 0 }, { 0, 0 }, 0, 0, 0, 0, 0, lies };
+            silk_sink sink = { late_band, &s, b1, late_wait };
+            silk_target_init(&band, W, H, 0, ROWS, SILK_PIX_RGB565, b0, bd);
+            silk_frame_stats st;
+            silk_status r = silk_render_bands(&a, &m, &v, &hal, &ro, &band, &sink, &st, &err);
+            CHECKF(r == SILK_OK, "%s", err.msg);
+            late_complete(&s, 0);   /* the sink's flush */
+            late_complete(&s, 1);
+            size_t diff = 0;
+            for (size_t i = 0; i < frame_bytes; i++) diff += copy[i] != color[i];
+            if (!lies) {
+                CHECKF(diff == 0, "%s: double-buffered bands differ from the full frame in %zu bytes",
+                       mode ? "smooth" : "flat", diff);
+                CHECKF(s.bands == nbands && s.waits == nbands, "%d bands, %d waits", s.bands, s.waits);
+                CHECKF(s.overlaps == nbands - 1, "%d of %d bands drawn while the last one was sent", s.overlaps,
+                       nbands - 1);
+                CHECKF(s.wrong_buffer == 0 && s.reused == 0, "%d bands in the wrong buffer, %d buffers reused",
+                       s.wrong_buffer, s.reused);
+                CHECK(band.color == b0 && band.y0 == 0 && band.rows == ROWS);
+                if (mode) CHECK(st.silhouette_tris > 0 && !st.fell_back);
+            } else {
+                CHECKF(diff > 0, "a sink that says its buffers are free too early goes unseen");
+            }
+        }
+    }
+    /* a wait that fails stops the frame where it was asked */
+    silk_render_opts ro;
+    silk_render_opts_default(&ro);
+    silk_target band;
+    silk_target_init(&band, W, H, 0, ROWS, SILK_PIX_RGB565, b0, bd);
+    late_sink s = { copy, { b0, b1 }, { NULL, NULL }, { 0, 0 }, { 0, 0 }, 0, 0, 0, 0, 0, 0 };
+    silk_sink failing = { late_band, &s, b1, late_wait_fails };
+    silk_error err;
+    CHECK(silk_render_bands(&a, &m, &v, &hal, &ro, &band, &failing, NULL, &err) == SILK_ERR_IO);
+    CHECKF(s.bands == 2 && strstr(err.msg, "row 14") != NULL, "%d bands, \"%s\"", s.bands, err.msg);
+    CHECK(band.color == b0 && band.y0 == 0 && band.rows == ROWS);
+    silk_sink half = { late_band, &s, b1, NULL };
+    CHECK(silk_render_bands(&a, &m, &v, &hal, &ro, &band, &half, NULL, &err) == SILK_ERR_ARG);
     free(copy);
 }
 
@@ -303,6 +440,7 @@ int main(void)
     RUN(bands_equal_full_frame_without_aa);
     RUN(bands_equal_full_frame_creases);
     RUN(sink_stop_is_an_error);
+    RUN(double_buffered_bands_with_a_late_sink);
     free(arena_buf);
     return check_done();
 }

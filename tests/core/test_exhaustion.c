@@ -310,7 +310,7 @@ TEST(bands_with_little_memory)
         if (free_now > budget) silk_arena_alloc(&a, free_now - budget - (SILK_ARENA_ALIGN - 1), SILK_MEM_RASTER);
         silk_target band;
         silk_target_init(&band, 48, 40, 0, 7, SILK_PIX_RGB888, band_rgb, band_depth);
-        silk_sink sink = { take_band, bands_rgb };
+        silk_sink sink = { .band = take_band, .user = bands_rgb };
         o.bg_rgb = TS_BG;
         silk_status bst = silk_render_bands(&a, &m, &v, &hal, &o, &band, &sink, &bs, &err);
         a.bottom = bottom;

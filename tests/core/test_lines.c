@@ -622,7 +622,7 @@ TEST(bands_draw_the_same_lines)
         silk_target band;
         silk_target_init(&band, W, H, 0, 24, SILK_PIX_RGB888, band_color, band_depth);
         collect c = { banded };
-        silk_sink sink = { collect_band, &c };
+        silk_sink sink = { .band = collect_band, .user = &c };
         CHECK(silk_render_bands(&sphere.arena, &sphere.mesh, &v, &hal, &o, &band, &sink, NULL, &err) == SILK_OK);
         CHECKF(memcmp(full, banded, sizeof full) == 0, "view %d: bands differ from the whole frame", k);
     }

@@ -308,7 +308,7 @@ TEST(pixels_are_the_stored_frame)
                     silk_target band;
                     silk_target_init(&band, W, H, 0, ROWS, SILK_PIX_RGB888, band_rgb, band_depth);
                     band_copy bc = { bands, (size_t)W * 3 };
-                    silk_sink sink = { take_band, &bc };
+                    silk_sink sink = { .band = take_band, .user = &bc };
                     if (silk_render_bands(&a, &m, &v, &hal, &o, &band, &sink, &fs, &err) != SILK_OK || fs.fell_back)
                         lost++;
                     differ += memcmp(ref, img, sizeof ref) != 0;
@@ -375,7 +375,7 @@ TEST(kept_tangents_change_no_pixel)
             continue;
         }
         band_copy bc = { j ? img : ref, (size_t)W * 2 };
-        silk_sink sink = { take_band, &bc };
+        silk_sink sink = { .band = take_band, .user = &bc };
         silk_frame_stats fs;
         silk_error err;
         if (silk_render_bands(&a, &m, &v, &hal, &o, &band, &sink, &fs, &err) != SILK_OK || fs.fell_back) lost++;
@@ -421,7 +421,7 @@ TEST(smooth_frame_fits_a_64k_part)
             silk_render_opts_default(&o);
             silk_target band;
             silk_target_init(&band, W, H, 0, ROWS, SILK_PIX_RGB565, band_rgb, band_depth);
-            silk_sink sink = { band_none, NULL };
+            silk_sink sink = { .band = band_none, .user = NULL };
             silk_frame_stats fs;
             silk_error err;
             CHECK(silk_render_bands(&a, &m, &v, &hal, &o, &band, &sink, &fs, &err) == SILK_OK);

@@ -124,7 +124,7 @@ static int render_to_fb(scene *s, silk_pixfmt fmt, silk_fb *fb)
     if (!c || !d) return 0;
     silk_target band;
     silk_target_init(&band, w, h, 0, ROWS, fmt, c, d);
-    silk_sink sink = { silk_fb_band, fb };
+    silk_sink sink = { .band = silk_fb_band, .user = fb };
     silk_error err;
     silk_status st = silk_render_bands(&s->arena, &s->mesh, &s->view, &s->hal, &s->ro, &band, &sink, NULL, &err);
     silk_arena_top_release(&s->arena, &mk);

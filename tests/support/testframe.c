@@ -81,7 +81,7 @@ silk_status tf_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *
     silk_target_init(&band, w, hgt, 0, rows, fmt, bc, bd);
     c->next_row = c->bands = c->bad = 0;
     c->max_rows = rows;
-    silk_sink sink = { tf_collect_band, c };
+    silk_sink sink = { .band = tf_collect_band, .user = c };
     silk_status st = silk_render_bands(a, m, v, h, o, &band, &sink, stats, err);
     if (band.rows != rows || band.y0 != 0) c->bad++;
     silk_arena_top_release(a, &mk);

@@ -142,7 +142,25 @@ static void print_mesh(const cli_scene *s, const cli_scene_opts *o)
     print_vec("bbox max", m->bbox_max);
 }
 
-static void print_memory(const cli_scene *s, const cli_scene_opts *o)
+/* The smallest arena that draws this frame as it was drawn: what stays
+ * (the mesh, the frame's colour and depth) and the frame's own need; the
+ * peak also holds what the frame kept for speed where there was room. */
+static size_t arena_needed(const cli_scene *s, const silk_frame_stats *st)
+{
+    return s->arena.bottom + st->frame_bytes;
+}
+
+/* The most a FLAT or SMOOTH frame of this mesh, size and options takes
+ * from any camera (silk/budget.h), or 0 for the other modes. */
+static size_t frame_bound(const cli_scene *s, const cli_scene_opts *o)
+{
+    silk_budget b;
+    return silk_budget_frame(&s->mesh, &o->render, o->width, o->height, o->height, o->fmt, 0, &b, NULL) == SILK_OK
+               ? b.frame
+               : 0;
+}
+
+static void print_memory(const cli_scene *s, const cli_scene_opts *o, const silk_frame_stats *st)
 {
     silk_mesh_bytes b;
     const silk_mesh *m = cli_scene_mesh(s, o->render.mode);
@@ -164,6 +182,7 @@ static void print_memory(const cli_scene *s, const cli_scene_opts *o)
     line("  after loading", "%zu", s->load_bytes);
     line("  persistent (bottom)", "%zu", a->bottom);
     line("  peak", "%zu", a->peak);
+    line("  needed", "%zu", arena_needed(s, st));
     line("  free", "%zu", silk_arena_free_bytes(a));
     printf("  %-22s %12s %12s\n", "purpose", "now", "peak");
     for (int p = 0; p < SILK_MEM_COUNT; p++)
@@ -188,6 +207,8 @@ static void print_frame(const cli_scene *s, const cli_scene_opts *o, const silk_
     line("  flat segments", "%u", st->flat_segments);
     line("  triangles drawn", "%u", st->tris_drawn);
     line("  frame bytes", "%zu", st->frame_bytes);
+    size_t bound = frame_bound(s, o);
+    if (bound) line("  frame bytes bound", "%zu", bound);
     line("  fell back", "%s", st->fell_back ? "yes (the arena ran out; part of the frame not smoothed)" : "no");
     if (o->render.mode == SILK_MODE_CLIP) {
         const silk_silmap *m = &s->silmap;
@@ -252,9 +273,9 @@ static void print_json(const cli_scene *s, const cli_scene_opts *o, const silk_f
            silk_vis_bytes(m->vis));
 
     const silk_arena *a = &s->arena;
-    printf("  \"arena\": {\"size\": %zu, \"after_loading\": %zu, \"persistent\": %zu, \"peak\": %zu, \"free\": %zu,\n"
-           "    \"purposes\": {",
-           a->size, s->load_bytes, a->bottom, a->peak, silk_arena_free_bytes(a));
+    printf("  \"arena\": {\"size\": %zu, \"after_loading\": %zu, \"persistent\": %zu, \"peak\": %zu, "
+           "\"needed\": %zu, \"free\": %zu,\n    \"purposes\": {",
+           a->size, s->load_bytes, a->bottom, a->peak, arena_needed(s, st), silk_arena_free_bytes(a));
     for (int p = 0; p < SILK_MEM_COUNT; p++)
         printf("%s\"%s\": {\"now\": %zu, \"peak\": %zu}", p ? ", " : "", silk_purpose_name((silk_purpose)p),
                a->used[p], a->peak_used[p]);
@@ -274,6 +295,8 @@ static void print_json(const cli_scene *s, const cli_scene_opts *o, const silk_f
            "    \"flat_segments\": %u, \"triangles_drawn\": %u, \"frame_bytes\": %zu, \"fell_back\": %s",
            st->silhouette_tris, st->bridges, st->samples, st->moved_vertices, st->flat_segments, st->tris_drawn,
            st->frame_bytes, st->fell_back ? "true" : "false");
+    size_t bound = frame_bound(s, o);
+    if (bound) printf(", \"frame_bytes_bound\": %zu", bound);
     if (o->render.mode == SILK_MODE_CLIP)
         printf(",\n    \"map_views\": %u, \"map_bytes\": %u, \"map_triangle\": %u, \"polygon_vertices\": %u, "
                "\"stencil_spans\": %u", s->silmap.nviews, silk_silmap_bytes(&s->silmap), st->clip_tri, st->clip_points,
@@ -329,7 +352,7 @@ int cmd_info(int argc, char **argv)
             print_json(&s, &o, &st);
         } else {
             print_mesh(&s, &o);
-            print_memory(&s, &o);
+            print_memory(&s, &o, &st);
             print_frame(&s, &o, &st);
         }
         cli_scene_free(&s);

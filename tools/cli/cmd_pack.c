@@ -139,7 +139,9 @@ static void array_open(writer *w, const char *type, const char *field, size_t n,
 
 static void array_close(writer *w, size_t n)
 {
-    if (n == 0) fputs(" 0", w->fp);   /* C has no empty arrays; the count says 0 */
+    /* C has no empty arrays (nor, before C23, empty initializers); the count
+     * says 0.  C++ takes the empty one, without a warning. */
+    if (n == 0) fputs("\n#ifndef __cplusplus\n    0\n#endif", w->fp);
     fputs("\n};\n\n", w->fp);
 }
 
@@ -338,11 +340,16 @@ static int write_header(writer *w, const char *mesh_path, const char *texture, c
             " * The mesh with everything silk computes at load time, as const arrays\n"
             " * for flash: %s_mesh(&m) makes a silk_mesh of them, %s_camera(k) gives\n"
             " * the packed views, %s_look(&phong) the material.  Coordinates are Q16.16.\n"
+            " * Check the arrays once before the first frame, silk_mesh_validate(&m,\n"
+            " * \"%s\", &err) (silk/validate.h, included here), so that a damaged header\n"
+            " * is an error, not a wild read.\n"
             "%s%s%s"
             " */\n",
-            w->name, mesh_path, SILK_VERSION, w->name, w->name, w->name, texture ? " * texture: `" : "",
+            w->name, mesh_path, SILK_VERSION, w->name, w->name, w->name, w->name, texture ? " * texture: `" : "",
             texture ? texture : "", texture ? "`\n" : "");
-    fprintf(f, "#ifndef SILK_PACK_%s_H\n#define SILK_PACK_%s_H\n\n#include <string.h>\n#include \"silk/silk.h\"\n\n",
+    fprintf(f,
+            "#ifndef SILK_PACK_%s_H\n#define SILK_PACK_%s_H\n\n#include <string.h>\n#include \"silk/silk.h\"\n"
+            "#include \"silk/validate.h\"\n\n",
             w->name, w->name);
     fprintf(f, "#define %s_NCAMERAS %d\n\n", w->name, ncams);
 

@@ -9,7 +9,8 @@
  * tool does, and the frames are rendered in the board's bands from the views
  * of `silk pack --views N` (BOARD_VIEWS, default 3), each in flat and smooth
  * mode.  The last line is
- *   footprint BOARD MESH ram_total_bytes=N model_bytes=N
+ *   footprint BOARD MESH ram_total_bytes=N model_bytes=N fell_back_frames=N
+ * (frames that fell back to flat for lack of arena are also said above it).
  *
  * A firmware board (mps2-an385) is measured on the firmware itself, by
  * `make profile` (tools/scripts/profile_fw.sh reads its linker map and its report
@@ -85,7 +86,7 @@ typedef struct frame_figures {
  * rendered in the board's bands into `band`. */
 static int render_views(cli_scene_opts *o, cli_scene *s, silk_target *band, frame_figures *ff)
 {
-    silk_sink sink = { band_none, NULL };
+    silk_sink sink = { .band = band_none, .user = NULL };
     silk_camera c0;
     int rc = cli_camera(o, &s->mesh, NULL, &c0);
     int views = SILK_BOARD_VIEWS;
@@ -189,7 +190,8 @@ static int print_report(const cli_scene *s, const cli_scene_opts *o, int rows, s
     }
     char name[128];
     model_name(mesh, name, sizeof name);
-    printf("footprint %s %s ram_total_bytes=%zu model_bytes=%zu\n", SILK_BOARD_NAME, name, total, model);
+    printf("footprint %s %s ram_total_bytes=%zu model_bytes=%zu fell_back_frames=%ld\n", SILK_BOARD_NAME, name, total,
+           model, ff->fell);
     return 0;
 }
 
@@ -289,7 +291,7 @@ const cli_command cmd_profile_spec = {
         "Where every byte of RAM goes when the board this silk was built for renders\n"
         "MESH: the mesh in the arena by part, the arena by purpose with high-water\n"
         "marks and the band buffers, as a table, a CSV file and a last line\n"
-        "  footprint BOARD MESH ram_total_bytes=N model_bytes=N\n",
+        "  footprint BOARD MESH ram_total_bytes=N model_bytes=N fell_back_frames=N\n",
     .examples =
         "  silk profile ../shared/meshes/bunny-500.obj\n"
         "  make profile PROFILE_BOARD=mps2-an385 PROFILE_MESH=../shared/meshes/knot-480.obj\n",

@@ -19,9 +19,12 @@
 # static RAM come from the linker's map file, input section by input
 # section: the core's code by module, the scene, platform code, libc,
 # libgcc, and the packed model by kind.  The last line is
-#   footprint BOARD MESH ram_total_bytes=N code_bytes=N model_bytes=N
-# with ram_total = static RAM + arena high-water + stack high-water (the band
-# buffers are in the arena) and code = flash other than the model.  --check
+#   footprint BOARD MESH ram_total_bytes=N code_bytes=N model_bytes=N fell_back_frames=N
+# with ram_total = static RAM + arena high-water +
+# stack high-water (the band buffers are in the arena) and code = flash
+# other than the model.  Frames that fell back to flat for lack of RAM are
+# said at the top, marked in the speed table, left out of the speed line's
+# figures and counted on the last lines.  --check
 # exits 1 when the board's budget is not met (a frame fell back, RAM over
 # budget, core code over 40 KiB).
 #
@@ -36,8 +39,8 @@
 # off; "other" is the frame less the stages), and frames per second at
 # BOARD_CLOCK_HZ for each cycles-per-instruction figure of BOARD_CPI; then
 # a line
-#   speed BOARD MESH flat_instructions=N smooth_instructions=N
-# with the largest frame of each mode.
+#   speed BOARD MESH flat_instructions=N smooth_instructions=N smooth_fell_back=N
+# with the largest frame of each mode (of the frames drawn in it).
 set -u
 mesh=${1:?usage: profile_fw.sh MESH [--check]}
 check=0
@@ -50,10 +53,15 @@ name=${name%.*}
 dir=$FW_DIR/$name
 [ -e "$dir/fw.elf" ] || { echo "silk: profile: $dir/fw.elf is missing (make BOARD=$BOARD BOARD_MESHES=$mesh firmware)" >&2; exit 1; }
 
-# The firmware under the emulator, 300 s at most.
+# The firmware under the emulator, 300 s at most.  Exit 2 with "fw result=
+# fell_back ..." is a run to the end whose smooth frames did not all fit:
+# it is profiled, and the fall-back is said at the top, in the speed table
+# and on the last lines.
 timeout 300 $BOARD_RUN "$dir/fw.elf" -append "$dir/frame" >"$dir/report.txt" 2>&1
 st=$?
-if [ "$st" -ne 0 ] || ! grep -qx 'fw result=ok' "$dir/report.txt"; then
+if [ "$st" -eq 2 ] && grep -q '^fw result=fell_back ' "$dir/report.txt"; then
+    st=0
+elif [ "$st" -ne 0 ] || ! grep -qx 'fw result=ok' "$dir/report.txt"; then
     cat "$dir/report.txt" >&2
     echo "silk: profile: the firmware did not run to the end (exit $st, $BOARD_RUN $dir/fw.elf)" >&2
     exit 1
@@ -135,6 +143,7 @@ BEGIN {
 FILENAME ~ /report\.txt$/ {
     if ($0 ~ /^fw frame=/) {
         frames++
+        ffell[field("frame")] = field("fell_back") == 1
         if (field("frame_bytes") + 0 > frame_need) frame_need = field("frame_bytes") + 0
         if (field("fell_back") == 1) { fell++; if ($0 ~ / mode=smooth /) smooth_fell++ }
     } else if ($0 ~ /^fw arena size=/) {
@@ -189,6 +198,8 @@ END {
     printf "silk profile: %s on %s (%s)\n", mesh, board, dir
     printf "frame %sx%s, bands of %d rows; %d frames rendered (flat and smooth from %d views)\n",
         width, height, band_rows, frames, int(frames / 2)
+    if (fell) printf "FELL BACK: %d of %d frames (%d smooth) were drawn unsmoothed: the arena could not hold their plan\n",
+        fell, frames, smooth_fell
     printf "\nFLASH (bytes; from %s/fw.map)\n", dir
     for (i = 1; i <= nmod; i++) {
         m = mods[i]; t = bytes[m, "text"] + 0; ro = bytes[m, "ro"] + 0; d = bytes[m, "data"] + 0
@@ -249,17 +260,18 @@ END {
             }
             printf " %10d %8d", g, rest
             for (c = 1; c <= ncpi; c++) printf "  %11.2f", clock_hz / (n * cpi[c])
-            printf "\n"
+            printf "%s\n", ffell[f] ? "  fell back: drawn flat" : ""
             if (csv != "") {
                 printf "speed,camera %d %s instructions,%d\n", tcam[f], tmode[f], n >csv
                 if (nstage[f]) printf "speed,camera %d %s fragment instructions,%d\n", tcam[f], tmode[f], g >csv
             }
-            if (n > worst[tmode[f]]) worst[tmode[f]] = n
+            if (!ffell[f] && n > worst[tmode[f]]) worst[tmode[f]] = n   # a frame that fell back was drawn flat
         }
         printf "  Stages timed in a second pass (the stage clock of the renderer; the fragment stage, called from\n"
         printf "  the rasterizer, timed call by call in a third: %d calls in the first frame) and taken off the\n", fcalls[0]
         printf "  rasterizer; other: the frame less the stages.  fps at %.0f MHz for each cycles-per-instruction figure.\n", clock_hz / 1e6
-        printf "speed %s %s flat_instructions=%d smooth_instructions=%d\n", board, name, worst["flat"], worst["smooth"]
+        printf "speed %s %s flat_instructions=%d smooth_instructions=%d smooth_fell_back=%d\n", board, name,
+            worst["flat"], worst["smooth"], smooth_fell + 0
     } else if (ntime) {
         printf "\nSPEED: not measured (the timer is not counting instructions: run QEMU with -icount shift=0)\n"
     }
@@ -268,7 +280,10 @@ END {
         if (close(csv) != 0) { print "silk: profile: " csv ": write failed" >"/dev/stderr"; exit 1 }
         printf "\ncsv: %s\n", csv
     }
-    printf "footprint %s %s ram_total_bytes=%d code_bytes=%d model_bytes=%d\n", board, name, ram_total, code, model_total
+    if (fell) printf "silk: profile: %d of %d frames fell back (%d smooth): %s cannot smooth them in this RAM\n",
+        fell, frames, smooth_fell, board >"/dev/stderr"
+    printf "footprint %s %s ram_total_bytes=%d code_bytes=%d model_bytes=%d fell_back_frames=%d\n", board, name,
+        ram_total, code, model_total, fell + 0
     if (check && (fell || ram_total > ram_budget || core_text > code_limit)) {
         printf "silk: profile: %s does not meet its budget (%d frames fell back)\n", board, fell >"/dev/stderr"
         exit 1

@@ -87,7 +87,7 @@ int view_fb(cli_scene_opts *o, const view_fb_opts *v)
     silk_fb_fill(&fb, o->render.bg_rgb);
     silk_target band;
     if (!rc) silk_target_init(&band, o->width, o->height, 0, rows, o->fmt, color, depth);
-    silk_sink sink = { silk_fb_band, &fb };
+    silk_sink sink = { .band = silk_fb_band, .user = &fb };
     long frames = 0;
     double t0 = now_ms();
     for (; !rc && !stop_requested && (v->frames == 0 || frames < v->frames); frames++) {
