@@ -17,13 +17,6 @@
 
 #define model_NCAMERAS 12
 
-#ifdef __cplusplus
-#define model_STATIC_ASSERT static_assert
-#else
-#define model_STATIC_ASSERT _Static_assert
-#endif
-model_STATIC_ASSERT(SILK_NO_INDEX > 768u, "model: this model needs a wider SILK_INDEX_T");
-
 static const silk_vec3 model_pos[128] = {
     {91750, 0, 0}, {84766, 0, 35111}, {64877, 0, 64877}, {35111, 0, 84766}, {0, 0, 91750},
     {-35111, 0, 84766}, {-64877, 0, 64877}, {-84766, 0, 35111}, {-91750, 0, 0}, {-84766, 0, -35111},
