@@ -42,9 +42,14 @@ silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
  * whole to fit, keeping its direction.  Must be <= 4 (curve.c's bounds). */
 #define SILK_ARC_MAX_RATIO 4
 
+/* The tilt bound of silk_bridge: each end normal's lean along the chord
+ * (n.chord / |chord|, the sine of the tangent's angle to the chord) is cut
+ * to at most the other end's plus 1 / SILK_TILT_SLACK (3.6 degrees). */
+#define SILK_TILT_SLACK 16
+
 /* Eqs. 2-5: the silhouette bridge over p0->p1 with unit normals n0, n1:
  * tangent directions are the chord projected onto each end's tangent plane
- * (eqs. 2, 3), lengths from eq. 4.  Fills p0, p1, t0, t1, n0, n1 of out;
+ * (eqs. 2, 3) after the tilt bound above, lengths from eq. 4.  Fills p0, p1, t0, t1, n0, n1 of out;
  * uv0/uv1 are left as they are.  The normals are renormalised inside, so a
  * few ulps off unit length do not matter; a zero normal, or a chord along
  * the normal, gives a straight tangent (the chord); p0 == p1 gives zero
