@@ -175,17 +175,18 @@ silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord)
     return arc_tangent_wide(&d, &c, &lc);
 }
 
-/* The tilt bound: a bridge whose end normals lean along the chord by very
- * different amounts is no circular arc (eq. 4 assumes one: equal angles at
- * both ends).  On a coarse mesh it is a normal averaged across a rounded-off
- * crease at one end of an edge that is straight in the surface, and eq. 2-3
- * would bow the whole edge out by that end's tilt (a wing seen edge-on, by
- * up to a tenth of its length).  So each end's lean towards the chord,
- * n.chord, is cut to at most the other end's plus |chord| / SILK_TILT_SLACK
- * (curve.h) before it is taken off the chord: the ends of a circular arc
- * lean alike and keep theirs, a one-sided lean gives a nearly straight
- * curve. */
-void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_curve *out)
+/* The tilt bound (curve.h): a bridge whose end normals lean along the chord
+ * by very different amounts is no circular arc (eq. 4 assumes one: equal
+ * angles at both ends).  Where the normals were averaged from the faces
+ * around each vertex it is, on a coarse mesh, usually a normal averaged
+ * across a rounded-off crease at one end of an edge that is straight in
+ * the surface, and eqs. 2-3 would bow the whole edge out by that end's lean
+ * (a wing seen edge-on, by up to a tenth of its length).  So each end's
+ * lean towards the chord, n.chord, is cut to at most the other end's plus
+ * |chord| / SILK_TILT_SLACK before it is taken off the chord: the ends of a
+ * circular arc lean alike and keep theirs, a one-sided lean gives a nearly
+ * straight curve. */
+void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, int tilt_bound, silk_curve *out)
 {
     out->p0 = p0;
     out->p1 = p1;
@@ -213,8 +214,8 @@ void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_cu
     }
     for (int i = 0; i < 2; i++) {
         int64_t cap = silk_abs64(along[1 - i]) + lc / SILK_TILT_SLACK;
-        if (along[i] > cap) along[i] = cap;
-        if (along[i] < -cap) along[i] = -cap;
+        if (tilt_bound && along[i] > cap) along[i] = cap;
+        if (tilt_bound && along[i] < -cap) along[i] = -cap;
         int64_t d[3];
         for (int k = 0; k < 3; k++) d[k] = c.c[k] - silk_shr_round64(along[i] * u[i][k], 30);
         wvec w = wide(d[0], d[1], d[2], c.e);

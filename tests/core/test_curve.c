@@ -202,7 +202,7 @@ TEST(bridge_random)
         silk_vec3 fp0 = fx3(p0), fp1 = fx3(p1), fn0 = fx3(n0), fn1 = fx3(n1);
         silk_curve cv;
         memset(&cv, 0x55, sizeof cv);
-        silk_bridge(fp0, fn0, fp1, fn1, &cv);
+        silk_bridge(fp0, fn0, fp1, fn1, 1, &cv);
         dvec t0, t1;
         double cond;
         ref_bridge(dv(fp0), dv(fn0), dv(fp1), dv(fn1), &t0, &t1, &cond);
@@ -229,37 +229,37 @@ TEST(bridge_special)
     silk_curve cv;
     silk_vec3 p = silk_v3(SILK_FX_ONE, 2 * SILK_FX_ONE, 3), nz = silk_v3(0, 0, SILK_FX_ONE);
     /* Zero-length edge: zero tangents, the end points kept. */
-    silk_bridge(p, nz, p, nz, &cv);
+    silk_bridge(p, nz, p, nz, 1, &cv);
     CHECK(cv.t0.x == 0 && cv.t0.y == 0 && cv.t0.z == 0 && cv.t1.x == 0 && cv.t1.y == 0 && cv.t1.z == 0);
     CHECK(cv.p0.x == p.x && cv.p1.y == p.y);
     /* Edge in the tangent planes: both tangents are the chord. */
     silk_vec3 q = silk_v3(3 * SILK_FX_ONE, 2 * SILK_FX_ONE, 3);
-    silk_bridge(p, nz, q, nz, &cv);
+    silk_bridge(p, nz, q, nz, 1, &cv);
     CHECK(cv.t0.x == 2 * SILK_FX_ONE && cv.t0.y == 0 && cv.t0.z == 0);
     CHECK(cv.t1.x == 2 * SILK_FX_ONE && cv.t1.y == 0 && cv.t1.z == 0);
     /* Edge along a normal: no tangent plane direction, straight chord; at
      * the other end the chord lies in the tangent plane. */
     silk_vec3 r = silk_v3(p.x, p.y, p.z + SILK_FX_ONE);
-    silk_bridge(p, nz, r, silk_v3(SILK_FX_ONE, 0, 0), &cv);
+    silk_bridge(p, nz, r, silk_v3(SILK_FX_ONE, 0, 0), 1, &cv);
     CHECK(cv.t0.x == 0 && cv.t0.y == 0 && cv.t0.z == SILK_FX_ONE);
     CHECK(cv.t1.x == 0 && cv.t1.y == 0 && cv.t1.z == SILK_FX_ONE);
     /* A quarter circle: from (1,0,0) with normal x to (0,1,0) with normal y,
      * both tangents at 45 degrees to the chord: eq. 4's 2 sqrt 2 / (1 +
      * sqrt .5) cut by the bulge bound to sqrt 2 / (2 sin 45) = 1. */
     silk_bridge(silk_v3(SILK_FX_ONE, 0, 0), silk_v3(SILK_FX_ONE, 0, 0), silk_v3(0, SILK_FX_ONE, 0),
-                silk_v3(0, SILK_FX_ONE, 0), &cv);
+                silk_v3(0, SILK_FX_ONE, 0), 1, &cv);
     double lq = 1;
     CHECKF(cv.t0.x == 0 && abs(cv.t0.y - fx(lq)) <= 1 && cv.t0.z == 0, "%d %d", cv.t0.x, cv.t0.y);
     CHECKF(abs(cv.t1.x + fx(lq)) <= 1 && cv.t1.y == 0 && cv.t1.z == 0, "%d %d", cv.t1.x, cv.t1.y);
     /* A zero normal is treated as "no information": the chord. */
-    silk_bridge(p, silk_v3(0, 0, 0), q, nz, &cv);
+    silk_bridge(p, silk_v3(0, 0, 0), q, nz, 1, &cv);
     CHECK(cv.t0.x == 2 * SILK_FX_ONE && cv.t0.y == 0);
     /* Points at opposite corners of the whole Q16.16 range: no overflow,
      * tangents shortened to fit, along the chord projected. */
     silk_vec3 lo = silk_v3(SILK_FX_MIN, SILK_FX_MIN, SILK_FX_MIN), hi = silk_v3(SILK_FX_MAX, SILK_FX_MAX, SILK_FX_MAX);
-    silk_bridge(lo, nz, hi, nz, &cv);
+    silk_bridge(lo, nz, hi, nz, 1, &cv);
     CHECKF(cv.t0.x == SILK_FX_MAX && cv.t0.y == SILK_FX_MAX && cv.t0.z == 0, "%d %d %d", cv.t0.x, cv.t0.y, cv.t0.z);
-    silk_bridge(hi, silk_v3(INT32_MIN, INT32_MIN, 0), lo, silk_v3(SILK_FX_MIN, SILK_FX_MIN, 0), &cv);
+    silk_bridge(hi, silk_v3(INT32_MIN, INT32_MIN, 0), lo, silk_v3(SILK_FX_MIN, SILK_FX_MIN, 0), 1, &cv);
     CHECKF(cv.t0.x == 0 && cv.t0.y == 0 && cv.t0.z == SILK_FX_MIN, "%d %d %d", cv.t0.x, cv.t0.y, cv.t0.z);
     CHECKF(cv.t1.x == 0 && cv.t1.y == 0 && cv.t1.z == SILK_FX_MIN, "%d %d %d", cv.t1.x, cv.t1.y, cv.t1.z);
 }
@@ -325,7 +325,7 @@ TEST(bridge_follows_circle)
                 /* the fixed-point bridge */
                 silk_vec3 fn0 = fx3(r0), fn1 = fx3(r1);
                 silk_curve cv;
-                silk_bridge(fx3(v0), fn0, fx3(v1), fn1, &cv);
+                silk_bridge(fx3(v0), fn0, fx3(v1), fn1, 1, &cv);
                 double dev = circle_deviation(dv(cv.p0), dv(cv.p1), dv(cv.t0), dv(cv.t1), ctr, nrm, R);
                 double turn0 = dlen(dsub(dnorm(dv(fn0)), r0)), turn1 = dlen(dsub(dnorm(dv(fn1)), r1));
                 double quant = 4.0 / 27 * (dlen(e0) * turn0 + dlen(e1) * turn1) + 4 * ULP;
@@ -378,7 +378,7 @@ TEST(bulge_bound)
         ref_bridge(dv(fp0), dv(fn0), dv(fp1), dv(fn1), &t0, &t1, &cond);
         double dref = chord_deviation(dv(fp0), dv(fp1), t0, t1);
         silk_curve cv;
-        silk_bridge(fp0, fn0, fp1, fn1, &cv);
+        silk_bridge(fp0, fn0, fp1, fn1, 1, &cv);
         double dfx = chord_deviation(dv(cv.p0), dv(cv.p1), dv(cv.t0), dv(cv.t1));
         double slack = 4.0 / 27 * (dlen(dsub(dv(cv.t0), t0)) + dlen(dsub(dv(cv.t1), t1))) + 2 * ULP;
         /* the PN edge curve as a Hermite curve: tangents 3 (b1 - p0), 3 (p1 - b2) */
@@ -593,7 +593,7 @@ TEST(silhouette_on_sphere)
         if ((ddot(q0, dd0) < 0) == (ddot(q1, dd1) < 0)) continue;   /* not across the silhouette */
         silk_vec3 fn0 = fx3(q0), fn1 = fx3(q1);
         silk_curve cv;
-        silk_bridge(fx3(v0), fn0, fx3(v1), fn1, &cv);
+        silk_bridge(fx3(v0), fn0, fx3(v1), fn1, 1, &cv);
         silk_fx u = silk_silhouette_param(fn0, fx3(dd0), fn1, fx3(dd1));
         dvec S = hermite(dv(cv.p0), dv(cv.p1), dv(cv.t0), dv(cv.t1), fx2d(u));
         double contour = persp ? acos(R / dist) : PI / 2;          /* angle from the view axis */
@@ -704,11 +704,12 @@ TEST(sample_count_special)
  * at the corners of a wing nut's rim - gives a nearly straight bridge: the
  * lean is cut to the other end's (none) plus 1/16, so the curve stays
  * within (4/27) |chord| / 16 < |chord| / 96 of its chord, where eqs. 2-4
- * alone bow it out by up to 6% of its length at a 24-degree lean.  Circular
+ * alone bow it out by up to 6% of its length at a 24-degree lean.  Without
+ * the bound (normals from a file) a bridge is eqs. 2-4's.  Circular
  * arcs, whose ends lean alike, keep their tangents (bridge_follows_circle). */
 TEST(tilt_bound)
 {
-    int bad = 0;
+    int bad = 0, bad_free = 0;
     double worst = 0, worst_free = 0;
     for (int i = 0; i < 20000; i++) {
         dvec p0 = dscale(dmk(check_uniform(-1, 1), check_uniform(-1, 1), check_uniform(-1, 1)), 500);
@@ -719,18 +720,26 @@ TEST(tilt_bound)
         silk_vec3 fp0 = fx3(p0), fp1 = fx3(dadd(p0, c));
         double lc = dlen(dsub(dv(fp1), dv(fp0)));
         silk_curve cv;
-        silk_bridge(fp0, fx3(n0), fp1, fx3(n1), &cv);
+        silk_bridge(fp0, fx3(n0), fp1, fx3(n1), 1, &cv);
         double d = chord_deviation(dv(cv.p0), dv(cv.p1), dv(cv.t0), dv(cv.t1)) / lc;
         /* eqs. 2-4 and the bulge bound without the tilt bound, for the record */
         dvec a = dsub(c, dscale(n1, ddot(c, n1)));
         double free_dev = chord_deviation(dmk(0, 0, 0), c, ref_arc_tangent(c, c), ref_arc_tangent(a, c)) / dlen(c);
         if (d > worst) worst = d;
         if (free_dev > worst_free) worst_free = free_dev;
+        /* normals from a file are taken as they are: eqs. 2-4 alone */
+        silk_curve cf;
+        silk_bridge(fp0, fx3(n0), fp1, fx3(n1), 0, &cf);
+        double df = chord_deviation(dv(cf.p0), dv(cf.p1), dv(cf.t0), dv(cf.t1)) / lc;
+        if (fabs(df - free_dev) > 1e-3 + 16 * ULP / lc && bad_free++ < 5)
+            CHECKF(0, "chord %g, lean %.1f degrees, no tilt bound: %.4g of the chord, eqs. 2-4 give %.4g", lc,
+                   lean * 180 / PI, df, free_dev);
         if (d > 1.0 / 96 + 8 * ULP / lc && bad++ < 5)
             CHECKF(0, "chord %g, lean %.1f degrees: the curve leaves its chord by %.4g of its length", lc,
                    lean * 180 / PI, d);
     }
     CHECKF(bad == 0, "%d one-sided bridges bow out more than |chord| / 96", bad);
+    CHECKF(bad_free == 0, "%d bridges without the bound differ from eqs. 2-4", bad_free);
     CHECKF(worst_free > 0.05, "without the bound they would: %.4f", worst_free);
     printf("  tilt bound: one-sided leans of 5-60 degrees bow a bridge out by at most %.4f of its chord "
            "(%.4f without the bound)\n", worst, worst_free);
