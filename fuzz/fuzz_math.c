@@ -152,7 +152,7 @@ static void curves(fuzz_bytes *b)
     }
     silk_curve cv;
     memset(&cv, 0, sizeof cv);
-    silk_bridge(p0, n0, p1, n1, &cv);
+    silk_bridge(p0, n0, p1, n1, fuzz_u8(b) & 1, &cv);   /* with or without the tilt bound */
     fuzz_expect(cv.p0.x == p0.x && cv.p1.z == p1.z, "bridge ends moved");
     for (int k = 0; k <= 4; k++) (void)silk_hermite_point(&cv, SILK_FX_ONE * k / 4);
     (void)silk_hermite_point(&cv, fx_in(b));

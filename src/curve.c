@@ -175,30 +175,24 @@ silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord)
     return arc_tangent_wide(&d, &c, &lc);
 }
 
-/* Eqs. 2-3: the chord projected onto the plane with normal n, in the
- * chord's scale.  n is normalised here (to Q30), so a normal a few ulps off
- * unit length still gives a tangent exactly in its plane.  A zero normal,
- * or a chord along the normal, leaves the chord itself. */
-static wvec tangent_direction(const wvec *chord, silk_vec3 n)
-{
-    wvec w = wide(n.x, n.y, n.z, 0);
-    if (wide_is_zero(&w)) return *chord;
-    int64_t len = wlen(&w);
-    int64_t u[3];
-    for (int k = 0; k < 3; k++) u[k] = div_round(mul_pow2(w.c[k], 30), len);
-    int64_t along = silk_shr_round64(chord->c[0] * u[0] + chord->c[1] * u[1] + chord->c[2] * u[2], 30);
-    int64_t t[3];
-    for (int k = 0; k < 3; k++) t[k] = chord->c[k] - silk_shr_round64(along * u[k], 30);
-    wvec r = wide(t[0], t[1], t[2], chord->e);
-    return wide_is_zero(&r) ? *chord : r;
-}
-
-void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_curve *out)
+/* The tilt bound (curve.h): a bridge whose end normals lean along the chord
+ * by very different amounts is no circular arc (eq. 4 assumes one: equal
+ * angles at both ends).  Where the normals were averaged from the faces
+ * around each vertex it is, on a coarse mesh, usually a normal averaged
+ * across a rounded-off crease at one end of an edge that is straight in
+ * the surface, and eqs. 2-3 would bow the whole edge out by that end's lean
+ * (a wing seen edge-on, by up to a tenth of its length).  So each end's
+ * lean towards the chord, n.chord, is cut to at most the other end's plus
+ * |chord| / SILK_TILT_SLACK before it is taken off the chord: the ends of a
+ * circular arc lean alike and keep theirs, a one-sided lean gives a nearly
+ * straight curve. */
+void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, int tilt_bound, silk_curve *out)
 {
     out->p0 = p0;
     out->p1 = p1;
     out->n0 = n0;
     out->n1 = n1;
+    silk_vec3 *t[2] = { &out->t0, &out->t1 };
     /* The chord in 64 bits: p1 - p0 may not fit Q16.16. */
     wvec c = wide((int64_t)p1.x - p0.x, (int64_t)p1.y - p0.y, (int64_t)p1.z - p0.z, 0);
     if (wide_is_zero(&c)) {
@@ -206,10 +200,28 @@ void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_cu
         return;
     }
     int64_t lc = wlen(&c);
-    wvec d0 = tangent_direction(&c, n0);
-    out->t0 = arc_tangent_wide(&d0, &c, &lc);
-    wvec d1 = tangent_direction(&c, n1);
-    out->t1 = arc_tangent_wide(&d1, &c, &lc);
+    /* Eqs. 2-3: the chord projected onto the plane of each end's normal,
+     * normalised here (to Q30: a normal a few ulps off unit length still
+     * gives a tangent in its plane), along = chord.u taken off.  A zero
+     * normal leaves the chord itself. */
+    int64_t u[2][3], along[2];
+    for (int i = 0; i < 2; i++) {
+        silk_vec3 n = i ? n1 : n0;
+        wvec w = wide(n.x, n.y, n.z, 0);
+        int64_t len = wlen(&w);
+        for (int k = 0; k < 3; k++) u[i][k] = len ? div_round(mul_pow2(w.c[k], 30), len) : 0;
+        along[i] = silk_shr_round64(c.c[0] * u[i][0] + c.c[1] * u[i][1] + c.c[2] * u[i][2], 30);
+    }
+    for (int i = 0; i < 2; i++) {
+        int64_t cap = silk_abs64(along[1 - i]) + lc / SILK_TILT_SLACK;
+        if (tilt_bound && along[i] > cap) along[i] = cap;
+        if (tilt_bound && along[i] < -cap) along[i] = -cap;
+        int64_t d[3];
+        for (int k = 0; k < 3; k++) d[k] = c.c[k] - silk_shr_round64(along[i] * u[i][k], 30);
+        wvec w = wide(d[0], d[1], d[2], c.e);
+        if (wide_is_zero(&w)) w = c;                   /* a chord along the normal: the chord */
+        *t[i] = arc_tangent_wide(&w, &c, &lc);
+    }
 }
 
 /* ---- eqs. 6-7: the silhouette parameter ----------------------------------- */
@@ -290,19 +302,25 @@ silk_fx silk_silhouette_param(silk_vec3 n0, silk_vec3 d0, silk_vec3 n1, silk_vec
 
     /* First guess: the stable quadratic formula on a u^2 + b u + c, which
      * takes no difference of nearly equal terms: q = -(b + sign(b) sqrt(disc))/2,
-     * roots c/q and q/a.  Working with 2q keeps it integral. */
-    int64_t a = A - B + C, b = B - 2 * A, c = A;       /* |a|, |b| <= 3 * 2^28 */
-    int64_t disc = b * b - 4 * a * c;                  /* >= 0: h changes sign on [0,1] */
-    int64_t sq = disc > 0 ? (int64_t)silk_isqrt64((uint64_t)disc) : 0;
-    int64_t q2 = b >= 0 ? -(b + sq) : sq - b;
+     * roots c/q and q/a.  Working with 2q keeps it integral.  Only a
+     * speed-up: the search below finds the same root from any guess, so a
+     * board, whose square root and divisions are library calls of about
+     * the cost of the search's 17 steps, keeps the code bytes instead
+     * (SILK_FAST_CASES) and starts from the middle. */
     int64_t guess = -1;
-    if (q2 != 0) {
-        int64_t r = div_round_signed(mul_pow2(2 * c, 16), q2);      /* c / q */
-        if (r >= 0 && r <= SILK_FX_ONE) guess = r;
-    }
-    if (guess < 0 && a != 0) {
-        int64_t r = div_round_signed(mul_pow2(q2, 15), a);          /* q / a */
-        if (r >= 0 && r <= SILK_FX_ONE) guess = r;
+    if (SILK_FAST_CASES) {
+        int64_t a = A - B + C, b = B - 2 * A, c = A;   /* |a|, |b| <= 3 * 2^28 */
+        int64_t disc = b * b - 4 * a * c;              /* >= 0: h changes sign on [0,1] */
+        int64_t sq = disc > 0 ? (int64_t)silk_isqrt64((uint64_t)disc) : 0;
+        int64_t q2 = b >= 0 ? -(b + sq) : sq - b;
+        if (q2 != 0) {
+            int64_t r = div_round_signed(mul_pow2(2 * c, 16), q2);      /* c / q */
+            if (r >= 0 && r <= SILK_FX_ONE) guess = r;
+        }
+        if (guess < 0 && a != 0) {
+            int64_t r = div_round_signed(mul_pow2(q2, 15), a);          /* q / a */
+            if (r >= 0 && r <= SILK_FX_ONE) guess = r;
+        }
     }
     if (guess < 0) guess = SILK_FX_HALF;
 

@@ -42,14 +42,28 @@ silk_vec3 silk_arc_tangent(silk_vec3 dir, silk_vec3 chord);
  * whole to fit, keeping its direction.  Must be <= 4 (curve.c's bounds). */
 #define SILK_ARC_MAX_RATIO 4
 
+/* The tilt bound of silk_bridge, for normals that are estimates (computed
+ * at load from the faces around each vertex, silk_mesh.normals_used): each
+ * end normal's lean along the chord (n.chord / |chord|, the sine of the
+ * tangent's angle to the chord) is cut to at most the other end's plus
+ * 1 / SILK_TILT_SLACK (3.6 degrees), so that one normal averaged across a
+ * rounded-off crease does not bow a straight edge.  Normals from the file
+ * (a modeller's, or fitted to the detailed surface by silk prepare) are
+ * taken as they are: there a one-sided lean is the surface's. */
+#define SILK_TILT_SLACK 16
+
 /* Eqs. 2-5: the silhouette bridge over p0->p1 with unit normals n0, n1:
  * tangent directions are the chord projected onto each end's tangent plane
- * (eqs. 2, 3), lengths from eq. 4.  Fills p0, p1, t0, t1, n0, n1 of out;
+ * (eqs. 2, 3), after the tilt bound above where tilt_bound is set; lengths
+ * from eq. 4.  Fills p0, p1, t0, t1, n0, n1 of out;
  * uv0/uv1 are left as they are.  The normals are renormalised inside, so a
  * few ulps off unit length do not matter; a zero normal, or a chord along
  * the normal, gives a straight tangent (the chord); p0 == p1 gives zero
  * tangents.  p1 - p0 is taken in 64 bits, so any two Q16.16 points work. */
-void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, silk_curve *out);
+void silk_bridge(silk_vec3 p0, silk_vec3 n0, silk_vec3 p1, silk_vec3 n1, int tilt_bound, silk_curve *out);
+
+/* Whether mesh m's bridges take the tilt bound: its normals were not the file's. */
+static inline int silk_tilt_bound(const silk_mesh *m) { return m->normals_used != SILK_NORMALS_FILE; }
 
 /* Eqs. 6-7: the parameter u in [0,1] where the linearly interpolated normal
  * (1-u)n0 + u n1 is perpendicular to the linearly interpolated view

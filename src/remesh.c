@@ -256,7 +256,7 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
         silk_sil_edge_point(f, ea, &sa, pa->u, &A, &nA, &s->c.uv0, &s->c.rgb0);
         silk_sil_edge_point(f, eb, &sb, pb->u, &B, &nB, &s->c.uv1, &s->c.rgb1);
     }
-    silk_bridge(A, nA, B, nB, &s->c);
+    silk_bridge(A, nA, B, nB, silk_tilt_bound(m), &s->c);
     s->c.p0 = A;
     s->c.p1 = B;
     s->n = silk_sil_intervals(f->v, &s->c, silk_v3_dot(nA, nB), f->tol);

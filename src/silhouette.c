@@ -244,7 +244,7 @@ static void edge_tangents(const silk_sil_frame *f, const silk_sil_edge *w, silk_
     } else {
         const silk_sil_pair *p = &f->pairs[w->pair0];
         silk_curve c;
-        silk_bridge(p0, m->normal[p->n0], p1, m->normal[p->n1], &c);
+        silk_bridge(p0, m->normal[p->n0], p1, m->normal[p->n1], silk_tilt_bound(m), &c);
         t[0] = c.t0;
         t[1] = c.t1;
     }

@@ -404,7 +404,7 @@ TEST(tangent_length)
     silk_vec3 p0 = silk_v3(-SILK_COORD_MAX, -SILK_COORD_MAX, -SILK_COORD_MAX);
     silk_vec3 p1 = silk_v3(SILK_COORD_MAX, SILK_COORD_MAX, SILK_COORD_MAX);
     silk_vec3 n = silk_v3(SILK_FX_C(57735, 100000), SILK_FX_C(57735, 100000), -SILK_FX_C(57735, 100000));
-    silk_bridge(p0, n, p1, silk_v3_neg(n), &c);
+    silk_bridge(p0, n, p1, silk_v3_neg(n), 1, &c);
     CHECK(c.p0.x == p0.x && c.p1.z == p1.z);
     for (int k = 0; k <= 16; k++) {
         silk_vec3 q = silk_hermite_point(&c, SILK_FX_ONE * k / 16);

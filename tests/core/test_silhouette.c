@@ -57,7 +57,8 @@ static int random_view(const silk_mesh *m, int i, silk_view *v)
 
 /* ---- references ------------------------------------------------------------ */
 
-/* Eqs. 2-5: tangents of the bridge over p0 -> p1, with the bulge bound. */
+/* Eqs. 2-5: tangents of the bridge over p0 -> p1, with the tilt and bulge
+ * bounds. */
 static void bridge_ref(const double p0[3], const double n0[3], const double p1[3], const double n1[3],
                        double t0[3], double t1[3])
 {
@@ -65,8 +66,10 @@ static void bridge_ref(const double p0[3], const double n0[3], const double p1[3
     double cl = sqrt(dot3(c, c));
     const double *n[2] = { n0, n1 };
     double *t[2] = { t0, t1 };
+    double lean[2] = { dot3(c, n0) / sqrt(dot3(n0, n0)), dot3(c, n1) / sqrt(dot3(n1, n1)) };
     for (int k = 0; k < 2; k++) {
-        double cn = dot3(c, n[k]);
+        double nl = sqrt(dot3(n[k], n[k])), cap = fabs(lean[1 - k]) + cl / SILK_TILT_SLACK;
+        double cn = fmax(-cap, fmin(cap, lean[k])) / nl;   /* the tilt bound (curve.h) */
         double d[3] = { c[0] - cn * n[k][0], c[1] - cn * n[k][1], c[2] - cn * n[k][2] };
         double dl = sqrt(dot3(d, d));
         double cos_t = dl > 0 ? dot3(d, c) / (dl * cl) : 1;

@@ -300,6 +300,8 @@ static void put_mesh_fn(writer *w, const silk_mesh *m)
             (unsigned long)m->nedges, (unsigned long)m->nfeature_edges, (unsigned long)m->nboundary_edges);
     fprintf(f, "    m->nnonmanifold_edges = %lu;\n    m->ndegenerate_tris = %lu;\n",
             (unsigned long)m->nnonmanifold_edges, (unsigned long)m->ndegenerate_tris);
+    /* where the normals came from: the smooth outline trusts a file's (curve.h, the tilt bound) */
+    if (m->normals_used == SILK_NORMALS_FILE) fprintf(f, "    m->normals_used = SILK_NORMALS_FILE;\n");
     fprintf(f, "    m->pos = (silk_vec3 *)%s_pos;\n", n);
     fprintf(f, "    m->normal = (silk_vec3 *)%s_normal;\n", n);
     fprintf(f, "    m->normal_vertex = (silk_index *)%s_normal_vertex;\n", n);
