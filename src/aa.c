@@ -86,6 +86,8 @@
  */
 #include <string.h>
 #include "aa.h"
+#include "raster_place.h"
+#include "phong_parts.h"
 #include "remesh.h"
 #include "silk/siltex.h"
 

@@ -100,6 +100,51 @@ static uint32_t side_point(uint32_t k, uint32_t s, uint32_t n)
     return SILK_PATCH_POINT(s, 0, n);
 }
 
+/* Triangle t appended to g: as it is when its three edges have
+ * silhouetteness 0, else its blended patch fanned around the centre with
+ * each side cut into nseg segments. */
+static void emit_tri(const silk_mesh *m, uint32_t t, const silk_fx *alpha, const uint8_t *nseg, silk_frame_geom *g)
+{
+    uint32_t r = g->nvrec, nt = g->ntri, p = g->npatch;
+    silk_index te[3] = { silk_mesh_tri_edge(m, t, 0), silk_mesh_tri_edge(m, t, 1), silk_mesh_tri_edge(m, t, 2) };
+    silk_fx sa[3] = { alpha[te[0]], alpha[te[1]], alpha[te[2]] };
+    if (sa[0] == 0 && sa[1] == 0 && sa[2] == 0) {
+        for (uint32_t k = 0; k < 3; k++) {
+            g->vrec[r].kind = SILK_VREC_CORNER;
+            g->vrec[r].a = 3 * t + k;
+            g->tri[3 * nt + k] = r++;
+        }
+        g->tri_added[nt++] = 0;
+        g->nvrec = r;
+        g->ntri = nt;
+        return;
+    }
+    silk_patch_build(m, t, sa, SILK_PN_LINEAR, &g->patch[p]);
+    uint32_t centre = r, first = r + 1, nb = 0;
+    g->vrec[r].kind = SILK_VREC_PATCH;
+    g->vrec[r].a = p;
+    g->vrec[r++].b = SILK_PATCH_POINT(1, 1, 3);
+    /* The boundary counter-clockwise: each corner, then its side's inner points. */
+    for (uint32_t k = 0; k < 3; k++) {
+        uint32_t n = nseg[te[k]];
+        for (uint32_t s = 0; s < n; s++) {
+            g->vrec[r].kind = SILK_VREC_PATCH;
+            g->vrec[r].a = p;
+            g->vrec[r++].b = s == 0 ? SILK_PATCH_POINT(k == 0, k == 1, 1) : side_point(k, s, n);
+            nb++;
+        }
+    }
+    for (uint32_t q = 0; q < nb; q++) {
+        g->tri[3 * nt] = first + q;
+        g->tri[3 * nt + 1] = first + (q + 1) % nb;
+        g->tri[3 * nt + 2] = centre;
+        g->tri_added[nt++] = 1;
+    }
+    g->nvrec = r;
+    g->ntri = nt;
+    g->npatch = p + 1;
+}
+
 silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx beta,
                              silk_fx tolerance_px, silk_frame_geom *g, silk_frame_stats *stats,
                              silk_error *err)
@@ -156,45 +201,8 @@ silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view 
     if (!g->patch || !g->vrec || !g->tri || !g->tri_added)
         return silk_frame_fall_back(a, m, &mark, g, stats, err);
 
-    uint32_t r = 0, nt = 0, p = 0;
-    for (uint32_t t = 0; t < m->ntris; t++) {
-        silk_index te[3] = { silk_mesh_tri_edge(m, t, 0), silk_mesh_tri_edge(m, t, 1), silk_mesh_tri_edge(m, t, 2) };
-        silk_fx sa[3] = { alpha[te[0]], alpha[te[1]], alpha[te[2]] };
-        if (sa[0] == 0 && sa[1] == 0 && sa[2] == 0) {
-            for (uint32_t k = 0; k < 3; k++) {
-                g->vrec[r].kind = SILK_VREC_CORNER;
-                g->vrec[r].a = 3 * t + k;
-                g->tri[3 * nt + k] = r++;
-            }
-            g->tri_added[nt++] = 0;
-            continue;
-        }
-        silk_patch_build(m, t, sa, SILK_PN_LINEAR, &g->patch[p]);
-        uint32_t centre = r, first = r + 1, nb = 0;
-        g->vrec[r].kind = SILK_VREC_PATCH;
-        g->vrec[r].a = p;
-        g->vrec[r++].b = SILK_PATCH_POINT(1, 1, 3);
-        /* The boundary counter-clockwise: each corner, then its side's inner points. */
-        for (uint32_t k = 0; k < 3; k++) {
-            uint32_t n = nseg[te[k]];
-            for (uint32_t s = 0; s < n; s++) {
-                g->vrec[r].kind = SILK_VREC_PATCH;
-                g->vrec[r].a = p;
-                g->vrec[r++].b = s == 0 ? SILK_PATCH_POINT(k == 0, k == 1, 1) : side_point(k, s, n);
-                nb++;
-            }
-        }
-        for (uint32_t q = 0; q < nb; q++) {
-            g->tri[3 * nt] = first + q;
-            g->tri[3 * nt + 1] = first + (q + 1) % nb;
-            g->tri[3 * nt + 2] = centre;
-            g->tri_added[nt++] = 1;
-        }
-        p++;
-    }
-    g->nvrec = r;
-    g->ntri = nt;
-    g->npatch = npatch;
+    g->nvrec = g->ntri = g->npatch = 0;
+    for (uint32_t t = 0; t < m->ntris; t++) emit_tri(m, t, alpha, nseg, g);
     if (stats) stats->silhouette_tris = npatch;
     return SILK_OK;
 }

@@ -185,6 +185,39 @@ static silk_status bad(silk_error *err, silk_status code, const char *what)
     return silk_fail(err, code, "camera", 0, "%s", what);
 }
 
+/* v's view matrix from its axes (rot24) and the eye, and its projection:
+ * the far plane at infinity, or an orthographic box. */
+static void view_matrices(silk_view *v, const silk_camera *cam, silk_fx sx, silk_fx sy)
+{
+    silk_mat4 V = silk_mat4_identity();
+    silk_vec3 rows[3] = { v->right, v->upv, silk_v3_neg(v->forward) };
+    for (int i = 0; i < 3; i++) {
+        V.m[i][0] = rows[i].x;
+        V.m[i][1] = rows[i].y;
+        V.m[i][2] = rows[i].z;
+        int64_t t = (int64_t)v->rot24[i][0] * cam->eye.x + (int64_t)v->rot24[i][1] * cam->eye.y +
+                    (int64_t)v->rot24[i][2] * cam->eye.z;
+        V.m[i][3] = silk_fx_sat(-silk_shr_round64(t, 24));
+    }
+    v->view = V;
+
+    silk_mat4 P = { { { 0 } } };
+    P.m[0][0] = sx;
+    P.m[1][1] = sy;
+    if (cam->ortho) {
+        int64_t range = (int64_t)cam->zfar - cam->znear;
+        P.m[2][2] = div_round(-2 * (int64_t)SILK_FX_ONE * SILK_FX_ONE, range);
+        P.m[2][3] = div_round(-((int64_t)cam->zfar + cam->znear) * SILK_FX_ONE, range);
+        P.m[3][3] = SILK_FX_ONE;
+    } else {
+        P.m[2][2] = -SILK_FX_ONE;                    /* far plane at infinity */
+        P.m[2][3] = -2 * cam->znear;
+        P.m[3][2] = -SILK_FX_ONE;
+    }
+    v->proj = P;
+    v->viewproj = silk_mat4_mul(&P, &V);
+}
+
 silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err)
 {
     if (!v || !cam) return bad(err, SILK_ERR_ARG, "no camera given");
@@ -250,33 +283,7 @@ silk_status silk_view_init(silk_view *v, const silk_camera *cam, silk_error *err
         v->rot24[2][k] = -fwd[k];
     }
 
-    silk_mat4 V = silk_mat4_identity();
-    silk_vec3 rows[3] = { v->right, v->upv, silk_v3_neg(v->forward) };
-    for (int i = 0; i < 3; i++) {
-        V.m[i][0] = rows[i].x;
-        V.m[i][1] = rows[i].y;
-        V.m[i][2] = rows[i].z;
-        int64_t t = (int64_t)v->rot24[i][0] * cam->eye.x + (int64_t)v->rot24[i][1] * cam->eye.y +
-                    (int64_t)v->rot24[i][2] * cam->eye.z;
-        V.m[i][3] = silk_fx_sat(-silk_shr_round64(t, 24));
-    }
-    v->view = V;
-
-    silk_mat4 P = { { { 0 } } };
-    P.m[0][0] = sx;
-    P.m[1][1] = sy;
-    if (cam->ortho) {
-        int64_t range = (int64_t)cam->zfar - cam->znear;
-        P.m[2][2] = div_round(-2 * (int64_t)SILK_FX_ONE * SILK_FX_ONE, range);
-        P.m[2][3] = div_round(-((int64_t)cam->zfar + cam->znear) * SILK_FX_ONE, range);
-        P.m[3][3] = SILK_FX_ONE;
-    } else {
-        P.m[2][2] = -SILK_FX_ONE;                    /* far plane at infinity */
-        P.m[2][3] = -2 * cam->znear;
-        P.m[3][2] = -SILK_FX_ONE;
-    }
-    v->proj = P;
-    v->viewproj = silk_mat4_mul(&P, &V);
+    view_matrices(v, cam, sx, sy);
     return SILK_OK;
 }
 

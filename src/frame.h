@@ -38,63 +38,6 @@ typedef struct silk_frame_geom {
     uint32_t    nlines;
 } silk_frame_geom;
 
-/* raster.c: the row of a frame `height` rows high that the rasterizer
- * maps clip point c to (w > 0), so that a renderer can tell which band a
- * vertex falls in exactly as the rasterizer will. */
-int64_t silk_raster_row(const silk_vec4 *c, int height);
-/* raster.c: whether triangle a b c, drawn into t (any of its bands) with
- * back faces culled, draws nothing for a reason the vertices alone give:
- * wholly outside one clip plane, or inside every plane (not clipped) and
- * degenerate or seen from behind on the screen. */
-int silk_raster_culled(const silk_target *t, const silk_vertex_out *a, const silk_vertex_out *b,
-                       const silk_vertex_out *c);
-/* raster.c: where the rasterizer puts v (w > 0): x, y in 1/SILK_RASTER_SUB
- * pixels (pixel (0,0) covers [0, SILK_RASTER_SUB)^2), depth d as in the
- * depth buffer. */
-#define SILK_RASTER_SUB 16
-void silk_raster_point(const silk_target *t, const silk_vertex_out *v, int64_t *x, int64_t *y, uint32_t *d);
-
-/* raster.c, for a renderer that places each vertex once a frame
- * (render.c's SILK_DRAW_DIRECT and SILK_PLACE_ONCE):
- * silk_raster_place puts a vertex at clip coordinates clip where
- * silk_raster_triangle does (xy in 1/SILK_RASTER_SUB pixels) and returns
- * 1, or returns 0 when it lies outside a clip plane (then the triangles at
- * it are clipped); silk_raster_reaches says from three vertices so placed
- * alone whether silk_raster_triangle could draw a pixel of their triangle
- * (0: it draws none, whatever the rest of the vertices' output); for one
- * that could, silk_raster_placed is silk_raster_triangle, the same pixels
- * without placing them again. */
-int silk_raster_place(const silk_target *t, const silk_vec4 *clip, int32_t xy[2]);
-int silk_raster_reaches(const silk_target *t, const int32_t *const xy[3]);
-void silk_raster_placed(silk_target *t, const silk_hal *h, const silk_vertex_out *const v[3],
-                        const int32_t *const xy[3]);
-
-/* phong.c: whether h's vertex stage is the default one, which reads a
- * record only through silk_vrec_eval: then two CORNER records of the same
- * vertex, normal and uv give the same bits, and the renderer may evaluate
- * them once (render.c's vertex cache).  A stage of the caller's own may
- * read anything in the record, so it is never assumed to. */
-int silk_hal_vertex_by_attrs(const silk_hal *h);
-/* phong.c, with silk_hal_vertex_by_attrs (render.c's SILK_DRAW_DIRECT):
- * the default vertex stage in two parts, the same bits - the clip
- * coordinates it gives a vertex at position pos (a CORNER record's), and
- * its output for record r but the clip coordinates (left as they are). */
-silk_vec4 silk_hal_vertex_clip(const silk_hal *h, silk_vec3 pos);
-void silk_hal_vertex_varyings(const silk_geom *g, const silk_vrec *r, silk_vertex_out *out);
-/* phong.c (the rasterizer's SILK_PHONG_PLAIN): p when h is the default
- * stages (silk_hal_phong) of p in their usual case - a perspective camera,
- * two directional lights, no texture or vertex colours, SILK_PHONG_PLAIN_NVAR
- * varyings and every material term below 16 - else NULL; then
- * silk_phong_plain_fragment(p, var) is h->fragment(h, var), the same bits,
- * with the tests that case settles made once (the rasterizer asks per
- * triangle) rather than per pixel.  It never discards. */
-#define SILK_PHONG_PLAIN_NVAR 6
-const silk_phong *silk_hal_phong_plain(const silk_hal *h);
-uint32_t silk_phong_plain_fragment(const silk_phong *p, const silk_fx *var);
-/* phong.c: the view the default vertex stage projects with, or NULL (a
- * stage of the caller's own, or none). */
-const silk_view *silk_hal_vertex_view(const silk_hal *h);
-
 /* The coarse mesh as it is: one CORNER record per triangle corner. */
 silk_status silk_frame_flat(silk_arena *a, const silk_mesh *m, silk_frame_geom *g, silk_error *err);
 /* Room in g (from the top of the arena) for the shares of ntris input

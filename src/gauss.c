@@ -313,6 +313,64 @@ static silk_status nomem(silk_error *err, silk_arena *a, const silk_arena_mark *
                      what, (unsigned long)need);
 }
 
+/* Each normal's key in the hierarchy (fine[i]: latitude, longitude and w
+ * at the finest level) with order[i] = i, and the model centre C *centre
+ * (middle of the normals' vertices' box); returns k, the scale s = 2^k
+ * (Q16.16 units) >= every |N.(V-C)|, so that w = -N.(V-C)/s is in [-1,1]. */
+static int fine_keys(const silk_mesh *m, uint32_t *fine, uint32_t *order, silk_vec3 *centre)
+{
+    uint32_t n = m->nnormals;
+    /* C, and s = 2^k >= every |N.(V-C)| (Q32.32) */
+    silk_vec3 lo3 = silk_v3(SILK_FX_MAX, SILK_FX_MAX, SILK_FX_MAX), hi3 = silk_v3(SILK_FX_MIN, SILK_FX_MIN, SILK_FX_MIN);
+    for (uint32_t i = 0; i < n; i++) {
+        silk_vec3 p = m->pos[m->normal_vertex[i]];
+        lo3 = silk_v3(silk_fx_min(lo3.x, p.x), silk_fx_min(lo3.y, p.y), silk_fx_min(lo3.z, p.z));
+        hi3 = silk_v3(silk_fx_max(hi3.x, p.x), silk_fx_max(hi3.y, p.y), silk_fx_max(hi3.z, p.z));
+    }
+    silk_vec3 c = n ? silk_v3((silk_fx)(((int64_t)lo3.x + hi3.x) / 2), (silk_fx)(((int64_t)lo3.y + hi3.y) / 2),
+                              (silk_fx)(((int64_t)lo3.z + hi3.z) / 2))
+                    : silk_v3(0, 0, 0);
+    int64_t wmax = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        int64_t d = (int64_t)silk_abs64(persp_dot64(m->normal[i], c, m->pos[m->normal_vertex[i]]));
+        if (d > wmax) wmax = d;
+    }
+    int scale_log2 = 0;                     /* s = 2^scale_log2 Q16.16 units = 2^(scale_log2+16) in Q32.32 */
+    while (((int64_t)1 << (scale_log2 + 16)) < wmax) scale_log2++;
+
+    int64_t s = (int64_t)1 << (scale_log2 + 16);
+    for (uint32_t i = 0; i < n; i++) {
+        silk_vec3 nn = m->normal[i];
+        silk_fx hyp = (silk_fx)silk_isqrt64((uint64_t)((int64_t)nn.x * nn.x + (int64_t)nn.y * nn.y));
+        uint32_t la = angle_index(silk_fx_atan2(nn.z, hyp), 1, MAX_DEPTH);
+        uint32_t lo = angle_index(silk_fx_atan2(nn.y, nn.x), 2, MAX_DEPTH);
+        /* (w + 1)/2 * 2^10 = (s - N.(V-C)) * 2^9 / s, exactly */
+        int64_t dot = persp_dot64(nn, c, m->pos[m->normal_vertex[i]]);
+        int64_t wi = ((s - dot) << MAX_DEPTH) >> (scale_log2 + 17);
+        if (wi > 1023) wi = 1023;
+        fine[i] = la << 20 | lo << 10 | (uint32_t)wi;
+        order[i] = i;
+    }
+    *centre = c;
+    return scale_log2;
+}
+
+/* The mesh's normals renumbered into cell order (order[new] = old; tmp,
+ * fine and ncopy scratch of n entries). */
+static void renumber(silk_mesh *m, const uint32_t *order, uint32_t *tmp, uint32_t *fine, silk_vec3 *ncopy)
+{
+    uint32_t n = m->nnormals;
+    /* tmp: old -> new */
+    for (uint32_t k = 0; k < n; k++) tmp[order[k]] = k;
+    for (uint64_t k = 0; k < (uint64_t)m->ntris * 3; k++) m->tri_normal[k] = tmp[m->tri_normal[k]];
+    if (n) {
+        for (uint32_t k = 0; k < n; k++) fine[k] = m->normal_vertex[order[k]];
+        memcpy(m->normal_vertex, fine, (size_t)n * sizeof *fine);
+        for (uint32_t k = 0; k < n; k++) ncopy[k] = m->normal[order[k]];
+        memcpy(m->normal, ncopy, (size_t)n * sizeof *ncopy);
+    }
+}
+
 silk_status silk_vis_build(silk_mesh *m, const silk_vis_opts *opts, silk_arena *a, silk_error *err)
 {
     if (!m || !a) return silk_fail(err, SILK_ERR_ARG, "visibility", 0, "missing mesh or arena");
@@ -330,38 +388,8 @@ silk_status silk_vis_build(silk_mesh *m, const silk_vis_opts *opts, silk_arena *
     silk_vec3 *ncopy = silk_arena_array_top(a, n, sizeof *ncopy, SILK_MEM_LOAD);
     if (!fine || !order || !tmp || !ncopy) return nomem(err, a, &mark, "the hierarchy's scratch");
 
-    /* Model centre C (middle of the normals' vertices' box) and the scale
-     * s = 2^k >= every |N.(V-C)| (Q32.32), so that w = -N.(V-C)/s is in [-1,1]. */
-    silk_vec3 lo3 = silk_v3(SILK_FX_MAX, SILK_FX_MAX, SILK_FX_MAX), hi3 = silk_v3(SILK_FX_MIN, SILK_FX_MIN, SILK_FX_MIN);
-    for (uint32_t i = 0; i < n; i++) {
-        silk_vec3 p = m->pos[m->normal_vertex[i]];
-        lo3 = silk_v3(silk_fx_min(lo3.x, p.x), silk_fx_min(lo3.y, p.y), silk_fx_min(lo3.z, p.z));
-        hi3 = silk_v3(silk_fx_max(hi3.x, p.x), silk_fx_max(hi3.y, p.y), silk_fx_max(hi3.z, p.z));
-    }
-    silk_vec3 centre = n ? silk_v3((silk_fx)(((int64_t)lo3.x + hi3.x) / 2), (silk_fx)(((int64_t)lo3.y + hi3.y) / 2),
-                                   (silk_fx)(((int64_t)lo3.z + hi3.z) / 2))
-                         : silk_v3(0, 0, 0);
-    int64_t wmax = 0;
-    for (uint32_t i = 0; i < n; i++) {
-        int64_t d = (int64_t)silk_abs64(persp_dot64(m->normal[i], centre, m->pos[m->normal_vertex[i]]));
-        if (d > wmax) wmax = d;
-    }
-    int scale_log2 = 0;                     /* s = 2^scale_log2 Q16.16 units = 2^(scale_log2+16) in Q32.32 */
-    while (((int64_t)1 << (scale_log2 + 16)) < wmax) scale_log2++;
-
-    int64_t s = (int64_t)1 << (scale_log2 + 16);
-    for (uint32_t i = 0; i < n; i++) {
-        silk_vec3 nn = m->normal[i];
-        silk_fx hyp = (silk_fx)silk_isqrt64((uint64_t)((int64_t)nn.x * nn.x + (int64_t)nn.y * nn.y));
-        uint32_t la = angle_index(silk_fx_atan2(nn.z, hyp), 1, MAX_DEPTH);
-        uint32_t lo = angle_index(silk_fx_atan2(nn.y, nn.x), 2, MAX_DEPTH);
-        /* (w + 1)/2 * 2^10 = (s - N.(V-C)) * 2^9 / s, exactly */
-        int64_t dot = persp_dot64(nn, centre, m->pos[m->normal_vertex[i]]);
-        int64_t wi = ((s - dot) << MAX_DEPTH) >> (scale_log2 + 17);
-        if (wi > 1023) wi = 1023;
-        fine[i] = la << 20 | lo << 10 | (uint32_t)wi;
-        order[i] = i;
-    }
+    silk_vec3 centre;
+    int scale_log2 = fine_keys(m, fine, order, &centre);
 
     /* Count, and coarsen the leaves until the nodes fit the memory budget. */
     build_ctx b;
@@ -391,16 +419,8 @@ silk_status silk_vis_build(silk_mesh *m, const silk_vis_opts *opts, silk_arena *
     b.widened = 0;
     if (n) build_cell(&b, &root, 0, n);
 
-    /* Renumber the mesh's normals into cell order (tmp: old -> new).
-     * Nothing above touched the mesh, so a failure leaves it as it was. */
-    for (uint32_t k = 0; k < n; k++) tmp[order[k]] = k;
-    for (uint64_t k = 0; k < (uint64_t)m->ntris * 3; k++) m->tri_normal[k] = tmp[m->tri_normal[k]];
-    if (n) {
-        for (uint32_t k = 0; k < n; k++) fine[k] = m->normal_vertex[order[k]];
-        memcpy(m->normal_vertex, fine, (size_t)n * sizeof *fine);
-        for (uint32_t k = 0; k < n; k++) ncopy[k] = m->normal[order[k]];
-        memcpy(m->normal, ncopy, (size_t)n * sizeof *ncopy);
-    }
+    /* Nothing above touched the mesh, so a failure leaves it as it was. */
+    renumber(m, order, tmp, fine, ncopy);
 
     vis->nnodes = b.nnodes;
     vis->nnormals = n;

@@ -271,6 +271,38 @@ static int have_file_normals(const silk_mesh_input *in, const silk_load_opts *op
     return 1;
 }
 
+/* Each vertex's corners, in corner order (a stable counting sort): those
+ * of vertex v are vc[vc_start[v] .. vc_start[v + 1]). */
+static void vertex_corners(const silk_mesh *m, uint32_t *vc_start, uint32_t *vc)
+{
+    uint32_t nc = 3 * m->ntris, nv = m->nverts;
+    for (uint32_t c = 0; c < nc; c++) vc_start[m->tri[c] + 1]++;
+    for (uint32_t v = 0; v < nv; v++) vc_start[v + 1] += vc_start[v];
+    for (uint32_t c = 0; c < nc; c++) vc[vc_start[m->tri[c]]++] = c;
+    for (uint32_t v = nv; v > 0; v--) vc_start[v] = vc_start[v - 1];
+    vc_start[0] = 0;
+
+}
+
+/* One normal per group of corners (parent, union-find), numbered in
+ * vertex order: m->tri_normal and m->normal_vertex. */
+static void number_groups(silk_mesh *m, uint32_t *parent, const uint32_t *vc_start, const uint32_t *vc)
+{
+    uint32_t nc = 3 * m->ntris, nv = m->nverts;
+    for (uint32_t c = 0; c < nc; c++) m->tri_normal[c] = SILK_NO_INDEX;
+    uint32_t g = 0;
+    for (uint32_t v = 0; v < nv; v++) {
+        for (uint32_t i = vc_start[v]; i < vc_start[v + 1]; i++) {
+            uint32_t c = vc[i], r = uf_find(parent, c);
+            if (m->tri_normal[r] == SILK_NO_INDEX) {
+                m->normal_vertex[g] = v;
+                m->tri_normal[r] = g++;
+            }
+            m->tri_normal[c] = m->tri_normal[r];
+        }
+    }
+}
+
 silk_status silk_build_normals(const silk_mesh_input *in, const silk_load_opts *opts,
                                const char *name, silk_arena *a, silk_mesh *m, silk_error *err)
 {
@@ -296,13 +328,7 @@ silk_status silk_build_normals(const silk_mesh_input *in, const silk_load_opts *
     mark_creases(m, fn, opts->crease_deg);
     if (in->tri_group) mark_group_changes(m, in->tri_group);
 
-    /* vertex -> corners, in corner order (a stable counting sort) */
-    for (uint32_t c = 0; c < nc; c++) vc_start[m->tri[c] + 1]++;
-    for (uint32_t v = 0; v < nv; v++) vc_start[v + 1] += vc_start[v];
-    for (uint32_t c = 0; c < nc; c++) vc[vc_start[m->tri[c]]++] = c;
-    for (uint32_t v = nv; v > 0; v--) vc_start[v] = vc_start[v - 1];
-    vc_start[0] = 0;
-
+    vertex_corners(m, vc_start, vc);
     for (uint32_t c = 0; c < nc; c++) parent[c] = c;
     if (from_file) {
         uint32_t *stamp = silk_arena_array_top(a, in->nfile_normals, sizeof *stamp, SILK_MEM_LOAD);
@@ -328,18 +354,7 @@ silk_status silk_build_normals(const silk_mesh_input *in, const silk_load_opts *
     m->normal = silk_arena_array(a, ngroups, sizeof *m->normal, SILK_MEM_MESH);
     m->normal_vertex = silk_arena_array(a, ngroups, sizeof *m->normal_vertex, SILK_MEM_MESH);
     if (!m->normal || !m->normal_vertex) goto out_of_memory;
-    for (uint32_t c = 0; c < nc; c++) m->tri_normal[c] = SILK_NO_INDEX;
-    uint32_t g = 0;
-    for (uint32_t v = 0; v < nv; v++) {
-        for (uint32_t i = vc_start[v]; i < vc_start[v + 1]; i++) {
-            uint32_t c = vc[i], r = uf_find(parent, c);
-            if (m->tri_normal[r] == SILK_NO_INDEX) {
-                m->normal_vertex[g] = v;
-                m->tri_normal[r] = g++;
-            }
-            m->tri_normal[c] = m->tri_normal[r];
-        }
-    }
+    number_groups(m, parent, vc_start, vc);
 
     if (from_file) {
         file_normals(m, in, fn, m->normal);

@@ -14,6 +14,7 @@
  */
 #include <string.h>
 #include "frame.h"
+#include "phong_parts.h"
 #include "silk/hal.h"
 #include "silk/texture.h"
 #include "compiler.h"

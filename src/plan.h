@@ -116,6 +116,28 @@ typedef struct silk_sil_seg {
  * triangle being emitted. */
 #define SILK_SIL_TAN_MEMO 3
 
+/* What the stages that read a plan remember between their questions, so
+ * that asking again is cheap: the memos.  The plan itself is read-only once
+ * made; its maker hands it a cursor (silk_sil_frame.cur), which the
+ * emitter and the outline then own and write, the plan's const
+ * notwithstanding.  None of it changes an answer, only what it costs. */
+typedef struct silk_sil_cursor {
+    /* silk_sil_side_edge: the last triangle asked for + 1 (0: none) and its three sides' edges */
+    uint32_t side_tri1;
+    struct silk_sil_edge *side_edge[3];
+    /* silk_sil_edge_curve: the tangents of the last few edges asked for */
+    const struct silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
+    silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
+    uint32_t tan_next;
+    /* silk_remesh_kept_index: the kept segment found last */
+    uint32_t kept_last;
+    /* silk_sil_pair_point, with the kept segments (silk_remesh_keep): each
+     * silhouette point's position and normal, 2 per pair, once
+     * pair_ready[i]; NULL when not kept */
+    silk_vec3 *pair_pn;
+    uint8_t *pair_ready;
+} silk_sil_cursor;
+
 /* What the plan keeps for speed where the arena has room, none of it part
  * of the frame's need (silk_sil_kept): the carrying edges' rank
  * (SILK_CARRY_RANK, silk_sil_frame.carry_rank) and the segments
@@ -130,12 +152,8 @@ typedef struct silk_sil_keep {
     size_t room;
     silk_sil_seg *seg_kept;
     uint32_t *seg_tri;
-    uint32_t nseg_kept, kept_last;   /* kept_last: memo of silk_remesh_kept_index */
+    uint32_t nseg_kept;
     struct sil_layout *lay_kept;   /* with them: where their points lie on their triangle's boundary (remesh.c) */
-    /* with the segments: each silhouette point's position and normal, 2
-     * per pair, once pair_ready[i] (silk_sil_pair_point) */
-    silk_vec3 *pair_pn;
-    uint8_t *pair_ready;
     size_t kept_bytes, kept_need;
     uint64_t kept_recs, kept_tris, kept_curves;   /* what the kept segments' shares hold in all */
 } silk_sil_keep;
@@ -153,8 +171,6 @@ typedef struct silk_sil_frame {
     uint32_t nsil;
 
     silk_sil_edge *edges;  uint32_t nedges;   /* in mesh edge order */
-    uint32_t side_tri1;      /* memo of silk_sil_side_edge: the triangle + 1 (0: none) */
-    silk_sil_edge *side_edge[3];
     silk_sil_pair *pairs;  uint32_t npairs;
     uint32_t nsides;         /* triangle sides on carrying edges */
     silk_fx *chain;        uint32_t nchain;
@@ -183,10 +199,9 @@ typedef struct silk_sil_frame {
      * few dozen words. */
     silk_vec3 *tan_kept;     /* 2 per carrying edge of the first ntan_kept (silk_sil_keep_tangents) */
     uint32_t ntan_kept;
-    /* memo of silk_sil_edge_curve: the tangents of the last few edges asked for */
-    const silk_sil_edge *tan_edge[SILK_SIL_TAN_MEMO];
-    silk_vec3 tan[SILK_SIL_TAN_MEMO][2];
-    uint32_t tan_next;
+    /* the memos of those who read the plan, its maker's (silk_sil_cursor):
+     * never NULL from silk_sil_find on */
+    silk_sil_cursor *cur;
     /* what it keeps for speed, or NULL: nothing (a stored frame, a build
      * without the shortcuts); the carrying edges' rank, per byte of
      * carrying the carrying edges before it, or NULL (silk_sil_slot) */
@@ -217,8 +232,8 @@ static inline int silk_sil_keep_fits(size_t want, size_t free0)
     return want <= free0 / 16 && free0 - want >= ((size_t)1 << 20);
 }
 
-/* silhouette.c: fills visible .. chain.  SILK_ERR_NOMEM when scratch runs
- * out. */
+/* silhouette.c: fills visible .. chain, f->cur set by the caller (and
+ * emptied here).  SILK_ERR_NOMEM when scratch runs out. */
 silk_status silk_sil_find(silk_sil_frame *f);
 /* Whether triangle t is whole (its corners, normals and edges index the
  * mesh): only those are smoothed, and only their sides are counted. */
@@ -288,11 +303,11 @@ static inline uint32_t silk_sil_slot(const silk_sil_frame *f, uint32_t edge)
 /* The carrying edge side k of triangle t lies on, or NULL: most sides are
  * on none, and their tri_state bit says so without looking the edge up.
  * The emitter asks for the same triangle's sides again and again, so the
- * last triangle's three are kept (one of the frame's two memos). */
+ * last triangle's three are kept (in the cursor). */
 static inline silk_sil_edge *silk_sil_side_edge(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     if (!(f->tri_state[t] & (SILK_TS_CARRY0 << k))) return NULL;
-    silk_sil_frame *memo = (silk_sil_frame *)f;
+    silk_sil_cursor *memo = f->cur;
     if (memo->side_tri1 != t + 1) {
         memo->side_tri1 = t + 1;
         for (uint32_t j = 0; j < 3; j++) {

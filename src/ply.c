@@ -597,6 +597,49 @@ static silk_status walk_body(ply_reader *r, ply_fill *f)
     return SILK_OK;
 }
 
+/* The mesh's arrays for the body's vertices and triangles (counted by a
+ * first walk), from the arena: the mesh's own at the bottom, file normals
+ * as scratch at the top.  SILK_ERR_NOMEM, with what they need, when they
+ * do not fit. */
+static silk_status fill_arrays(const ply_reader *r, const silk_load_opts *opts, silk_arena *a,
+                               const silk_arena_mark *mark, ply_fill *f)
+{
+    memset(f, 0, sizeof *f);
+    uint64_t nv = r->elem[r->vertex].count;
+    f->want_n = r->has_normals && opts->normals != SILK_NORMALS_COMPUTE;
+    f->want_uv = r->has_uv;
+    f->want_color = r->has_color;
+    size_t need = 0;
+    int ok = silk_ld_need(&need, nv, sizeof(silk_vec3)) && silk_ld_need(&need, r->tris * 3, sizeof(silk_index));
+    if (f->want_uv) ok = ok && silk_ld_need(&need, nv, sizeof(silk_vec2));
+    if (f->want_color) ok = ok && silk_ld_need(&need, nv, sizeof(uint32_t));
+    if (f->want_n) ok = ok && silk_ld_need(&need, nv, sizeof(silk_vec3));
+    if (!ok || need > silk_arena_free_bytes(a)) {
+        /* The header tables are scratch too: the report counts them, and
+         * the free bytes it gives are those before they were taken. */
+        ok = ok && silk_ld_need(&need, r->nelem, sizeof *r->elem) && silk_ld_need(&need, r->nprop, sizeof *r->prop);
+        silk_arena_top_release(a, mark);
+        return silk_ld_nomem(r->err, r->name, ok ? need : SIZE_MAX, a);
+    }
+    /* Per-vertex uvs and normals share the triangles' indices. */
+    f->in.nverts = (uint32_t)nv;
+    f->in.pos = silk_arena_array(a, nv, sizeof(silk_vec3), SILK_MEM_MESH);
+    f->in.tri = silk_arena_array(a, r->tris * 3, sizeof(silk_index), SILK_MEM_MESH);
+    if (f->want_uv) {
+        f->in.uv = silk_arena_array(a, nv, sizeof(silk_vec2), SILK_MEM_MESH);
+        f->in.tri_uv = f->in.tri;
+        f->in.nuvs = (uint32_t)nv;
+    }
+    if (f->want_color) f->in.color = silk_arena_array(a, nv, sizeof(uint32_t), SILK_MEM_MESH);
+    if (f->want_n) {
+        f->in.file_normal = silk_arena_array_top(a, nv, sizeof(silk_vec3), SILK_MEM_LOAD);
+        f->in.tri_file_normal = f->in.tri;
+        f->in.nfile_normals = (uint32_t)nv;
+    }
+    silk_ld_coords_init(&f->coords, opts);
+    return SILK_OK;
+}
+
 /* ---- entry point --------------------------------------------------------------- */
 
 silk_status silk_load_ply(const void *data, size_t len, const char *name,
@@ -646,40 +689,7 @@ silk_status silk_load_ply(const void *data, size_t len, const char *name,
     }
 
     ply_fill f;
-    memset(&f, 0, sizeof f);
-    uint64_t nv = r.elem[r.vertex].count;
-    f.want_n = r.has_normals && opts->normals != SILK_NORMALS_COMPUTE;
-    f.want_uv = r.has_uv;
-    f.want_color = r.has_color;
-    size_t need = 0;
-    int ok = silk_ld_need(&need, nv, sizeof(silk_vec3)) && silk_ld_need(&need, r.tris * 3, sizeof(silk_index));
-    if (f.want_uv) ok = ok && silk_ld_need(&need, nv, sizeof(silk_vec2));
-    if (f.want_color) ok = ok && silk_ld_need(&need, nv, sizeof(uint32_t));
-    if (f.want_n) ok = ok && silk_ld_need(&need, nv, sizeof(silk_vec3));
-    if (!ok || need > silk_arena_free_bytes(a)) {
-        /* The header tables are scratch too: the report counts them, and
-         * the free bytes it gives are those before they were taken. */
-        ok = ok && silk_ld_need(&need, r.nelem, sizeof *r.elem) && silk_ld_need(&need, r.nprop, sizeof *r.prop);
-        silk_arena_top_release(a, &mark);
-        st = silk_ld_nomem(err, name, ok ? need : SIZE_MAX, a);
-        goto done;
-    }
-    /* Per-vertex uvs and normals share the triangles' indices. */
-    f.in.nverts = (uint32_t)nv;
-    f.in.pos = silk_arena_array(a, nv, sizeof(silk_vec3), SILK_MEM_MESH);
-    f.in.tri = silk_arena_array(a, r.tris * 3, sizeof(silk_index), SILK_MEM_MESH);
-    if (f.want_uv) {
-        f.in.uv = silk_arena_array(a, nv, sizeof(silk_vec2), SILK_MEM_MESH);
-        f.in.tri_uv = f.in.tri;
-        f.in.nuvs = (uint32_t)nv;
-    }
-    if (f.want_color) f.in.color = silk_arena_array(a, nv, sizeof(uint32_t), SILK_MEM_MESH);
-    if (f.want_n) {
-        f.in.file_normal = silk_arena_array_top(a, nv, sizeof(silk_vec3), SILK_MEM_LOAD);
-        f.in.tri_file_normal = f.in.tri;
-        f.in.nfile_normals = (uint32_t)nv;
-    }
-    silk_ld_coords_init(&f.coords, opts);
+    if ((st = fill_arrays(&r, opts, a, &mark, &f))) goto done;
 
     r.pos = body;
     r.line = body_line;

@@ -20,6 +20,8 @@
 #include "silk/raster.h"
 #include "silk/hal.h"
 #include "frame.h"
+#include "raster_place.h"
+#include "phong_parts.h"
 #include "compiler.h"
 
 #define SUB_BITS 4                  /* subpixel grid: 1/16 pixel */

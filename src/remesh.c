@@ -176,9 +176,9 @@ static void tri_cost(const silk_sil_frame *f, uint32_t t, const silk_sil_seg *se
 
 uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
 {
-    silk_sil_keep *k = f->keep;   /* (its memo, kept_last, written through the plan's const) */
+    const silk_sil_keep *k = f->keep;
     if (!SILK_KEEP_SEGMENTS || !k) return SILK_SIL_NONE;
-    uint32_t lo = 0, hi = k->nseg_kept, last = k->kept_last;
+    uint32_t lo = 0, hi = k->nseg_kept, last = f->cur->kept_last;   /* (its memo, the cursor's) */
     if (!hi || k->seg_tri[hi - 1] < t) return SILK_SIL_NONE;   /* past them all: as the plan asks while it keeps them */
     /* the emitter and the outline ask in triangle order, each share a few times */
     if (last < hi && k->seg_tri[last] == t) return last;
@@ -190,7 +190,7 @@ uint32_t silk_remesh_kept_index(const silk_sil_frame *f, uint32_t t)
         }
         if (lo >= k->nseg_kept || k->seg_tri[lo] != t) return SILK_SIL_NONE;
     }
-    k->kept_last = lo;
+    f->cur->kept_last = lo;
     return lo;
 }
 
@@ -209,7 +209,7 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
     size_t free0 = silk_arena_free_bytes(a),
            want = 2 * (size_t)f->nedges * sizeof(silk_vec3) +
                   (size_t)f->nsil * (sizeof *k->seg_kept + sizeof *k->seg_tri + sizeof *k->lay_kept) + 4 * SILK_ARENA_ALIGN,
-           pairs = (size_t)f->npairs * (2 * sizeof *k->pair_pn + 1) + 2 * SILK_ARENA_ALIGN;
+           pairs = (size_t)f->npairs * (2 * sizeof *f->cur->pair_pn + 1) + 2 * SILK_ARENA_ALIGN;
     if (!f->nsil || k->seg_kept || want > room || !silk_sil_keep_fits(want, free0)) return 0;
     size_t peak = a->top_peak;
     k->seg_kept = silk_arena_array_top_unfilled(a, f->nsil, sizeof *k->seg_kept, SILK_MEM_FRAME);   /* written as made */
@@ -221,9 +221,10 @@ size_t silk_remesh_keep(silk_sil_frame *f, size_t room)
         k->lay_kept = NULL;
     } else if (f->npairs && want + pairs <= room && silk_sil_keep_fits(want + pairs, free0)) {
         /* the silhouette points, each made once for the two segments that end on it */
-        k->pair_pn = silk_arena_array_top_unfilled(a, 2 * (size_t)f->npairs, sizeof *k->pair_pn, SILK_MEM_FRAME);
-        k->pair_ready = silk_arena_array_top(a, f->npairs, 1, SILK_MEM_FRAME);   /* zeroed: none made */
-        if (!k->pair_ready) k->pair_pn = NULL;
+        silk_sil_cursor *c = f->cur;   /* (filled as they are asked for: the cursor's) */
+        c->pair_pn = silk_arena_array_top_unfilled(a, 2 * (size_t)f->npairs, sizeof *c->pair_pn, SILK_MEM_FRAME);
+        c->pair_ready = silk_arena_array_top(a, f->npairs, 1, SILK_MEM_FRAME);   /* zeroed: none made */
+        if (!c->pair_ready) c->pair_pn = NULL;
     }
     k->nseg_kept = 0;
     silk_sil_kept(f, free0, peak);
@@ -491,7 +492,7 @@ static void fan_closed(silk_frame_geom *g, uint32_t apex, const uint32_t *cyc, u
 
 /* Fig. 11: the silhouette triangle cut by its segment s, laid out as lp
  * says (NULL: laid out here). */
-static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s,
+static void emit_silhouette(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t, const silk_sil_seg *s,
                             const sil_layout *lp)
 {
     const silk_mesh *m = f->m;
@@ -563,7 +564,7 @@ static void emit_silhouette(silk_sil_frame *f, silk_frame_geom *g, uint32_t t, c
 #undef SAMPLE
 }
 
-void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
+void silk_remesh_emit_tri(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t)
 {
     silk_sil_seg seg;
     g->offset = f->offset;

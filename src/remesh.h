@@ -29,7 +29,7 @@ int  silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s);
 int  silk_remesh_alloc(silk_sil_frame *f, silk_frame_geom *g, uint64_t recs, uint64_t tris, uint64_t curves);
 /* Input triangle t's share of the frame, appended to g (records, curves,
  * triangles; its records refer to g->curve and f->offset). */
-void silk_remesh_emit_tri(silk_sil_frame *f, silk_frame_geom *g, uint32_t t);
+void silk_remesh_emit_tri(const silk_sil_frame *f, silk_frame_geom *g, uint32_t t);
 /* A stored frame: every input triangle's share appended into g (from the
  * top of the arena), g->part_rec saying where each starts; 0 when it does
  * not fit. */

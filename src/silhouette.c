@@ -193,12 +193,12 @@ void silk_sil_pair_point(const silk_sil_frame *f, const silk_sil_edge *e, const 
                          const silk_sil_pair *pr, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
     size_t i = (size_t)(pr - f->pairs);
-    silk_sil_keep *k = f->keep;   /* its memo, written through the plan's const (silk_sil_side_edge's way) */
+    silk_sil_cursor *k = f->cur;   /* its memo */
     if (!SILK_KEEP_SEGMENTS) {   /* (its only caller takes silk_sil_edge_point then) */
         silk_sil_edge_point(f, e, s, pr->u, p, n, uv, rgb);
         return;
     }
-    if (!k || !k->pair_pn) {
+    if (!k->pair_pn) {
         edge_point_pn(f, f->m, e, s, pr->u, p, n);
     } else {
         /* the pair's normals are the side's (side_pair matched them) */
@@ -257,16 +257,16 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
     if (w < f->ntan_kept) {
         t = &f->tan_kept[2 * (size_t)w];
     } else {
-        silk_sil_frame *memo = (silk_sil_frame *)f;
+        silk_sil_cursor *memo = f->cur;
         uint32_t i = 0;
-        while (i < SILK_SIL_TAN_MEMO && f->tan_edge[i] != e) i++;
+        while (i < SILK_SIL_TAN_MEMO && memo->tan_edge[i] != e) i++;
         if (i == SILK_SIL_TAN_MEMO) {
             i = memo->tan_next;
             memo->tan_next = i + 1 < SILK_SIL_TAN_MEMO ? i + 1 : 0;
             memo->tan_edge[i] = e;
             edge_tangents(f, e, memo->tan[i]);
         }
-        t = f->tan[i];
+        t = memo->tan[i];
     }
     const silk_edge *me = &f->m->edge[e->edge];
     memset(c, 0, sizeof *c);
@@ -728,6 +728,7 @@ silk_status silk_sil_find(silk_sil_frame *f)
      * SILK_PLAN_NONE */
     const silk_mesh *m = f->m;
     if (SILK_PLAN_INDEX16 && (m->nverts | m->nnormals | m->nuvs | m->nedges) >> 16) return SILK_ERR_NOMEM;
+    memset(f->cur, 0, sizeof *f->cur);   /* nothing asked yet */
     silk_status st = find_triangles(f);
     if (st == SILK_OK) st = lay_out_edges(f);
     if (st != SILK_OK) return st;

@@ -28,7 +28,7 @@ silk_status silk_frame_smooth(silk_arena *a, const silk_mesh *m, const silk_view
 
 /* The plan of a frame (silhouette.c, remesh.c, perturb.c) into f, from the
  * top of the arena, and the perturbation; 0 when it does not fit. */
-static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const silk_view *v,
+static int make_plan(silk_sil_frame *f, silk_sil_cursor *cur, silk_arena *a, const silk_mesh *m, const silk_view *v,
                      silk_fx tolerance_px, silk_vis_method vis, silk_stage_clock *clock)
 {
     silk_sil_keep *keep = SILK_SIL_KEEPS ? f->keep : NULL;   /* the caller's, the one field it sets */
@@ -39,6 +39,7 @@ static int make_plan(silk_sil_frame *f, silk_arena *a, const silk_mesh *m, const
         keep->room = room;
         f->keep = keep;
     }
+    f->cur = cur;
     f->clock = clock;
     f->a = a;
     f->m = m;
@@ -63,8 +64,9 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_sil_frame f;
+    silk_sil_cursor cur;   /* the emitter's, for the frame it stores */
     f.keep = NULL;   /* a stored frame keeps nothing for speed */
-    if (!make_plan(&f, a, m, v, tolerance_px, vis, NULL) || !silk_remesh_store(&f, g)) {
+    if (!make_plan(&f, &cur, a, m, v, tolerance_px, vis, NULL) || !silk_remesh_store(&f, g)) {
         silk_status st = silk_frame_fall_back(a, m, &mark, g, stats, err);
         if (st == SILK_OK && lines && silk_lines_polygonal(a, m, v, 1, g) != SILK_OK) silk_frame_fell_short(stats);
         return st;
@@ -75,11 +77,11 @@ silk_status silk_frame_smooth_lines(silk_arena *a, const silk_mesh *m, const sil
 }
 
 int silk_frame_smooth_plan(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                           silk_vis_method vis, silk_stage_clock *clock, silk_sil_frame *f,
+                           silk_vis_method vis, silk_stage_clock *clock, silk_sil_frame *f, silk_sil_cursor *cur,
                            silk_frame_geom *local)
 {
     silk_arena_mark mark = silk_arena_top_mark(a);
-    if (make_plan(f, a, m, v, tolerance_px, vis, clock) && silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves))
+    if (make_plan(f, cur, a, m, v, tolerance_px, vis, clock) && silk_remesh_alloc(f, local, f->max_recs, f->max_tris, f->max_curves))
         return 1;
     silk_arena_top_release(a, &mark);
     return 0;

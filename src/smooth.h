@@ -16,9 +16,10 @@
  * edge tangents and rank for speed with keep->room the most it may take
  * (silk_remesh_keep; 0: nothing kept).  Returns 0 when it does not fit:
  * then nothing is left allocated and the caller draws the coarse mesh, or
- * asks again with room 0 when something was kept (keep->kept_bytes). */
+ * asks again with room 0 when something was kept (keep->kept_bytes).
+ * cur is the cursor of those who read the plan (f->cur): the emitter's. */
 int silk_frame_smooth_plan(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tolerance_px,
-                           silk_vis_method vis, silk_stage_clock *clock, silk_sil_frame *f,
+                           silk_vis_method vis, silk_stage_clock *clock, silk_sil_frame *f, silk_sil_cursor *cur,
                            silk_frame_geom *local);
 
 #endif

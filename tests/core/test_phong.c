@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include "silk/silk.h"
 #include "support/scene.h"
-#include "src/frame.h"   /* silk_hal_phong_plain */
+#include "src/phong_parts.h"   /* silk_hal_phong_plain */
 
 static silk_fx fxd(double v) { return (silk_fx)llround(v * 65536.0); }
 static double dfx(silk_fx v) { return v / 65536.0; }

@@ -12,7 +12,7 @@
 #include <string.h>
 #include "check.h"
 #include "silk/silk.h"
-#include "src/frame.h"   /* silk_raster_place, _reaches, _placed */
+#include "src/raster_place.h"   /* silk_raster_place, _reaches, _placed */
 #include "support/golden.h"
 
 #ifndef M_PI

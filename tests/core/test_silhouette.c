@@ -356,8 +356,10 @@ static void plan_by_edges(const char *name, int nviews)
         if (!random_view(&m, i, &v)) { CHECK(0); return; }
         silk_arena_mark mk = silk_arena_top_mark(&a);
         silk_sil_frame f[2];
+        silk_sil_cursor cur[2];
         for (int j = 0; j < 2; j++) {
             memset(&f[j], 0, sizeof f[j]);
+            f[j].cur = &cur[j];
             f[j].a = &a; f[j].m = j ? &packed : &m; f[j].v = &v; f[j].tol = SILK_FX_HALF; f[j].vis = SILK_VIS_BRUTE;
             if (silk_sil_find(&f[j]) != SILK_OK) { CHECK(0); return; }
         }

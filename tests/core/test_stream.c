@@ -139,10 +139,11 @@ static void compare_shares(silk_arena *a, const silk_mesh *m, const silk_view *v
         return;
     }
     silk_sil_frame f;
+    silk_sil_cursor cur;
     silk_sil_keep keep;
     keep.room = SIZE_MAX;   /* segments and tangents kept (a build with the shortcuts): the same shares */
     f.keep = &keep;
-    if (!silk_frame_smooth_plan(a, m, v, tol, SILK_VIS_AUTO, NULL, &f, &part)) {
+    if (!silk_frame_smooth_plan(a, m, v, tol, SILK_VIS_AUTO, NULL, &f, &cur, &part)) {
         CHECKF(0, "the stream plan does not fit %u bytes", ARENA_BYTES);
         silk_arena_top_release(a, &mk);
         return;

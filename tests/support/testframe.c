@@ -91,7 +91,9 @@ silk_status tf_render_bands(silk_arena *a, const silk_mesh *m, const silk_view *
 int tf_run_frame(silk_arena *a, const silk_mesh *m, const silk_view *v, silk_fx tol, silk_sil_frame *f,
                  silk_frame_geom *g, silk_frame_stats *st)
 {
+    static silk_sil_cursor cur;   /* the plan's readers' memos: one frame's at a time */
     memset(f, 0, sizeof *f);
+    f->cur = &cur;
     memset(g, 0, sizeof *g);
     memset(st, 0, sizeof *st);
     f->a = a; f->m = m; f->v = v; f->tol = tol; f->vis = SILK_VIS_BRUTE;
