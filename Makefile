@@ -127,7 +127,8 @@ $(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/prep/,hull.o lp.o simpl
 $(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines $(BUILD)/tests/test_aa $(BUILD)/tests/test_texture \
-             $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel $(BUILD)/tests/test_budget
+             $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel $(BUILD)/tests/test_budget \
+             $(BUILD)/tests/test_scene
 $(GEN_TESTS): $(BUILD)/obj/tools/prep/gen.o
 $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/prep/gen.o
 # clip mode's golden frames draw a model prepared as silk prepare makes one

@@ -38,6 +38,7 @@
 #include "clip.h"
 #include "aa.h"
 #include "compiler.h"
+#include "frame_steps.h"
 #include "silk/siltex.h"
 
 void silk_render_opts_default(silk_render_opts *o)
@@ -179,6 +180,8 @@ typedef struct frame {
     uint8_t cull;             /* back faces cannot show (back_faces_hidden) */
     uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
                                  frame is on a small board's stack) */
+    uint8_t in_scene;         /* one object of a scene (scene.c): the scene clears the band, not frame_draw */
+    uint8_t after;            /* drawn after another object into the same depth: no depth pass (frame_draw) */
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
 } frame;
 
@@ -1156,7 +1159,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 {
     frame_fast *x = f->fast;
     uint32_t t0 = silk_stage_start(f->clock);
-    silk_target_clear(t, o->bg_rgb);
+    if (!f->in_scene) silk_target_clear(t, o->bg_rgb);   /* a scene's band is cleared or painted once, by scene.c */
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
     if (CLIP_FRAME(f)) silk_clip_stencil(f->clip, t);
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
@@ -1171,7 +1174,8 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     uint64_t ntri = f->part == share_part ? f->geom.mesh->ntris : f->g.ntri;
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
-                      !SILTEX_FRAME(f) && (f->part != share_part || t->rows >= t->height);
+                      !SILTEX_FRAME(f) && (f->part != share_part || t->rows >= t->height) &&
+                      !f->after;   /* scene.c: its shading pass would take pixels another object ties in depth */
     uint32_t *wins = NULL;   /* depth_wins, where there is a depth pass */
     if (SILK_DRAW_DIRECT && x->vc_xy && !x->xy_ready) place_vertices(f, t);
     if (SILK_DEPTH_WINS && depth_first) wins = x->won;
@@ -1355,6 +1359,24 @@ static void aa_shares(frame *f, silk_aa *aa, const silk_view *v, const silk_targ
     }
 }
 
+/* Frame f's outlines walked into aa, begun over the band just drawn
+ * (frame_aa; scene.c walks every object's into one): its shares', or
+ * SILTEX's found in the band. */
+static void frame_outline(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_aa *aa,
+                          silk_frame_stats *stats)
+{
+    aa->facing = f->facing;
+    aa->creases = o->aa == 1;
+    if (SILTEX_FRAME(f)) {   /* the hull's edges are not its outline: eq. 4's edge is */
+        if (!siltex_outline(f, a, o, aa)) stats->aa_aliased++;
+    } else {
+        aa->sil = f->smooth ? &f->sil : NULL;
+        aa->hal = f->hal;
+        aa->geom = &f->geom;
+        aa_shares(f, aa, v, aa->t);
+    }
+}
+
 /* Anti-aliased outlines over band t, just drawn: CLIP's (clip.c: the
  * map's outline, whatever the build), and those of aa.c (a build with
  * SILK_AA 0 leaves them out: about 3.0 KiB of Cortex-M3 code and a band's
@@ -1384,18 +1406,9 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
         silk_arena_top_release(a, &mark);
         return;
     }
-    aa.facing = f->facing;
-    aa.creases = o->aa == 1;
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) frame_draw(f, o, &aa.apron[i]);
-    if (SILTEX_FRAME(f)) {   /* the hull's edges are not its outline: eq. 4's edge is */
-        if (!siltex_outline(f, a, o, &aa)) stats->aa_aliased++;
-    } else {
-        aa.sil = f->smooth ? &f->sil : NULL;
-        aa.hal = f->hal;
-        aa.geom = &f->geom;
-        aa_shares(f, &aa, v, t);
-    }
+    frame_outline(f, a, v, o, &aa, stats);
     silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
     stats->aa_aliased += aa.dropped;
     silk_arena_top_release(a, &mark);
@@ -1408,7 +1421,8 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
                          const silk_target *t)
 {
     f->peak_before = a->top_peak;
-    f->reserve = outline_reserve(f, o, t);
+    size_t reserve = outline_reserve(f, o, t);
+    if (reserve > f->reserve) f->reserve = reserve;   /* (scene.c may ask for more: every object's outline at once) */
     vertex_cache(f, a, o);
     if (SILK_DRAW_DIRECT && f->fast->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
     f->cull = back_faces_hidden(f, m, h, o);
@@ -1523,4 +1537,83 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
     return st;
+}
+
+/* ---- One object's frame in steps (frame_steps.h, for scene.c) --------------------
+ *
+ * silk_render's own steps, each exposed as it is: only frame_draw's clear
+ * (in_scene) and its depth pass for an object drawn after another (after)
+ * differ, and the outline, which scene.c walks for every object at once. */
+
+struct silk_frame_step {
+    frame f;
+    frame_fast fast;
+    frame_siltex sx;
+};
+
+silk_status silk_frame_step_prepare(silk_frame_step **out, silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                    const silk_hal *h, const silk_render_opts *o, const silk_target *band, int after,
+                                    silk_frame_stats *stats, silk_error *err)
+{
+    silk_frame_step *s = *out = silk_arena_alloc_top(a, sizeof *s, SILK_MEM_FRAME);
+    if (!s) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "silk_render_scene: the arena is full");
+    frame *f = &s->f;
+    silk_status st = frame_prepare(f, FRAME_FAST ? &s->fast : NULL, SILK_SILTEX_MODE ? &s->sx : NULL, a, m, v, h, o,
+                                   band->rows, stats, err);
+    f->in_scene = 1;
+    f->after = (uint8_t)(after != 0);
+    if (st == SILK_OK && f->nparts > 1 && band->rows < band->height)   /* as silk_render_bands */
+        f->rows = silk_arena_array_top(a, 2 * (size_t)f->nparts, sizeof *f->rows, SILK_MEM_FRAME);
+    return st;
+}
+
+size_t silk_frame_step_reserve(const silk_frame_step *s, const silk_render_opts *o, const silk_target *band)
+{
+    return outline_reserve(&s->f, o, band);
+}
+
+uint32_t silk_frame_step_max_recs(const silk_frame_step *s)
+{
+    return s->f.smooth ? s->f.sil.max_recs : 3;   /* as frame_aa's silk_aa_begin */
+}
+
+void silk_frame_step_extras(silk_frame_step *s, silk_arena *a, const silk_mesh *m, const silk_hal *h,
+                            const silk_render_opts *o, silk_target *band, size_t reserve)
+{
+    s->f.reserve = reserve;
+    frame_extras(&s->f, a, m, h, o, band);
+    share_rows(&s->f, o, band);
+}
+
+void silk_frame_step_draw(silk_frame_step *s, const silk_render_opts *o, silk_target *t)
+{
+    frame_draw(&s->f, o, t);
+}
+
+int silk_frame_step_outline_kind(const silk_frame_step *s, const silk_render_opts *o, const silk_target *t)
+{
+    if (CLIP_FRAME(&s->f)) return 2;
+    return SILK_AA && outline_wanted(&s->f, o, t);
+}
+
+void silk_frame_step_outline(silk_frame_step *s, silk_arena *a, const silk_view *v, const silk_render_opts *o,
+                             silk_aa *aa, silk_frame_stats *stats)
+{
+    frame_outline(&s->f, a, v, o, aa, stats);
+}
+
+void silk_frame_step_clip_aa(silk_frame_step *s, const silk_render_opts *o, silk_target *t)
+{
+    if (CLIP_FRAME(&s->f)) silk_clip_antialias(s->f.clip, t, o->bg_rgb);
+}
+
+void silk_frame_step_need(const silk_frame_step *s, size_t *peak_before, size_t *extra_bytes)
+{
+    *peak_before = s->f.peak_before;
+    *extra_bytes = s->f.vc_bytes + s->f.tan_bytes;
+}
+
+uint32_t silk_frame_step_clip_spans(const silk_frame_step *s)
+{
+    return CLIP_FRAME(&s->f) ? s->f.clip->spans : 0;
 }
