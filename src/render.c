@@ -1599,7 +1599,7 @@ int silk_frame_step_outline_kind(const silk_frame_step *s, const silk_render_opt
 void silk_frame_step_outline(silk_frame_step *s, silk_arena *a, const silk_view *v, const silk_render_opts *o,
                              silk_aa *aa, silk_frame_stats *stats)
 {
-    frame_outline(&s->f, a, v, o, aa, stats);
+    if (SILK_AA) frame_outline(&s->f, a, v, o, aa, stats);   /* (a build without them: compiled away) */
 }
 
 void silk_frame_step_clip_aa(silk_frame_step *s, const silk_render_opts *o, silk_target *t)

@@ -240,7 +240,7 @@ static int outlines(silk_arena *a, const silk_scene *s, scene_obj *so, silk_targ
     silk_arena_mark mark = silk_arena_top_mark(a);
     silk_aa aa;
     int stop = 0;
-    if (!naa || !silk_aa_begin_n(&aa, a, t, max_recs, naa)) {
+    if (!SILK_AA || !naa || !silk_aa_begin_n(&aa, a, t, max_recs, naa)) {   /* (without SILK_AA: compiled away) */
         if (naa) stats->aa_aliased++;
         silk_aa_alpha(t);
     } else {
