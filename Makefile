@@ -404,7 +404,7 @@ tests: firmware-for-tests
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
 	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k soak-firmware && \
-	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host && \
+	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host scene-firmware && \
 	  $(MAKE) BOARD=mps2-an386 BUILD=build-mps2-an386 SAN= CFLAGS= firmware firmware-host && \
 	  $(MAKE) BOARD=mps2-an500 BUILD=build-mps2-an500 SAN= CFLAGS= firmware firmware-host; \
 	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD), mps2-an386 or mps2-an500 firmware for the tests" \
