@@ -127,7 +127,8 @@ $(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/prep/,hull.o lp.o simpl
 $(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines $(BUILD)/tests/test_aa $(BUILD)/tests/test_texture \
-             $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel $(BUILD)/tests/test_budget
+             $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel $(BUILD)/tests/test_budget \
+             $(BUILD)/tests/test_scene
 $(GEN_TESTS): $(BUILD)/obj/tools/prep/gen.o
 $(GEN_TESTS): TEST_TOOL_OBJ = $(BUILD)/obj/tools/prep/gen.o
 # clip mode's golden frames draw a model prepared as silk prepare makes one
@@ -407,7 +408,7 @@ tests: firmware-for-tests
 firmware-for-tests:
 	@if [ -d '$(MESHES_DIR)' ]; then \
 	  $(MAKE) BOARD=$(FW_BOARD) BUILD=build-$(FW_BOARD) SAN= CFLAGS= firmware firmware-host firmware-256k soak-firmware && \
-	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host && \
+	  $(MAKE) BOARD=$(FW_BOARD)-full BUILD=build-$(FW_BOARD)-full SAN= CFLAGS= firmware firmware-host scene-firmware && \
 	  $(MAKE) BOARD=mps2-an386 BUILD=build-mps2-an386 SAN= CFLAGS= firmware firmware-host && \
 	  $(MAKE) BOARD=mps2-an500 BUILD=build-mps2-an500 SAN= CFLAGS= firmware firmware-host; \
 	else echo "silk: $(MESHES_DIR) is missing: no $(FW_BOARD), mps2-an386 or mps2-an500 firmware for the tests" \

@@ -160,6 +160,11 @@ static size_t px_wanted(size_t w, int rows)
 
 int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
 {
+    return silk_aa_begin_n(aa, a, t, max_recs, 1);
+}
+
+int silk_aa_begin_n(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs, uint32_t nobj)
+{
     memset(aa, 0, sizeof *aa);
     aa->t = t;
     size_t bpp = silk_pixfmt_bytes(t->fmt), w = (size_t)t->width;
@@ -169,7 +174,7 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
     if (free_bytes < fixed) return 0;
     /* the pixel list: what is wanted, or what is left (the rest is left
      * aliased, and counted); the renderer leaves silk_aa_bytes free */
-    size_t want = px_wanted(w, t->rows), room = (free_bytes - fixed) / sizeof *aa->px;
+    size_t want = px_wanted(w, t->rows) * nobj, room = (free_bytes - fixed) / sizeof *aa->px;
     aa->cap = (uint32_t)(want < room ? want : room);
     uint8_t *p = silk_arena_alloc_top(a, fixed + aa->cap * sizeof *aa->px, SILK_MEM_FRAME);
     if (!p) return 0;
@@ -190,8 +195,14 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
 
 size_t silk_aa_bytes(const silk_target *t, uint32_t max_recs)
 {
+    return silk_aa_bytes_n(t, max_recs, 1);
+}
+
+size_t silk_aa_bytes_n(const silk_target *t, uint32_t max_recs, uint32_t nobj)
+{
     size_t w = (size_t)t->width;
-    return fixed_bytes(w, silk_pixfmt_bytes(t->fmt), 2, max_recs) + AL(px_wanted(w, t->rows) * sizeof(silk_aa_px));
+    return fixed_bytes(w, silk_pixfmt_bytes(t->fmt), 2, max_recs) +
+           AL(px_wanted(w, t->rows) * nobj * sizeof(silk_aa_px));
 }
 #undef AL
 

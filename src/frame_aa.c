@@ -165,6 +165,21 @@ static void aa_shares(frame *f, silk_aa *aa, const silk_view *v, const silk_targ
  * edges.  The shares that can hold an outline are rebuilt once more; a
  * band that is not the whole frame first draws the rows next to it, which
  * its edge pixels blend with. */
+void silk_outline_walk(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_aa *aa,
+                       silk_frame_stats *stats)
+{
+    aa->facing = f->facing;
+    aa->creases = o->aa == 1;
+    if (SILTEX_FRAME(f)) {   /* the hull's edges are not its outline: eq. 4's edge is */
+        if (!siltex_outline(f, a, o, aa)) stats->aa_aliased++;
+    } else {
+        aa->sil = f->smooth ? &f->sil : NULL;
+        aa->hal = f->hal;
+        aa->geom = &f->geom;
+        aa_shares(f, aa, v, aa->t);
+    }
+}
+
 void silk_outline_draw(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
                      silk_frame_stats *stats)
 {
@@ -186,18 +201,9 @@ void silk_outline_draw(frame *f, silk_arena *a, const silk_view *v, const silk_r
         silk_arena_top_release(a, &mark);
         return;
     }
-    aa.facing = f->facing;
-    aa.creases = o->aa == 1;
     for (int i = 0; i < 2; i++)
         if (aa.apron[i].rows) silk_draw_frame(f, o, &aa.apron[i]);
-    if (SILTEX_FRAME(f)) {   /* the hull's edges are not its outline: eq. 4's edge is */
-        if (!siltex_outline(f, a, o, &aa)) stats->aa_aliased++;
-    } else {
-        aa.sil = f->smooth ? &f->sil : NULL;
-        aa.hal = f->hal;
-        aa.geom = &f->geom;
-        aa_shares(f, &aa, v, t);
-    }
+    silk_outline_walk(f, a, v, o, &aa, stats);
     silk_aa_finish(&aa);   /* pixels it had no room for are left aliased */
     stats->aa_aliased += aa.dropped;
     silk_arena_top_release(a, &mark);

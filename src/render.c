@@ -29,6 +29,7 @@
  * frame_fast.
  */
 #include "render_frame.h"
+#include "frame_steps.h"
 
 void silk_render_opts_default(silk_render_opts *o)
 {
@@ -329,7 +330,8 @@ static void keep_tangents(frame *f, silk_arena *a)
 static void frame_extras(frame *f, silk_arena *a, const silk_hal *h, const silk_render_opts *o, const silk_target *t)
 {
     f->peak_before = a->top_peak;
-    f->reserve = outline_reserve(f, o, t);
+    size_t reserve = outline_reserve(f, o, t);
+    if (reserve > f->reserve) f->reserve = reserve;   /* (scene.c may ask for more: every object's outline at once) */
     /* (each under its option: a build without it makes no call) */
     if (SILK_VERTEX_CACHE) silk_fast_vertex_cache(f, a, o);
     if (SILK_DRAW_DIRECT && f->fast->vc_xy) silk_fast_place_vertices(f, t);   /* now: silk_cull_back_faces reads what it found */
@@ -447,4 +449,84 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
     stats->frame_bytes = frame_need(&f, a, &mark);
     silk_arena_top_release(a, &mark);
     return st;
+}
+
+/* ---- One object's frame in steps (frame_steps.h, for scene.c) --------------------
+ *
+ * silk_render's own steps, each exposed as it is: only silk_draw_frame's clear
+ * (in_scene) and its depth pass for an object drawn after another (after)
+ * differ, and the outline, which scene.c walks for every object at once. */
+
+struct silk_frame_step {
+    frame f;
+    frame_fast fast;
+    frame_siltex sx;
+};
+
+silk_status silk_frame_step_prepare(silk_frame_step **out, silk_arena *a, const silk_mesh *m, const silk_view *v,
+                                    const silk_hal *h, const silk_render_opts *o, const silk_target *band, int after,
+                                    silk_frame_stats *stats, silk_error *err)
+{
+    silk_frame_step *s = *out = silk_arena_alloc_top(a, sizeof *s, SILK_MEM_FRAME);
+    if (!s) return silk_fail(err, SILK_ERR_NOMEM, NULL, 0, "silk_render_scene: the arena is full");
+    frame *f = &s->f;
+    silk_status st = frame_prepare(f, FRAME_FAST ? &s->fast : NULL, SILK_SILTEX_MODE ? &s->sx : NULL, a, m, v, h, o,
+                                   band->rows, stats, err);
+    f->in_scene = 1;
+    f->after = (uint8_t)(after != 0);
+    if (st == SILK_OK && f->nparts > 1 && band->rows < band->height)   /* as silk_render_bands */
+        f->rows = silk_arena_array_top(a, 2 * (size_t)f->nparts, sizeof *f->rows, SILK_MEM_FRAME);
+    return st;
+}
+
+size_t silk_frame_step_reserve(const silk_frame_step *s, const silk_render_opts *o, const silk_target *band)
+{
+    return outline_reserve(&s->f, o, band);
+}
+
+uint32_t silk_frame_step_max_recs(const silk_frame_step *s)
+{
+    return s->f.smooth ? s->f.sil.max_recs : 3;   /* as frame_aa's silk_aa_begin */
+}
+
+void silk_frame_step_extras(silk_frame_step *s, silk_arena *a, const silk_mesh *m, const silk_hal *h,
+                            const silk_render_opts *o, silk_target *band, size_t reserve)
+{
+    s->f.reserve = reserve;
+    (void)m;
+    frame_extras(&s->f, a, h, o, band);
+    silk_cull_rows(&s->f, o, band);
+}
+
+void silk_frame_step_draw(silk_frame_step *s, const silk_render_opts *o, silk_target *t)
+{
+    silk_draw_frame(&s->f, o, t);
+}
+
+int silk_frame_step_outline_kind(const silk_frame_step *s, const silk_render_opts *o, const silk_target *t)
+{
+    if (CLIP_FRAME(&s->f)) return 2;
+    return SILK_AA && silk_outline_wanted(&s->f, o, t);
+}
+
+void silk_frame_step_outline(silk_frame_step *s, silk_arena *a, const silk_view *v, const silk_render_opts *o,
+                             silk_aa *aa, silk_frame_stats *stats)
+{
+    if (SILK_AA) silk_outline_walk(&s->f, a, v, o, aa, stats);   /* (a build without them: compiled away) */
+}
+
+void silk_frame_step_clip_aa(silk_frame_step *s, const silk_render_opts *o, silk_target *t)
+{
+    if (CLIP_FRAME(&s->f)) silk_clip_antialias(s->f.clip, t, o->bg_rgb);
+}
+
+void silk_frame_step_need(const silk_frame_step *s, size_t *peak_before, size_t *extra_bytes)
+{
+    *peak_before = s->f.peak_before;
+    *extra_bytes = s->f.vc_bytes + s->f.tan_bytes;
+}
+
+uint32_t silk_frame_step_clip_spans(const silk_frame_step *s)
+{
+    return CLIP_FRAME(&s->f) ? s->f.clip->spans : 0;
 }

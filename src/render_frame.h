@@ -131,6 +131,8 @@ typedef struct frame {
     uint8_t cull;             /* back faces cannot show (silk_cull_back_faces) */
     uint8_t plain;            /* SMOOTH: the part drawn last is its input triangle as it is (bytes: the
                                  frame is on a small board's stack) */
+    uint8_t in_scene;         /* one object of a scene (scene.c): the scene clears the band, not silk_draw_frame */
+    uint8_t after;            /* drawn after another object into the same depth: no depth pass (silk_draw_frame) */
     silk_sil_frame sil;       /* SMOOTH: the plan (last: the fields above are read more often) */
     silk_sil_cursor cur;      /* SMOOTH: the emitter's memos over it (sil.cur) */
 } frame;
@@ -257,6 +259,11 @@ void silk_draw_hull(frame *f, const silk_render_opts *o, silk_target *s, const s
 int silk_outline_wanted(const frame *f, const silk_render_opts *o, const silk_target *t);
 void silk_outline_facing(frame *f, silk_arena *a, const silk_render_opts *o);
 void silk_outline_draw(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_target *t,
+                       silk_frame_stats *stats);
+/* Frame f's outlines walked into aa, begun over the band just drawn
+ * (silk_outline_draw; scene.c walks every object's into one): its
+ * shares', or SILTEX's found in the band. */
+void silk_outline_walk(frame *f, silk_arena *a, const silk_view *v, const silk_render_opts *o, silk_aa *aa,
                        silk_frame_stats *stats);
 
 #endif

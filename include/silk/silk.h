@@ -21,5 +21,6 @@
 #include "visibility.h"
 #include "budget.h"
 #include "render.h"
+#include "scene.h"
 
 #endif

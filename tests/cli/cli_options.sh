@@ -45,6 +45,7 @@ sample() {   # KIND META NAME LO CHOICES
     custom) case "$3" in
         --ortho) echo auto ;; --mode) echo "$2" | cut -d'|' -f1 ;; --modes) echo flat ;; --light) echo 1,1,1 ;;
         --pair) echo a.obj:b.obj ;; --eye) echo 1,2,3 ;; --fb-geometry) echo 8x8x16 ;; --pitches) echo 0,30 ;;
+        --place) echo 1:1,2,3 ;; --tint) echo 1:808080 ;; --mode-of) echo 1:flat ;;
         --board) "$SILK" help profile | sed -n 's/.*--board \([a-z0-9-]*\)\].*/\1/p' | head -n 1 ;;
         *) echo x ;;
         esac ;;

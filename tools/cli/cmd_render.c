@@ -19,6 +19,7 @@
 #include "progress.h"
 #include "image/sheet.h"
 #include "opt.h"
+#include "render_scene.h"
 #include "platform/platform.h"
 
 /* Frame series: --turntable, --modes, --sheet, --zoom. */
@@ -42,6 +43,7 @@ typedef struct render_args {
     int ssaa;                        /* 1: without */
     series se;
     int use_series;                  /* a series option was given */
+    cli_object obj[CLI_SCENE_MAX];   /* several meshes: --place, --tint, --mode-of (render_scene.c) */
 } render_args;
 
 static void render_defaults(void *base)
@@ -59,6 +61,22 @@ static int parse_modes(const cli_opt *o, const char *v, void *base)
     return cli_parse_modes(o->name, v, r->se.mode, SERIES_MAX_MODES, &r->se.nmodes);
 }
 
+/* The options of one of several meshes (render_scene.c). */
+static int parse_place(const cli_opt *o, const char *v, void *base)
+{
+    return cli_parse_place(o->name, v, ((render_args *)base)->obj);
+}
+
+static int parse_tint(const cli_opt *o, const char *v, void *base)
+{
+    return cli_parse_tint(o->name, v, ((render_args *)base)->obj);
+}
+
+static int parse_mode_of(const cli_opt *o, const char *v, void *base)
+{
+    return cli_parse_mode_of(o->name, v, ((render_args *)base)->obj);
+}
+
 #define F(member) CLI_FIELD(render_args, member)
 #define SERIES CLI_SEEN(render_args, use_series)
 static const int image_fmt_v[] = { SILK_IMAGE_PNG, SILK_IMAGE_PPM };
@@ -72,6 +90,15 @@ static const cli_opt render_rows[] = {
     { .name = "--ssaa", .kind = CLI_INT, .meta = "N", .lo = 2, .hi = 8, F(ssaa),
       .help = "reference picture: draw N x N times larger (%R) without anti-aliasing and average each N x N block "
               "(alpha: the share of the block the object covers)" },
+    { .name = "--place", .group = "Several meshes in one picture (MESH MESH ...)", .kind = CLI_CUSTOM,
+      .meta = "N:X,Y,Z[:YAW,PITCH,ROLL[:SCALE]]", .parse = parse_place,
+      .help = "put mesh N (1: the first on the command line) at X,Y,Z in the world, turned by YAW about y, then "
+              "PITCH about x, ROLL about z (degrees, applied roll first), SCALE times its size; the default camera "
+              "frames every mesh so placed" },
+    { .name = "--tint", .kind = CLI_CUSTOM, .meta = "N:RRGGBB", .parse = parse_tint,
+      .help = "mesh N's base colour (else --color, else its material's)" },
+    { .name = "--mode-of", .kind = CLI_CUSTOM, .meta = "N:MODE", .parse = parse_mode_of,
+      .help = "mesh N's mode (else --mode), e.g. 2:flat" },
     { .name = "--turntable", .group = "Series (docs/viewer.md)", .kind = CLI_INT, .meta = "N", .lo = 1,
       .hi = SERIES_MAX_VIEWS, F(se.views), SERIES,
       .help = "N views around the model (%R), turning about the up axis from the first view; OUT holds the frame "
@@ -94,12 +121,13 @@ static const cli_opt render_rows[] = {
 
 const cli_command cmd_render_spec = {
     .name = "render",
-    .usage = "usage: silk render MESH -o OUT.png|OUT.ppm [options]\n",
+    .usage = "usage: silk render MESH [MESH ...] -o OUT.png|OUT.ppm [options]\n",
     .about =
         "Render MESH (OBJ, PLY, STL or a prepared .silk model; - for standard input)\n"
         "to an image; the format follows OUT's extension.  The default camera frames\n"
         "the model's mesh in every mode (a prepared model's coarse mesh: clip and\n"
-        "siltex draw its hull from the same view).\n",
+        "siltex draw its hull from the same view).  Several meshes draw one picture\n"
+        "with one depth: each placed by --place, coloured by --tint, in --mode-of.\n",
     .examples =
         "  silk render sphere.obj -o sphere.png\n"
         "  silk render bunny.obj -o bunny.png --size 1024x768 --mode flat --wire\n"
@@ -109,7 +137,8 @@ const cli_command cmd_render_spec = {
         "  silk gen sphere -o - | silk render - -o - > sphere.png\n"
         "  silk render bunny.obj --turntable 36 -o out/turn_%03d.png\n"
         "  silk render bunny.obj --modes flat,smooth,blend,pn --sheet -o modes.png --size 320x240\n"
-        "  silk render bunny.silk --modes flat,smooth,clip,siltex --sheet -o modes.png --size 320x240\n",
+        "  silk render bunny.silk --modes flat,smooth,clip,siltex --sheet -o modes.png --size 320x240\n"
+        "  silk render torus.obj sphere.obj -o two.png --place 2:0.8,0.1,0.1:30,0,10:0.55 --tint 2:8090c0\n",
     .sets = { { render_rows, 0, sizeof(render_args), render_defaults, NULL }, CLI_SCENE_SET(CLI_OPT_ALL) },
     .nsets = 2,
 };
@@ -496,6 +525,20 @@ static int render_series(cli_scene_opts *o, const char *out, silk_image_format o
     }
 }
 
+/* Several meshes in one picture: the checks of a single frame, then
+ * render_scene.c. */
+static int render_several(cli_scene_opts *o, const render_args *r, int n, const char *const *paths)
+{
+    if (!r->out) return cli_fail(CLI_EXIT_USAGE, "render: no output given (-o OUT.png or OUT.ppm)");
+    if (!silk_path_is_stdio(r->out) && silk_image_format_for_path(r->out) == SILK_IMAGE_NONE)
+        return cli_fail(CLI_EXIT_USAGE, "render: %s: unknown image format (use .png or .ppm)", r->out);
+    if (r->compare || r->use_series || r->ssaa > 1)
+        return cli_fail(CLI_EXIT_USAGE, "render: several meshes draw one frame (not --compare, --ssaa or a series)");
+    int rc = cli_mode_check("render", o->render.mode, &o->render);
+    if (rc) return rc;
+    return cli_render_scene(o, r->out, r->out_fmt, n, paths, r->obj);
+}
+
 int cmd_render(int argc, char **argv)
 {
     cli_scene_opts o;
@@ -505,10 +548,16 @@ int cmd_render(int argc, char **argv)
     cli_args args;
     void *bases[] = { &r, &o };
     int rc = cli_parse(&cmd_render_spec, bases, argc, argv, &args);
-    if (!rc) rc = cli_one_mesh("render", args.npos, args.pos, "silk render MESH -o OUT.png", &o.mesh_path);
+    int several = !rc && args.npos > 1;
+    if (several) rc = render_several(&o, &r, args.npos, args.pos);   /* render_scene.c */
+    else if (!rc) rc = cli_one_mesh("render", args.npos, args.pos, "silk render MESH -o OUT.png", &o.mesh_path);
     cli_args_free(&args);
     if (rc == CLI_HELP) return 0;
-    if (rc) return rc;
+    if (rc || several) return rc;
+    for (int i = 0; i < CLI_SCENE_MAX; i++)
+        if (r.obj[i].given)
+            return cli_fail(CLI_EXIT_USAGE, "render: --place, --tint and --mode-of are for several meshes (MESH MESH "
+                            "...)");
     series *se = &r.se;
     const char *out = r.out;
     silk_image_format out_fmt = r.out_fmt;
