@@ -120,3 +120,28 @@ mesh_made() {
         fail "$1" "silk info: $(head -c 400 "$tmp/info")"
     fi
 }
+
+# firmware_tests: the preamble of a test that runs the firmware under QEMU.
+# It skips under the sanitizers (the firmware has no sanitizer build) and
+# without qemu-system-arm and arm-none-eabi-gcc, except in CI, where a
+# missing tool fails.
+firmware_tests() {
+    if [ -n "${SILK_SAN:-}" ]; then
+        echo "skip: the firmware is checked in the normal pass (it has no sanitizer build)"
+        done_testing
+        exit 0
+    fi
+    missing=
+    command -v qemu-system-arm >/dev/null 2>&1 || missing="qemu-system-arm"
+    command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing arm-none-eabi-gcc"
+    if [ -n "$missing" ]; then
+        if [ -n "${CI:-}" ]; then
+            fail "toolchain" "CI must have$missing (make deps; .ci/run installs them)"
+            done_testing
+            exit 1
+        fi
+        echo "skip: $missing not installed (make deps installs the ARM toolchain and QEMU)"
+        done_testing
+        exit 0
+    fi
+}

@@ -49,17 +49,8 @@
 #include "fwmodel.h"
 #include "../../src/stages.h"      /* the core's own timing of a piece, to measure its overhead */
 
-#ifndef FW_BOARD
-#define FW_BOARD "unknown"
-#endif
 #ifndef FW_MODEL_NAME
 #define FW_MODEL_NAME "fwmodel"
-#endif
-#ifndef FW_FORMAT
-#define FW_FORMAT SILK_PIX_RGB565
-#endif
-#ifndef FW_BAND_ROWS
-#define FW_BAND_ROWS 8
 #endif
 /* Whether the core draws anti-aliased outlines (silk render's --aa) */
 #if !SILK_AA
@@ -74,9 +65,6 @@
  * and the budget is the board's; a board with RAM to spare sets it. */
 #ifndef FW_VERTEX_CACHE_BYTES
 #define FW_VERTEX_CACHE_BYTES 0
-#endif
-#ifndef FW_ARENA_BYTES
-#define FW_ARENA_BYTES 49152
 #endif
 
 #define CHUNK_PIXELS 32          /* pixels converted per host write */

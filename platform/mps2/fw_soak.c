@@ -30,18 +30,6 @@
 #include "fw_say.h"
 #include "fwmodel.h"
 
-#ifndef FW_BOARD
-#define FW_BOARD "unknown"
-#endif
-#ifndef FW_FORMAT
-#define FW_FORMAT SILK_PIX_RGB565
-#endif
-#ifndef FW_BAND_ROWS
-#define FW_BAND_ROWS 8
-#endif
-#ifndef FW_ARENA_BYTES
-#define FW_ARENA_BYTES 49152
-#endif
 
 static uint8_t arena_mem[FW_ARENA_BYTES] __attribute__((aligned(SILK_ARENA_ALIGN)));
 

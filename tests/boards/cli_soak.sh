@@ -10,24 +10,7 @@
 # all.  `make soak` runs it alone, with longer runs through the variables.
 . "$(dirname "$0")/../shlib.sh"
 
-if [ -n "${SILK_SAN:-}" ]; then
-    echo "skip: the firmware is checked in the normal pass (it has no sanitizer build)"
-    done_testing
-    exit 0
-fi
-missing=
-command -v qemu-system-arm >/dev/null 2>&1 || missing="qemu-system-arm"
-command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing arm-none-eabi-gcc"
-if [ -n "$missing" ]; then
-    if [ -n "${CI:-}" ]; then
-        fail "toolchain" "CI must have$missing (make deps; .ci/run installs them)"
-        done_testing
-        exit 1
-    fi
-    echo "skip: $missing not installed (make deps installs the ARM toolchain and QEMU)"
-    done_testing
-    exit 0
-fi
+firmware_tests
 dir=${SILK_FW_DIR:-build-mps2-an385/fw}/soak
 if [ ! -x "$dir/soak-host" ] || [ ! -s "$dir/soak.elf" ]; then
     meshes=${SILK_MESHES:-../shared/meshes}
