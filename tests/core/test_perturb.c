@@ -288,9 +288,9 @@ TEST(moves_down_to_the_plane)
 {
     /* a saddle strip: rows at y = -1, 0, 1; z rises with x^2 and falls with y^2 */
     static const char obj[] =
-        "v -1 -1 0\nv 0 -1 -1\nv 1 -1 0\n"
+        "v -1 -1 0\nv 0 -1 -0.5\nv 1 -1 0\n"
         "v -1 0 0.5\nv 0 0 0\nv 1 0 0.5\n"
-        "v -1 1 0\nv 0 1 -1\nv 1 1 0\n"
+        "v -1 1 0\nv 0 1 -0.5\nv 1 1 0\n"
         "f 1 2 5\nf 1 5 4\nf 2 3 6\nf 2 6 5\nf 4 5 8\nf 4 8 7\nf 5 6 9\nf 5 9 8\n";
     silk_arena a;
     silk_arena_init(&a, arena_buf, ARENA_BYTES);
@@ -304,6 +304,10 @@ TEST(moves_down_to_the_plane)
         CHECK(0);
         return;
     }
+    /* the computed normals taken as a file's: the bridges without the tilt
+     * bound (curve.h), whose flatter concave segments would leave this
+     * small saddle's vertices where they are */
+    m.normals_used = SILK_NORMALS_FILE;
     /* from high above +y, tilted a little: the saddle's rim along x is the silhouette */
     int found = 0, wrong_dir = 0;
     pstats ps;
