@@ -1159,7 +1159,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
 {
     frame_fast *x = f->fast;
     uint32_t t0 = silk_stage_start(f->clock);
-    if (!f->in_scene) silk_target_clear(t, o->bg_rgb);   /* a scene's band is cleared or painted once, by scene.c */
+    if (!(SILK_SCENES && f->in_scene)) silk_target_clear(t, o->bg_rgb);   /* a scene's band is cleared or painted once, by scene.c */
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
     if (CLIP_FRAME(f)) silk_clip_stencil(f->clip, t);
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
@@ -1175,7 +1175,7 @@ static void frame_draw(frame *f, const silk_render_opts *o, silk_target *t)
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
                       !SILTEX_FRAME(f) && (f->part != share_part || t->rows >= t->height) &&
-                      !f->after;   /* scene.c: its shading pass would take pixels another object ties in depth */
+                      !(SILK_SCENES && f->after);   /* scene.c: its shading pass would take pixels another object ties in depth */
     uint32_t *wins = NULL;   /* depth_wins, where there is a depth pass */
     if (SILK_DRAW_DIRECT && x->vc_xy && !x->xy_ready) place_vertices(f, t);
     if (SILK_DEPTH_WINS && depth_first) wins = x->won;
@@ -1416,13 +1416,14 @@ static void frame_aa(frame *f, silk_arena *a, const silk_view *v, const silk_ren
 
 /* What a prepared frame may add for speed: back faces culled where they
  * cannot show, then the vertex cache and the kept tangents from what the
- * arena has left (the frame's need is its high-water before them). */
+ * arena has left (the frame's need is its high-water before them); then,
+ * for bands, the rows each part reaches (share_rows). */
 static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk_hal *h, const silk_render_opts *o,
                          const silk_target *t)
 {
     f->peak_before = a->top_peak;
     size_t reserve = outline_reserve(f, o, t);
-    if (reserve > f->reserve) f->reserve = reserve;   /* (scene.c may ask for more: every object's outline at once) */
+    f->reserve = SILK_SCENES && f->reserve > reserve ? f->reserve : reserve;   /* (scene.c: every object's outline at once) */
     vertex_cache(f, a, o);
     if (SILK_DRAW_DIRECT && f->fast->vc_xy) place_vertices(f, t);   /* now: back_faces_hidden reads what it found */
     f->cull = back_faces_hidden(f, m, h, o);
@@ -1430,6 +1431,7 @@ static void frame_extras(frame *f, silk_arena *a, const silk_mesh *m, const silk
     keep_tangents(f, a);
     depth_wins(f, a, o, t);
     keep_shares(f, a, o);
+    if (SILK_SCENES) share_rows(f, o, t);   /* (bands only: a whole frame has no f->rows) */
 }
 
 /* The top of the arena the frame needed since mark: its high-water, the
@@ -1514,7 +1516,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
     if (st == SILK_OK) {
         frame_extras(&f, a, m, h, o, band);
-        share_rows(&f, o, band);
+        if (!SILK_SCENES) share_rows(&f, o, band);   /* (frame_extras' own with scenes: scene.c's steps call it) */
     }
     /* With two colour buffers the bands alternate, each drawn once the sink
      * says it has done sending it (render.h). */
@@ -1567,11 +1569,6 @@ silk_status silk_frame_step_prepare(silk_frame_step **out, silk_arena *a, const 
     return st;
 }
 
-size_t silk_frame_step_reserve(const silk_frame_step *s, const silk_render_opts *o, const silk_target *band)
-{
-    return outline_reserve(&s->f, o, band);
-}
-
 uint32_t silk_frame_step_max_recs(const silk_frame_step *s)
 {
     return s->f.smooth ? s->f.sil.max_recs : 3;   /* as frame_aa's silk_aa_begin */
@@ -1582,7 +1579,6 @@ void silk_frame_step_extras(silk_frame_step *s, silk_arena *a, const silk_mesh *
 {
     s->f.reserve = reserve;
     frame_extras(&s->f, a, m, h, o, band);
-    share_rows(&s->f, o, band);
 }
 
 void silk_frame_step_draw(silk_frame_step *s, const silk_render_opts *o, silk_target *t)
@@ -1599,7 +1595,7 @@ int silk_frame_step_outline_kind(const silk_frame_step *s, const silk_render_opt
 void silk_frame_step_outline(silk_frame_step *s, silk_arena *a, const silk_view *v, const silk_render_opts *o,
                              silk_aa *aa, silk_frame_stats *stats)
 {
-    if (SILK_AA) frame_outline(&s->f, a, v, o, aa, stats);   /* (a build without them: compiled away) */
+    if (SILK_SCENES && SILK_AA) frame_outline(&s->f, a, v, o, aa, stats);   /* (compiled away without them) */
 }
 
 void silk_frame_step_clip_aa(silk_frame_step *s, const silk_render_opts *o, silk_target *t)
