@@ -170,11 +170,15 @@ check-nofloat:
 
 # Normal build, then the core's tests in every board's configuration, then
 # the whole suite under AddressSanitizer + UBSan.
+# The builds `make test` makes run two jobs at a time (one per core, at
+# most two) unless make was given -j itself.
+NPROC2 := $(shell n=$$(nproc 2>/dev/null || echo 1); [ "$$n" -gt 2 ] && n=2; echo $$n)
+BUILD_JOBS = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(NPROC2))
 test: check-nofloat
-	$(MAKE) tests
+	$(MAKE) $(BUILD_JOBS) tests
 	SILK=$(BUILD)/silk sh tests/run.sh $(BUILD)
-	$(MAKE) test-configs
-	$(MAKE) SAN=1 tests
+	$(MAKE) $(BUILD_JOBS) test-configs
+	$(MAKE) $(BUILD_JOBS) SAN=1 tests
 	SILK=build-san/silk SILK_SAN=1 sh tests/run.sh build-san
 
 # The core's unit tests built with each board's boards/NAME/config.h (in
