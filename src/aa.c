@@ -88,6 +88,7 @@
 #include "aa.h"
 #include "raster_place.h"
 #include "phong_parts.h"
+#include "compiler.h"
 #include "remesh.h"
 #include "silk/siltex.h"
 
@@ -158,12 +159,8 @@ static size_t px_wanted(size_t w, int rows)
     return 3 * (w + (size_t)rows);
 }
 
-int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
-{
-    return silk_aa_begin_n(aa, a, t, max_recs, 1);
-}
-
-int silk_aa_begin_n(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs, uint32_t nobj)
+SILK_ALWAYS_INLINE   /* into each: a board without scenes has silk_aa_begin alone, with nobj 1 */
+static inline int aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs, uint32_t nobj)
 {
     memset(aa, 0, sizeof *aa);
     aa->t = t;
@@ -193,16 +190,32 @@ int silk_aa_begin_n(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_rec
     return 1;
 }
 
-size_t silk_aa_bytes(const silk_target *t, uint32_t max_recs)
+int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
 {
-    return silk_aa_bytes_n(t, max_recs, 1);
+    return aa_begin(aa, a, t, max_recs, 1);
 }
 
-size_t silk_aa_bytes_n(const silk_target *t, uint32_t max_recs, uint32_t nobj)
+int silk_aa_begin_n(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs, uint32_t nobj)
+{
+    return aa_begin(aa, a, t, max_recs, nobj);
+}
+
+SILK_ALWAYS_INLINE
+static inline size_t aa_bytes(const silk_target *t, uint32_t max_recs, uint32_t nobj)
 {
     size_t w = (size_t)t->width;
     return fixed_bytes(w, silk_pixfmt_bytes(t->fmt), 2, max_recs) +
            AL(px_wanted(w, t->rows) * nobj * sizeof(silk_aa_px));
+}
+
+size_t silk_aa_bytes(const silk_target *t, uint32_t max_recs)
+{
+    return aa_bytes(t, max_recs, 1);
+}
+
+size_t silk_aa_bytes_n(const silk_target *t, uint32_t max_recs, uint32_t nobj)
+{
+    return aa_bytes(t, max_recs, nobj);
 }
 #undef AL
 

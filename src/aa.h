@@ -61,8 +61,8 @@ int silk_aa_begin(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs)
  * (both aprons counted): what the renderer leaves free for it when it keeps
  * things for speed, and what silk_budget_frame counts. */
 size_t silk_aa_bytes(const silk_target *t, uint32_t max_recs);
-/* The same for the outlines of nobj objects drawn into one band
- * (scene.c): a pixel list nobj times as long. */
+/* Both for the outlines of nobj objects drawn into one band (scene.c): a
+ * pixel list nobj times as long. */
 int silk_aa_begin_n(silk_aa *aa, silk_arena *a, silk_target *t, uint32_t max_recs, uint32_t nobj);
 size_t silk_aa_bytes_n(const silk_target *t, uint32_t max_recs, uint32_t nobj);
 

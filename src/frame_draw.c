@@ -106,7 +106,7 @@ void silk_draw_frame(frame *f, const silk_render_opts *o, silk_target *t)
 {
     frame_fast *x = f->fast;
     uint32_t t0 = silk_stage_start(f->clock);
-    if (!f->in_scene) silk_target_clear(t, o->bg_rgb);   /* a scene's band is cleared or painted once, by scene.c */
+    if (!(SILK_SCENES && f->in_scene)) silk_target_clear(t, o->bg_rgb);   /* a scene's band is cleared or painted once, by scene.c */
     silk_stage_stop(f->clock, SILK_STAGE_RASTER, t0);
     if (CLIP_FRAME(f)) silk_clip_stencil(f->clip, t);
     /* Pass -1 draws depth only; pass 0 then shades where a fragment is as
@@ -122,7 +122,7 @@ void silk_draw_frame(frame *f, const silk_render_opts *o, silk_target *t)
     /* (not in SILTEX, whose fragment stage decides which pixels take a depth) */
     int depth_first = t->depth && o->lines != SILK_LINES_ONLY && ntri * 16 <= (uint64_t)t->width * t->height &&
                       !SILTEX_FRAME(f) && (f->parts != FRAME_SHARES || t->rows >= t->height) &&
-                      !f->after;   /* scene.c: its shading pass would take pixels another object ties in depth */
+                      !(SILK_SCENES && f->after);   /* scene.c: its shading pass would take pixels another object ties in depth */
     uint32_t *wins = NULL;   /* depth_wins, where there is a depth pass */
     if (SILK_DRAW_DIRECT && x->vc_xy && !x->xy_ready) silk_fast_place_vertices(f, t);
     if (SILK_DEPTH_WINS && depth_first) wins = x->won;

@@ -28,13 +28,11 @@ typedef struct silk_frame_step silk_frame_step;   /* render.c's frame, with what
 silk_status silk_frame_step_prepare(silk_frame_step **out, silk_arena *a, const silk_mesh *m, const silk_view *v,
                                     const silk_hal *h, const silk_render_opts *o, const silk_target *band, int after,
                                     silk_frame_stats *stats, silk_error *err);
-/* What the object's outline takes of a band (silk_aa_begin's for its
- * records), 0 when it draws none with silk_aa, and the records of its
- * largest share (silk_aa_begin's max_recs). */
-size_t silk_frame_step_reserve(const silk_frame_step *f, const silk_render_opts *o, const silk_target *band);
+/* The records of the object's largest share (silk_aa_begin's max_recs). */
 uint32_t silk_frame_step_max_recs(const silk_frame_step *f);
 /* What the frame keeps for speed, leaving reserve bytes free (at least
- * its own outline's), and the rows its parts reach for bands. */
+ * its own outline's: silk_aa_bytes_n's for every object's at once), and
+ * the rows its parts reach for bands. */
 void silk_frame_step_extras(silk_frame_step *f, silk_arena *a, const silk_mesh *m, const silk_hal *h,
                             const silk_render_opts *o, silk_target *band, size_t reserve);
 /* The object's triangles (and lines) into t, which is not cleared. */

@@ -326,12 +326,13 @@ static void keep_tangents(frame *f, silk_arena *a)
 
 /* What a prepared frame may add for speed: back faces culled where they
  * cannot show, then the vertex cache and the kept tangents from what the
- * arena has left (the frame's need is its high-water before them). */
+ * arena has left (the frame's need is its high-water before them); then,
+ * for bands, the rows each part reaches (silk_cull_rows). */
 static void frame_extras(frame *f, silk_arena *a, const silk_hal *h, const silk_render_opts *o, const silk_target *t)
 {
     f->peak_before = a->top_peak;
     size_t reserve = outline_reserve(f, o, t);
-    if (reserve > f->reserve) f->reserve = reserve;   /* (scene.c may ask for more: every object's outline at once) */
+    f->reserve = SILK_SCENES && f->reserve > reserve ? f->reserve : reserve;   /* (scene.c: every object's outline at once) */
     /* (each under its option: a build without it makes no call) */
     if (SILK_VERTEX_CACHE) silk_fast_vertex_cache(f, a, o);
     if (SILK_DRAW_DIRECT && f->fast->vc_xy) silk_fast_place_vertices(f, t);   /* now: silk_cull_back_faces reads what it found */
@@ -340,6 +341,7 @@ static void frame_extras(frame *f, silk_arena *a, const silk_hal *h, const silk_
     keep_tangents(f, a);
     if (SILK_DEPTH_WINS) silk_fast_depth_wins(f, a, o, t);
     if (SILK_KEEP_SHARES) silk_fast_keep_shares(f, a, o);
+    if (SILK_SCENES) silk_cull_rows(f, o, t);   /* (bands only: a whole frame has no f->rows) */
 }
 
 /* The top of the arena the frame needed since mark: its high-water, the
@@ -425,7 +427,7 @@ silk_status silk_render_bands(silk_arena *a, const silk_mesh *m, const silk_view
         f.rows = silk_arena_array_top(a, 2 * (size_t)f.nparts, sizeof *f.rows, SILK_MEM_FRAME);
     if (st == SILK_OK) {
         frame_extras(&f, a, h, o, band);
-        silk_cull_rows(&f, o, band);
+        if (!SILK_SCENES) silk_cull_rows(&f, o, band);   /* (frame_extras' own with scenes: scene.c's steps call it) */
     }
     /* With two colour buffers the bands alternate, each drawn once the sink
      * says it has done sending it (render.h). */
@@ -479,11 +481,6 @@ silk_status silk_frame_step_prepare(silk_frame_step **out, silk_arena *a, const 
     return st;
 }
 
-size_t silk_frame_step_reserve(const silk_frame_step *s, const silk_render_opts *o, const silk_target *band)
-{
-    return outline_reserve(&s->f, o, band);
-}
-
 uint32_t silk_frame_step_max_recs(const silk_frame_step *s)
 {
     return s->f.smooth ? s->f.sil.max_recs : 3;   /* as frame_aa's silk_aa_begin */
@@ -495,7 +492,6 @@ void silk_frame_step_extras(silk_frame_step *s, silk_arena *a, const silk_mesh *
     s->f.reserve = reserve;
     (void)m;
     frame_extras(&s->f, a, h, o, band);
-    silk_cull_rows(&s->f, o, band);
 }
 
 void silk_frame_step_draw(silk_frame_step *s, const silk_render_opts *o, silk_target *t)
@@ -512,7 +508,7 @@ int silk_frame_step_outline_kind(const silk_frame_step *s, const silk_render_opt
 void silk_frame_step_outline(silk_frame_step *s, silk_arena *a, const silk_view *v, const silk_render_opts *o,
                              silk_aa *aa, silk_frame_stats *stats)
 {
-    if (SILK_AA) silk_outline_walk(&s->f, a, v, o, aa, stats);   /* (a build without them: compiled away) */
+    if (SILK_SCENES && SILK_AA) silk_outline_walk(&s->f, a, v, o, aa, stats);   /* (compiled away without them) */
 }
 
 void silk_frame_step_clip_aa(silk_frame_step *s, const silk_render_opts *o, silk_target *t)

@@ -281,6 +281,8 @@ static silk_status scene_frame(silk_arena *a, const silk_scene *s, const silk_vi
     silk_frame_stats local;
     if (!stats) stats = &local;
     memset(stats, 0, sizeof *stats);
+    if (!SILK_SCENES)
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_scene: scenes are not built in (SILK_SCENES 0)");
     if (!a || !s || !v || !band || (sink && (!sink->band || (sink->color2 == NULL) != (sink->wait == NULL))))
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render_scene: missing argument (a second band buffer "
                          "needs the sink's wait)");
@@ -308,14 +310,14 @@ static silk_status scene_frame(silk_arena *a, const silk_scene *s, const silk_vi
     uint32_t max_recs = 0, naa = 0;
     size_t reserve = 0, peak_before = a->top_peak, extras = 0;
     for (uint32_t i = 0; st == SILK_OK && i < n; i++) {
-        size_t r = silk_frame_step_reserve(so[i].step, &so[i].opts, band);
-        if (r > reserve) reserve = r;
         uint32_t m = silk_frame_step_max_recs(so[i].step);
         if (m > max_recs) max_recs = m;
         so[i].outline = silk_frame_step_outline_kind(so[i].step, &so[i].opts, band);
         naa += so[i].outline == 1;
     }
-    if (naa > 1) reserve += silk_aa_bytes_n(band, max_recs, naa);
+    /* (each object's extras leave its own outline's room too: a SILTEX
+     * one's scratch) */
+    if (SILK_AA && naa) reserve = silk_aa_bytes_n(band, max_recs, naa);
     for (uint32_t i = 0; st == SILK_OK && i < n; i++) {
         size_t before, bytes;
         silk_frame_step_extras(so[i].step, a, s->objects[i].mesh, so[i].h, &so[i].opts, band, reserve);

@@ -13,3 +13,6 @@
 #define SILK_PLAN_INDEX16 1
 #define SILK_SHORTCUTS 0
 #define SILK_CPU32 1
+#ifndef SILK_SCENES             /* the scene firmware (cli_scene_fw.sh) builds its core with -DSILK_SCENES=1 */
+#define SILK_SCENES 0            /* several objects a frame: 4 KiB beyond the code budget */
+#endif

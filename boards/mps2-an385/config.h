@@ -15,3 +15,6 @@
 #define SILK_PLAN_INDEX16 1      /* the plan in half the RAM: a frame of a model this part holds fits */
 #define SILK_SHORTCUTS 0         /* the code budget; the firmware gives the arena-taking ones no room anyway */
 #define SILK_CPU32 1             /* a 32-bit part: its unit tests on the host take its routes */
+#ifndef SILK_SCENES             /* the scene firmware (cli_scene_fw.sh) builds its core with -DSILK_SCENES=1 */
+#define SILK_SCENES 0            /* several objects a frame: 4 KiB beyond the code budget */
+#endif

@@ -72,6 +72,12 @@
 #define SILK_TEXTURES 1
 #endif
 
+/* Several objects a frame (silk/scene.h, src/scene.c): about 3.2 KiB of Cortex-M3 code, and render.c's steps for
+ * it; 0 leaves out both (silk_render_scene is then SILK_ERR_ARG) and render.c's frames are compiled as without them */
+#ifndef SILK_SCENES
+#define SILK_SCENES 1
+#endif
+
 /* Frames stored whole, which lines, PN and BLEND need (derived, not set): without them every frame is drawn share by share */
 #define SILK_STORED_FRAMES (SILK_LINES || SILK_REFERENCE_MODES)
 

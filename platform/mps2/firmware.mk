@@ -168,23 +168,36 @@ $(FW_SOAK)/soak-host: platform/mps2/fw_soak.c platform/mps2/fw_io_host.c platfor
 
 # The scene frame (fw_main.c built with -DFW_SCENE, tests/boards/cli_scene_fw.sh):
 # the first model and a copy of it in one frame of silk_render_scene_bands,
-# for the board and for the host.  Linked for the board's RAM, with its own
-# map: the scene's code is beyond the core's budget (`make profile` keeps
-# checking the firmware without it), and cli_scene_fw.sh says how far.
+# for the board and for the host, on a core of the board's options with
+# SILK_SCENES 1 (the boards leave it out: beyond their code budget, which
+# `make profile` keeps checking on the firmware without it).  Linked for
+# the board's RAM, with its own map.
 FW_SCENE := $(FW_OUT)/scene
+FW_SCENE_OBJ := $(CORE_SRC:%.c=$(FW_SCENE)/obj/%.o)
+FW_SCENE_HOST_OBJ := $(CORE_SRC:%.c=$(FW_SCENE)/host-obj/%.o)
 .PHONY: scene-firmware
 scene-firmware: $(if $(FW_SOAK_MODEL),$(FW_SCENE)/fw.elf $(FW_SCENE)/fw-host $(FW_OUT)/machine)
+$(FW_SCENE)/obj/%.o: %.c boards/$(BOARD)/board.mk
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(FW_CFLAGS) -DSILK_SCENES=1 -MMD -MP -c $< -o $@
+$(FW_SCENE)/host-obj/%.o: %.c boards/$(BOARD)/board.mk
+	@mkdir -p $(dir $@)
+	$(CC) $(FW_HOST_CFLAGS) -DSILK_SCENES=1 -MMD -MP -c $< -o $@
+$(FW_SCENE)/libsilk.a: $(FW_SCENE_OBJ)
+	rm -f $@ && $(FW_AR) rcs $@ $^
+$(FW_SCENE)/host-libsilk.a: $(FW_SCENE_HOST_OBJ)
+	rm -f $@ && $(AR) rcs $@ $^
 $(FW_SCENE)/fw_main.o: platform/mps2/fw_main.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
                        $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h $(FW_OUT)/defs.args
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(FW_CFLAGS) $(FW_DEFS) -DFW_SCENE -DFW_MODEL_NAME='"$(FW_SOAK_MODEL)"' -Iplatform/mps2 \
+	$(FW_CC) $(FW_CFLAGS) -DSILK_SCENES=1 $(FW_DEFS) -DFW_SCENE -DFW_MODEL_NAME='"$(FW_SOAK_MODEL)"' -Iplatform/mps2 \
 	    -I$(FW_OUT)/$(FW_SOAK_MODEL) -c $< -o $@
-$(FW_SCENE)/fw.elf: $(FW_SCENE)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a platform/mps2/mps2.ld $(FW_OUT)/defs.args
-	$(FW_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_SCENE)/fw.map -o $@ $(FW_SCENE)/fw_main.o $(FW_PLAT_OBJ) $(FW_DIR)/libsilk.a
+$(FW_SCENE)/fw.elf: $(FW_SCENE)/fw_main.o $(FW_PLAT_OBJ) $(FW_SCENE)/libsilk.a platform/mps2/mps2.ld $(FW_OUT)/defs.args
+	$(FW_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_SCENE)/fw.map -o $@ $(FW_SCENE)/fw_main.o $(FW_PLAT_OBJ) $(FW_SCENE)/libsilk.a
 $(FW_SCENE)/fw-host: platform/mps2/fw_main.c platform/mps2/fw_io_host.c platform/mps2/fw_io.h platform/mps2/fw_say.h \
-                     $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h $(FW_OUT)/defs.args $(FW_HOST_LIB)
+                     $(FW_OUT)/$(FW_SOAK_MODEL)/fwmodel.h $(FW_OUT)/defs.args $(FW_SCENE)/host-libsilk.a
 	@mkdir -p $(dir $@)
-	$(CC) $(FW_HOST_CFLAGS) $(FW_DEFS) -DFW_SCENE -DFW_MODEL_NAME='"$(FW_SOAK_MODEL)"' -Iplatform/mps2 \
-	    -I$(FW_OUT)/$(FW_SOAK_MODEL) -o $@ platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(FW_HOST_LIB)
+	$(CC) $(FW_HOST_CFLAGS) -DSILK_SCENES=1 $(FW_DEFS) -DFW_SCENE -DFW_MODEL_NAME='"$(FW_SOAK_MODEL)"' -Iplatform/mps2 \
+	    -I$(FW_OUT)/$(FW_SOAK_MODEL) -o $@ platform/mps2/fw_main.c platform/mps2/fw_io_host.c $(FW_SCENE)/host-libsilk.a
 
--include $(wildcard $(FW_DIR)/obj/*/*.d $(FW_DIR)/obj/*/*/*.d $(FW_DIR)/host-obj/*/*.d)
+-include $(wildcard $(FW_DIR)/obj/*/*.d $(FW_DIR)/obj/*/*/*.d $(FW_DIR)/host-obj/*/*.d $(FW_DIR)/scene/*obj/*/*.d)

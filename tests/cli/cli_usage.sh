@@ -101,7 +101,8 @@ want='needs a value' bad "missing value at the end" --size
 want='needs a value' expect_usage "-o without a value" render "$sphere" -o
 want='no output' expect_usage "no -o" render "$sphere"
 want='no mesh' expect_usage "no mesh" render -o "$o"
-want='one mesh' expect_usage "two meshes" render "$sphere" "$sphere" -o "$o"
+want='one mesh' expect_usage "two meshes to info" info "$sphere" "$sphere"
+want='names mesh 3' expect_usage "two meshes, an option for a third" render "$sphere" "$sphere" -o "$o" --place 3:0,0,0
 want='unknown image format' expect_usage "unknown output extension" render "$sphere" -o "$tmp/x.gif"
 # the camera options agree with each other only if the view exists
 want='camera' expect_usage "eye at the target" render "$sphere" -o "$o" --eye 1,1,1 --target 1,1,1
