@@ -152,9 +152,10 @@ tests: $(TEST_BIN) $(BUILD)/silk $(BUILD)/silk.1
 # Rewrite the reference images (tests/golden/) that differ or are missing
 # and name them: the one way to update them (tests/support/golden.c).
 .PHONY: golden
-golden: $(BUILD)/tests/test_golden $(BUILD)/tests/test_raster
+golden: $(BUILD)/tests/test_golden $(BUILD)/tests/test_raster $(BUILD)/tests/test_scene
 	SILK_GOLDEN_UPDATE=1 $(BUILD)/tests/test_golden
 	SILK_GOLDEN_UPDATE=1 $(BUILD)/tests/test_raster
+	SILK_GOLDEN_UPDATE=1 $(BUILD)/tests/test_scene
 
 # The core may not use floating point: compiled without FP/SIMD registers,
 # any float or double use is a compile error.
