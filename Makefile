@@ -124,8 +124,12 @@ $(foreach d,$(TEST_DIRS),$(eval $(call TEST_RULE,$(d))))
 # meshes made by `silk gen`'s generator link it.
 $(BUILD)/tests/test_hull: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,hull.o lp.o simplify.o gen.o closest.o)
 $(BUILD)/tests/test_hull: $(addprefix $(BUILD)/obj/tools/prep/,hull.o lp.o simplify.o gen.o closest.o)
+$(BUILD)/tests/test_compact_frames: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,compact_enc.o gen.o)
+$(BUILD)/tests/test_compact_frames: $(addprefix $(BUILD)/obj/tools/prep/,compact_enc.o gen.o)
 $(BUILD)/tests/test_silmap: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
 $(BUILD)/tests/test_silmap: $(addprefix $(BUILD)/obj/tools/prep/,silmap.o gen.o)
+$(BUILD)/tests/test_compact: TEST_TOOL_OBJ = $(addprefix $(BUILD)/obj/tools/prep/,compact_enc.o gen.o)
+$(BUILD)/tests/test_compact: $(addprefix $(BUILD)/obj/tools/prep/,compact_enc.o gen.o)
 GEN_TESTS := $(BUILD)/tests/test_golden $(BUILD)/tests/test_lines $(BUILD)/tests/test_aa $(BUILD)/tests/test_texture \
              $(BUILD)/tests/test_bands $(BUILD)/tests/test_panel $(BUILD)/tests/test_budget \
              $(BUILD)/tests/test_scene

@@ -1,7 +1,8 @@
 #!/bin/sh
 # seeds.sh SILK MKSEED OUT - the seed corpora of the fuzz harnesses, written
 # into OUT/fuzz_obj, OUT/fuzz_ply, OUT/fuzz_stl, OUT/fuzz_render,
-# OUT/fuzz_pack, OUT/fuzz_math, OUT/fuzz_ppm, OUT/fuzz_model and OUT/fuzz_siltex from:
+# OUT/fuzz_pack, OUT/fuzz_math, OUT/fuzz_ppm, OUT/fuzz_model, OUT/fuzz_siltex and
+# OUT/fuzz_compact from:
 #   - the malformed-input corpus tests/bad/ (each file one error path),
 #   - the regression inputs tests/regress/HARNESS/ (every finding so far),
 #   - small meshes from `silk gen` (every shape, few triangles) and a few
@@ -10,7 +11,9 @@
 #     (tests/stl_from_obj.awk), and a handful of hand-written hard cases,
 #   - for fuzz_render and fuzz_pack, those meshes behind a scene header or
 #     edit list (the formats are described at the top of each harness),
-#   - for fuzz_math, each of its six cases with fixed operand bytes.
+#   - for fuzz_math, each of its six cases with fixed operand bytes,
+#   - for fuzz_compact, the shapes as compact models (`silk pack -o X.slkc`,
+#     with and without --flat) and the malformed ones of tests/bad/.
 # Run from the repository root (make fuzz does).
 set -eu
 silk=$1
@@ -20,7 +23,7 @@ meshes=${SILK_MESHES:-../shared/meshes}
 
 rm -rf "$out"
 mkdir -p "$out/fuzz_obj" "$out/fuzz_ply" "$out/fuzz_stl" "$out/fuzz_render" "$out/fuzz_pack" "$out/fuzz_math" \
-    "$out/fuzz_ppm" "$out/fuzz_model" "$out/fuzz_siltex" "$out/shapes"
+    "$out/fuzz_ppm" "$out/fuzz_model" "$out/fuzz_siltex" "$out/fuzz_compact" "$out/shapes"
 
 # small generated shapes
 "$silk" gen sphere --segments 6 --bands 5 -o "$out/shapes/sphere.obj" >/dev/null
@@ -61,7 +64,7 @@ for f in "$out/shapes/"*.obj; do
 done
 # fuzz_ppm: a small render as PPM, besides its regression inputs
 "$silk" render "$out/shapes/sphere.obj" -o "$out/fuzz_ppm/sphere.ppm" --size 8x6 >/dev/null
-for h in obj ply stl render pack math ppm model siltex; do
+for h in obj ply stl render pack math ppm model siltex compact; do
     if [ -d "tests/regress/$h" ]; then
         for f in tests/regress/"$h"/*; do
             [ -f "$f" ] && [ "${f%.expected}" = "$f" ] && cp "$f" "$out/fuzz_$h/"
@@ -107,4 +110,13 @@ done
 cp tests/bad/*.silk "$out/fuzz_model/"
 # fuzz_siltex: its regression inputs (an analytic sphere's texture) and the malformed textures
 cp tests/bad/model-stex-*.silk "$out/fuzz_siltex/"
+# fuzz_compact: every shape the compact model holds, with its corner table and
+# flat (the cone's apex has too many normals: pack says so and is skipped),
+# and the malformed models
+for f in "$out/shapes/"*.obj; do
+    b=$(basename "$f" .obj)
+    "$silk" pack "$f" -o "$out/fuzz_compact/$b.slkc" >/dev/null 2>&1 || rm -f "$out/fuzz_compact/$b.slkc"
+    "$silk" pack "$f" -o "$out/fuzz_compact/$b-flat.slkc" --flat >/dev/null 2>&1 || rm -f "$out/fuzz_compact/$b-flat.slkc"
+done
+cp tests/bad/*.slkc "$out/fuzz_compact/"
 rm -rf "$out/shapes"

@@ -464,7 +464,7 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
 {
     silk_index e = silk_mesh_tri_edge(m, t, k);   /* a packed mesh has no tri_edge */
     if (e >= m->nedges) return 0;
-    const silk_edge *ed = &m->edge[e];
+    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
     if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
     /* SMOOTH: an edge of a silhouette triangle lies within its segment's curve, which is walked instead */
@@ -477,8 +477,8 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
 static int crease(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
 {
     silk_index e = silk_mesh_tri_edge(m, t, k);
-    if (!front || e >= m->nedges || !silk_edge_has_feature(&m->edge[e])) return 0;
-    const silk_edge *ed = &m->edge[e];
+    if (!front || e >= m->nedges || !silk_edge_has_feature((const silk_edge[]){ silk_mesh_edge(m, e) })) return 0;
+    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
     return nb != SILK_NO_INDEX && nb < m->ntris && nb > t && tri_front(aa, m, v, nb);
 }
@@ -559,7 +559,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
     for (int k = 0; k < 3; k++) {
         silk_index e = silk_mesh_tri_edge(m, t, (uint32_t)k);
         if (e >= m->nedges) continue;
-        const silk_edge *ed = &m->edge[e];
+        const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
         uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
         if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
         if (!front) continue;
@@ -585,10 +585,10 @@ void silk_aa_candidates(silk_aa *aa, const silk_mesh *m, const silk_view *v, uin
     const uint8_t *ts = aa->sil ? aa->sil->tri_state : NULL;
     /* in locals: a byte stored into cand could alias them all */
     const uint8_t *facing = aa->facing;
-    const silk_edge *edge = m->edge;
-    const uint32_t ntris = m->ntris, nedges = m->nedges;
-    for (uint32_t e = 0; e < nedges; e++) {
-        const silk_edge *ed = &edge[e];
+    const uint32_t ntris = m->ntris;
+    silk_mesh_edges it;
+    silk_edge edv, *ed = &edv;
+    for (silk_index e = silk_mesh_edges_first(m, &it, ed); e != SILK_NO_INDEX; e = silk_mesh_edges_next(m, &it, ed)) {
         uint32_t t0 = ed->t[0], t1 = ed->t[1];
         if (t0 >= ntris || t1 >= ntris) continue;
         int f0 = facing[t0 / 4] >> 2 * (t0 % 4) & 1, f1 = facing[t1 / 4] >> 2 * (t1 % 4) & 1;   /* known */

@@ -51,12 +51,12 @@ silk_fx silk_blend_alpha(silk_vec3 to_eye, silk_vec3 ns, silk_vec3 nt, silk_fx b
 static silk_fx edge_alpha(const silk_mesh *m, const silk_view *v, uint32_t e, const silk_vec3 *face_normal,
                           silk_fx beta)
 {
-    const silk_edge *ed = &m->edge[e];
+    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
     if (ed->flags & SILK_EDGE_FEATURE) return SILK_FX_ONE;
     if ((ed->flags & SILK_EDGE_DEGENERATE) || ed->t[1] == SILK_NO_INDEX) return 0;
     silk_vec3 ns = face_normal[ed->t[0]], nt = face_normal[ed->t[1]];
     if ((ns.x == 0 && ns.y == 0 && ns.z == 0) || (nt.x == 0 && nt.y == 0 && nt.z == 0)) return 0;
-    silk_vec3 mid = midpoint(m->pos[ed->v[0]], m->pos[ed->v[1]]);
+    silk_vec3 mid = midpoint(silk_mesh_pos(m, ed->v[0]), silk_mesh_pos(m, ed->v[1]));
     return silk_blend_alpha(silk_view_to_eye(v, mid), ns, nt, beta);
 }
 
@@ -66,8 +66,8 @@ uint32_t silk_blend_segments(const silk_mesh *m, const silk_view *v, uint32_t e,
     const int64_t max = SILK_BLEND_MAX_SEGMENTS;
     if (alpha <= 0) return 1;
     if (tol_px <= 0) return (uint32_t)max;
-    const silk_edge *ed = &m->edge[e];
-    silk_vec3 p0 = m->pos[ed->v[0]], p1 = m->pos[ed->v[1]], c[2];
+    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
+    silk_vec3 p0 = silk_mesh_pos(m, ed->v[0]), p1 = silk_mesh_pos(m, ed->v[1]), c[2];
     silk_patch_edge_curve(m, e, c);
     silk_vec3 d0 = silk_v3_sub(c[0], silk_patch_lin(p0, p1)), d1 = silk_v3_sub(c[1], silk_patch_lin(p1, p0));
     /* |D''| is largest at an end: 6 |2 d0 - d1| at t = 0, 6 |d0 - 2 d1| at t = 1. */

@@ -38,6 +38,15 @@ silk_index silk_mesh_edge_feature(const silk_mesh *m, uint32_t e)
     return (silk_index)f;
 }
 
+int silk_mesh_feature_seg(const silk_mesh *m, silk_index e, silk_feature_seg *out)
+{
+    if (m->packed.base) return silk_compact_feature_seg(m, e, out);
+    silk_index fi = silk_mesh_edge_feature(m, e);
+    if (fi == SILK_NO_INDEX || fi >= m->nfeature_edges || !m->feature) return 0;
+    *out = m->feature[fi];
+    return 1;
+}
+
 static silk_index other_end(const silk_edge *e, silk_index v)
 {
     return e->v[0] == v ? e->v[1] : e->v[0];
@@ -172,7 +181,7 @@ static silk_fx turn_at(const silk_vec3 *p, const silk_index *vert, uint32_t k, i
  * as much again.  A circle through the three points would bend the long,
  * straight edge - fandisk-1000's 150 px edges by 10 px at 640x480.  The
  * tangent at vertex i < k is then the long edge's direction, so the line
- * stays straight (end_tangent gives the chord itself) and the arc meets it
+ * stays straight (silk_feature_tangent gives the chord itself) and the arc meets it
  * tangentially. */
 #define SILK_FEATURE_G1 2
 
@@ -193,7 +202,7 @@ static void g1_dir(const silk_vec3 *p, const silk_index *vert, uint32_t k, int c
  * gives exactly its edges (eq. 5 with t0 = t1 = the chord), not curves bent
  * by the rounding of its points and unit vectors (such a turn moves a curve
  * by less than 1/4000 of its chord). */
-static silk_vec3 end_tangent(silk_vec3 d, silk_vec3 chord)
+silk_vec3 silk_feature_tangent(silk_vec3 d, silk_vec3 chord)
 {
     if (silk_v3_dot64(d, chord) > 0 &&
         (int64_t)silk_v3_length(silk_v3_cross(d, chord)) * 1024 < (int64_t)silk_v3_length(chord))
@@ -227,7 +236,7 @@ static void polyline_segments(silk_mesh *m, const silk_index *vert, const uint32
     }
     for (uint32_t j = 0; j < k; j++) {
         silk_vec3 chord = silk_v3_sub(p[vert[j + 1]], p[vert[j]]);
-        store(m, edges[j], vert[j], end_tangent(dir[j], chord), end_tangent(dir[j + 1], chord));
+        store(m, edges[j], vert[j], silk_feature_tangent(dir[j], chord), silk_feature_tangent(dir[j + 1], chord));
     }
 }
 

@@ -55,7 +55,7 @@ static int aa_direct(frame *f, silk_aa *aa, const silk_view *v, uint32_t k)
     g.ntri = 1;
     g.nvrec = 3;
     for (uint32_t i = 0; i < 3; i++) {
-        uint32_t p = m->tri[3 * k + i];
+        uint32_t p = silk_mesh_corner(m, 3 * k + i);
         if (p >= m->nverts) return 0;
         out[i].clip = x->vc_clip[p];
     }
@@ -90,13 +90,13 @@ SILK_ALWAYS_INLINE static inline void aa_prefetch(const frame *f, uint32_t k, ui
     else next[0] = cand_after(f, k);
     uint32_t c1 = next[0], c2 = next[1] = c1 < f->nparts ? cand_after(f, c1) : f->nparts;
     if (c2 < f->nparts) {
-        SILK_PREFETCH(&m->tri[3 * (size_t)c2]);
+        if (m->tri) SILK_PREFETCH(&m->tri[3 * (size_t)c2]);
         if (m->tri_edge) SILK_PREFETCH(&m->tri_edge[3 * (size_t)c2]);
     }
     for (uint32_t i = 0; c1 < f->nparts && i < 3; i++) {
-        uint32_t p = m->tri[3 * (size_t)c1 + i], e = m->tri_edge ? m->tri_edge[3 * (size_t)c1 + i] : SILK_NO_INDEX;
+        uint32_t p = silk_mesh_corner(m, 3 * (size_t)c1 + i), e = m->tri_edge ? m->tri_edge[3 * (size_t)c1 + i] : SILK_NO_INDEX;
         if (p < m->nverts) SILK_PREFETCH(&f->fast->vc_clip[p]);
-        if (e < m->nedges) SILK_PREFETCH(&m->edge[e]);
+        if (e < m->nedges) SILK_PREFETCH(&m->edge[e]);   /* (tri_edge: a mesh in arrays) */
     }
 }
 

@@ -25,7 +25,7 @@ static int sphere_before_near(const silk_mesh *m, const silk_view *v)
                      ((int64_t)m->bbox_min.z + m->bbox_max.z) / 2 };
     uint64_t r2 = 0;   /* coordinates below 2^26: each square below 2^54 */
     for (uint32_t i = 0; i < m->nverts; i++) {
-        int64_t dx = m->pos[i].x - c[0], dy = m->pos[i].y - c[1], dz = m->pos[i].z - c[2];
+        int64_t dx = silk_mesh_pos(m, i).x - c[0], dy = silk_mesh_pos(m, i).y - c[1], dz = silk_mesh_pos(m, i).z - c[2];
         uint64_t d2 = (uint64_t)(dx * dx) + (uint64_t)(dy * dy) + (uint64_t)(dz * dz);
         if (d2 > r2) r2 = d2;
     }
@@ -70,7 +70,7 @@ int silk_cull_back_faces(const frame *f, const silk_hal *h, const silk_render_op
     if (SILK_DRAW_DIRECT && f->fast->xy_ready && f->hal == h) return f->fast->all_before;
     if (sphere_before_near(m, v)) return 1;
     for (uint32_t i = 0; i < m->nverts; i++)
-        if (!before_near(v, m->pos[i])) return 0;
+        if (!before_near(v, silk_mesh_pos(m, i))) return 0;
     return 1;
 }
 

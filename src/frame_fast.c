@@ -23,7 +23,7 @@ void silk_fast_vertex_cache(frame *f, silk_arena *a, const silk_render_opts *o)
 {
     const silk_mesh *m = f->geom.mesh;
     frame_fast *x = f->fast;
-    if (!SILK_VERTEX_CACHE || f->parts != FRAME_SHARES || !m->tri_normal || !silk_hal_vertex_by_attrs(f->hal)) return;
+    if (!SILK_VERTEX_CACHE || f->parts != FRAME_SHARES || !silk_mesh_has_corner_normals(m) || !silk_hal_vertex_by_attrs(f->hal)) return;
     const size_t slot = sizeof *x->vc + 3 * sizeof *x->vc_tag, half = silk_fast_spare(f, a) / 2,
                  free0 = silk_arena_free_bytes(a);
     size_t room = half < o->vertex_cache_bytes ? half : o->vertex_cache_bytes;
@@ -316,7 +316,7 @@ void silk_fast_place_vertices(frame *f, const silk_target *t)
     int before = 1;
     for (uint32_t p = 0; p < m->nverts; p++) {
         const silk_vec4 *c = &x->vc_clip[p];
-        x->vc_clip[p] = silk_hal_vertex_clip(f->hal, m->pos[p]);
+        x->vc_clip[p] = silk_hal_vertex_clip(f->hal, silk_mesh_pos(m, p));
         before &= c->w > 0 && (int64_t)c->z + c->w > 0;   /* before_near's test */
         if (!silk_raster_place(t, c, &x->vc_xy[2 * p])) x->vc_xy[2 * p] = VC_OUTSIDE;
     }
@@ -343,7 +343,7 @@ int silk_fast_draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint3
     const silk_mesh *m = f->geom.mesh;
     frame_fast *x = f->fast;
     /* written out (every triangle of the mesh comes here every band) */
-    const silk_index *tv = &m->tri[3 * (size_t)k];
+    const silk_index tv[3] = { silk_mesh_corner(m, 3 * k), silk_mesh_corner(m, 3 * k + 1), silk_mesh_corner(m, 3 * k + 2) };
     const uint32_t nv = m->nverts;
     if (tv[0] >= nv || tv[1] >= nv || tv[2] >= nv) return 0;
     const int32_t *xy[3] = { &x->vc_xy[2 * (size_t)tv[0]], &x->vc_xy[2 * (size_t)tv[1]], &x->vc_xy[2 * (size_t)tv[2]] };
@@ -353,7 +353,7 @@ int silk_fast_draw_direct(frame *f, silk_target *t, const silk_hal *shade, uint3
     const silk_vertex_out *v[3];
     uint32_t s[3];
     for (uint32_t i = 0; i < 3; i++) {
-        if ((s[i] = corner_slot(f, 3 * k + i, NULL, &x->vc_clip[m->tri[3 * k + i]])) == UINT32_MAX) return 0;
+        if ((s[i] = corner_slot(f, 3 * k + i, NULL, &x->vc_clip[silk_mesh_corner(m, 3 * k + i)])) == UINT32_MAX) return 0;
         v[i] = &x->vc[s[i]];
     }
     if (s[0] == s[1] || s[1] == s[2] || s[2] == s[0]) return 0;   /* a later corner may have taken an earlier's slot */

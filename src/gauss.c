@@ -374,6 +374,9 @@ static void renumber(silk_mesh *m, const uint32_t *order, uint32_t *tmp, uint32_
 silk_status silk_vis_build(silk_mesh *m, const silk_vis_opts *opts, silk_arena *a, silk_error *err)
 {
     if (!m || !a) return silk_fail(err, SILK_ERR_ARG, "visibility", 0, "missing mesh or arena");
+    /* the hierarchy renumbers the normals, which a compact model keeps in
+     * place: it has none, and its normals are tested one by one */
+    if (m->packed.base) return SILK_OK;
     silk_status st = check_mesh(m, err);
     if (st != SILK_OK) return st;
     uint32_t n = m->nnormals;

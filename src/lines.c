@@ -74,8 +74,8 @@ static uint32_t point_key(const silk_mesh *m, const silk_frame_geom *g, uint32_t
 {
     const silk_vrec *v = &g->vrec[r];
     if (g->rec_key) return g->rec_key[r];
-    if ((v->kind == SILK_VREC_CORNER || v->kind == SILK_VREC_MOVED) && v->a / 3 < m->ntris && m->tri[v->a] < m->nverts)
-        return m->tri[v->a];
+    if ((v->kind == SILK_VREC_CORNER || v->kind == SILK_VREC_MOVED) && v->a / 3 < m->ntris && silk_mesh_corner(m, v->a) < m->nverts)
+        return silk_mesh_corner(m, v->a);
     return m->nverts + r;
 }
 
@@ -125,10 +125,10 @@ static int point_keys(const silk_sil_frame *f, silk_frame_geom *g, const uint32_
         for (uint32_t i = 0; e->nchain && i < e->nsides; i++) {
             silk_sil_side s, o;
             uint32_t c = at[side0[w] + i], own = c;
-            silk_sil_side_attrs(m, c / 3, c % 3, &m->edge[e->edge], &s);
+            silk_sil_side_attrs(m, c / 3, c % 3, (const silk_edge[]){ silk_mesh_edge(m, e->edge) }, &s);
             for (uint32_t j = 0; j < i; j++) {
                 own = at[side0[w] + j];
-                silk_sil_side_attrs(m, own / 3, own % 3, &m->edge[e->edge], &o);
+                silk_sil_side_attrs(m, own / 3, own % 3, (const silk_edge[]){ silk_mesh_edge(m, e->edge) }, &o);
                 if (o.n0 == s.n0 && o.n1 == s.n1 && o.uv0 == s.uv0 && o.uv1 == s.uv1) break;
                 own = c;
             }
@@ -173,7 +173,7 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;
         uint32_t c = at[side0[w]], t = c / 3, k = c % 3, k1 = (k + 1) % 3;
-        int fwd = m->tri[c] == m->edge[e->edge].v[0];
+        int fwd = silk_mesh_corner(m, c) == silk_mesh_edge(m, e->edge).v[0];
         uint32_t r0 = silk_remesh_corner_rec(f, t, k, g->part_rec[t]);
         uint32_t r1 = silk_remesh_corner_rec(f, t, k1, g->part_rec[t]);
         line_rec(g, fwd ? r0 : r1);
@@ -191,7 +191,7 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
  * in SMOOTH mode, where it is drawn on its feature curve. */
 static int edge_kind(const silk_mesh *m, const uint8_t *front, uint32_t e)
 {
-    const silk_edge *ed = &m->edge[e];
+    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
     uint32_t t0 = ed->t[0], t1 = ed->t[1];
     int f0 = t0 < m->ntris && front[t0], f1 = t1 < m->ntris && front[t1];
     if ((ed->flags & SILK_EDGE_FEATURE) && (f0 || f1)) return 2;
@@ -203,7 +203,7 @@ static int edge_kind(const silk_mesh *m, const uint8_t *front, uint32_t e)
 static uint32_t corner_of(const silk_mesh *m, uint32_t t, silk_index vtx)
 {
     for (uint32_t k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] == vtx) return 3 * t + k;
+        if (silk_mesh_corner(m, 3 * t + k) == vtx) return 3 * t + k;
     return SILK_LINE_NO_SRC;
 }
 
@@ -211,7 +211,7 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
                                  silk_frame_geom *g)
 {
     g->nlines = g->nline_vrec = 0;
-    if (!m->edge || !m->tri) return SILK_OK;
+    if (!m->packed.base && (!m->edge || !m->tri)) return SILK_OK;
     uint8_t *front = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
     if (!front) return SILK_ERR_NOMEM;
     for (uint32_t t = 0; t < m->ntris; t++) front[t] = (uint8_t)silk_sil_tri_front(m, v, t);
@@ -223,7 +223,7 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
         uint32_t e = i % m->nedges;
         int kind = edge_kind(m, front, e);
         if (kind != 1 + (int)(i / m->nedges)) continue;
-        const silk_edge *ed = &m->edge[e];
+        const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
         /* the corners of a front-facing triangle where there is one */
         uint32_t t = ed->t[0] < m->ntris && front[ed->t[0]] ? ed->t[0] : ed->t[1];
         if (t >= m->ntris) t = ed->t[0];

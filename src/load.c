@@ -10,6 +10,7 @@
 #include <string.h>
 #include "load.h"
 #include "silk/model.h"
+#include "silk/compact.h"
 
 /* The dihedral angle above which an edge is a crease (docs/formats.md). */
 const silk_fx SILK_DEFAULT_CREASE_DEG = SILK_FX_C(60, 1);
@@ -108,6 +109,7 @@ silk_status silk_load_mesh(const void *data, size_t len, const char *name,
     const unsigned char *p = data;
     if (!data) return silk_load_obj(data, len, name, opts, a, out, err);   /* reports it */
     if (silk_is_model(data, len)) return silk_load_model(data, len, name, opts, a, out, err);
+    if (silk_is_compact(data, len)) return silk_compact_mesh(data, len, name, out, err);   /* read in place */
     if (len >= 4 && memcmp(p, "ply", 3) == 0 && (p[3] == '\n' || p[3] == '\r'))
         return silk_load_ply(data, len, name, opts, a, out, err);
     /* A binary STL has exactly the size its header gives; an OBJ of that

@@ -30,7 +30,8 @@ static silk_status nomem(silk_error *err, const char *name, const silk_arena *a,
 
 void silk_tri_cross64(const silk_mesh *m, uint32_t t, int64_t c[3])
 {
-    silk_vec3 p0 = m->pos[m->tri[3 * t]], p1 = m->pos[m->tri[3 * t + 1]], p2 = m->pos[m->tri[3 * t + 2]];
+    silk_vec3 p0 = silk_mesh_pos(m, silk_mesh_corner(m, 3 * t)), p1 = silk_mesh_pos(m, silk_mesh_corner(m, 3 * t + 1)),
+              p2 = silk_mesh_pos(m, silk_mesh_corner(m, 3 * t + 2));
     int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
     int64_t bx = (int64_t)p2.x - p0.x, by = (int64_t)p2.y - p0.y, bz = (int64_t)p2.z - p0.z;
     c[0] = ay * bz - az * by;
@@ -75,7 +76,7 @@ silk_vec3 silk_mesh_face_normal(const silk_mesh *m, uint32_t t)
     silk_vec3 n = silk_v3(0, 0, 0);
     int64_t c[3];
     if (!m || t >= m->ntris) return n;
-    uint32_t a = m->tri[3 * t], b = m->tri[3 * t + 1], d = m->tri[3 * t + 2];
+    uint32_t a = silk_mesh_corner(m, 3 * t), b = silk_mesh_corner(m, 3 * t + 1), d = silk_mesh_corner(m, 3 * t + 2);
     if (a == b || b == d || a == d) return n;
     silk_tri_cross64(m, t, c);
     silk_v3_normalize64(c, &n);

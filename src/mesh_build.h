@@ -24,6 +24,14 @@ void silk_tri_cross64(const silk_mesh *m, uint32_t t, int64_t c[3]);
  * *out as the zero vector for the zero vector. */
 int silk_v3_normalize64(const int64_t v[3], silk_vec3 *out);
 
+/* Eq. 4's Hermite tangent along unit direction d over chord, or the chord
+ * itself when d is within 2^-10 of it (straight stays straight). */
+silk_vec3 silk_feature_tangent(silk_vec3 d, silk_vec3 chord);
+
+/* The feature segment of edge e of a compact model (compact.c): its LIST
+ * record's tangents.  0 when it has none. */
+int silk_compact_feature_seg(const silk_mesh *m, silk_index e, silk_feature_seg *out);
+
 /* Needs m->pos, tri, edge (with BOUNDARY / NONMANIFOLD flags), tri_edge.
  * Flips triangles (tri, tri_edge and in's uv / file normal corners) so that
  * each component is wound consistently and each closed one outward; counts

@@ -149,8 +149,8 @@ static void visit(silk_sil_frame *f, silk_index vtx, const silk_sil_seg *s, uint
     }
     int64_t den = silk_v3_dot64(f->acc[sl], s->nm);
     if (den < MIN_COS) return;
-    int64_t num = silk_v3_dot64(silk_v3_sub(f->m->pos[vtx], s->m), s->nm);
-    if (num <= 0 || !beside(f, s, f->m->pos[vtx])) return;   /* already below P_i, or not in its way */
+    int64_t num = silk_v3_dot64(silk_v3_sub(silk_mesh_pos(f->m, vtx), s->m), s->nm);
+    if (num <= 0 || !beside(f, s, silk_mesh_pos(f->m, vtx))) return;   /* already below P_i, or not in its way */
     /* num < 2^46 for model coordinates within SILK_COORD_MAX: the shift fits */
     silk_fx lift = silk_fx_sat((num << 16) / den);
     if (lift <= s->rise && lift > f->lift[sl]) f->lift[sl] = lift;   /* beyond a rise: not the segment's (above) */
@@ -162,11 +162,12 @@ static void visit_near(silk_sil_frame *f, uint32_t t, const silk_sil_seg *s, uin
 {
     const silk_mesh *m = f->m;
     for (int c = 0; c < 3; c++) {
-        silk_index vtx = m->tri[3 * t + c];
+        silk_index vtx = silk_mesh_corner(m, 3 * t + c);
         visit(f, vtx, s, stamp, pass);
-        for (uint32_t i = m->vert_edge_start[vtx]; i < m->vert_edge_start[vtx + 1]; i++) {
-            const silk_edge *e = &m->edge[m->vert_edge[i]];
-            visit(f, e->v[0] == vtx ? e->v[1] : e->v[0], s, stamp, pass);
+        silk_mesh_ring r;
+        for (silk_index e = silk_mesh_ring_first(m, vtx, &r); e != SILK_NO_INDEX; e = silk_mesh_ring_next(m, &r)) {
+            silk_edge ed = silk_mesh_edge(m, e);
+            visit(f, ed.v[0] == vtx ? ed.v[1] : ed.v[0], s, stamp, pass);
         }
     }
 }
@@ -179,13 +180,13 @@ static void visit_near(silk_sil_frame *f, uint32_t t, const silk_sil_seg *s, uin
 static int silhouette_at(const silk_sil_frame *f, silk_index vtx)
 {
     const silk_mesh *m = f->m;
-    silk_vec3 p = m->pos[vtx];
-    for (uint32_t i = m->vert_edge_start[vtx]; i < m->vert_edge_start[vtx + 1]; i++) {
-        silk_index e = m->vert_edge[i];
+    silk_vec3 p = silk_mesh_pos(m, vtx);
+    silk_mesh_ring r;
+    for (silk_index e = silk_mesh_ring_first(m, vtx, &r); e != SILK_NO_INDEX; e = silk_mesh_ring_next(m, &r)) {
         if (!silk_sil_chained(f, e)) continue;
         const silk_sil_edge *w = &f->edges[silk_sil_slot(f, e)];
         /* the chain's point nearest vtx */
-        silk_fx t = m->edge[e].v[0] == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
+        silk_fx t = silk_mesh_edge(m, e).v[0] == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
         silk_curve c;
         silk_sil_edge_curve(f, w, &c);
         silk_vec3 q = silk_hermite_point(&c, t);

@@ -99,14 +99,14 @@ silk_vec3 silk_patch_edge_ctrl(silk_vec3 pi, silk_vec3 pj, silk_vec3 ns, silk_ve
 static silk_vec3 corner_normal(const silk_mesh *m, silk_index t, silk_index v)
 {
     for (int k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] == v) return m->normal[m->tri_normal[3 * t + k]];
+        if (silk_mesh_corner(m, 3 * t + k) == v) return silk_mesh_normal(m, silk_mesh_corner_normal(m, 3 * t + k));
     return silk_v3(0, 0, 0);
 }
 
 void silk_patch_edge_curve(const silk_mesh *m, uint32_t e, silk_vec3 c[2])
 {
-    const silk_edge *ed = &m->edge[e];
-    silk_vec3 p0 = m->pos[ed->v[0]], p1 = m->pos[ed->v[1]];
+    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
+    silk_vec3 p0 = silk_mesh_pos(m, ed->v[0]), p1 = silk_mesh_pos(m, ed->v[1]);
     /* On a non-manifold edge the first two triangles speak for all. */
     silk_index s = ed->t[0], t = ed->t[1] != SILK_NO_INDEX ? ed->t[1] : ed->t[0];
     c[0] = silk_patch_edge_ctrl(p0, p1, corner_normal(m, s, ed->v[0]), corner_normal(m, t, ed->v[0]));
@@ -143,11 +143,11 @@ void silk_patch_build(const silk_mesh *m, uint32_t t, const silk_fx *alpha, silk
     static const uint8_t near[3][2] = { { SILK_B210, SILK_B120 }, { SILK_B021, SILK_B012 },
                                         { SILK_B102, SILK_B201 } };
     static const uint8_t mid[3] = { SILK_N110, SILK_N011, SILK_N101 };
-    const silk_index *v = &m->tri[3 * t];
+    silk_index v[3] = { silk_mesh_corner(m, 3 * t), silk_mesh_corner(m, 3 * t + 1), silk_mesh_corner(m, 3 * t + 2) };
     silk_vec3 P[3], N[3];
     for (int k = 0; k < 3; k++) {
-        P[k] = m->pos[v[k]];
-        N[k] = m->normal[m->tri_normal[3 * t + k]];
+        P[k] = silk_mesh_pos(m, v[k]);
+        N[k] = silk_mesh_normal(m, silk_mesh_corner_normal(m, 3 * t + k));
         p->b[SILK_B300 + k] = P[k];
         p->n[SILK_N200 + k] = N[k];
         if (m->uv && m->tri_uv) {
@@ -163,7 +163,7 @@ void silk_patch_build(const silk_mesh *m, uint32_t t, const silk_fx *alpha, silk
         uint32_t e = silk_mesh_tri_edge(m, t, k);
         silk_vec3 c[2];
         silk_patch_edge_curve(m, e, c);
-        int fwd = m->edge[e].v[0] == v[k];
+        int fwd = silk_mesh_edge(m, e).v[0] == v[k];
         silk_fx a = alpha ? alpha[k] : SILK_FX_ONE;
         silk_vec3 b0 = blend_ctrl(silk_patch_lin(P[k], P[k1]), c[fwd ? 0 : 1], a);
         silk_vec3 b1 = blend_ctrl(silk_patch_lin(P[k1], P[k]), c[fwd ? 1 : 0], a);
@@ -228,7 +228,7 @@ void silk_patch_eval(const silk_patch *p, uint32_t point, silk_vertex_attr *out)
 
 silk_status silk_patch_check_mesh(const silk_mesh *m, const char *who, silk_error *err)
 {
-    if (m->ntris > 0 && (!m->pos || !m->tri || !m->normal || !m->tri_normal || !m->edge))
+    if (m->ntris > 0 && !m->packed.base && (!m->pos || !m->tri || !m->normal || !m->tri_normal || !m->edge))
         return silk_fail(err, SILK_ERR_ARG, NULL, 0,
                          "%s: the mesh has no shading normals or edges (build it with silk_mesh_build)", who);
     return SILK_OK;

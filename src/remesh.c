@@ -107,7 +107,7 @@ static uint32_t pair_chain(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
-    silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+    silk_sil_side_attrs(f->m, t, k, (const silk_edge[]){ silk_mesh_edge(f->m, e->edge) }, &s);
     return silk_sil_chain_index(&f->chain[e->chain0], e->nchain, side_pair(f, e, &s)->u);
 }
 
@@ -116,7 +116,7 @@ static uint32_t pair_pos(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
     uint32_t c = pair_chain(f, t, k);
-    return f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0] ? c : e->nchain - 1 - c;
+    return silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge(f->m, e->edge).v[0] ? c : e->nchain - 1 - c;
 }
 
 static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
@@ -243,8 +243,8 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, kb);
     if (!ea || !eb) return 0;
     silk_sil_side sa, sb;
-    silk_sil_side_attrs(m, t, lone, &m->edge[ea->edge], &sa);
-    silk_sil_side_attrs(m, t, kb, &m->edge[eb->edge], &sb);
+    silk_sil_side_attrs(m, t, lone, (const silk_edge[]){ silk_mesh_edge(m, ea->edge) }, &sa);
+    silk_sil_side_attrs(m, t, kb, (const silk_edge[]){ silk_mesh_edge(m, eb->edge) }, &sb);
     const silk_sil_pair *pa = side_pair(f, ea, &sa), *pb = side_pair(f, eb, &sb);
     if (!pa || !pb) return 0;   /* cannot happen for a sane mesh */
     memset(s, 0, sizeof *s);
@@ -262,7 +262,7 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     s->c.p1 = B;
     s->n = silk_sil_intervals(f->v, &s->c, silk_v3_dot(nA, nB), f->tol);
     if (s->n < 1) s->n = 1;
-    s->split = split_sample(s, m->pos[m->tri[3 * t + (lone + 1) % 3]], m->pos[m->tri[3 * t + kb]]);
+    s->split = split_sample(s, silk_mesh_pos(m, silk_mesh_corner(m, 3 * t + (lone + 1) % 3)), silk_mesh_pos(m, silk_mesh_corner(m, 3 * t + kb)));
     /* III-E: concave when N_A.F > 0 and N_B.F < 0, F = B - A */
     silk_vec3 F = silk_v3_sub(B, A);
     s->concave = silk_v3_dot64(nA, F) > 0 && silk_v3_dot64(nB, F) < 0;
@@ -376,7 +376,7 @@ static uint32_t put_curve_rec(silk_frame_geom *g, uint32_t curve, silk_fx t)
 static uint32_t put_corner(const silk_sil_frame *f, silk_frame_geom *g, uint32_t c)
 {
     silk_vrec *r = &g->vrec[g->nvrec];
-    silk_plan_index off = f->vert_offset ? f->vert_offset[f->m->tri[c]] : SILK_PLAN_NONE;
+    silk_plan_index off = f->vert_offset ? f->vert_offset[silk_mesh_corner(f->m, c)] : SILK_PLAN_NONE;
     r->kind = off == SILK_PLAN_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
     r->a = c;
     r->b = off == SILK_PLAN_NONE ? 0 : off;
@@ -389,14 +389,14 @@ static void side_curve(const silk_sil_frame *f, const silk_sil_edge *e, const si
 {
     const silk_mesh *m = f->m;
     silk_sil_edge_curve(f, e, c);
-    c->n0 = m->normal[s->n0];
-    c->n1 = m->normal[s->n1];
+    c->n0 = silk_mesh_normal(m, s->n0);
+    c->n1 = silk_mesh_normal(m, s->n1);
     if (s->uv0 != SILK_PLAN_NONE && s->uv0 < m->nuvs && s->uv1 < m->nuvs) {
         c->uv0 = m->uv[s->uv0];
         c->uv1 = m->uv[s->uv1];
     }
-    c->rgb0 = m->color ? m->color[m->edge[e->edge].v[0]] : 0xffffff;
-    c->rgb1 = m->color ? m->color[m->edge[e->edge].v[1]] : 0xffffff;
+    c->rgb0 = m->color ? m->color[silk_mesh_edge(m, e->edge).v[0]] : 0xffffff;
+    c->rgb1 = m->color ? m->color[silk_mesh_edge(m, e->edge).v[1]] : 0xffffff;
 }
 
 /* Append side k of t (its chain, in the triangle's direction) to out:
@@ -409,12 +409,12 @@ static uint32_t walk_side(const silk_sil_frame *f, silk_frame_geom *g, uint32_t 
     if (!n) return 0;
     const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
-    silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+    silk_sil_side_attrs(f->m, t, k, (const silk_edge[]){ silk_mesh_edge(f->m, e->edge) }, &s);
     side_curve(f, e, &s, &g->curve[g->ncurve]);
     uint32_t rec = g->nvrec;
     for (uint32_t j = 0; j < n; j++) put_curve_rec(g, g->ncurve, f->chain[e->chain0 + j]);
     g->ncurve++;
-    int fwd = f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0];
+    int fwd = silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge(f->m, e->edge).v[0];
     for (uint32_t j = 0; j < n; j++) out[j] = fwd ? rec + j : rec + n - 1 - j;
     return n;
 }
@@ -477,9 +477,9 @@ static uint32_t put_centre(silk_frame_geom *g, silk_vec3 p0, silk_vec3 n0, silk_
 
 static void corner_attrs(const silk_mesh *m, uint32_t c, silk_vec3 *p, silk_vec3 *n, silk_vec2 *uv, uint32_t *rgb)
 {
-    *p = m->pos[m->tri[c]];
-    *rgb = m->color ? m->color[m->tri[c]] : 0xffffff;
-    *n = m->normal[m->tri_normal[c]];
+    *p = silk_mesh_pos(m, silk_mesh_corner(m, c));
+    *rgb = m->color ? m->color[silk_mesh_corner(m, c)] : 0xffffff;
+    *n = silk_mesh_normal(m, silk_mesh_corner_normal(m, c));
     uv->x = uv->y = 0;
     if (m->tri_uv && m->uv && m->tri_uv[c] < m->nuvs) *uv = m->uv[m->tri_uv[c]];
 }
@@ -573,11 +573,10 @@ void silk_remesh_emit_tri(const silk_sil_frame *f, silk_frame_geom *g, uint32_t 
         /* most triangles, as they are: put_corner's three records written
          * out (a small part keeps the code bytes) */
         silk_vrec *r = &g->vrec[g->nvrec];
-        const silk_index *tv = &f->m->tri[3 * (size_t)t];
         const silk_plan_index *vo = f->vert_offset;
         uint32_t n = g->nvrec;
         for (uint32_t k = 0; k < 3; k++) {
-            silk_plan_index off = vo ? vo[tv[k]] : SILK_PLAN_NONE;
+            silk_plan_index off = vo ? vo[silk_mesh_corner(f->m, 3 * t + k)] : SILK_PLAN_NONE;
             r[k].kind = off == SILK_PLAN_NONE ? SILK_VREC_CORNER : SILK_VREC_MOVED;
             r[k].a = 3 * t + k;
             r[k].b = off == SILK_PLAN_NONE ? 0 : off;
@@ -645,7 +644,7 @@ static const silk_sil_pair *side_pair_of(const silk_sil_frame *f, uint32_t t, ui
     const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
     if (!e) return NULL;
-    silk_sil_side_attrs(f->m, t, k, &f->m->edge[e->edge], &s);
+    silk_sil_side_attrs(f->m, t, k, (const silk_edge[]){ silk_mesh_edge(f->m, e->edge) }, &s);
     return side_pair(f, e, &s);
 }
 
@@ -674,7 +673,7 @@ void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, ui
 static uint32_t chain_at(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t pos, uint32_t n)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
-    return f->m->tri[3 * t + k] == f->m->edge[e->edge].v[0] ? pos : n - 1 - pos;
+    return silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge(f->m, e->edge).v[0] ? pos : n - 1 - pos;
 }
 
 int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve)

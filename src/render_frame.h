@@ -161,8 +161,8 @@ static inline uint32_t corner_slot(const frame *f, uint32_t a, const silk_vrec *
     const silk_mesh *m = f->geom.mesh;
     frame_fast *x = f->fast;
     uint32_t n;
-    if (a / 3 >= m->ntris || (n = m->tri_normal[a]) >= m->nnormals) return UINT32_MAX;
-    uint32_t v = m->tri[a], uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
+    if (a / 3 >= m->ntris || (n = silk_mesh_corner_normal(m, a)) >= m->nnormals) return UINT32_MAX;
+    uint32_t v = silk_mesh_corner(m, a), uv = m->tri_uv ? m->tri_uv[a] : SILK_NO_INDEX;
     uint32_t s = n & x->vc_mask, *tag = &x->vc_tag[3 * s];
     if (tag[0] != n || tag[1] != v || tag[2] != uv) {
         const silk_vrec own = { SILK_VREC_CORNER, a, 0, 0 };
@@ -189,9 +189,10 @@ static inline int direct_ok(const frame *f, uint32_t k)
     if (!f->smooth) return 1;
     const silk_sil_frame *s = &f->sil;
     if (s->tri_state[k] & (SILK_TS_SIL | SILK_TS_CARRY)) return 0;
-    const silk_index *tv = &f->geom.mesh->tri[3 * (size_t)k];
+    const silk_mesh *m = f->geom.mesh;
     const silk_plan_index *vo = s->vert_offset;
-    return !vo || (vo[tv[0]] == SILK_PLAN_NONE && vo[tv[1]] == SILK_PLAN_NONE && vo[tv[2]] == SILK_PLAN_NONE);
+    return !vo || (vo[silk_mesh_corner(m, 3 * k)] == SILK_PLAN_NONE && vo[silk_mesh_corner(m, 3 * k + 1)] == SILK_PLAN_NONE &&
+                   vo[silk_mesh_corner(m, 3 * k + 2)] == SILK_PLAN_NONE);
 }
 
 /* Whether part k can reach no row of y0 .. y1 (silk_cull_rows). */

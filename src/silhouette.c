@@ -28,7 +28,7 @@ static int edge_ok(const silk_mesh *m, silk_index e) { return e < m->nedges; }
 /* Whether side k of triangle t runs from edge.v[0] to edge.v[1]. */
 static int side_forward(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e)
 {
-    return m->tri[3 * t + k] == e->v[0];
+    return silk_mesh_corner(m, 3 * t + k) == e->v[0];
 }
 
 /* The normals (and uvs) at edge.v[0], edge.v[1] as side k of t sees them. */
@@ -38,8 +38,8 @@ void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_
     if (!side_forward(m, t, k, e)) { uint32_t x = ca; ca = cb; cb = x; }
     s->tri = t;
     s->k = k;
-    s->n0 = (silk_plan_index)m->tri_normal[ca];   /* (silk_sil_find: every count fits) */
-    s->n1 = (silk_plan_index)m->tri_normal[cb];
+    s->n0 = (silk_plan_index)silk_mesh_corner_normal(m, ca);   /* (silk_sil_find: every count fits) */
+    s->n1 = (silk_plan_index)silk_mesh_corner_normal(m, cb);
     if (m->tri_uv && m->uv) { s->uv0 = (silk_plan_index)m->tri_uv[ca]; s->uv1 = (silk_plan_index)m->tri_uv[cb]; }
     else { s->uv0 = SILK_PLAN_NONE; s->uv1 = SILK_PLAN_NONE; }
 }
@@ -63,12 +63,12 @@ SILK_FAST_INLINE static inline silk_vec3 front_inputs(const silk_mesh *m, const 
                                                       int64_t c[3])
 {
     if (!SILK_FAST_CASES) {
-        silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+        silk_vec3 e = silk_view_to_eye(v, silk_mesh_pos(m, silk_mesh_corner(m, 3 * t)));
         silk_tri_cross64(m, t, c);
         return e;
     }
-    const silk_index *tv = &m->tri[3 * t];
-    silk_vec3 p0 = m->pos[tv[0]], p1 = m->pos[tv[1]], p2 = m->pos[tv[2]];
+    silk_vec3 p0 = silk_mesh_pos(m, silk_mesh_corner(m, 3 * t)), p1 = silk_mesh_pos(m, silk_mesh_corner(m, 3 * t + 1)),
+              p2 = silk_mesh_pos(m, silk_mesh_corner(m, 3 * t + 2));
     int64_t ax = (int64_t)p1.x - p0.x, ay = (int64_t)p1.y - p0.y, az = (int64_t)p1.z - p0.z;
     int64_t bx = (int64_t)p2.x - p0.x, by = (int64_t)p2.y - p0.y, bz = (int64_t)p2.z - p0.z;
     c[0] = ay * bz - az * by;
@@ -91,7 +91,7 @@ SILK_FAST_INLINE static inline silk_vec3 front_inputs(const silk_mesh *m, const 
 SILK_FAST_INLINE static inline int front_of(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
     if (!SILK_AA) {
-        silk_vec3 e = silk_view_to_eye(v, m->pos[m->tri[3 * t]]);
+        silk_vec3 e = silk_view_to_eye(v, silk_mesh_pos(m, silk_mesh_corner(m, 3 * t)));
         silk_vec3 fn = silk_mesh_face_normal(m, t);
         return silk_v3_dot64(fn, e) > 0;
     }
@@ -124,19 +124,19 @@ SILK_FAST_INLINE static inline int front_of(const silk_mesh *m, const silk_view 
 int silk_sil_tri_front(const silk_mesh *m, const silk_view *v, uint32_t t)
 {
     for (int k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] >= m->nverts) return 0;
+        if (silk_mesh_corner(m, 3 * t + k) >= m->nverts) return 0;
     return front_of(m, v, t);
 }
 
 void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing)
 {
     if (!SILK_AA_CANDIDATES) return;   /* (only its caller's) */
-    const silk_index *tv = m->tri;
     for (uint32_t t = 0; t < m->ntris; t += 4) {
         unsigned b = 0;
         for (uint32_t i = 0; i < 4 && t + i < m->ntris; i++) {
-            const silk_index *c = &tv[3 * (t + i)];
-            int front = c[0] < m->nverts && c[1] < m->nverts && c[2] < m->nverts && front_of(m, v, t + i);
+            uint32_t c = 3 * (t + i);
+            int front = silk_mesh_corner(m, c) < m->nverts && silk_mesh_corner(m, c + 1) < m->nverts &&
+                        silk_mesh_corner(m, c + 2) < m->nverts && front_of(m, v, t + i);
             b |= (2u | (unsigned)front) << 2 * i;
         }
         facing[t / 4] = (uint8_t)b;
@@ -147,8 +147,11 @@ void silk_sil_tri_fronts(const silk_mesh *m, const silk_view *v, uint8_t *facing
  * drawn as it is (never smoothed), so a broken index cannot crash a frame. */
 int silk_sil_tri_ok(const silk_mesh *m, uint32_t t)
 {
+    /* a compact model's indices were all checked once (silk_compact_mesh);
+     * without its corner table no side has an edge */
+    if (m->packed.base) return m->nedges != 0;
     for (int k = 0; k < 3; k++)
-        if (m->tri[3 * t + k] >= m->nverts || m->tri_normal[3 * t + k] >= m->nnormals ||
+        if (silk_mesh_corner(m, 3 * t + k) >= m->nverts || silk_mesh_corner_normal(m, 3 * t + k) >= m->nnormals ||
             !edge_ok(m, silk_mesh_tri_edge(m, t, k)))
             return 0;
     return 1;
@@ -163,8 +166,8 @@ SILK_ALWAYS_INLINE static inline void edge_point_pn(const silk_sil_frame *f, con
     silk_sil_edge_curve(f, e, &c);
     *p = silk_hermite_point(&c, u);
     /* eq. 6: the normal along a bridge is interpolated linearly */
-    if (!silk_v3_normalize(silk_v3_lerp(m->normal[s->n0], m->normal[s->n1], u), n))
-        *n = m->normal[s->n0];
+    if (!silk_v3_normalize(silk_v3_lerp(silk_mesh_normal(m, s->n0), silk_mesh_normal(m, s->n1), u), n))
+        *n = silk_mesh_normal(m, s->n0);
 }
 
 /* The uv and colour at u on edge e, as side s sees the edge. */
@@ -178,7 +181,7 @@ SILK_ALWAYS_INLINE static inline void edge_point_attrs(const silk_mesh *m, const
     } else {
         uv->x = uv->y = 0;
     }
-    *rgb = silk_sil_edge_rgb(m, &m->edge[e->edge], u);
+    *rgb = silk_sil_edge_rgb(m, (const silk_edge[]){ silk_mesh_edge(m, e->edge) }, u);
 }
 
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
@@ -231,20 +234,20 @@ uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u)
 static void edge_tangents(const silk_sil_frame *f, const silk_sil_edge *w, silk_vec3 t[2])
 {
     const silk_mesh *m = f->m;
-    const silk_edge *e = &m->edge[w->edge];
-    silk_vec3 p0 = m->pos[e->v[0]], p1 = m->pos[e->v[1]];
+    const silk_edge e_ = silk_mesh_edge(m, w->edge), *e = &e_;
+    silk_vec3 p0 = silk_mesh_pos(m, e->v[0]), p1 = silk_mesh_pos(m, e->v[1]);
     if (w->is_feature || w->npairs == 0) {
-        silk_index fi = silk_mesh_edge_feature(m, w->edge);
-        if (fi != SILK_NO_INDEX && fi < m->nfeature_edges && m->feature) {
-            t[0] = m->feature[fi].t0;
-            t[1] = m->feature[fi].t1;
+        silk_feature_seg seg;
+        if (silk_mesh_feature_seg(m, w->edge, &seg)) {
+            t[0] = seg.t0;
+            t[1] = seg.t1;
         } else {
             t[0] = t[1] = silk_v3_sub(p1, p0);
         }
     } else {
         const silk_sil_pair *p = &f->pairs[w->pair0];
         silk_curve c;
-        silk_bridge(p0, m->normal[p->n0], p1, m->normal[p->n1], silk_tilt_bound(m), &c);
+        silk_bridge(p0, silk_mesh_normal(m, p->n0), p1, silk_mesh_normal(m, p->n1), silk_tilt_bound(m), &c);
         t[0] = c.t0;
         t[1] = c.t1;
     }
@@ -268,10 +271,10 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
         }
         t = memo->tan[i];
     }
-    const silk_edge *me = &f->m->edge[e->edge];
+    const silk_edge me_ = silk_mesh_edge(f->m, e->edge), *me = &me_;
     memset(c, 0, sizeof *c);
-    c->p0 = f->m->pos[me->v[0]];
-    c->p1 = f->m->pos[me->v[1]];
+    c->p0 = silk_mesh_pos(f->m, me->v[0]);
+    c->p1 = silk_mesh_pos(f->m, me->v[1]);
     c->t0 = t[0];
     c->t1 = t[1];
 }
@@ -347,6 +350,10 @@ static int tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
                (e[0] < ne) & (e[1] < ne) & (e[2] < ne);
     }
     if (!silk_sil_tri_ok(m, t)) return 0;
+    if (m->packed.base) {
+        silk_packed_tri_edges(m, t, e);
+        return 1;
+    }
     for (uint32_t k = 0; k < 3; k++) e[k] = silk_mesh_tri_edge(m, t, k);
     return 1;
 }
@@ -427,7 +434,7 @@ static void find_whole(silk_sil_frame *f, int features, uint32_t *nwork)
             f->tri_state[t] |= SILK_TS_FRONT;
             for (uint32_t k = 0; k < 3; k++) {
                 silk_index ek = m->tri_edge[3 * (size_t)t + k];
-                if (m->edge[ek].flags & SILK_EDGE_FEATURE) mark_edge(f, ek, nwork);
+                if (silk_mesh_edge_flags(m, ek) & SILK_EDGE_FEATURE) mark_edge(f, ek, nwork);
             }
         }
     }
@@ -487,8 +494,8 @@ static silk_status find_triangles(silk_sil_frame *f)
             silk_index e[3];
             f->tri_state[t] = SILK_TS_BROKEN;   /* tested once here, read by lay_out_edges */
             if (!tri_edges(m, t, e)) continue;
-            const silk_index *tn = &m->tri_normal[3 * t];
-            uint8_t v0 = f->visible[tn[0]], v1 = f->visible[tn[1]], v2 = f->visible[tn[2]];
+            uint8_t v0 = f->visible[silk_mesh_corner_normal(m, 3 * t)], v1 = f->visible[silk_mesh_corner_normal(m, 3 * t + 1)],
+                    v2 = f->visible[silk_mesh_corner_normal(m, 3 * t + 2)];
             if (v0 != v1 || v1 != v2) {
                 uint8_t lone = v0 == v1 ? 2 : (v0 == v2 ? 1 : 0);
                 st |= (uint8_t)(SILK_TS_SIL | lone);
@@ -496,11 +503,11 @@ static silk_status find_triangles(silk_sil_frame *f)
                 mark_edge(f, e[lone], &nwork);
                 mark_edge(f, e[(lone + 2) % 3], &nwork);
             }
-            if (features && ((m->edge[e[0]].flags | m->edge[e[1]].flags | m->edge[e[2]].flags) & SILK_EDGE_FEATURE) &&
+            if (features && ((silk_mesh_edge_flags(m, e[0]) | silk_mesh_edge_flags(m, e[1]) | silk_mesh_edge_flags(m, e[2])) & SILK_EDGE_FEATURE) &&
                 silk_sil_tri_front(m, v, t)) {
                 st |= SILK_TS_FRONT;
                 for (int k = 0; k < 3; k++)
-                    if (m->edge[e[k]].flags & SILK_EDGE_FEATURE) mark_edge(f, e[k], &nwork);
+                    if (silk_mesh_edge_flags(m, e[k]) & SILK_EDGE_FEATURE) mark_edge(f, e[k], &nwork);
             }
             f->tri_state[t] = st;
         }
@@ -529,7 +536,7 @@ void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak)
 static int pair_seen(const silk_sil_frame *f, uint32_t t, uint32_t k, silk_index e)
 {
     const silk_mesh *m = f->m;
-    const silk_edge *ed = &m->edge[e];
+    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
     if (ed->flags & SILK_EDGE_NONMANIFOLD) return 0;
     uint32_t o = ed->t[0] == t ? ed->t[1] : ed->t[0];
     if (o >= t || !(f->tri_state[o] & SILK_TS_SIL)) return 0;   /* also SILK_NO_INDEX: no other */
@@ -571,7 +578,7 @@ static int tri_whole(const silk_sil_frame *f, uint32_t t)
  * triangle meets them in): tt[0 .. n). */
 static uint32_t edge_tris(const silk_sil_frame *f, silk_index e, uint32_t tt[2])
 {
-    const silk_edge *ed = &f->m->edge[e];
+    const silk_edge ed_ = silk_mesh_edge(f->m, e), *ed = &ed_;
     uint32_t a = ed->t[0], b = ed->t[1], n = 0;
     if (b < a) { uint32_t x = a; a = b; b = x; }
     if (tri_whole(f, a)) tt[n++] = a;
@@ -592,7 +599,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
         if (!f->carrying[e >> 3]) { e |= 7; continue; }   /* most bytes: none of their eight */
         if (!(f->carrying[e >> 3] & (1u << (e & 7)))) continue;
         f->edges[w].edge = (silk_plan_index)e;
-        f->edges[w++].is_feature = (m->edge[e].flags & SILK_EDGE_FEATURE) != 0;
+        f->edges[w++].is_feature = (silk_mesh_edge_flags(m, e) & SILK_EDGE_FEATURE) != 0;
     }
 
     /* Count the sides (every triangle side on a carrying edge) and the
@@ -633,7 +640,7 @@ static void add_pair(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *w
 {
     const silk_mesh *m = f->m;
     silk_sil_side s;
-    silk_sil_side_attrs(m, t, k, &m->edge[we->edge], &s);
+    silk_sil_side_attrs(m, t, k, (const silk_edge[]){ silk_mesh_edge(m, we->edge) }, &s);
     for (uint32_t j = 0; j < we->npairs; j++) {
         const silk_sil_pair *p = &f->pairs[we->pair0 + j];
         if (p->n0 == s.n0 && p->n1 == s.n1) return;
@@ -687,11 +694,11 @@ static silk_status chain_points(silk_sil_frame *f)
     uint32_t nchain = 0;
     for (uint32_t w = 0; w < nwork; w++) {
         silk_sil_edge *we = &f->edges[w];
-        const silk_edge *e = &m->edge[we->edge];
-        silk_vec3 d0 = silk_view_to_eye(v, m->pos[e->v[0]]), d1 = silk_view_to_eye(v, m->pos[e->v[1]]);
+        const silk_edge e_ = silk_mesh_edge(m, we->edge), *e = &e_;
+        silk_vec3 d0 = silk_view_to_eye(v, silk_mesh_pos(m, e->v[0])), d1 = silk_view_to_eye(v, silk_mesh_pos(m, e->v[1]));
         for (uint32_t i = 0; i < we->npairs; i++) {
             silk_sil_pair *p = &f->pairs[we->pair0 + i];
-            p->u = silk_fx_clamp(silk_silhouette_param(m->normal[p->n0], d0, m->normal[p->n1], d1),
+            p->u = silk_fx_clamp(silk_silhouette_param(silk_mesh_normal(m, p->n0), d0, silk_mesh_normal(m, p->n1), d1),
                                  0, SILK_FX_ONE);
         }
         we->nfeat = 0;

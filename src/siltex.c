@@ -371,7 +371,7 @@ static void siltex_vertex(const silk_hal *h, const silk_geom *g, const silk_vrec
     for (int k = VAR_UV; k < VAR_COUNT; k++) out->var[k] = 0;
     uint32_t a = r->a, tri = a / 3;
     if (r->kind != SILK_VREC_CORNER || tri >= st->ntris || tri >= g->mesh->ntris) return;
-    uint32_t v = g->mesh->tri[a], corner = a % 3;
+    uint32_t v = silk_mesh_corner(g->mesh, a), corner = a % 3;
     for (uint32_t k = 0; k < 3; k++) {
         const uint8_t *p = st->hull_tri + 4 * (3 * (size_t)tri + k);
         if (((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24) == v) corner = k;

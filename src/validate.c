@@ -10,7 +10,9 @@
  * list entries) that makes the local checks of the vertex->edge lists add
  * up to a whole.  Messages number elements from 0, as the arrays do.
  */
+#include <string.h>
 #include "silk/validate.h"
+#include "silk/compact.h"
 #include "silk/visibility.h"
 
 /* Triangles silk_mesh_build accepts (mesh_build.c's MAX_TRIS): per-frame
@@ -187,10 +189,26 @@ static silk_status check_vis(const silk_mesh *m, const char *name, silk_error *e
     return SILK_OK;
 }
 
+/* A compact model is checked again as silk_compact_mesh checks it, and
+ * must be the mesh it makes. */
+static silk_status check_compact(const silk_mesh *m, const char *name, silk_error *err)
+{
+    const uint8_t *b = m->packed.base;
+    size_t len = (size_t)b[48] | (size_t)b[49] << 8 | (size_t)b[50] << 16 | (size_t)b[51] << 24;
+    silk_mesh again;
+    silk_status st = silk_compact_mesh(b, len, name, &again, err);
+    if (st != SILK_OK) return st;
+    if (memcmp(&again.packed, &m->packed, sizeof again.packed) != 0 || again.nverts != m->nverts ||
+        again.ntris != m->ntris || again.nnormals != m->nnormals || again.nedges != m->nedges)
+        return silk_fail(err, SILK_ERR_PARSE, name, 0, "the mesh's counts or fields are not its compact model's");
+    return SILK_OK;
+}
+
 silk_status silk_mesh_validate(const silk_mesh *m, const char *name, silk_error *err)
 {
     if (!name) name = "mesh";
     if (!m) return silk_fail(err, SILK_ERR_ARG, name, 0, "no mesh given");
+    if (m->packed.base) return check_compact(m, name, err);
     silk_status st = check_counts(m, name, err);
     if (st == SILK_OK) st = check_vertices(m, name, err);
     if (st == SILK_OK) st = check_vertex_edges(m, name, err);

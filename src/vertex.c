@@ -80,14 +80,14 @@ uint32_t silk_rgb_lerp(uint32_t a, uint32_t b, silk_fx t)
 static void corner(const silk_mesh *m, uint32_t a, silk_vertex_attr *out)
 {
     if (!m || a / 3 >= m->ntris) return;
-    silk_index v = m->tri[a];
+    silk_index v = silk_mesh_corner(m, a);
     if (v < m->nverts) {
-        out->pos = m->pos[v];
+        out->pos = silk_mesh_pos(m, v);
         if (m->color) out->rgb = m->color[v];
     }
-    if (m->tri_normal) {
-        silk_index n = m->tri_normal[a];
-        if (n < m->nnormals) out->normal = m->normal[n];
+    if (silk_mesh_has_corner_normals(m)) {
+        silk_index n = silk_mesh_corner_normal(m, a);
+        if (n < m->nnormals) out->normal = silk_mesh_normal(m, n);
     }
     if (m->uv && m->tri_uv) {
         silk_index t = m->tri_uv[a];

@@ -24,15 +24,26 @@ static int64_t persp_dot64(silk_vec3 n, silk_vec3 p, silk_vec3 e)
 
 int silk_normal_visible(const silk_mesh *m, const silk_view *v, uint32_t i)
 {
-    silk_vec3 n = m->normal[i];
+    silk_vec3 n = silk_mesh_normal(m, i);
     if (v->cam.ortho)
         return silk_v3_dot64(n, v->forward) <= 0;   /* N.(-F) >= 0, negation exact */
-    return persp_dot64(n, m->pos[m->normal_vertex[i]], v->cam.eye) >= 0;
+    return persp_dot64(n, silk_mesh_pos(m, silk_mesh_normal_vertex(m, i)), v->cam.eye) >= 0;
 }
 
 void silk_visibility_brute(const silk_mesh *m, const silk_view *v, uint8_t *visible)
 {
     uint32_t n = m->nnormals;
+    if (m->packed.base) {
+        /* a compact model keeps each vertex's normals together: vertex by vertex */
+        for (silk_index x = 0, i = 0; x < m->nverts; x++) {
+            silk_vec3 p = silk_mesh_pos(m, x);
+            for (uint32_t end = i + silk_packed_vertex_normals(m, x); i < end; i++) {
+                silk_vec3 nv = silk_mesh_normal(m, i);
+                visible[i] = (uint8_t)(v->cam.ortho ? silk_v3_dot64(nv, v->forward) <= 0 : persp_dot64(nv, p, v->cam.eye) >= 0);
+            }
+        }
+        return;
+    }
     const silk_vec3 *nrm = m->normal;
     if (v->cam.ortho) {
         silk_vec3 f = v->forward;

@@ -59,6 +59,18 @@ typedef struct silk_feature_seg {
 
 struct silk_vis;   /* Gaussian-sphere hierarchy, silk/visibility.h */
 
+/* Where a compact model's arrays are (silk/compact.h): the bytes in place,
+ * the offset of each bit array in them and its field widths.  base is NULL
+ * for a mesh held in the arrays of silk_mesh. */
+typedef struct silk_mesh_packed {
+    const uint8_t *base;
+    uint32_t pos, nrm, extra, corner, sel, opp, epre, list, vfirst;   /* byte offsets in base */
+    uint32_t nextra, nlisted;
+    silk_vec3 org;
+    uint8_t pos_bits, pos_shift, nrm_bits, sel_bits, vtx_bits, tri_bits, edge_bits, dir_bits;
+    uint8_t list_bits;        /* bits of one LIST record */
+} silk_mesh_packed;
+
 /* Where the shading normals come from (silk_load_opts.normals) and, in
  * silk_mesh.normals_used, where they came from. */
 typedef enum silk_normals_source {
@@ -107,6 +119,9 @@ typedef struct silk_mesh {
      * load), so from outside it its back faces cannot show and the
      * renderer may skip them; 0: not known (any mesh may say 0). */
     uint8_t closed_outward;
+    /* A compact model read in place (silk_compact_mesh): the arrays above
+     * are then NULL and every stage reads through the accessors below. */
+    silk_mesh_packed packed;
 } silk_mesh;
 
 
@@ -169,24 +184,114 @@ typedef struct silk_mesh_input {
 silk_status silk_mesh_build(const silk_mesh_input *in, const char *name, const silk_load_opts *opts,
                             silk_arena *a, silk_mesh *out, silk_error *err);
 
+/* ---- reading a mesh ------------------------------------------------------------
+ * Every stage reads a mesh through these, so that a mesh held in arrays
+ * (what the loaders build) and a compact model in flash (silk/compact.h,
+ * decoded field by field in compact.c) draw alike.  Indices must be in
+ * range: a mesh is checked once (silk_mesh_validate, silk_compact_mesh). */
+
+silk_vec3  silk_packed_pos(const silk_mesh *m, silk_index v);
+silk_vec3  silk_packed_normal(const silk_mesh *m, silk_index n);
+silk_index silk_packed_corner(const silk_mesh *m, uint32_t c);
+silk_index silk_packed_corner_normal(const silk_mesh *m, uint32_t c);
+silk_index silk_packed_normal_vertex(const silk_mesh *m, silk_index n);
+silk_edge  silk_packed_edge(const silk_mesh *m, silk_index e);
+uint8_t    silk_packed_edge_flags(const silk_mesh *m, silk_index e);
+uint32_t   silk_packed_vertex_normals(const silk_mesh *m, silk_index v);   /* how many vertex v has (its first after the previous vertex's) */
+silk_index silk_packed_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k);
+void       silk_packed_tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3]);   /* all three at once */
+
+/* Position of vertex v, model units. */
+static inline silk_vec3 silk_mesh_pos(const silk_mesh *m, silk_index v)
+{
+    return m->packed.base ? silk_packed_pos(m, v) : m->pos[v];
+}
+/* Unit shading normal n. */
+static inline silk_vec3 silk_mesh_normal(const silk_mesh *m, silk_index n)
+{
+    return m->packed.base ? silk_packed_normal(m, n) : m->normal[n];
+}
+/* The vertex of corner c (corner k of triangle t is c = 3t + k). */
+static inline silk_index silk_mesh_corner(const silk_mesh *m, uint32_t c)
+{
+    return m->packed.base ? silk_packed_corner(m, c) : m->tri[c];
+}
+/* The shading normal of corner c. */
+static inline silk_index silk_mesh_corner_normal(const silk_mesh *m, uint32_t c)
+{
+    return m->packed.base ? silk_packed_corner_normal(m, c) : m->tri_normal[c];
+}
+/* Whether the corners have shading normals (a loaded mesh always has). */
+static inline int silk_mesh_has_corner_normals(const silk_mesh *m)
+{
+    return m->packed.base || m->tri_normal;
+}
+/* The vertex shading normal n belongs to. */
+static inline silk_index silk_mesh_normal_vertex(const silk_mesh *m, silk_index n)
+{
+    return m->packed.base ? silk_packed_normal_vertex(m, n) : m->normal_vertex[n];
+}
+/* Edge e. */
+static inline silk_edge silk_mesh_edge(const silk_mesh *m, silk_index e)
+{
+    return m->packed.base ? silk_packed_edge(m, e) : m->edge[e];
+}
+/* Flags of edge e (enum silk_edge_flag). */
+static inline uint8_t silk_mesh_edge_flags(const silk_mesh *m, silk_index e)
+{
+    return m->packed.base ? silk_packed_edge_flags(m, e) : m->edge[e].flags;
+}
+
 /* The edge joining vertices a and b (SILK_NO_INDEX when there is none),
  * from the vertex-edge lists. */
 silk_index silk_mesh_find_edge(const silk_mesh *m, silk_index a, silk_index b);
 
 /* Edge k of triangle t, joining corners k and (k+1)%3: tri_edge's entry,
  * or, without tri_edge, the edge found from the two corners (a few
- * comparisons: what a packed mesh saves 2 index bytes a corner with). */
+ * comparisons: what a packed mesh saves 2 index bytes a corner with), or
+ * the compact model's corner table. */
 static inline silk_index silk_mesh_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k)
 {
+    if (m->packed.base) return silk_packed_tri_edge(m, t, k);
     const silk_index *c = &m->tri[3 * (size_t)t];
     return m->tri_edge ? m->tri_edge[3 * (size_t)t + k] : silk_mesh_find_edge(m, c[k], c[k == 2 ? 0 : k + 1]);
 }
+
+/* The edges at a vertex, one at a time:
+ *     silk_mesh_ring r;
+ *     for (silk_index e = silk_mesh_ring_first(m, v, &r); e != SILK_NO_INDEX; e = silk_mesh_ring_next(m, &r))
+ * A mesh in arrays lists them from its vertex-edge lists, a compact model
+ * turns about the vertex through its corner table (another order). */
+typedef struct silk_mesh_ring {
+    uint32_t i, end;          /* arrays: the place in vert_edge */
+    uint32_t t0, t, side;     /* compact: the first triangle, the current one, the side to leave by */
+    silk_index v;
+    uint8_t phase;            /* compact: 0 forward, 1 backward, 2 the last boundary edge, 3 done */
+} silk_mesh_ring;
+silk_index silk_mesh_ring_first(const silk_mesh *m, silk_index v, silk_mesh_ring *r);
+silk_index silk_mesh_ring_next(const silk_mesh *m, silk_mesh_ring *r);
+
+/* Every edge in order, each into *ed (what a pass over all edges uses: a
+ * compact model's edges one after another cost a few field reads each):
+ *     silk_mesh_edges it;
+ *     for (silk_index e = silk_mesh_edges_first(m, &it, &ed); e != SILK_NO_INDEX;
+ *          e = silk_mesh_edges_next(m, &it, &ed)) */
+typedef struct silk_mesh_edges {
+    silk_index e;
+    uint32_t t, k, list;      /* compact: the side of edge e, the next LIST record */
+} silk_mesh_edges;
+silk_index silk_mesh_edges_first(const silk_mesh *m, silk_mesh_edges *it, silk_edge *ed);
+silk_index silk_mesh_edges_next(const silk_mesh *m, silk_mesh_edges *it, silk_edge *ed);
 
 /* Whether edge e has a feature segment: a feature edge of nonzero length. */
 static inline int silk_edge_has_feature(const silk_edge *e)
 {
     return (e->flags & SILK_EDGE_FEATURE) && e->v[0] != e->v[1];
 }
+
+/* The Hermite tangents of edge e's feature segment into *out: 1, or 0 when
+ * e has none. */
+int silk_mesh_feature_seg(const silk_mesh *m, silk_index e, silk_feature_seg *out);
 
 /* The feature segment of edge e (its index in feature[]), or SILK_NO_INDEX:
  * edge_feature's entry, or without it the number of feature segments before

@@ -12,6 +12,7 @@
 #include "error.h"
 #include "mesh.h"
 #include "model.h"
+#include "compact.h"
 #include "camera.h"
 #include "raster.h"
 #include "hal.h"

@@ -2,7 +2,8 @@
  * test_regress.c - every input the fuzz harnesses ever found a problem
  * with (tests/regress/HARNESS/, see tests/regress/README.md), run again
  * through the same harness code, plus the malformed-input corpus
- * tests/bad/ through the OBJ, PLY, STL and prepared-model harnesses.
+ * tests/bad/ through the OBJ, PLY, STL, prepared-model and compact-model
+ * harnesses.
  *
  * The harnesses (fuzz/fuzz_*.c) are compiled in here without libFuzzer,
  * each under its own entry name; their checks abort with a "fuzz: ..."
@@ -41,6 +42,9 @@
 #undef FUZZ_ENTRY
 #define FUZZ_ENTRY fuzz_siltex_entry
 #include "fuzz/fuzz_siltex.c"
+#undef FUZZ_ENTRY
+#define FUZZ_ENTRY fuzz_compact_entry
+#include "fuzz/fuzz_compact.c"
 #undef FUZZ_ENTRY
 
 typedef int (*entry_fn)(const uint8_t *data, size_t size);
@@ -163,6 +167,15 @@ TEST(regress_siltex)
     printf("  %d regression inputs, %d malformed files\n", n, bad);
 }
 
+TEST(regress_compact)
+{
+    int n = run_dir("tests/regress/compact", "", fuzz_compact_entry);
+    int bad = run_dir("tests/bad", ".slkc", fuzz_compact_entry);
+    CHECKF(n >= 1, "no inputs in tests/regress/compact");
+    CHECKF(bad >= 10, "only %d compact models in tests/bad", bad);
+    printf("  %d regression inputs, %d malformed files\n", n, bad);
+}
+
 int main(void)
 {
     RUN(regress_obj);
@@ -174,5 +187,6 @@ int main(void)
     RUN(regress_ppm);
     RUN(regress_model);
     RUN(regress_siltex);
+    RUN(regress_compact);
     return check_done();
 }

@@ -292,8 +292,8 @@ double cli_mesh_radius(const silk_mesh *m, double c[3])
     for (int k = 0; k < 3; k++) c[k] = (lo[k] + hi[k]) / 2;
     double r2 = 0;
     for (uint32_t i = 0; i < m->nverts; i++) {
-        double d[3] = { cli_fx_to_double(m->pos[i].x) - c[0], cli_fx_to_double(m->pos[i].y) - c[1],
-                        cli_fx_to_double(m->pos[i].z) - c[2] };
+        double d[3] = { cli_fx_to_double(silk_mesh_pos(m, i).x) - c[0], cli_fx_to_double(silk_mesh_pos(m, i).y) - c[1],
+                        cli_fx_to_double(silk_mesh_pos(m, i).z) - c[2] };
         double q = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if (q > r2) r2 = q;
     }
@@ -349,8 +349,8 @@ static double reach_of(const silk_mesh *m, const double c[3])
 {
     double r2 = 0;
     for (uint32_t i = 0; i < m->nverts; i++) {
-        double d[3] = { cli_fx_to_double(m->pos[i].x) - c[0], cli_fx_to_double(m->pos[i].y) - c[1],
-                        cli_fx_to_double(m->pos[i].z) - c[2] };
+        double d[3] = { cli_fx_to_double(silk_mesh_pos(m, i).x) - c[0], cli_fx_to_double(silk_mesh_pos(m, i).y) - c[1],
+                        cli_fx_to_double(silk_mesh_pos(m, i).z) - c[2] };
         r2 = fmax(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     }
     return 1.05 * sqrt(r2);

@@ -23,6 +23,17 @@
  *
  * Indices are written as silk_index (32 bits in every build) and
  * SILK_NO_INDEX, so the header compiles with any of the core's options.
+ *
+ * That is the full form (--model-format full).  The default is the compact
+ * model of silk/compact.h (tools/prep/compact_enc.c): the mesh as one byte
+ * array of bit fields, about a fifth of the full form's arrays, that
+ * NAME_mesh() hands to silk_compact_mesh() to be read in place; --flat
+ * leaves out its corner table and edges (flat frames only).  A mesh the
+ * compact model cannot hold (texture coordinates, vertex colours, a
+ * non-manifold edge ...) is written in the full form, with a line on
+ * stderr saying why.  -o FILE.slkc writes the compact bytes themselves.
+ * Either form's NAME_mesh() returns a silk_status, so callers check both
+ * alike.
  */
 #include <ctype.h>
 #include <math.h>
@@ -34,17 +45,23 @@
 #include "cli.h"
 #include "commands.h"
 #include "platform/platform.h"
+#include "prep/compact_enc.h"
+#include "silk/compact.h"
 
 #define PACK_MAX_EYES 16
 /* pack renders nothing: mode and look options would change nothing; the
  * texture goes into the header. */
 #define PACK_OPTIONS (CLI_OPT_LOAD | CLI_OPT_CAMERA | CLI_OPT_FRAME | CLI_OPT_TEXTURE)
 
+enum { PACK_COMPACT, PACK_FULL };
+
 typedef struct pack_args {
     const char *out, *name;
     int views;                 /* 0: --eye or the default view */
     int neyes;
     double eyes[PACK_MAX_EYES][3];
+    int model_format;          /* PACK_COMPACT or PACK_FULL */
+    int flat;                  /* compact without the corner table: flat frames only */
 } pack_args;
 
 /* Each --eye is one camera (the scene option keeps only the last). */
@@ -56,12 +73,15 @@ static int parse_eye(const cli_opt *o, const char *v, void *base)
 }
 
 static int parse_name(const cli_opt *o, const char *v, void *base);
+static const int model_format_v[] = { PACK_COMPACT, PACK_FULL };
 
 #define XSTR(x) STR(x)
 #define STR(x) #x
 static const cli_opt pack_rows[] = {
     { .name = "--output", .alt = "-o", .group = "", .kind = CLI_OUTPUT, .meta = "FILE",
-      CLI_FIELD(pack_args, out), .help = "the header to write (atomically); - writes it to standard output" },
+      CLI_FIELD(pack_args, out),
+      .help = "the header to write (atomically), or a FILE ending in .slkc: the compact model's bytes alone; - "
+              "writes the header to standard output" },
     { .name = "--name", .kind = CLI_TEXT, .meta = "NAME", CLI_FIELD(pack_args, name), .parse = parse_name,
       .help = "prefix of every symbol (default: FILE's base name, or MESH's with -o -, or \"model\" when both are "
               "-)" },
@@ -70,16 +90,34 @@ static const cli_opt pack_rows[] = {
     { .name = "--views", .kind = CLI_INT, .meta = "N", .lo = 1, .hi = PACK_MAX_EYES, CLI_FIELD(pack_args, views),
       .help = "N cameras around the model (%R): the default view turned by k*360/N degrees about the vertical "
               "through the target, odd k mirrored to look from below" },
+    { .name = "--model-format", .kind = CLI_CHOICE, .choices = "compact|full", .values = model_format_v,
+      CLI_FIELD(pack_args, model_format),
+      .help = "compact: the mesh as one array of bit fields read in place (silk/compact.h; the default, "
+              "when the mesh allows it); full: every array of the loaded mesh, the visibility hierarchy too" },
+    { .name = "--flat", .kind = CLI_FLAG, CLI_FIELD(pack_args, flat),
+      .help = "the compact model without its corner table, edges and feature segments: smaller, for flat "
+              "frames only" },
     { .name = NULL },
 };
 
 const cli_command cmd_pack_spec = {
     .name = "pack",
-    .usage = "usage: silk pack MESH -o MODEL.h [--name NAME] [--eye x,y,z]... [options]\n",
+    .usage = "usage: silk pack MESH -o MODEL.h [--name NAME] [--eye x,y,z]... [options]\n"
+             "       silk pack MESH -o MODEL.slkc [--flat] [options]\n",
     .about =
         "Write MESH, loaded and with everything precomputed (normals, edges, feature\n"
-        "segments, visibility hierarchy), as a C header of const arrays that a device\n"
-        "renders from flash: NAME_mesh(&mesh) fills a silk_mesh pointing at them.\n"
+        "segments), as a C header that a device renders from flash: NAME_mesh(&mesh)\n"
+        "fills a silk_mesh reading it in place and returns SILK_OK (or an error for\n"
+        "damaged data).  By default the header holds the compact model (silk/compact.h):\n"
+        "one const byte array NAME_model of quantized positions (12 bits a coordinate),\n"
+        "octahedral normals, corners and a corner table, about a fifth of the full\n"
+        "arrays; --flat leaves out the corner table and edges (flat frames only).\n"
+        "A mesh the compact model cannot hold (texture coordinates, vertex colours,\n"
+        "non-manifold edges or vertices, a repeated corner) is written in the full\n"
+        "form, with one line on stderr saying why; --model-format full always writes\n"
+        "it: the loaded mesh's own arrays and its visibility hierarchy.  -o FILE.slkc\n"
+        "writes the compact model's bytes alone, for a device that reads them from\n"
+        "storage.\n"
         "The header also holds the cameras NAME_camera(k) that `silk render` would\n"
         "use with the same options: one per --eye, N of --views, or the default view;\n"
         "each camera's comment names the --eye that gives `silk render` the same view.\n"
@@ -88,6 +126,8 @@ const cli_command cmd_pack_spec = {
         "as `silk render` does.\n",
     .examples =
         "  silk pack bunny-500.obj -o bunny.h\n"
+        "  silk pack bunny-500.obj -o bunny.slkc --flat\n"
+        "  silk pack bunny-500.obj -o bunny.h --model-format full\n"
         "  silk pack bunny-500.obj -o bunny.h --size 320x240 --eye 0,0,3 --eye 3,1,0\n"
         "  silk pack knot-480.obj -o knot.h --size 320x240 --format rgb565 --views 3\n"
         "  silk gen sphere -o - | silk pack - -o - --name sphere > sphere.h\n"
@@ -284,14 +324,26 @@ static void put_look(writer *w, const cli_scene *s)
             p.texture ? "&" : "NULL", p.texture ? w->name : "", p.texture ? "_texture" : "", p.vertex_colors);
 }
 
+static void put_camera_fn(writer *w)
+{
+    const char *n = w->name;
+    fprintf(w->fp,
+            "/* Camera k of %s_NCAMERAS, or NULL. */\n"
+            "static inline const silk_camera *%s_camera(int k)\n{\n"
+            "    return k >= 0 && k < %s_NCAMERAS ? &%s_cameras[k] : NULL;\n}\n\n",
+            n, n, n, n);
+}
+
 static void put_mesh_fn(writer *w, const silk_mesh *m)
 {
     const char *n = w->name;
     FILE *f = w->fp;
+    /* a silk_status, as the compact form's: callers check either alike */
     fprintf(f,
             "/* Point *m at the arrays above; nothing is copied.  The renderer only reads\n"
-            " * a mesh, so the casts that drop const are safe. */\n"
-            "static inline void %s_mesh(silk_mesh *m)\n{\n"
+            " * a mesh, so the casts that drop const are safe.  Returns SILK_OK (the\n"
+            " * compact form's NAME_mesh checks its bytes and may fail). */\n"
+            "static inline silk_status %s_mesh(silk_mesh *m)\n{\n"
             "    memset(m, 0, sizeof *m);\n",
             n);
     fprintf(f, "    m->nverts = %lu;\n    m->ntris = %lu;\n    m->nnormals = %lu;\n    m->nuvs = %lu;\n",
@@ -320,13 +372,9 @@ static void put_mesh_fn(writer *w, const silk_mesh *m)
     if (m->closed_outward) fprintf(f, "    m->closed_outward = 1;\n");
     fprintf(f, "    m->bbox_min = silk_v3(%ld, %ld, %ld);\n", (long)m->bbox_min.x, (long)m->bbox_min.y,
             (long)m->bbox_min.z);
-    fprintf(f, "    m->bbox_max = silk_v3(%ld, %ld, %ld);\n}\n\n", (long)m->bbox_max.x, (long)m->bbox_max.y,
-            (long)m->bbox_max.z);
-    fprintf(f,
-            "/* Camera k of %s_NCAMERAS, or NULL. */\n"
-            "static inline const silk_camera *%s_camera(int k)\n{\n"
-            "    return k >= 0 && k < %s_NCAMERAS ? &%s_cameras[k] : NULL;\n}\n\n",
-            n, n, n, n);
+    fprintf(f, "    m->bbox_max = silk_v3(%ld, %ld, %ld);\n    return SILK_OK;\n}\n\n", (long)m->bbox_max.x,
+            (long)m->bbox_max.y, (long)m->bbox_max.z);
+    put_camera_fn(w);
 }
 
 static int write_header(writer *w, const char *mesh_path, const char *texture, const cli_scene *s,
@@ -376,6 +424,84 @@ static int write_header(writer *w, const char *mesh_path, const char *texture, c
     put_look(w, s);
     fprintf(f, "#endif\n");
     return ferror(f) ? -1 : 0;
+}
+
+/* ---- the compact form --------------------------------------------------------- */
+
+/* The model's bytes, counted apart from the other kinds (the summary
+ * breaks them down by array). */
+static void put_model_bytes(writer *w, const uint8_t *b, size_t n)
+{
+    fprintf(w->fp, "static const uint8_t %s_model[%zu] = {", w->name, n);
+    w->col = 0;
+    for (size_t i = 0; i < n; i++) item(w, "%u", (unsigned)b[i]);
+    fputs("\n};\n\n", w->fp);
+}
+
+static int write_compact_header(writer *w, const char *mesh_path, const char *texture, const cli_scene *s,
+                                const silk_camera *cams, int ncams, const uint8_t *model, size_t len, int flat)
+{
+    FILE *f = w->fp;
+    const char *n = w->name;
+    fprintf(f,
+            "/*\n"
+            " * %s - generated by `silk pack %s` (silk %s); do not edit.\n"
+            " *\n"
+            " * The mesh as a compact model (silk/compact.h) for flash%s: %s_mesh(&m)\n"
+            " * checks the bytes of %s_model and makes a silk_mesh that reads them in\n"
+            " * place (SILK_OK, or SILK_ERR_PARSE when they are damaged); %s_camera(k)\n"
+            " * gives the packed views, %s_look(&phong) the material.\n"
+            "%s%s%s"
+            " */\n",
+            n, mesh_path, SILK_VERSION, flat ? ", flat frames only" : "", n, n, n, n, texture ? " * texture: `" : "",
+            texture ? texture : "", texture ? "`\n" : "");
+    /* validate.h as in the full form: callers that check a mesh either way compile */
+    fprintf(f,
+            "#ifndef SILK_PACK_%s_H\n#define SILK_PACK_%s_H\n\n#include \"silk/silk.h\"\n#include \"silk/compact.h\"\n"
+            "#include \"silk/validate.h\"\n\n",
+            n, n);
+    fprintf(f, "#define %s_NCAMERAS %d\n\n", n, ncams);
+    put_model_bytes(w, model, len);
+    if (s->material.have_texture) put_texture(w, &s->material.texture);
+    put_cameras(w, cams, ncams);
+    fprintf(f,
+            "/* Check %s_model and point *m at it; nothing is copied. */\n"
+            "static inline silk_status %s_mesh(silk_mesh *m)\n{\n"
+            "    return silk_compact_mesh(%s_model, sizeof %s_model, \"%s\", m, NULL);\n}\n\n",
+            n, n, n, n, n);
+    put_camera_fn(w);
+    put_look(w, s);
+    fprintf(f, "#endif\n");
+    return ferror(f) ? -1 : 0;
+}
+
+/* "compact model N bytes, B a triangle (positions ..., header and end H)". */
+static void compact_summary(FILE *f, const uint8_t *model, size_t len)
+{
+    compact_layout l;
+    if (compact_layout_read(model, len, &l) != 0) return;
+    const size_t *b = l.bytes;
+    fprintf(f,
+            "compact model %zu, %.2f a triangle (positions %zu, normals %zu, corners %zu, selectors %zu, "
+            "adjacency %zu, edges list %zu, vertex index %zu, header %zu)",
+            len, (double)len / l.ntris, b[COMPACT_POS], b[COMPACT_NRM] + b[COMPACT_EXTRA], b[COMPACT_CORNER],
+            b[COMPACT_SEL], b[COMPACT_OPP] + b[COMPACT_EPRE], b[COMPACT_LIST], b[COMPACT_VFIRST],
+            (size_t)SILK_COMPACT_HEADER_BYTES + 4);
+}
+
+static int has_suffix(const char *s, const char *suf)
+{
+    size_t n = strlen(s), k = strlen(suf);
+    return n >= k && strcmp(s + n - k, suf) == 0;
+}
+
+/* The compact bytes of s's mesh into *model, or NULL (and why) when it
+ * cannot be compact. */
+static void encode_compact(const cli_scene *s, int flat, uint8_t **model, size_t *len, char *why, size_t n)
+{
+    compact_opts co = compact_opts_default();
+    co.adjacency = !flat;
+    if (compact_encode(&s->mesh, &co, model, len, why, n) != 0) *model = NULL;
 }
 
 /* A C identifier from the base name of path, without its extension. */
@@ -447,11 +573,20 @@ int cmd_pack(int argc, char **argv)
     int neyes = pa.neyes, nviews = pa.views;
     if (!rc && !out) rc = cli_fail(CLI_EXIT_USAGE, "pack: no output given (-o MODEL.h)");
     if (!rc && neyes && nviews) rc = cli_fail(CLI_EXIT_USAGE, "pack: give --eye or --views, not both");
+    int full = pa.model_format == PACK_FULL, raw = !rc && has_suffix(out, ".slkc");
+    if (!rc && full && pa.flat)
+        rc = cli_fail(CLI_EXIT_USAGE, "pack: --flat is for the compact model, not --model-format full");
+    if (!rc && full && raw)
+        rc = cli_fail(CLI_EXIT_USAGE, "pack: -o %s writes the compact model, not --model-format full", out);
+    if (!rc && raw && o.look.texture_path)
+        rc = cli_fail(CLI_EXIT_USAGE, "pack: -o %s holds the mesh alone: --texture needs a header (-o MODEL.h)", out);
     /* A failed run leaves OUT as it was (written atomically). */
     if (rc) return rc;
 
     cli_scene s;
     rc = cli_scene_load(&s, &o);
+    if (!rc && s.mesh.packed.base)
+        rc = cli_fail(CLI_EXIT_INPUT, "%s: already a compact model; pack the mesh it was made from", o.mesh_path);
     silk_camera cams[PACK_MAX_EYES];
     int ncams = neyes ? neyes : nviews ? nviews : 1;
     if (!rc && nviews) rc = orbit_eyes(&o, &s.mesh, nviews, eyes);
@@ -475,6 +610,19 @@ int cmd_pack(int argc, char **argv)
     else if (!silk_path_is_stdio(out)) name_from_path(out, name, sizeof name);
     else if (!silk_path_is_stdio(o.mesh_path)) name_from_path(o.mesh_path, name, sizeof name);
     else snprintf(name, sizeof name, "model");
+
+    /* compact unless told otherwise or the mesh cannot be (then full, saying why) */
+    uint8_t *model = NULL;
+    size_t model_len = 0;
+    if (!full) {
+        char why[320];
+        encode_compact(&s, pa.flat, &model, &model_len, why, sizeof why);
+        if (!model && raw) {
+            cli_scene_free(&s);
+            return cli_fail(CLI_EXIT_INPUT, "pack: %s: the compact model needs %s", cli_input_name(o.mesh_path), why);
+        }
+        if (!model) fprintf(stderr, "silk pack: %s: full format (compact needs %s)\n", name, why);
+    }
     writer w;
     memset(&w, 0, sizeof w);
     w.name = name;
@@ -485,7 +633,11 @@ int cmd_pack(int argc, char **argv)
         w.fp = of.fp;
         char texture[600];
         cli_texture_args_text(&o, texture, sizeof texture);
-        if (write_header(&w, cli_input_name(o.mesh_path), o.look.texture_path ? texture : NULL, &s, cams, ncams) != 0) {
+        const char *tex = o.look.texture_path ? texture : NULL, *in = cli_input_name(o.mesh_path);
+        int bad = raw     ? fwrite(model, 1, model_len, w.fp) != model_len
+                  : model ? write_compact_header(&w, in, tex, &s, cams, ncams, model, model_len, pa.flat) != 0
+                          : write_header(&w, in, tex, &s, cams, ncams) != 0;
+        if (bad) {
             silk_outfile_abort(&of);
             st = silk_fail(&err, SILK_ERR_IO, of.path, 0, "write failed");
         } else {
@@ -493,17 +645,33 @@ int cmd_pack(int argc, char **argv)
         }
     }
     cli_scene_free(&s);
-    if (st != SILK_OK) return cli_fail(CLI_EXIT_INPUT, "%s", err.msg);
-    if (silk_path_is_stdio(out)) return 0;   /* stdout holds the header */
+    if (st != SILK_OK || silk_path_is_stdio(out)) {   /* stdout holds the header */
+        free(model);
+        return st != SILK_OK ? cli_fail(CLI_EXIT_INPUT, "%s", err.msg) : 0;
+    }
     FILE *sf = stdout;
-    size_t total = 0;
-    fprintf(sf, "%s: %s as %s_mesh(), %d camera%s; model data (bytes):", of.path, cli_input_name(o.mesh_path), name,
-            ncams, ncams == 1 ? "" : "s");
+    if (raw) {
+        fprintf(sf, "%s: %s as a %scompact model; bytes: ", of.path, cli_input_name(o.mesh_path),
+                pa.flat ? "flat " : "");
+        compact_summary(sf, model, model_len);
+        fputc('\n', sf);
+        free(model);
+        return 0;
+    }
+    size_t total = model_len;
+    fprintf(sf, "%s: %s as %s_mesh()%s, %d camera%s; model data (bytes):", of.path, cli_input_name(o.mesh_path), name,
+            model ? pa.flat ? " (compact, flat)" : " (compact)" : "", ncams, ncams == 1 ? "" : "s");
+    if (model) {
+        fputc(' ', sf);
+        compact_summary(sf, model, model_len);
+        fputc(',', sf);
+    }
     for (int k = 0; k < K_COUNT; k++) {
         if (!w.bytes[k]) continue;
         fprintf(sf, " %s %zu,", kind_name[k], w.bytes[k]);
         total += w.bytes[k];
     }
     fprintf(sf, " total %zu\n", total);
+    free(model);
     return 0;
 }

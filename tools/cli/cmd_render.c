@@ -297,11 +297,11 @@ static int zoom_camera(const cli_scene *s, double zoom, silk_camera *cam)
         silk_fx best = SILK_FX_MIN;
         for (uint32_t t = 0; t < m->ntris; t++) {
             int vis[3];
-            for (int k = 0; k < 3; k++) vis[k] = silk_normal_visible(m, &v, m->tri_normal[3 * t + k]);
+            for (int k = 0; k < 3; k++) vis[k] = silk_normal_visible(m, &v, silk_mesh_corner_normal(m, 3 * t + k));
             if (pass == 0 && vis[0] == vis[1] && vis[1] == vis[2]) continue;
             for (int k = 0; k < 3; k++) {
                 silk_vec2 px;
-                silk_vec3 p = m->pos[m->tri[3 * t + k]];
+                silk_vec3 p = silk_mesh_pos(m, silk_mesh_corner(m, 3 * t + k));
                 if (silk_view_project(&v, p, &px) && px.x > best) {
                     best = px.x;
                     cam->target = p;

@@ -117,11 +117,12 @@ int simp_load_colors(const char *path, silk_decimal scale, int quiet, simp_mesh 
             rc = cli_fail(CLI_EXIT_INPUT, "%s: out of memory", lm.name);
         } else {
             for (uint32_t i = 0; i < m->nverts; i++) {
-                out->pos[3 * i] = cli_fx_to_double(m->pos[i].x);
-                out->pos[3 * i + 1] = cli_fx_to_double(m->pos[i].y);
-                out->pos[3 * i + 2] = cli_fx_to_double(m->pos[i].z);
+                silk_vec3 p = silk_mesh_pos(m, i);   /* a compact model's too */
+                out->pos[3 * i] = cli_fx_to_double(p.x);
+                out->pos[3 * i + 1] = cli_fx_to_double(p.y);
+                out->pos[3 * i + 2] = cli_fx_to_double(p.z);
             }
-            for (size_t i = 0; i < 3 * (size_t)m->ntris; i++) out->tri[i] = (uint32_t)m->tri[i];
+            for (uint32_t i = 0; i < 3 * m->ntris; i++) out->tri[i] = (uint32_t)silk_mesh_corner(m, i);
             if (color && m->color && (*color = malloc((m->nverts ? m->nverts : 1) * sizeof **color)) != NULL)
                 memcpy(*color, m->color, m->nverts * sizeof **color);
             *closed_manifold = m->nboundary_edges == 0 && m->nnonmanifold_edges == 0;

@@ -189,8 +189,8 @@ int viewer_open(viewer *v, const cli_scene_opts *o, const char *shot_pattern)
     double r2 = 0;
     for (int k = 0; k < 3; k++) v->centre[k] = (lo[k] + hi[k]) / 2;
     for (uint32_t i = 0; i < m->nverts; i++) {
-        double dx = cli_fx_to_double(m->pos[i].x) - v->centre[0], dy = cli_fx_to_double(m->pos[i].y) - v->centre[1],
-               dz = cli_fx_to_double(m->pos[i].z) - v->centre[2];
+        double dx = cli_fx_to_double(silk_mesh_pos(m, i).x) - v->centre[0], dy = cli_fx_to_double(silk_mesh_pos(m, i).y) - v->centre[1],
+               dz = cli_fx_to_double(silk_mesh_pos(m, i).z) - v->centre[2];
         if (dx * dx + dy * dy + dz * dz > r2) r2 = dx * dx + dy * dy + dz * dz;
     }
     v->radius = r2 > 0 ? sqrt(r2) : 1;

@@ -102,7 +102,7 @@ static int world_points(const cli_scene *sc, const silk_place *pl, int n, silk_m
         const silk_place *p = &pl[i];
         double s = cli_fx_to_double(p->scale);
         for (uint32_t v = 0; v < sc[i].mesh.nverts; v++) {
-            const silk_vec3 q = sc[i].mesh.pos[v];
+            const silk_vec3 q = silk_mesh_pos(&sc[i].mesh, v);
             double m[3] = { cli_fx_to_double(q.x), cli_fx_to_double(q.y), cli_fx_to_double(q.z) }, w[3];
             for (int r = 0; r < 3; r++) {
                 w[r] = cli_fx_to_double((&p->pos.x)[r]) + s * (cli_fx_to_double(p->rot[r][0]) * m[0] +
