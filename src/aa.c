@@ -463,7 +463,7 @@ static int tri_front(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32
 static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
 {
     silk_index e = silk_mesh_tri_edge(m, t, k);   /* a packed mesh has no tri_edge */
-    if (e >= m->nedges) return 0;
+    if (e >= silk_mesh_edge_bound(m)) return 0;
     const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
     if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;
@@ -477,7 +477,7 @@ static int coarse_outline(silk_aa *aa, const silk_mesh *m, const silk_view *v, u
 static int crease(silk_aa *aa, const silk_mesh *m, const silk_view *v, uint32_t t, int k, int front)
 {
     silk_index e = silk_mesh_tri_edge(m, t, k);
-    if (!front || e >= m->nedges || !silk_edge_has_feature((const silk_edge[]){ silk_mesh_edge(m, e) })) return 0;
+    if (!front || e >= silk_mesh_edge_bound(m) || !silk_edge_has_feature((const silk_edge[]){ silk_mesh_edge(m, e) })) return 0;
     const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
     uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
     return nb != SILK_NO_INDEX && nb < m->ntris && nb > t && tri_front(aa, m, v, nb);
@@ -558,7 +558,7 @@ int silk_aa_candidate(silk_aa *aa, const silk_mesh *m, const silk_view *v, const
      * asked once, and only where t faces the eye */
     for (int k = 0; k < 3; k++) {
         silk_index e = silk_mesh_tri_edge(m, t, (uint32_t)k);
-        if (e >= m->nedges) continue;
+        if (e >= silk_mesh_edge_bound(m)) continue;
         const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
         uint32_t nb = ed->t[0] == t ? ed->t[1] : ed->t[0];
         if (nb == SILK_NO_INDEX || nb >= m->ntris) return 1;

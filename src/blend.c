@@ -162,15 +162,18 @@ silk_status silk_frame_blend(silk_arena *a, const silk_mesh *m, const silk_view 
     if (stats) stats->fell_back = 0;
 
     silk_arena_mark mark = silk_arena_top_mark(a);
-    silk_fx *alpha = silk_arena_array_top(a, m->nedges, sizeof *alpha, SILK_MEM_FRAME);
-    uint8_t *nseg = silk_arena_array_top(a, m->nedges, sizeof *nseg, SILK_MEM_FRAME);
+    uint32_t ne = silk_mesh_edge_bound(m);
+    silk_fx *alpha = silk_arena_array_top(a, ne, sizeof *alpha, SILK_MEM_FRAME);
+    uint8_t *nseg = silk_arena_array_top(a, ne, sizeof *nseg, SILK_MEM_FRAME);
     if (!alpha || !nseg) return silk_frame_fall_back(a, m, &mark, g, stats, err);
     /* Face normals are needed only for eq. 1: scratch, gone before the output. */
     silk_arena_mark scratch = silk_arena_top_mark(a);
     silk_vec3 *fn = silk_arena_array_top(a, m->ntris, sizeof *fn, SILK_MEM_FRAME);
     if (!fn) return silk_frame_fall_back(a, m, &mark, g, stats, err);
     for (uint32_t t = 0; t < m->ntris; t++) fn[t] = silk_mesh_face_normal(m, t);
-    for (uint32_t e = 0; e < m->nedges; e++) {
+    silk_mesh_edges it;
+    silk_edge ed;
+    for (silk_index e = silk_mesh_edges_first(m, &it, &ed); e != SILK_NO_INDEX; e = silk_mesh_edges_next(m, &it, &ed)) {
         alpha[e] = edge_alpha(m, v, e, fn, beta);
         nseg[e] = (uint8_t)silk_blend_segments(m, v, e, alpha[e], tolerance_px);
     }

@@ -38,8 +38,10 @@
 static uint32_t max_sides(const silk_mesh *m)
 {
     uint32_t most = 2;
-    for (uint32_t e = 0; e < m->nedges; e++) {
-        if (!(silk_mesh_edge_flags(m, e) & SILK_EDGE_NONMANIFOLD)) continue;
+    silk_mesh_edges it;
+    silk_edge ed;
+    for (silk_index e = silk_mesh_edges_first(m, &it, &ed); e != SILK_NO_INDEX; e = silk_mesh_edges_next(m, &it, &ed)) {
+        if (!(ed.flags & SILK_EDGE_NONMANIFOLD)) continue;
         if ((uint64_t)m->ntris * m->nnonmanifold_edges > 50000000u) return SILK_SIL_SIDES_MAX;   /* too long to count */
         uint32_t n = 0;
         for (uint32_t t = 0; t < m->ntris; t++)
@@ -90,7 +92,10 @@ silk_status silk_budget_frame(const silk_mesh *m, const silk_render_opts *o, int
     b->bands = A(px * silk_pixfmt_bytes(fmt)) * (double_buffered ? 2 : 1) + A(px * sizeof(uint32_t));
 
     uint64_t T = m->ntris, E = m->nedges, V = m->nverts, N = m->nnormals, F = 0;
-    for (uint32_t e = 0; e < m->nedges; e++) F += (silk_mesh_edge_flags(m, e) & SILK_EDGE_FEATURE) != 0;
+    silk_mesh_edges it;
+    silk_edge ed;
+    for (silk_index e = silk_mesh_edges_first(m, &it, &ed); e != SILK_NO_INDEX; e = silk_mesh_edges_next(m, &it, &ed))
+        F += (ed.flags & SILK_EDGE_FEATURE) != 0;
     /* the rows each input triangle reaches, in bands */
     size_t frame = rows < height && T > 1 ? A(2 * T) : 0, need;
     if (o->mode == SILK_MODE_FLAT) {

@@ -8,8 +8,9 @@
  * of a triangle stores the triangle across it.  Edges, a triangle's edges
  * and the edges around a vertex all follow from it:
  *   - the side (t, k) joins corners k and k+1; its edge belongs to t when
- *     no triangle, or a higher one, lies across; edges are numbered in the
- *     order of the sides they belong to, counted from EPRE's block sums;
+ *     no triangle, or a higher one, lies across, and is numbered 3t + k
+ *     after that side (so not every number below 3 ntris is an edge:
+ *     silk_mesh_edge_bound);
  *   - the edges at a vertex are found by turning about it, side by side,
  *     from the first triangle that uses it (VFIRST, then a short scan).
  * Every field is a fixed-width bit field, so nothing is decoded that a
@@ -23,7 +24,6 @@
 
 #define BAD(...) silk_fail(err, SILK_ERR_PARSE, name, 0, __VA_ARGS__)
 #define UL(x) ((unsigned long)(x))
-#define EPRE_BLOCK 8      /* triangles a block sum of EPRE covers */
 #define VFIRST_BLOCK 8    /* vertices a VFIRST entry covers */
 
 /* ---- bit fields ----------------------------------------------------------------- */
@@ -88,18 +88,23 @@ silk_vec3 silk_packed_normal(const silk_mesh *m, silk_index n)
 
 /* ---- vertices and their normals ------------------------------------------------- */
 
-/* EXTRA entries below vertex v (EXTRA is non-decreasing). */
+/* The bits of n (at least 1). */
+static unsigned width_of(uint32_t n)
+{
+    unsigned w = 1;
+    while (w < 32 && (n >> w)) w++;
+    return w;
+}
+
+/* EXTRA entries below vertex v (EXTRA is non-decreasing): XPRE's count
+ * for v's block of 8, then the few entries of the block's vertices. */
 static uint32_t extra_below(const silk_mesh *m, silk_index v)
 {
     const silk_mesh_packed *p = PK(m);
     const uint8_t *a = ARR(m, extra);
-    uint32_t lo = 0, hi = p->nextra;
-    while (lo < hi) {
-        uint32_t mid = (lo + hi) >> 1;
-        if (field(a, mid, p->vtx_bits) < v) lo = mid + 1;
-        else hi = mid;
-    }
-    return lo;
+    uint32_t i = field(ARR(m, xpre), v / VFIRST_BLOCK, width_of(p->nextra));
+    while (i < p->nextra && field(a, i, p->vtx_bits) < v) i++;
+    return i;
 }
 
 /* The index of vertex v's first normal: its own index plus the extra
@@ -149,28 +154,6 @@ static uint32_t opp(const silk_mesh *m, uint32_t t, uint32_t k)
     return field(ARR(m, opp), 3 * t + k, PK(m)->tri_bits);
 }
 
-/* Bits k of the sides of t whose edge t owns. */
-static unsigned owned_sides(const silk_mesh *m, uint32_t t)
-{
-    uint32_t none = none_tri(PK(m));
-    unsigned own = 0;
-    for (uint32_t k = 0; k < 3; k++) {
-        uint32_t o = opp(m, t, k);
-        if (o == none || o > t) own |= 1u << k;
-    }
-    return own;
-}
-
-static unsigned popcount3(unsigned x) { return (x & 1u) + (x >> 1 & 1u) + (x >> 2 & 1u); }
-
-/* The edge of side k of t, which t owns. */
-static silk_index owned_edge(const silk_mesh *m, uint32_t t, uint32_t k)
-{
-    uint32_t b = t / EPRE_BLOCK, e = field(ARR(m, epre), b, PK(m)->edge_bits);
-    for (uint32_t u = b * EPRE_BLOCK; u < t; u++) e += popcount3(owned_sides(m, u));
-    return e + popcount3(owned_sides(m, t) & ((1u << k) - 1u));
-}
-
 /* The side of triangle t joining vertices a and b (either way round). */
 static uint32_t side_of(const silk_mesh *m, uint32_t t, silk_index a, silk_index b)
 {
@@ -185,47 +168,14 @@ silk_index silk_packed_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k)
 {
     if (!m->nedges) return SILK_NO_INDEX;   /* a model for flat frames only */
     uint32_t o = opp(m, t, k);
-    if (o == none_tri(PK(m)) || o > t) return owned_edge(m, t, k);
+    if (o == none_tri(PK(m)) || o > t) return 3 * t + k;   /* the edge is this side */
     silk_index a = silk_packed_corner(m, 3 * t + k), b = silk_packed_corner(m, 3 * t + next3(k));
-    return owned_edge(m, o, side_of(m, o, a, b));
+    return 3 * o + side_of(m, o, a, b);
 }
 
 void silk_packed_tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
 {
-    /* the sides t owns share one count of the edges before t */
-    unsigned own = owned_sides(m, t);
-    silk_index first = own ? owned_edge(m, t, 0) : 0;
-    for (uint32_t k = 0; k < 3; k++)
-        e[k] = own >> k & 1u ? first + popcount3(own & ((1u << k) - 1u)) : silk_packed_tri_edge(m, t, k);
-}
-
-/* The side (t, k) edge e belongs to: the EPRE block holding it, then the
- * block's triangles one by one. */
-static void edge_side(const silk_mesh *m, silk_index e, uint32_t *t, uint32_t *k)
-{
-    const silk_mesh_packed *p = PK(m);
-    const uint8_t *a = ARR(m, epre);
-    uint32_t lo = 0, hi = (m->ntris - 1) / EPRE_BLOCK;
-    while (lo < hi) {
-        uint32_t mid = (lo + hi + 1) >> 1;
-        if (field(a, mid, p->edge_bits) <= e) lo = mid;
-        else hi = mid - 1;
-    }
-    uint32_t n = field(a, lo, p->edge_bits);
-    for (uint32_t u = lo * EPRE_BLOCK; u < m->ntris; u++) {
-        unsigned own = owned_sides(m, u);
-        for (uint32_t j = 0; j < 3; j++)
-            if (own >> j & 1u) {
-                if (n == e) {
-                    *t = u;
-                    *k = j;
-                    return;
-                }
-                n++;
-            }
-    }
-    *t = 0;
-    *k = 0;   /* not reached for e < nedges */
+    for (uint32_t k = 0; k < 3; k++) e[k] = silk_packed_tri_edge(m, t, k);
 }
 
 /* LIST: the bit offset of the record of edge e, or UINT32_MAX. */
@@ -250,10 +200,24 @@ static uint8_t list_flags(uint32_t x)
                      (x & 4u ? SILK_EDGE_DEGENERATE : 0));
 }
 
+void silk_packed_edge_ends(const silk_mesh *m, silk_index e, silk_index v[2])
+{
+    uint32_t t = e / 3, k = e - 3 * t;
+    silk_index a = silk_packed_corner(m, 3 * t + k), b = silk_packed_corner(m, 3 * t + next3(k));
+    v[0] = a < b ? a : b;
+    v[1] = a < b ? b : a;
+}
+
+void silk_packed_edge_tris(const silk_mesh *m, silk_index e, silk_index t[2])
+{
+    uint32_t o = opp(m, e / 3, e % 3);
+    t[0] = e / 3;
+    t[1] = o == none_tri(PK(m)) ? SILK_NO_INDEX : o;
+}
+
 silk_edge silk_packed_edge(const silk_mesh *m, silk_index e)
 {
-    uint32_t t, k;
-    edge_side(m, e, &t, &k);
+    uint32_t t = e / 3, k = e - 3 * t;   /* the side that owns it */
     silk_index a = silk_packed_corner(m, 3 * t + k), b = silk_packed_corner(m, 3 * t + next3(k));
     uint32_t o = opp(m, t, k);
     silk_edge ed;
@@ -319,18 +283,24 @@ static silk_index edges_here(const silk_mesh *m, silk_mesh_edges *it, silk_edge 
     return it->e;
 }
 
-/* The next owned side after (it->t, it->k), from (t, k). */
+/* Whether side k of t owns its edge: nothing, or a higher triangle, across. */
+static int owns(const silk_mesh *m, uint32_t t, uint32_t k)
+{
+    uint32_t o = opp(m, t, k);
+    return o == none_tri(PK(m)) || o > t;
+}
+
+/* The first owned side from (t, k) on, into it (e its edge). */
 static int edges_seek(const silk_mesh *m, silk_mesh_edges *it, uint32_t t, uint32_t k)
 {
-    for (; t < m->ntris; t++, k = 0) {
-        unsigned own = owned_sides(m, t) >> k;
-        for (; own; own >>= 1, k++)
-            if (own & 1u) {
+    for (; t < m->ntris; t++, k = 0)
+        for (; k < 3; k++)
+            if (owns(m, t, k)) {
                 it->t = t;
                 it->k = k;
+                it->e = 3 * t + k;
                 return 1;
             }
-    }
     return 0;
 }
 
@@ -348,8 +318,8 @@ silk_index silk_mesh_edges_first(const silk_mesh *m, silk_mesh_edges *it, silk_e
 
 silk_index silk_mesh_edges_next(const silk_mesh *m, silk_mesh_edges *it, silk_edge *ed)
 {
-    if (++it->e >= m->nedges) return SILK_NO_INDEX;
     if (!m->packed.base) {
+        if (++it->e >= m->nedges) return SILK_NO_INDEX;
         *ed = m->edge[it->e];
         return it->e;
     }
@@ -496,10 +466,12 @@ static silk_status check_header(const uint8_t *d, size_t len, const char *name, 
     int adj = (l->flags & SILK_COMPACT_ADJACENCY) != 0;
     if (adj && (uint64_t)l->ntris + 1 >= (1u << p->tri_bits))
         return BAD("%lu triangles do not fit %u-bit indices", UL(l->ntris), p->tri_bits);
-    if (adj ? (l->nedges == 0 || l->nedges >> p->edge_bits || l->nlisted > l->nedges)
+    if (adj && (3 * l->ntris - 1) >> p->edge_bits)
+        return BAD("the sides of %lu triangles do not fit %u-bit edge indices", UL(l->ntris), p->edge_bits);
+    if (adj ? (l->nedges == 0 || l->nedges > 3 * l->ntris || l->nlisted > l->nedges)
             : (l->nedges != 0 || l->nlisted != 0))
         return BAD("%lu edges, %lu listed (%s)", UL(l->nedges), UL(l->nlisted),
-                   adj ? "edges fit the edge width, listed ones are edges" : "a model without adjacency has none");
+                   adj ? "at most a side each, listed ones are edges" : "a model without adjacency has none");
     /* the arrays' places: the 56-byte header, then in the order of silk/compact.h */
     p->nextra = l->nnormals - l->nverts;
     p->nlisted = l->nlisted;
@@ -508,11 +480,11 @@ static silk_status check_header(const uint8_t *d, size_t len, const char *name, 
     p->pos = place(l, 3 * (uint64_t)l->nverts, p->pos_bits);
     p->nrm = place(l, 2 * (uint64_t)l->nnormals, p->nrm_bits);
     p->extra = place(l, p->nextra, p->vtx_bits);
+    if (p->nextra) p->xpre = place(l, (l->nverts + VFIRST_BLOCK - 1) / VFIRST_BLOCK, width_of(p->nextra));
     p->corner = place(l, 3 * (uint64_t)l->ntris, p->vtx_bits);
     p->sel = place(l, 3 * (uint64_t)l->ntris, p->sel_bits);
     if (adj) {
         p->opp = place(l, 3 * (uint64_t)l->ntris, p->tri_bits);
-        p->epre = place(l, (l->ntris + EPRE_BLOCK - 1) / EPRE_BLOCK, p->edge_bits);
         p->list = place(l, l->nlisted, p->list_bits);
         p->vfirst = place(l, (l->nverts + VFIRST_BLOCK - 1) / VFIRST_BLOCK, p->tri_bits);
     }
@@ -552,9 +524,14 @@ static silk_status check_positions(const silk_mesh *m, const char *name, silk_me
 static silk_status check_corners(const silk_mesh *m, const char *name, silk_error *err)
 {
     const silk_mesh_packed *p = PK(m);
-    for (uint32_t i = 0, prev = 0; i < p->nextra; i++) {
-        uint32_t v = field(ARR(m, extra), i, p->vtx_bits);
-        if (v >= m->nverts || v < prev) return BAD("EXTRA entry %lu: vertex %lu out of order or range", UL(i), UL(v));
+    for (uint32_t i = 0, prev = 0, b = 0; i <= p->nextra; i++) {
+        uint32_t v = i < p->nextra ? field(ARR(m, extra), i, p->vtx_bits) : m->nverts;
+        if (v > m->nverts || (i < p->nextra && v == m->nverts) || v < prev)
+            return BAD("EXTRA entry %lu: vertex %lu out of order or range", UL(i), UL(v));
+        /* XPRE: the entries below each block's first vertex */
+        for (; p->nextra && b * VFIRST_BLOCK <= v && b < (m->nverts + VFIRST_BLOCK - 1) / VFIRST_BLOCK; b++)
+            if (field(ARR(m, xpre), b, width_of(p->nextra)) != i)
+                return BAD("XPRE entry %lu is not %lu, the extra normals of the vertices before it", UL(b), UL(i));
         prev = v;
     }
     uint32_t fresh = 0;
@@ -589,16 +566,13 @@ static silk_status check_corners(const silk_mesh *m, const char *name, silk_erro
 }
 
 /* The corner table symmetric (the triangle across a side has that side,
- * once, and has this triangle across it), EPRE's sums, LIST in edge order
+ * once, and has this triangle across it), the edges counted, LIST in edge order
  * with every boundary edge in it. */
 static silk_status check_adjacency(silk_mesh *m, const char *name, silk_error *err)
 {
     const silk_mesh_packed *p = PK(m);
     uint32_t none = none_tri(p), owned = 0, boundary_sides = 0;
     for (uint32_t t = 0; t < m->ntris; t++) {
-        if (t % EPRE_BLOCK == 0 && field(ARR(m, epre), t / EPRE_BLOCK, p->edge_bits) != owned)
-            return BAD("EPRE entry %lu is not %lu, the edges of the triangles before it", UL(t / EPRE_BLOCK),
-                       UL(owned));
         for (uint32_t k = 0; k < 3; k++) {
             uint32_t o = opp(m, t, k);
             if (o == none) {
@@ -622,7 +596,8 @@ static silk_status check_adjacency(silk_mesh *m, const char *name, silk_error *e
     uint32_t listed_boundary = 0, features = 0;
     for (uint32_t i = 0, prev = 0; i < p->nlisted; i++) {
         uint32_t e = bits_from(ARR(m, list), i * p->list_bits, p->edge_bits);
-        if (e >= m->nedges || (i && e <= prev)) return BAD("LIST record %lu: edge %lu out of order or range", UL(i), UL(e));
+        if (e >= 3 * m->ntris || (i && e <= prev) || !owns(m, e / 3, e % 3))
+            return BAD("LIST record %lu: edge %lu out of order, or not a side that owns its edge", UL(i), UL(e));
         prev = e;
         silk_edge ed = silk_packed_edge(m, e);
         listed_boundary += ed.t[1] == SILK_NO_INDEX;

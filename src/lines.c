@@ -125,10 +125,10 @@ static int point_keys(const silk_sil_frame *f, silk_frame_geom *g, const uint32_
         for (uint32_t i = 0; e->nchain && i < e->nsides; i++) {
             silk_sil_side s, o;
             uint32_t c = at[side0[w] + i], own = c;
-            silk_sil_side_attrs(m, c / 3, c % 3, (const silk_edge[]){ silk_mesh_edge(m, e->edge) }, &s);
+            silk_sil_side_attrs(m, c / 3, c % 3, silk_mesh_edge_v0(m, e->edge), &s);
             for (uint32_t j = 0; j < i; j++) {
                 own = at[side0[w] + j];
-                silk_sil_side_attrs(m, own / 3, own % 3, (const silk_edge[]){ silk_mesh_edge(m, e->edge) }, &o);
+                silk_sil_side_attrs(m, own / 3, own % 3, silk_mesh_edge_v0(m, e->edge), &o);
                 if (o.n0 == s.n0 && o.n1 == s.n1 && o.uv0 == s.uv0 && o.uv1 == s.uv1) break;
                 own = c;
             }
@@ -173,7 +173,7 @@ silk_status silk_lines_smooth(const silk_sil_frame *f, silk_frame_geom *g)
         const silk_sil_edge *e = &f->edges[w];
         if (!e->sampled || !e->nsides) continue;
         uint32_t c = at[side0[w]], t = c / 3, k = c % 3, k1 = (k + 1) % 3;
-        int fwd = silk_mesh_corner(m, c) == silk_mesh_edge(m, e->edge).v[0];
+        int fwd = silk_mesh_corner(m, c) == silk_mesh_edge_v0(m, e->edge);
         uint32_t r0 = silk_remesh_corner_rec(f, t, k, g->part_rec[t]);
         uint32_t r1 = silk_remesh_corner_rec(f, t, k1, g->part_rec[t]);
         line_rec(g, fwd ? r0 : r1);
@@ -216,14 +216,15 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
     if (!front) return SILK_ERR_NOMEM;
     for (uint32_t t = 0; t < m->ntris; t++) front[t] = (uint8_t)silk_sil_tri_front(m, v, t);
     uint32_t nlines = 0;
-    for (uint32_t e = 0; e < m->nedges; e++) nlines += edge_kind(m, front, e) != 0;
+    silk_mesh_edges it;
+    silk_edge ed_, *ed = &ed_;
+    for (silk_index e = silk_mesh_edges_first(m, &it, ed); e != SILK_NO_INDEX; e = silk_mesh_edges_next(m, &it, ed))
+        nlines += edge_kind(m, front, e) != 0;
     if (!lines_alloc(a, g, nlines, 2 * (uint64_t)nlines)) return SILK_ERR_NOMEM;
     /* silhouettes first, so that feature lines are drawn over them, as in SMOOTH mode */
-    for (uint32_t i = 0; i < 2 * m->nedges; i++) {
-        uint32_t e = i % m->nedges;
-        int kind = edge_kind(m, front, e);
-        if (kind != 1 + (int)(i / m->nedges)) continue;
-        const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
+    for (int pass = 1; pass <= 2; pass++)
+    for (silk_index e = silk_mesh_edges_first(m, &it, ed); e != SILK_NO_INDEX; e = silk_mesh_edges_next(m, &it, ed)) {
+        if (edge_kind(m, front, e) != pass) continue;
         /* the corners of a front-facing triangle where there is one */
         uint32_t t = ed->t[0] < m->ntris && front[ed->t[0]] ? ed->t[0] : ed->t[1];
         if (t >= m->ntris) t = ed->t[0];
@@ -236,7 +237,7 @@ silk_status silk_lines_polygonal(silk_arena *a, const silk_mesh *m, const silk_v
         line_point(g, &r, on_mesh ? c0 : SILK_LINE_NO_SRC);
         r.a = c1;
         line_point(g, &r, on_mesh ? c1 : SILK_LINE_NO_SRC);
-        line_end(g, kind == 2);
+        line_end(g, pass == 2);
     }
     return SILK_OK;
 }

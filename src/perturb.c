@@ -166,8 +166,9 @@ static void visit_near(silk_sil_frame *f, uint32_t t, const silk_sil_seg *s, uin
         visit(f, vtx, s, stamp, pass);
         silk_mesh_ring r;
         for (silk_index e = silk_mesh_ring_first(m, vtx, &r); e != SILK_NO_INDEX; e = silk_mesh_ring_next(m, &r)) {
-            silk_edge ed = silk_mesh_edge(m, e);
-            visit(f, ed.v[0] == vtx ? ed.v[1] : ed.v[0], s, stamp, pass);
+            silk_index ev[2];
+            silk_mesh_edge_ends(m, e, ev);
+            visit(f, ev[0] == vtx ? ev[1] : ev[0], s, stamp, pass);
         }
     }
 }
@@ -186,7 +187,7 @@ static int silhouette_at(const silk_sil_frame *f, silk_index vtx)
         if (!silk_sil_chained(f, e)) continue;
         const silk_sil_edge *w = &f->edges[silk_sil_slot(f, e)];
         /* the chain's point nearest vtx */
-        silk_fx t = silk_mesh_edge(m, e).v[0] == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
+        silk_fx t = silk_mesh_edge_v0(m, e) == vtx ? f->chain[w->chain0] : f->chain[w->chain0 + w->nchain - 1];
         silk_curve c;
         silk_sil_edge_curve(f, w, &c);
         silk_vec3 q = silk_hermite_point(&c, t);

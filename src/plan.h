@@ -240,7 +240,7 @@ silk_status silk_sil_find(silk_sil_frame *f);
 int silk_sil_tri_ok(const silk_mesh *m, uint32_t t);
 /* tri, k, normals and uvs of triangle t's side k on mesh edge e, from the
  * mesh. */
-void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s);
+void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, silk_index v0, silk_sil_side *s);
 /* The curve of edge e: its vertices, its tangents; normals and uvs zero.
  * The tangents are read from tan_kept where kept, else computed (a bridge, or the
  * feature segment's) and the last few kept in the frame's memo; the plan

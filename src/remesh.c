@@ -107,7 +107,7 @@ static uint32_t pair_chain(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
-    silk_sil_side_attrs(f->m, t, k, (const silk_edge[]){ silk_mesh_edge(f->m, e->edge) }, &s);
+    silk_sil_side_attrs(f->m, t, k, silk_mesh_edge_v0(f->m, e->edge), &s);
     return silk_sil_chain_index(&f->chain[e->chain0], e->nchain, side_pair(f, e, &s)->u);
 }
 
@@ -116,7 +116,7 @@ static uint32_t pair_pos(const silk_sil_frame *f, uint32_t t, uint32_t k)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
     uint32_t c = pair_chain(f, t, k);
-    return silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge(f->m, e->edge).v[0] ? c : e->nchain - 1 - c;
+    return silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge_v0(f->m, e->edge) ? c : e->nchain - 1 - c;
 }
 
 static void layout(const silk_sil_frame *f, uint32_t t, sil_layout *l)
@@ -243,8 +243,8 @@ int silk_remesh_seg(const silk_sil_frame *f, uint32_t t, silk_sil_seg *s)
     const silk_sil_edge *ea = edge_at(f, t, lone), *eb = edge_at(f, t, kb);
     if (!ea || !eb) return 0;
     silk_sil_side sa, sb;
-    silk_sil_side_attrs(m, t, lone, (const silk_edge[]){ silk_mesh_edge(m, ea->edge) }, &sa);
-    silk_sil_side_attrs(m, t, kb, (const silk_edge[]){ silk_mesh_edge(m, eb->edge) }, &sb);
+    silk_sil_side_attrs(m, t, lone, silk_mesh_edge_v0(m, ea->edge), &sa);
+    silk_sil_side_attrs(m, t, kb, silk_mesh_edge_v0(m, eb->edge), &sb);
     const silk_sil_pair *pa = side_pair(f, ea, &sa), *pb = side_pair(f, eb, &sb);
     if (!pa || !pb) return 0;   /* cannot happen for a sane mesh */
     memset(s, 0, sizeof *s);
@@ -395,8 +395,10 @@ static void side_curve(const silk_sil_frame *f, const silk_sil_edge *e, const si
         c->uv0 = m->uv[s->uv0];
         c->uv1 = m->uv[s->uv1];
     }
-    c->rgb0 = m->color ? m->color[silk_mesh_edge(m, e->edge).v[0]] : 0xffffff;
-    c->rgb1 = m->color ? m->color[silk_mesh_edge(m, e->edge).v[1]] : 0xffffff;
+    silk_index ev[2] = { 0, 0 };
+    if (m->color) silk_mesh_edge_ends(m, e->edge, ev);
+    c->rgb0 = m->color ? m->color[ev[0]] : 0xffffff;
+    c->rgb1 = m->color ? m->color[ev[1]] : 0xffffff;
 }
 
 /* Append side k of t (its chain, in the triangle's direction) to out:
@@ -409,12 +411,12 @@ static uint32_t walk_side(const silk_sil_frame *f, silk_frame_geom *g, uint32_t 
     if (!n) return 0;
     const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
-    silk_sil_side_attrs(f->m, t, k, (const silk_edge[]){ silk_mesh_edge(f->m, e->edge) }, &s);
+    silk_sil_side_attrs(f->m, t, k, silk_mesh_edge_v0(f->m, e->edge), &s);
     side_curve(f, e, &s, &g->curve[g->ncurve]);
     uint32_t rec = g->nvrec;
     for (uint32_t j = 0; j < n; j++) put_curve_rec(g, g->ncurve, f->chain[e->chain0 + j]);
     g->ncurve++;
-    int fwd = silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge(f->m, e->edge).v[0];
+    int fwd = silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge_v0(f->m, e->edge);
     for (uint32_t j = 0; j < n; j++) out[j] = fwd ? rec + j : rec + n - 1 - j;
     return n;
 }
@@ -644,7 +646,7 @@ static const silk_sil_pair *side_pair_of(const silk_sil_frame *f, uint32_t t, ui
     const silk_sil_edge *e = edge_at(f, t, k);
     silk_sil_side s;
     if (!e) return NULL;
-    silk_sil_side_attrs(f->m, t, k, (const silk_edge[]){ silk_mesh_edge(f->m, e->edge) }, &s);
+    silk_sil_side_attrs(f->m, t, k, silk_mesh_edge_v0(f->m, e->edge), &s);
     return side_pair(f, e, &s);
 }
 
@@ -673,7 +675,7 @@ void silk_remesh_seg_recs(const silk_sil_frame *f, uint32_t t, uint32_t base, ui
 static uint32_t chain_at(const silk_sil_frame *f, uint32_t t, uint32_t k, uint32_t pos, uint32_t n)
 {
     const silk_sil_edge *e = edge_at(f, t, k);
-    return silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge(f->m, e->edge).v[0] ? pos : n - 1 - pos;
+    return silk_mesh_corner(f->m, 3 * t + k) == silk_mesh_edge_v0(f->m, e->edge) ? pos : n - 1 - pos;
 }
 
 int silk_remesh_seg_at(const silk_sil_frame *f, uint32_t t, uint32_t rec[3], uint32_t *curve)

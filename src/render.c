@@ -285,6 +285,13 @@ static silk_status frame_prepare(frame *f, frame_fast *fast, frame_siltex *sx, s
     if (modes[o->mode].left_out)
         return silk_fail(err, SILK_ERR_ARG, NULL, 0, "silk_render: %s mode is not built in (%s 0)", modes[o->mode].name,
                          modes[o->mode].left_out);
+    /* A compact model without its corner table (silk pack --flat) has no
+     * edges: smooth frames are its flat ones, and what follows edges cannot
+     * be drawn. */
+    if (m->packed.base && !m->nedges && (o->lines || o->wire || (o->mode != SILK_MODE_FLAT && o->mode != SILK_MODE_SMOOTH)))
+        return silk_fail(err, SILK_ERR_ARG, NULL, 0,
+                         "silk_render: the model has no edges (packed for flat frames only): %s", o->lines || o->wire
+                         ? "no lines or wire" : "flat and smooth frames only");
     if (SILK_CLIP_MODE && o->mode == SILK_MODE_CLIP) return clip_prepare(f, a, v, o, band_rows, stats, err);
     if (SILK_SILTEX_MODE && o->mode == SILK_MODE_SILTEX) return siltex_prepare(f, sx, a, m, v, h, o, stats, err);
     if (silk_shares_wanted(o)) return shares_prepare(f, a, v, o, stats, err);

@@ -23,19 +23,13 @@
 
 /* ---- small helpers ---------------------------------------------------------- */
 
-static int edge_ok(const silk_mesh *m, silk_index e) { return e < m->nedges; }
+static int edge_ok(const silk_mesh *m, silk_index e) { return e < silk_mesh_edge_bound(m); }
 
-/* Whether side k of triangle t runs from edge.v[0] to edge.v[1]. */
-static int side_forward(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e)
-{
-    return silk_mesh_corner(m, 3 * t + k) == e->v[0];
-}
-
-/* The normals (and uvs) at edge.v[0], edge.v[1] as side k of t sees them. */
-void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, const silk_edge *e, silk_sil_side *s)
+/* The normals (and uvs) at edge.v[0] (v0), edge.v[1] as side k of t sees them. */
+void silk_sil_side_attrs(const silk_mesh *m, uint32_t t, uint32_t k, silk_index v0, silk_sil_side *s)
 {
     uint32_t ca = 3 * t + k, cb = 3 * t + (k + 1) % 3;
-    if (!side_forward(m, t, k, e)) { uint32_t x = ca; ca = cb; cb = x; }
+    if (silk_mesh_corner(m, ca) != v0) { uint32_t x = ca; ca = cb; cb = x; }
     s->tri = t;
     s->k = k;
     s->n0 = (silk_plan_index)silk_mesh_corner_normal(m, ca);   /* (silk_sil_find: every count fits) */
@@ -181,7 +175,7 @@ SILK_ALWAYS_INLINE static inline void edge_point_attrs(const silk_mesh *m, const
     } else {
         uv->x = uv->y = 0;
     }
-    *rgb = silk_sil_edge_rgb(m, (const silk_edge[]){ silk_mesh_edge(m, e->edge) }, u);
+    *rgb = m->color ? silk_sil_edge_rgb(m, (const silk_edge[]){ silk_mesh_edge(m, e->edge) }, u) : 0xffffff;
 }
 
 void silk_sil_edge_point(const silk_sil_frame *f, const silk_sil_edge *e, const silk_sil_side *s,
@@ -234,8 +228,9 @@ uint32_t silk_sil_edge_rgb(const silk_mesh *m, const silk_edge *e, silk_fx u)
 static void edge_tangents(const silk_sil_frame *f, const silk_sil_edge *w, silk_vec3 t[2])
 {
     const silk_mesh *m = f->m;
-    const silk_edge e_ = silk_mesh_edge(m, w->edge), *e = &e_;
-    silk_vec3 p0 = silk_mesh_pos(m, e->v[0]), p1 = silk_mesh_pos(m, e->v[1]);
+    silk_index ev[2];
+    silk_mesh_edge_ends(m, w->edge, ev);
+    silk_vec3 p0 = silk_mesh_pos(m, ev[0]), p1 = silk_mesh_pos(m, ev[1]);
     if (w->is_feature || w->npairs == 0) {
         silk_feature_seg seg;
         if (silk_mesh_feature_seg(m, w->edge, &seg)) {
@@ -271,10 +266,11 @@ void silk_sil_edge_curve(const silk_sil_frame *f, const silk_sil_edge *e, silk_c
         }
         t = memo->tan[i];
     }
-    const silk_edge me_ = silk_mesh_edge(f->m, e->edge), *me = &me_;
+    silk_index ev[2];
+    silk_mesh_edge_ends(f->m, e->edge, ev);
     memset(c, 0, sizeof *c);
-    c->p0 = silk_mesh_pos(f->m, me->v[0]);
-    c->p1 = silk_mesh_pos(f->m, me->v[1]);
+    c->p0 = silk_mesh_pos(f->m, ev[0]);
+    c->p1 = silk_mesh_pos(f->m, ev[1]);
     c->t0 = t[0];
     c->t1 = t[1];
 }
@@ -467,7 +463,7 @@ static silk_status find_triangles(silk_sil_frame *f)
     silk_arena *a = f->a;
 
     f->tri_state = silk_arena_array_top(a, m->ntris, 1, SILK_MEM_FRAME);
-    size_t bits = ((size_t)m->nedges + 7) / 8;
+    size_t bits = ((size_t)silk_mesh_edge_bound(m) + 7) / 8;
     f->carrying = silk_arena_array_top(a, bits, 1, SILK_MEM_FRAME);   /* zeroed */
     /* The normals' visibility is needed only here: taken last, given back
      * before the edges are laid out in its place. */
@@ -536,16 +532,17 @@ void silk_sil_kept(silk_sil_frame *f, size_t free0, size_t peak)
 static int pair_seen(const silk_sil_frame *f, uint32_t t, uint32_t k, silk_index e)
 {
     const silk_mesh *m = f->m;
-    const silk_edge ed_ = silk_mesh_edge(m, e), *ed = &ed_;
-    if (ed->flags & SILK_EDGE_NONMANIFOLD) return 0;
-    uint32_t o = ed->t[0] == t ? ed->t[1] : ed->t[0];
+    if (m->nnonmanifold_edges && (silk_mesh_edge_flags(m, e) & SILK_EDGE_NONMANIFOLD)) return 0;
+    silk_index et[2], v0 = silk_mesh_edge_v0(m, e);
+    silk_mesh_edge_tris(m, e, et);
+    uint32_t o = et[0] == t ? et[1] : et[0];
     if (o >= t || !(f->tri_state[o] & SILK_TS_SIL)) return 0;   /* also SILK_NO_INDEX: no other */
     uint32_t lone = f->tri_state[o] & SILK_TS_LONE;
     silk_sil_side a, b;
-    silk_sil_side_attrs(m, t, k, ed, &a);
+    silk_sil_side_attrs(m, t, k, v0, &a);
     for (uint32_t ko = 0; ko < 3; ko++) {
         if ((ko != lone && ko != (lone + 2) % 3) || silk_mesh_tri_edge(m, o, ko) != e) continue;
-        silk_sil_side_attrs(m, o, ko, ed, &b);
+        silk_sil_side_attrs(m, o, ko, v0, &b);
         if (a.n0 == b.n0 && a.n1 == b.n1) return 1;
     }
     return 0;
@@ -578,8 +575,9 @@ static int tri_whole(const silk_sil_frame *f, uint32_t t)
  * triangle meets them in): tt[0 .. n). */
 static uint32_t edge_tris(const silk_sil_frame *f, silk_index e, uint32_t tt[2])
 {
-    const silk_edge ed_ = silk_mesh_edge(f->m, e), *ed = &ed_;
-    uint32_t a = ed->t[0], b = ed->t[1], n = 0;
+    silk_index et[2];
+    silk_mesh_edge_tris(f->m, e, et);
+    uint32_t a = et[0], b = et[1], n = 0;
     if (b < a) { uint32_t x = a; a = b; b = x; }
     if (tri_whole(f, a)) tt[n++] = a;
     if (b != a && tri_whole(f, b)) tt[n++] = b;
@@ -595,7 +593,7 @@ static silk_status lay_out_edges(silk_sil_frame *f)
     uint32_t nwork = f->nedges;
     f->edges = silk_arena_array_top(a, nwork, sizeof *f->edges, SILK_MEM_FRAME);
     if (!f->edges) return SILK_ERR_NOMEM;
-    for (uint32_t e = 0, w = 0; e < m->nedges; e++) {
+    for (uint32_t e = 0, w = 0, ne = silk_mesh_edge_bound(m); e < ne; e++) {
         if (!f->carrying[e >> 3]) { e |= 7; continue; }   /* most bytes: none of their eight */
         if (!(f->carrying[e >> 3] & (1u << (e & 7)))) continue;
         f->edges[w].edge = (silk_plan_index)e;
@@ -640,7 +638,7 @@ static void add_pair(silk_sil_frame *f, uint32_t t, uint32_t k, silk_sil_edge *w
 {
     const silk_mesh *m = f->m;
     silk_sil_side s;
-    silk_sil_side_attrs(m, t, k, (const silk_edge[]){ silk_mesh_edge(m, we->edge) }, &s);
+    silk_sil_side_attrs(m, t, k, silk_mesh_edge_v0(m, we->edge), &s);
     for (uint32_t j = 0; j < we->npairs; j++) {
         const silk_sil_pair *p = &f->pairs[we->pair0 + j];
         if (p->n0 == s.n0 && p->n1 == s.n1) return;
@@ -694,15 +692,16 @@ static silk_status chain_points(silk_sil_frame *f)
     uint32_t nchain = 0;
     for (uint32_t w = 0; w < nwork; w++) {
         silk_sil_edge *we = &f->edges[w];
-        const silk_edge e_ = silk_mesh_edge(m, we->edge), *e = &e_;
-        silk_vec3 d0 = silk_view_to_eye(v, silk_mesh_pos(m, e->v[0])), d1 = silk_view_to_eye(v, silk_mesh_pos(m, e->v[1]));
+        silk_index ev[2];
+        silk_mesh_edge_ends(m, we->edge, ev);
+        silk_vec3 d0 = silk_view_to_eye(v, silk_mesh_pos(m, ev[0])), d1 = silk_view_to_eye(v, silk_mesh_pos(m, ev[1]));
         for (uint32_t i = 0; i < we->npairs; i++) {
             silk_sil_pair *p = &f->pairs[we->pair0 + i];
             p->u = silk_fx_clamp(silk_silhouette_param(silk_mesh_normal(m, p->n0), d0, silk_mesh_normal(m, p->n1), d1),
                                  0, SILK_FX_ONE);
         }
         we->nfeat = 0;
-        if (we->sampled && !(e->flags & SILK_EDGE_DEGENERATE)) {   /* at most SILK_MAX_SAMPLES */
+        if (we->sampled && !(silk_mesh_edge_flags(m, we->edge) & SILK_EDGE_DEGENERATE)) {   /* at most SILK_MAX_SAMPLES */
             silk_curve c;   /* only a sampled edge's tangents are needed here */
             silk_sil_edge_curve(f, we, &c);
             we->nfeat = (uint8_t)silk_sil_intervals(v, &c, unit_dot(c.t0, c.t1), f->tol);
@@ -734,7 +733,7 @@ silk_status silk_sil_find(silk_sil_frame *f)
      * (SILK_PLAN_INDEX16): at most 65 535 of each, so that none is
      * SILK_PLAN_NONE */
     const silk_mesh *m = f->m;
-    if (SILK_PLAN_INDEX16 && (m->nverts | m->nnormals | m->nuvs | m->nedges) >> 16) return SILK_ERR_NOMEM;
+    if (SILK_PLAN_INDEX16 && (m->nverts | m->nnormals | m->nuvs | silk_mesh_edge_bound(m)) >> 16) return SILK_ERR_NOMEM;
     memset(f->cur, 0, sizeof *f->cur);   /* nothing asked yet */
     silk_status st = find_triangles(f);
     if (st == SILK_OK) st = lay_out_edges(f);

@@ -96,6 +96,20 @@ ppm_columns() {
 
 # The value of a "name: value" line of `silk info`; name includes the
 # line's indentation ("  samples" in the frame section).
+# header_model HEADER OUT: the bytes of a `silk pack` header's compact model
+# (its NAME_model array) into OUT, for `silk render OUT`; 1 when the header
+# holds the full form instead.
+header_model() {
+    python3 - "$1" "$2" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+m = re.search(r"static const uint8_t \w+_model\[\d+\] = \{([^}]*)\}", text)
+if not m:
+    sys.exit(1)
+open(sys.argv[2], "wb").write(bytes(int(v) for v in m.group(1).replace(",", " ").split()))
+PY
+}
+
 info_value() {
     grep -E "^$2: " "$1" | head -n 1 | sed -E "s/^$2: +//"
 }

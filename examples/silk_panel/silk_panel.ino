@@ -76,8 +76,8 @@ void setup()
     silk_panel_config cfg;
     silk_panel_config_default(&cfg, SILK_PANEL_ILI9341);   // 320x240 landscape
     if (silk_panel_init(&panel, &cfg, &io, &err) != SILK_OK) stop("panel", &err);
-    model_mesh(&mesh);   // the arrays stay in flash
-    if (silk_mesh_validate(&mesh, "model", &err) != SILK_OK) stop("model", &err);
+    // the model stays in flash: the mesh reads it in place
+    if (model_mesh(&mesh) != SILK_OK || silk_mesh_validate(&mesh, "model", &err) != SILK_OK) stop("model", &err);
 
     silk_arena_init(&arena, arena_mem, sizeof arena_mem);
     uint8_t *color = static_cast<uint8_t *>(silk_arena_array(&arena, WIDTH * BAND_ROWS, 2, SILK_MEM_RASTER));

@@ -80,10 +80,9 @@ int spi_panel_run(void)
     silk_panel panel;
     if (silk_panel_init(&panel, &cfg, &io, &err) != SILK_OK) return fail("panel", &err);
 
-    /* The mesh points into flash; check it once. */
+    /* The mesh reads the model in place in flash, checked once as it is made. */
     silk_mesh mesh;
-    model_mesh(&mesh);
-    if (silk_mesh_validate(&mesh, "model", &err) != SILK_OK) return fail("model", &err);
+    if (model_mesh(&mesh) != SILK_OK || silk_mesh_validate(&mesh, "model", &err) != SILK_OK) return fail("model", &err);
 
     /* The band buffers from the arena's bottom, every frame's scratch from
      * its top. */

@@ -24,7 +24,7 @@
  *    8  4  nverts (3 .. 2^24-1)
  *   12  4  ntris (1 .. 2^24-2)
  *   16  4  nnormals (nverts .. 2^24-1)
- *   20  4  nedges (0 without SILK_COMPACT_ADJACENCY)
+ *   20  4  nedges: edges, sides that own one (0 without SILK_COMPACT_ADJACENCY)
  *   24  4  nlisted: edges in LIST
  *   28 12  org: three int32, Q16.16
  *   40  1  pos_bits  (1..16)   a coordinate is org + (q << pos_shift)
@@ -33,7 +33,7 @@
  *   43  1  sel_bits  (0..6)    bits of a corner's normal selector
  *   44  1  vtx_bits  (1..24)   bits of a vertex index
  *   45  1  tri_bits  (1..24)   bits of a triangle index; all ones: none
- *   46  1  edge_bits (1..24)   bits of an edge index or count
+ *   46  1  edge_bits (1..24)   bits of an edge index (a side, 3t + k)
  *   47  1  dir_bits  (2..16)   bits of each octahedral coordinate of a tangent direction
  *   48  4  size: bytes of the whole model, the 4 zero bytes at its end included
  *   52  4  CRC-32 of bytes 56 .. size-1
@@ -42,19 +42,21 @@
  *     NRM    2 nnormals x nrm_bits    octahedral u, v of each shading normal
  *     EXTRA  (nnormals-nverts) x vtx_bits, non-decreasing: vertex v has
  *            1 + (times v appears) normals, from index v + (entries < v)
+ *     XPRE   ceil(nverts/8) x xpre_bits (none without EXTRA; xpre_bits
+ *            the bits of nnormals - nverts): the EXTRA entries below vertex 8i
  *     CORNER 3 ntris x vtx_bits       the vertices of each triangle
  *     SEL    3 ntris x sel_bits       each corner's normal: its vertex's first + SEL
  *   with SILK_COMPACT_ADJACENCY:
- *     OPP    3 ntris x tri_bits       the triangle across side k (corners k, k+1), or none
- *     EPRE   ceil(ntris/8) x edge_bits  edges owned by triangles 0 .. 8i-1
+ *     OPP    3 ntris x tri_bits       the triangle across side k of each (corners k, k+1), or none
  *     LIST   nlisted records, by edge: edge (edge_bits), flags (3 bits:
  *            crease, groups, degenerate), then for each end (v[0], v[1]):
  *            straight (1 bit), u, v (dir_bits each)
  *     VFIRST ceil(nverts/8) x tri_bits  the first triangle using vertex 8i
  *   4 zero bytes.
  *
- * A side (t, k) is owned by t when it has no triangle across it or the one
- * across has a higher index; edge ids count owned sides in (t, k) order.
+ * A side (t, k) owns its edge when it has no triangle across it or the one
+ * across has a higher index; the edge's index is the side's, 3t + k, so
+ * edge indices run below 3 ntris with gaps (nedges counts the edges).
  * An edge's v[0] < v[1] are its side's corners, t[0] the owner, t[1] the
  * triangle across; flags are BOUNDARY when there is none, and LIST's.
  * LIST holds every edge with a flag (boundary ones included), so the
@@ -80,7 +82,7 @@ extern "C" {
 #define SILK_COMPACT_HEADER_BYTES 56
 
 enum silk_compact_flag {
-    SILK_COMPACT_ADJACENCY   = 1u << 0,  /* OPP, EPRE, LIST, VFIRST: smooth-capable */
+    SILK_COMPACT_ADJACENCY   = 1u << 0,  /* OPP, LIST, VFIRST: smooth-capable */
     SILK_COMPACT_FILE_NORMALS = 1u << 1, /* the normals came with the mesh (silk_mesh.normals_used) */
     SILK_COMPACT_CLOSED      = 1u << 2   /* closed and wound outward (silk_mesh.closed_outward) */
 };

@@ -64,7 +64,7 @@ struct silk_vis;   /* Gaussian-sphere hierarchy, silk/visibility.h */
  * for a mesh held in the arrays of silk_mesh. */
 typedef struct silk_mesh_packed {
     const uint8_t *base;
-    uint32_t pos, nrm, extra, corner, sel, opp, epre, list, vfirst;   /* byte offsets in base */
+    uint32_t pos, nrm, extra, xpre, corner, sel, opp, list, vfirst;   /* byte offsets in base */
     uint32_t nextra, nlisted;
     silk_vec3 org;
     uint8_t pos_bits, pos_shift, nrm_bits, sel_bits, vtx_bits, tri_bits, edge_bits, dir_bits;
@@ -197,6 +197,8 @@ silk_index silk_packed_corner_normal(const silk_mesh *m, uint32_t c);
 silk_index silk_packed_normal_vertex(const silk_mesh *m, silk_index n);
 silk_edge  silk_packed_edge(const silk_mesh *m, silk_index e);
 uint8_t    silk_packed_edge_flags(const silk_mesh *m, silk_index e);
+void       silk_packed_edge_ends(const silk_mesh *m, silk_index e, silk_index v[2]);
+void       silk_packed_edge_tris(const silk_mesh *m, silk_index e, silk_index t[2]);
 uint32_t   silk_packed_vertex_normals(const silk_mesh *m, silk_index v);   /* how many vertex v has (its first after the previous vertex's) */
 silk_index silk_packed_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k);
 void       silk_packed_tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3]);   /* all three at once */
@@ -236,10 +238,46 @@ static inline silk_edge silk_mesh_edge(const silk_mesh *m, silk_index e)
 {
     return m->packed.base ? silk_packed_edge(m, e) : m->edge[e];
 }
+/* The vertices of edge e, v[0] < v[1]: what most stages need of an edge
+ * (a compact model reads two corners for them, and no flags). */
+static inline void silk_mesh_edge_ends(const silk_mesh *m, silk_index e, silk_index v[2])
+{
+    if (m->packed.base) {
+        silk_packed_edge_ends(m, e, v);
+    } else {
+        v[0] = m->edge[e].v[0];
+        v[1] = m->edge[e].v[1];
+    }
+}
+/* The triangles of edge e (edge.t). */
+static inline void silk_mesh_edge_tris(const silk_mesh *m, silk_index e, silk_index t[2])
+{
+    if (m->packed.base) {
+        silk_packed_edge_tris(m, e, t);
+    } else {
+        t[0] = m->edge[e].t[0];
+        t[1] = m->edge[e].t[1];
+    }
+}
+/* The lower vertex of edge e. */
+static inline silk_index silk_mesh_edge_v0(const silk_mesh *m, silk_index e)
+{
+    silk_index v[2];
+    silk_mesh_edge_ends(m, e, v);
+    return v[0];
+}
 /* Flags of edge e (enum silk_edge_flag). */
 static inline uint8_t silk_mesh_edge_flags(const silk_mesh *m, silk_index e)
 {
     return m->packed.base ? silk_packed_edge_flags(m, e) : m->edge[e].flags;
+}
+
+/* Every edge index is below this: nedges for a mesh in arrays; 3 ntris for
+ * a compact model, whose edge indices are the sides that own them (with
+ * gaps: walk the edges with silk_mesh_edges_first/next). */
+static inline uint32_t silk_mesh_edge_bound(const silk_mesh *m)
+{
+    return m->packed.base && m->nedges ? 3 * m->ntris : m->nedges;
 }
 
 /* The edge joining vertices a and b (SILK_NO_INDEX when there is none),

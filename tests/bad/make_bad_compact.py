@@ -43,13 +43,14 @@ class Model:
             ("pos", 3 * self.nverts, self.pos_bits),
             ("nrm", 2 * self.nnormals, self.nrm_bits),
             ("extra", self.nnormals - self.nverts, self.vtx_bits),
+            ("xpre", (self.nverts + 7) // 8 if self.nnormals > self.nverts else 0,
+             (self.nnormals - self.nverts).bit_length()),
             ("corner", 3 * self.ntris, self.vtx_bits),
             ("sel", 3 * self.ntris, self.sel_bits),
         ]
         if self.flags & 1:
             sizes += [
                 ("opp", 3 * self.ntris, self.tri_bits),
-                ("epre", (self.ntris + 7) // 8, self.edge_bits),
                 ("list", self.nlisted, self.list_bits),
                 ("vfirst", (self.nverts + 7) // 8, self.tri_bits),
             ]
@@ -160,10 +161,19 @@ def cases(base):
     x.put("vfirst", 1, x.tri_bits, x.get("vfirst", 1, x.tri_bits) + 1)
     out.append(("compact-vfirst.slkc", x.b, True))
 
-    # EPRE's second sum one more
+    # a LIST record naming a side whose edge the triangle across owns
     x = Model(base)
-    x.put("epre", 1, x.edge_bits, x.get("epre", 1, x.edge_bits) + 1)
-    out.append(("compact-epre.slkc", x.b, True))
+    none = (1 << x.tri_bits) - 1
+    ids = [x.get_bits("list", i * x.list_bits, x.edge_bits) for i in range(x.nlisted)]
+    for i in range(x.nlisted):
+        lo = ids[i - 1] if i else -1
+        hi = ids[i + 1] if i + 1 < x.nlisted else 3 * x.ntris
+        h = next((h for h in range(lo + 1, hi) if x.get("opp", h, x.tri_bits) not in (none,)
+                  and x.get("opp", h, x.tri_bits) < h // 3), None)
+        if h is not None:
+            x.put_bits("list", i * x.list_bits, x.edge_bits, h)
+            break
+    out.append(("compact-list-side.slkc", x.b, True))
 
     b = bytearray(base)
     b[40] = 0

@@ -51,12 +51,12 @@ check "the pipe is still a pipe" test -p "$tmp/fifo.png"
 
 # ---- pack to standard output --------------------------------------------------------------
 "$SILK" pack "$sphere" -o - >"$tmp/stdout.h"
-check "pack -o - writes the header to standard output" grep -q 'static inline void sphere_mesh' "$tmp/stdout.h"
+check "pack -o - writes the header to standard output" grep -q 'static inline silk_status sphere_mesh' "$tmp/stdout.h"
 check "pack -o -: symbols from the mesh name, not __mesh" test "$(grep -c '__mesh\|^static const silk_vec3 _' "$tmp/stdout.h")" -eq 0
 "$SILK" pack - -o - <"$sphere" >"$tmp/stdin.h"
-check "pack - -o -: symbols model_*" grep -q 'static inline void model_mesh' "$tmp/stdin.h"
+check "pack - -o -: symbols model_*" grep -q 'static inline silk_status model_mesh' "$tmp/stdin.h"
 "$SILK" pack - -o - --name ball <"$sphere" >"$tmp/named.h"
-check "pack --name with -o -" grep -q 'static inline void ball_mesh' "$tmp/named.h"
+check "pack --name with -o -" grep -q 'static inline silk_status ball_mesh' "$tmp/named.h"
 if ${CC:-cc} -std=c11 -Wall -Wextra -Werror -I"$here/../include" -x c -c -o "$tmp/h.o" - 2>"$err" <<EOC
 #include "$tmp/stdout.h"
 int use(void);

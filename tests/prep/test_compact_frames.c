@@ -177,7 +177,8 @@ static void check_model(const char *name, int adjacency)
             CHECKF(diff == 0, "%s%s view %zu (az %g el %g) %s%s: %zu bytes differ", name, adjacency ? "" : " (flat only)",
                    i, views[i].az, views[i].el, md == SILK_MODE_FLAT ? "flat" : "smooth", aa ? " aa" : "", diff);
             if (md == SILK_MODE_SMOOTH && adjacency)
-                CHECKF(s0.silhouette_tris > 0 || strcmp(name, "field") == 0, "%s: no silhouette", name);
+                CHECKF(s0.silhouette_tris > 0 || strcmp(name, "field") == 0 || strcmp(name, "cone-70.obj") == 0,
+                       "%s: no silhouette", name);
         }
     }
     free(f0);

@@ -62,6 +62,7 @@ typedef struct pack_args {
     double eyes[PACK_MAX_EYES][3];
     int model_format;          /* PACK_COMPACT or PACK_FULL */
     int flat;                  /* compact without the corner table: flat frames only */
+    int pos_bits, nrm_bits;    /* the compact model's widths; 0: compact_opts_default's */
 } pack_args;
 
 /* Each --eye is one camera (the scene option keeps only the last). */
@@ -97,6 +98,10 @@ static const cli_opt pack_rows[] = {
     { .name = "--flat", .kind = CLI_FLAG, CLI_FIELD(pack_args, flat),
       .help = "the compact model without its corner table, edges and feature segments: smaller, for flat "
               "frames only" },
+    { .name = "--position-bits", .kind = CLI_INT, .meta = "N", .lo = 8, .hi = 16, CLI_FIELD(pack_args, pos_bits),
+      .help = "bits of each quantized coordinate of the compact model (%R; default 12: docs/formats.md)" },
+    { .name = "--normal-bits", .kind = CLI_INT, .meta = "N", .lo = 6, .hi = 16, CLI_FIELD(pack_args, nrm_bits),
+      .help = "bits of each octahedral coordinate of a normal of the compact model (%R; default 10)" },
     { .name = NULL },
 };
 
@@ -484,8 +489,8 @@ static void compact_summary(FILE *f, const uint8_t *model, size_t len)
     fprintf(f,
             "compact model %zu, %.2f a triangle (positions %zu, normals %zu, corners %zu, selectors %zu, "
             "adjacency %zu, edges list %zu, vertex index %zu, header %zu)",
-            len, (double)len / l.ntris, b[COMPACT_POS], b[COMPACT_NRM] + b[COMPACT_EXTRA], b[COMPACT_CORNER],
-            b[COMPACT_SEL], b[COMPACT_OPP] + b[COMPACT_EPRE], b[COMPACT_LIST], b[COMPACT_VFIRST],
+            len, (double)len / l.ntris, b[COMPACT_POS], b[COMPACT_NRM] + b[COMPACT_EXTRA] + b[COMPACT_XPRE], b[COMPACT_CORNER],
+            b[COMPACT_SEL], b[COMPACT_OPP], b[COMPACT_LIST], b[COMPACT_VFIRST],
             (size_t)SILK_COMPACT_HEADER_BYTES + 4);
 }
 
@@ -497,10 +502,13 @@ static int has_suffix(const char *s, const char *suf)
 
 /* The compact bytes of s's mesh into *model, or NULL (and why) when it
  * cannot be compact. */
-static void encode_compact(const cli_scene *s, int flat, uint8_t **model, size_t *len, char *why, size_t n)
+static void encode_compact(const cli_scene *s, const pack_args *pa, uint8_t **model, size_t *len, char *why,
+                           size_t n)
 {
     compact_opts co = compact_opts_default();
-    co.adjacency = !flat;
+    co.adjacency = !pa->flat;
+    if (pa->pos_bits) co.pos_bits = pa->pos_bits;
+    if (pa->nrm_bits) co.nrm_bits = pa->nrm_bits;
     if (compact_encode(&s->mesh, &co, model, len, why, n) != 0) *model = NULL;
 }
 
@@ -587,6 +595,39 @@ int cmd_pack(int argc, char **argv)
     rc = cli_scene_load(&s, &o);
     if (!rc && s.mesh.packed.base)
         rc = cli_fail(CLI_EXIT_INPUT, "%s: already a compact model; pack the mesh it was made from", o.mesh_path);
+    if (rc) {
+        cli_scene_free(&s);
+        return rc;
+    }
+    char name[48];
+    if (name_opt) snprintf(name, sizeof name, "%s", name_opt);
+    else if (!silk_path_is_stdio(out)) name_from_path(out, name, sizeof name);
+    else if (!silk_path_is_stdio(o.mesh_path)) name_from_path(o.mesh_path, name, sizeof name);
+    else snprintf(name, sizeof name, "model");
+
+    /* compact unless told otherwise or the mesh cannot be (then full, saying why) */
+    uint8_t *model = NULL;
+    size_t model_len = 0;
+    if (!full) {
+        char why[320];
+        encode_compact(&s, &pa, &model, &model_len, why, sizeof why);
+        if (!model && raw) {
+            cli_scene_free(&s);
+            return cli_fail(CLI_EXIT_INPUT, "pack: %s: the compact model needs %s", cli_input_name(o.mesh_path), why);
+        }
+        if (!model) fprintf(stderr, "silk pack: %s: full format (compact needs %s)\n", name, why);
+    }
+    /* The cameras frame what the device draws, as `silk render` frames the
+     * compact model itself (-o .slkc): its quantized box, not the mesh's. */
+    silk_mesh loaded = s.mesh;
+    if (model) {
+        silk_error cerr;
+        if (silk_compact_mesh(model, model_len, name, &s.mesh, &cerr) != SILK_OK) {
+            free(model);
+            cli_scene_free(&s);
+            return cli_fail(CLI_EXIT_INPUT, "pack: %s", cerr.msg);
+        }
+    }
     silk_camera cams[PACK_MAX_EYES];
     int ncams = neyes ? neyes : nviews ? nviews : 1;
     if (!rc && nviews) rc = orbit_eyes(&o, &s.mesh, nviews, eyes);
@@ -600,29 +641,13 @@ int cmd_pack(int argc, char **argv)
         silk_error err;
         if (!rc && silk_view_init(&check, &cams[k], &err) != SILK_OK) rc = cli_fail(CLI_EXIT_USAGE, "%s", err.msg);
     }
+    s.mesh = loaded;
     if (rc) {
+        free(model);
         cli_scene_free(&s);
         return rc;
     }
 
-    char name[48];
-    if (name_opt) snprintf(name, sizeof name, "%s", name_opt);
-    else if (!silk_path_is_stdio(out)) name_from_path(out, name, sizeof name);
-    else if (!silk_path_is_stdio(o.mesh_path)) name_from_path(o.mesh_path, name, sizeof name);
-    else snprintf(name, sizeof name, "model");
-
-    /* compact unless told otherwise or the mesh cannot be (then full, saying why) */
-    uint8_t *model = NULL;
-    size_t model_len = 0;
-    if (!full) {
-        char why[320];
-        encode_compact(&s, pa.flat, &model, &model_len, why, sizeof why);
-        if (!model && raw) {
-            cli_scene_free(&s);
-            return cli_fail(CLI_EXIT_INPUT, "pack: %s: the compact model needs %s", cli_input_name(o.mesh_path), why);
-        }
-        if (!model) fprintf(stderr, "silk pack: %s: full format (compact needs %s)\n", name, why);
-    }
     writer w;
     memset(&w, 0, sizeof w);
     w.name = name;

@@ -17,9 +17,9 @@
  *   - normals and feature tangent directions as the octahedral code whose
  *     decoded vector (the core's own integer decode) is nearest;
  *   - with adjacency: the corner table (the triangle across every side),
- *     the edges as the sides owned by the lower of their two triangles,
- *     a running count of them every 8 triangles (EPRE), the flagged edges'
- *     records (LIST: flags and the two end tangents, straight or coded);
+ *     the edges as the sides owned by the lower of their two triangles
+ *     (numbered after them), the flagged edges' records (LIST: flags and
+ *     the two end tangents, straight or coded);
  *   - the header, the CRC and the 4 trailing zero bytes.
  * What the format cannot hold (texture coordinates, vertex colours, a
  * repeated corner, and with adjacency a non-manifold edge or vertex, a
@@ -39,7 +39,7 @@
 
 #define NONE UINT32_MAX
 #define MAX_COUNT ((1u << 24) - 1)     /* nverts, nnormals; ntris one less (compact.h) */
-#define MAX_SEL_NORMALS 8              /* sel_bits 0..3 */
+#define MAX_SEL_NORMALS 64             /* sel_bits 0..6 */
 
 compact_opts compact_opts_default(void)
 {
@@ -71,10 +71,10 @@ void compact_layout_place(compact_layout *l)
         bit_bytes(3 * nv, l->pos_bits),
         bit_bytes(2 * (uint64_t)l->nnormals, l->nrm_bits),
         bit_bytes(l->nnormals >= l->nverts ? l->nnormals - l->nverts : 0, l->vtx_bits),
+        l->nnormals > l->nverts ? bit_bytes((nv + 7) / 8, bits_for(l->nnormals - l->nverts)) : 0,
         bit_bytes(3 * nt, l->vtx_bits),
         bit_bytes(3 * nt, l->sel_bits),
         adj ? bit_bytes(3 * nt, l->tri_bits) : 0,
-        adj ? bit_bytes((nt + 7) / 8, l->edge_bits) : 0,
         adj ? bit_bytes(l->nlisted, l->list_bits) : 0,
         adj ? bit_bytes((nv + 7) / 8, l->tri_bits) : 0,
     };
@@ -517,8 +517,8 @@ static int check_fans(enc *e)
 
 /* ---- edges ------------------------------------------------------------------- */
 
-/* An edge is the side of its lower triangle (or its only one), numbered in
- * side order, so that EPRE and a few sides give any side's edge. */
+/* An edge is the side of its lower triangle (or its only one); the model
+ * numbers it after that side (3t + k), the encoder in side order (id). */
 static int number_edges(enc *e)
 {
     const silk_mesh *m = e->m;
@@ -539,7 +539,7 @@ static int number_edges(enc *e)
         uint32_t u = e->opp[h];
         e->eid[h] = e->eid[3 * u + side_of(m, u, m->tri[h], m->tri[3 * (h / 3) + next3(h % 3)])];
     }
-    unsigned eb = bits_for(ne);
+    unsigned eb = bits_for(nc - 1);   /* the model's edge index is a side's */
     if (eb > 24)
         return refuse(e, "at most %lu edges: the mesh has %lu", (unsigned long)MAX_COUNT, (unsigned long)ne);
     e->l.nedges = ne;
@@ -601,9 +601,12 @@ static void write_geometry(const enc *e, uint8_t *b)
         put_bits(b + l->off[COMPACT_NRM], (2 * (uint64_t)n + 1) * l->nrm_bits, cv, l->nrm_bits);
     }
     uint64_t x = 0;
-    for (uint32_t v = 0; v < l->nverts; v++)
+    unsigned xb = l->nnormals > l->nverts ? bits_for(l->nnormals - l->nverts) : 0;
+    for (uint32_t v = 0; v < l->nverts; v++) {
+        if (xb && v % 8 == 0) put_bits(b + l->off[COMPACT_XPRE], (uint64_t)(v / 8) * xb, x, xb);
         for (uint32_t i = e->nfirst[v] + 1; i < e->nfirst[v + 1]; i++)
             put_bits(b + l->off[COMPACT_EXTRA], x++ * l->vtx_bits, v, l->vtx_bits);
+    }
     for (uint32_t c = 0; c < 3 * l->ntris; c++) {
         put_bits(b + l->off[COMPACT_CORNER], (uint64_t)c * l->vtx_bits, e->vnew[m->tri[c]], l->vtx_bits);
         put_bits(b + l->off[COMPACT_SEL], (uint64_t)c * l->sel_bits, e->sel[c], l->sel_bits);
@@ -637,7 +640,7 @@ static void write_list(const enc *e, uint8_t *b)
         uint32_t id = e->listed[i];
         const silk_edge *ed = loaded_edge(e, id);
         uint64_t at = (uint64_t)i * l->list_bits;
-        put_bits(a, at, id, l->edge_bits);
+        put_bits(a, at, e->eside[id], l->edge_bits);   /* the model's index: the owning side */
         put_bits(a, at + l->edge_bits, list_flags(ed), 3);
         at += l->edge_bits + 3u;
         silk_feature_seg s = { { 0, 0, 0 }, { 0, 0, 0 } };
@@ -670,11 +673,6 @@ static void write_adjacency(const enc *e, uint8_t *b)
     uint32_t none = (1u << l->tri_bits) - 1, nc = 3 * l->ntris;
     for (uint32_t h = 0; h < nc; h++)
         put_bits(b + l->off[COMPACT_OPP], (uint64_t)h * l->tri_bits, e->opp[h] == NONE ? none : e->opp[h], l->tri_bits);
-    uint32_t owned = 0;
-    for (uint32_t t = 0; t < l->ntris; t++) {
-        if (t % 8 == 0) put_bits(b + l->off[COMPACT_EPRE], (uint64_t)(t / 8) * l->edge_bits, owned, l->edge_bits);
-        for (uint32_t k = 0; k < 3; k++) owned += e->opp[3 * t + k] == NONE || e->opp[3 * t + k] > t;
-    }
     write_list(e, b);
     for (uint32_t v = 0; v < l->nverts; v += 8)
         put_bits(b + l->off[COMPACT_VFIRST], (uint64_t)(v / 8) * l->tri_bits, e->vtri[v], l->tri_bits);

@@ -25,8 +25,8 @@ compact_opts compact_opts_default(void);
 
 /* The arrays of a compact model, in file order (compact.h's layout). */
 enum compact_array {
-    COMPACT_POS, COMPACT_NRM, COMPACT_EXTRA, COMPACT_CORNER, COMPACT_SEL,
-    COMPACT_OPP, COMPACT_EPRE, COMPACT_LIST, COMPACT_VFIRST, COMPACT_NARRAYS
+    COMPACT_POS, COMPACT_NRM, COMPACT_EXTRA, COMPACT_XPRE, COMPACT_CORNER, COMPACT_SEL,
+    COMPACT_OPP, COMPACT_LIST, COMPACT_VFIRST, COMPACT_NARRAYS
 };
 
 /* A compact model's header and where its arrays are. */

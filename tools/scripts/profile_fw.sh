@@ -126,7 +126,7 @@ function account(out_sec, in_sec, size, file,    kind, p, m) {
 }
 BEGIN {
     # packed array (fwmodel_X) -> kind, as `silk pack` names them; kinds in print order
-    split("pos positions|normal normals|normal_vertex normals|tri_normal normals|uv uvs|tri_uv uvs|color colours|" \
+    split("model compact|pos positions|normal normals|normal_vertex normals|tri_normal normals|uv uvs|tri_uv uvs|color colours|" \
           "tri triangles|tri_edge edges|edge edges|vert_edge_start vertex_edges|vert_edge vertex_edges|" \
           "edge_feature features|feature features|vis_node visibility|vis visibility|texels texture|texture texture|" \
           "cameras cameras", pairs, "|")
