@@ -218,13 +218,15 @@ test-fast: check-nofloat tests
 # (CALLGRIND=1 adds instruction counts).  Then the render modes side by side
 # (bench/modes.sh, docs/measurements.md): out/bench.md, bench.csv, bench.png.
 # Then error against bytes per representation (bench/bytes.sh):
-# out/bytes-MODEL.png, out/bench-bytes.md.  Then the robustness grid of
-# smooth outlines over every shared mesh and prepared model (bench/grid.sh):
-# out/grid.md, grid.csv.
+# out/bytes-MODEL.png, out/bench-bytes.md.  Then what the compact packed
+# model costs and changes (bench/compact.sh): out/compact.md, compact.csv.
+# Then the robustness grid of smooth outlines over every shared mesh and
+# prepared model (bench/grid.sh): out/grid.md, grid.csv.
 bench: $(BUILD)/silk
 	sh bench/visibility.sh $(BUILD)/silk out
 	sh bench/modes.sh $(BUILD)/silk out
 	sh bench/bytes.sh $(BUILD)/silk out
+	sh bench/compact.sh $(BUILD)/silk out
 	sh bench/grid.sh $(BUILD)/silk out
 	if [ -d ../shared/peers ]; then $(MAKE) bench-peers; fi
 

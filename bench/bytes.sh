@@ -2,7 +2,7 @@
 # bench/bytes.sh SILK OUTDIR - which representation is truest per byte.
 # For each shared detailed model (../shared/meshes or $SILK_MESHES; skipped
 # when absent), `silk prepare` makes coarse meshes at several triangle
-# counts (drawn flat and smooth), outer hulls with silhouette maps of
+# counts (250 to 16 000, drawn flat and smooth), outer hulls with silhouette maps of
 # several view counts (clip) and, where the tool has them, silhouette
 # textures of several atlas sizes (siltex); `silk bench` measures each
 # against the detailed model from the same cameras and plots the mean
@@ -38,7 +38,7 @@ for m in bunny armadillo spot; do
   f=$meshes/$m-fine.obj
   if [ ! -f "$f" ]; then echo "bench/bytes.sh: skipping $m (no $f)"; continue; fi
   pairs=""
-  for t in 250 500 1000 2000; do
+  for t in 250 500 1000 2000 4000 8000 16000; do
     "$silk" prepare "$f" -o "$work/$m-$t.silk" --triangles "$t" --no-clip >/dev/null
     pairs="$pairs --pair $work/$m-$t.silk:$f=flat,smooth"
   done

@@ -18,7 +18,9 @@ BOARD_STACK_BYTES := 6656
 BOARD_ARENA_BYTES := 58624
 # The core's options are in boards/mps2-an385-full/config.h: those of
 # boards/mps2-an385 with anti-aliased outlines (not creases: they do not fit
-# the code budget) and textures.
-BOARD_CODE_BYTES := 49152
+# the code budget) and textures.  The core's code budget: 56 KiB
+# (the reader of the compact model, about 6.5 KB, is in it: it takes bunny-500 from
+# 44 260 bytes of arrays to 6 142, so flash as a whole holds far more)
+BOARD_CODE_BYTES := 57344
 BUILD := build-mps2-an385-full
 BOARD_MESHES := $(MESHES_DIR)/bunny-500.obj $(BUILD)/models/globe.obj

@@ -38,8 +38,10 @@ BOARD_ARCH  := -mcpu=cortex-m3 -mthumb
 # smooth frames only: no PN or blend, lines, --wire, clip or siltex mode,
 # anti-aliased outlines or textures, and none of the host's shortcuts).
 BOARD_OPT   := -Os
-# The core's code budget (`make profile` checks it)
-BOARD_CODE_BYTES := 40960
+# The core's code budget (`make profile` checks it): 48 KiB
+# (the reader of the compact model, about 6.5 KB, is in it: it takes bunny-500 from
+# 44 260 bytes of arrays to 6 142, so flash as a whole holds far more)
+BOARD_CODE_BYTES := 49152
 # -icount shift=0: virtual time advances exactly 1 ns per instruction, so
 # the firmware's timer (25 MHz, 40 ns a tick) counts instructions.
 BOARD_RUN   := qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none \

@@ -635,7 +635,7 @@ TEST(uvs_interpolate_linearly_across_seams)
                 if (m.tri_edge[cn] != e->edge) continue;
                 uint32_t t = cn / 3, r = tf_side_rec(&f, &g, t, cn % 3);
                 silk_sil_side sd;
-                silk_sil_side_attrs(&m, t, cn % 3, &m.edge[e->edge], &sd);
+                silk_sil_side_attrs(&m, t, cn % 3, m.edge[e->edge].v[0], &sd);
                 const silk_curve *c = &g.curve[g.vrec[r].a];
                 silk_vec2 u0 = m.uv[sd.uv0], u1 = m.uv[sd.uv1];
                 if (c->uv0.x != u0.x || c->uv0.y != u0.y || c->uv1.x != u1.x || c->uv1.y != u1.y) bad_side++;
@@ -658,7 +658,7 @@ TEST(uvs_interpolate_linearly_across_seams)
                 uint32_t k = end == 0 ? lone : (lone + 2) % 3;
                 const silk_sil_edge *e = &f.edges[silk_sil_slot(&f, m.tri_edge[3 * t + k])];
                 silk_sil_side sdv, *sd = &sdv;
-                silk_sil_side_attrs(&m, t, k, &m.edge[e->edge], sd);
+                silk_sil_side_attrs(&m, t, k, m.edge[e->edge].v[0], sd);
                 const silk_sil_pair *p = NULL;
                 for (uint32_t j = 0; j < e->npairs; j++)
                     if (f.pairs[e->pair0 + j].n0 == sd->n0 && f.pairs[e->pair0 + j].n1 == sd->n1) p = &f.pairs[e->pair0 + j];

@@ -21,6 +21,7 @@
 #include <time.h>
 
 #include "cli.h"
+#include "prep/compact_enc.h"
 #include "commands.h"
 #include "image/mask.h"
 #include "image/plot.h"
@@ -441,20 +442,30 @@ static void add_error(acc *a, const mask_stats *ms)
 }
 
 /* What a device keeps in flash to draw the model in a mode: the mesh the
- * mode draws, its arrays as `silk pack` writes them (without tri_edge and
- * edge_feature, which the renderer derives; indices as wide as this build's
- * silk_index; the optional visibility hierarchy left out) and the prepared
- * file's silhouette data: the map (SMAP) for clip mode, the texture (STEX)
- * for siltex mode.
+ * mode draws as `silk pack` writes it - the compact model (--flat for flat
+ * frames, with its corner table for the others), or where the mesh cannot
+ * be compact its arrays (without tri_edge and edge_feature, which the
+ * renderer derives; the optional visibility hierarchy left out) - and the
+ * prepared file's silhouette data: the map (SMAP) for clip mode, the
+ * texture (STEX) for siltex mode.
  * docs/measurements.md, "bytes". */
 static size_t model_bytes(const loaded *l, silk_mode mode)
 {
-    silk_mesh packed = l->mesh;
-    packed.tri_edge = NULL;
-    packed.edge_feature = NULL;
-    silk_mesh_bytes mb;
-    silk_mesh_bytes_used(&packed, &mb);
-    size_t n = mb.total;
+    size_t n;
+    compact_opts co = compact_opts_default();
+    co.adjacency = mode != SILK_MODE_FLAT;
+    uint8_t *cm = NULL;
+    char why[200];
+    if (!l->mesh.packed.base && compact_encode(&l->mesh, &co, &cm, &n, why, sizeof why) == 0) {
+        free(cm);
+    } else {
+        silk_mesh packed = l->mesh;
+        packed.tri_edge = NULL;
+        packed.edge_feature = NULL;
+        silk_mesh_bytes mb;
+        silk_mesh_bytes_used(&packed, &mb);
+        n = l->mesh.packed.base ? l->file_len : mb.total;
+    }
     silk_model m;
     silk_model_section sec;
     silk_error err;
