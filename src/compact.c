@@ -107,13 +107,6 @@ static uint32_t extra_below(const silk_mesh *m, silk_index v)
     return i;
 }
 
-/* The index of vertex v's first normal: its own index plus the extra
- * normals of the vertices before it. */
-static silk_index first_normal(const silk_mesh *m, silk_index v)
-{
-    return PK(m)->nextra ? v + extra_below(m, v) : v;
-}
-
 silk_index silk_packed_corner(const silk_mesh *m, uint32_t c)
 {
     return field(ARR(m, corner), c, PK(m)->vtx_bits);
@@ -123,8 +116,9 @@ silk_index silk_packed_corner_normal(const silk_mesh *m, uint32_t c)
 {
     const silk_mesh_packed *p = PK(m);
     silk_index v = field(ARR(m, corner), c, p->vtx_bits);
-    if (!p->nextra) return v;
-    return first_normal(m, v) + field(ARR(m, sel), c, p->sel_bits);
+    uint32_t s = p->nextra ? field(ARR(m, sel), c, p->sel_bits) : 0;
+    /* a vertex's first normal has its index; the others follow them all */
+    return s ? m->nverts + extra_below(m, v) + s - 1 : v;
 }
 
 uint32_t silk_packed_vertex_normals(const silk_mesh *m, silk_index v)
@@ -134,14 +128,7 @@ uint32_t silk_packed_vertex_normals(const silk_mesh *m, silk_index v)
 
 silk_index silk_packed_normal_vertex(const silk_mesh *m, silk_index n)
 {
-    /* the last vertex whose first normal is at or before n */
-    uint32_t lo = 0, hi = m->nverts - 1;
-    while (lo < hi) {
-        uint32_t mid = (lo + hi + 1) >> 1;
-        if (first_normal(m, mid) <= n) lo = mid;
-        else hi = mid - 1;
-    }
-    return lo;
+    return n < m->nverts ? n : field(ARR(m, extra), n - m->nverts, PK(m)->vtx_bits);
 }
 
 /* ---- the corner table ----------------------------------------------------------- */

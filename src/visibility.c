@@ -34,13 +34,11 @@ void silk_visibility_brute(const silk_mesh *m, const silk_view *v, uint8_t *visi
 {
     uint32_t n = m->nnormals;
     if (m->packed.base) {
-        /* a compact model keeps each vertex's normals together: vertex by vertex */
-        for (silk_index x = 0, i = 0; x < m->nverts; x++) {
-            silk_vec3 p = silk_mesh_pos(m, x);
-            for (uint32_t end = i + silk_packed_vertex_normals(m, x); i < end; i++) {
-                silk_vec3 nv = silk_mesh_normal(m, i);
-                visible[i] = (uint8_t)(v->cam.ortho ? silk_v3_dot64(nv, v->forward) <= 0 : persp_dot64(nv, p, v->cam.eye) >= 0);
-            }
+        /* a compact model decodes each normal and its vertex's position */
+        for (uint32_t i = 0; i < n; i++) {
+            silk_vec3 nv = silk_mesh_normal(m, i);
+            visible[i] = (uint8_t)(v->cam.ortho ? silk_v3_dot64(nv, v->forward) <= 0
+                                                : persp_dot64(nv, silk_mesh_pos(m, silk_mesh_normal_vertex(m, i)), v->cam.eye) >= 0);
         }
         return;
     }

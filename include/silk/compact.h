@@ -39,13 +39,15 @@
  *   52  4  CRC-32 of bytes 56 .. size-1
  *   56     the arrays, each starting at a byte, in this order:
  *     POS    3 nverts x pos_bits      x, y, z of each vertex
- *     NRM    2 nnormals x nrm_bits    octahedral u, v of each shading normal
- *     EXTRA  (nnormals-nverts) x vtx_bits, non-decreasing: vertex v has
- *            1 + (times v appears) normals, from index v + (entries < v)
+ *     NRM    2 nnormals x nrm_bits    octahedral u, v of each shading normal:
+ *            normal v is vertex v's first, then come the others (EXTRA's)
+ *     EXTRA  (nnormals-nverts) x vtx_bits, non-decreasing: the vertex of
+ *            each normal after the first nverts; vertex v's second is
+ *            nverts + (entries < v), its third the next
  *     XPRE   ceil(nverts/8) x xpre_bits (none without EXTRA; xpre_bits
  *            the bits of nnormals - nverts): the EXTRA entries below vertex 8i
  *     CORNER 3 ntris x vtx_bits       the vertices of each triangle
- *     SEL    3 ntris x sel_bits       each corner's normal: its vertex's first + SEL
+ *     SEL    3 ntris x sel_bits       each corner's normal: 0 its vertex's first, s the s+1-th
  *   with SILK_COMPACT_ADJACENCY:
  *     OPP    3 ntris x tri_bits       the triangle across side k of each (corners k, k+1), or none
  *     LIST   nlisted records, by edge: edge (edge_bits), flags (3 bits:

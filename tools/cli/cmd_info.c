@@ -166,6 +166,14 @@ static void print_memory(const cli_scene *s, const cli_scene_opts *o, const silk
     const silk_mesh *m = cli_scene_mesh(s, o->render.mode);
     silk_mesh_bytes_used(m, &b);
     printf("\nmesh memory (bytes)\n");
+    if (m->packed.base) {
+        /* read in place: nothing of the mesh is in the arena */
+        const uint8_t *h = m->packed.base;
+        unsigned long n = (unsigned long)h[48] | (unsigned long)h[49] << 8 | (unsigned long)h[50] << 16 |
+                          (unsigned long)h[51] << 24;
+        line("  compact model", "%lu (%.2f a triangle), read in place", n, (double)n / m->ntris);
+        line("  in the arena", "%d", 0);
+    } else {
     line("  positions", "%zu", b.positions);
     line("  normals", "%zu", b.normals);
     line("  uvs", "%zu", b.uvs);
@@ -175,6 +183,7 @@ static void print_memory(const cli_scene *s, const cli_scene_opts *o, const silk
     line("  features", "%zu", b.features);
     line("  mesh total", "%zu", b.total);
     line("  visibility hierarchy", "%zu", silk_vis_bytes(m->vis));
+    }
 
     const silk_arena *a = &s->arena;
     printf("\narena (bytes)\n");

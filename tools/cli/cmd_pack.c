@@ -115,7 +115,7 @@ const cli_command cmd_pack_spec = {
         "fills a silk_mesh reading it in place and returns SILK_OK (or an error for\n"
         "damaged data).  By default the header holds the compact model (silk/compact.h):\n"
         "one const byte array NAME_model of quantized positions (12 bits a coordinate),\n"
-        "octahedral normals, corners and a corner table, about a fifth of the full\n"
+        "octahedral normals, corners and a corner table, about a seventh of the full\n"
         "arrays; --flat leaves out the corner table and edges (flat frames only).\n"
         "A mesh the compact model cannot hold (texture coordinates, vertex colours,\n"
         "non-manifold edges or vertices, a repeated corner) is written in the full\n"

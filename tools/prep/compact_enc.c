@@ -280,8 +280,8 @@ static int renumber_vertices(enc *e)
 }
 
 /* Each vertex's normals in the order its corners first use them, so that
- * a corner's selector is small where it can be; normals no corner uses
- * are dropped. */
+ * a corner's selector is small where it can be (and most are 0, which the
+ * reader takes without a look-up); normals no corner uses are dropped. */
 static int order_normals(enc *e)
 {
     const silk_mesh *m = e->m;
@@ -324,9 +324,11 @@ static int order_normals(enc *e)
         e->nold = malloc((size_t)nn * sizeof *e->nold);
         if (!e->nold) rc = nomem(e);
     }
+    /* the model's numbering: normal v is vertex v's first, the others
+     * follow all of those in vertex order (EXTRA's order) */
     for (uint32_t c = 0; !rc && c < nc; c++) {
         uint32_t v = e->vnew[m->tri[c]];
-        e->nold[e->nfirst[v] + e->sel[c]] = m->tri_normal[c];
+        e->nold[e->sel[c] ? nv + (e->nfirst[v] - v) + e->sel[c] - 1 : v] = m->tri_normal[c];
     }
     free(local);
     free(count);
