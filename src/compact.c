@@ -19,6 +19,7 @@
 #include <string.h>
 #include "silk/compact.h"
 #include "silk/model.h"
+#include "compiler.h"
 #include "curve.h"
 #include "mesh_build.h"
 
@@ -28,7 +29,7 @@
 
 /* ---- bit fields ----------------------------------------------------------------- */
 
-static uint32_t rd32(const uint8_t *p)
+SILK_ALWAYS_INLINE static inline uint32_t rd32(const uint8_t *p)
 {
     return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
 }
@@ -36,14 +37,14 @@ static uint32_t rd32(const uint8_t *p)
 /* Value i of width w (0..24) of the bit array at a.  Reads four bytes: the
  * model ends with four zero bytes, so the last field of the last array is
  * read inside it too. */
-static uint32_t field(const uint8_t *a, uint32_t i, unsigned w)
+SILK_ALWAYS_INLINE static inline uint32_t field(const uint8_t *a, uint32_t i, unsigned w)
 {
     uint32_t b = i * w;
     return (rd32(a + (b >> 3)) >> (b & 7)) & ((1u << w) - 1u);
 }
 
 /* A record field: w bits (0..24) from bit b of the array at a. */
-static uint32_t bits_from(const uint8_t *a, uint32_t b, unsigned w)
+SILK_ALWAYS_INLINE static inline uint32_t bits_from(const uint8_t *a, uint32_t b, unsigned w)
 {
     return (rd32(a + (b >> 3)) >> (b & 7)) & ((1u << w) - 1u);
 }
@@ -85,6 +86,50 @@ silk_vec3 silk_packed_normal(const silk_mesh *m, silk_index n)
     unsigned w = PK(m)->nrm_bits;
     return silk_compact_octa(field(a, 2 * n, w), field(a, 2 * n + 1, w), w);
 }
+
+#if !SILK_INLINE_ACCESS
+/* silk/mesh.h's accessors as calls (SILK_INLINE_ACCESS 0). */
+silk_vec3 silk_mesh_pos(const silk_mesh *m, silk_index v) { return m->packed.base ? silk_packed_pos(m, v) : m->pos[v]; }
+silk_vec3 silk_mesh_normal(const silk_mesh *m, silk_index n)
+{
+    return m->packed.base ? silk_packed_normal(m, n) : m->normal[n];
+}
+silk_index silk_mesh_corner(const silk_mesh *m, uint32_t c)
+{
+    return m->packed.base ? silk_packed_corner(m, c) : m->tri[c];
+}
+silk_index silk_mesh_corner_normal(const silk_mesh *m, uint32_t c)
+{
+    return m->packed.base ? silk_packed_corner_normal(m, c) : m->tri_normal[c];
+}
+silk_index silk_mesh_normal_vertex(const silk_mesh *m, silk_index n)
+{
+    return m->packed.base ? silk_packed_normal_vertex(m, n) : m->normal_vertex[n];
+}
+silk_edge silk_mesh_edge(const silk_mesh *m, silk_index e) { return m->packed.base ? silk_packed_edge(m, e) : m->edge[e]; }
+void silk_mesh_edge_ends(const silk_mesh *m, silk_index e, silk_index v[2])
+{
+    if (m->packed.base) {
+        silk_packed_edge_ends(m, e, v);
+    } else {
+        v[0] = m->edge[e].v[0];
+        v[1] = m->edge[e].v[1];
+    }
+}
+void silk_mesh_edge_tris(const silk_mesh *m, silk_index e, silk_index t[2])
+{
+    if (m->packed.base) {
+        silk_packed_edge_tris(m, e, t);
+    } else {
+        t[0] = m->edge[e].t[0];
+        t[1] = m->edge[e].t[1];
+    }
+}
+uint8_t silk_mesh_edge_flags(const silk_mesh *m, silk_index e)
+{
+    return m->packed.base ? silk_packed_edge_flags(m, e) : m->edge[e].flags;
+}
+#endif
 
 /* ---- vertices and their normals ------------------------------------------------- */
 
@@ -224,28 +269,34 @@ uint8_t silk_packed_edge_flags(const silk_mesh *m, silk_index e)
     return PK(m)->nlisted && listed(m, e) != UINT32_MAX ? silk_packed_edge(m, e).flags : 0;
 }
 
+/* The tangent at one end of a LIST record, its straight bit at bit b: the
+ * chord, or eq. 4's tangent along the decoded direction.  Apart from its
+ * caller, whose frame then stays small: it runs under the curve stages'
+ * deepest calls. */
+SILK_NOINLINE static silk_vec3 list_end(const silk_mesh *m, uint32_t b, silk_vec3 chord)
+{
+    const uint8_t *a = ARR(m, list);
+    unsigned w = PK(m)->dir_bits;
+    if (bits_from(a, b, 1)) return chord;
+    return silk_feature_tangent(silk_compact_octa(bits_from(a, b + 1, w), bits_from(a, b + 1 + w, w), w), chord);
+}
+
 int silk_compact_feature_seg(const silk_mesh *m, silk_index e, silk_feature_seg *out)
 {
     const silk_mesh_packed *p = PK(m);
     uint32_t r = p->nlisted ? listed(m, e) : UINT32_MAX;
     if (r == UINT32_MAX) return 0;
-    silk_edge ed = silk_packed_edge(m, e);
-    if (!silk_edge_has_feature(&ed)) return 0;
-    silk_vec3 chord = silk_v3_sub(silk_packed_pos(m, ed.v[1]), silk_packed_pos(m, ed.v[0]));
-    const uint8_t *a = ARR(m, list);
+    /* silk_edge_has_feature: a feature flag (a listed boundary edge has one) and a length */
+    uint32_t t = e / 3, k = e - 3 * t;
+    uint8_t fl = list_flags(bits_from(ARR(m, list), r + p->edge_bits, 3));
+    if (opp(m, t, k) == none_tri(p)) fl |= SILK_EDGE_BOUNDARY;
+    silk_index v[2];
+    silk_packed_edge_ends(m, e, v);
+    if (!(fl & SILK_EDGE_FEATURE) || v[0] == v[1]) return 0;
+    silk_vec3 chord = silk_v3_sub(silk_packed_pos(m, v[1]), silk_packed_pos(m, v[0]));
     uint32_t b = r + p->edge_bits + 3;
-    silk_vec3 t[2];
-    for (int j = 0; j < 2; j++, b += 1 + 2u * p->dir_bits) {
-        if (bits_from(a, b, 1)) {
-            t[j] = chord;
-            continue;
-        }
-        silk_vec3 d = silk_compact_octa(bits_from(a, b + 1, p->dir_bits), bits_from(a, b + 1 + p->dir_bits, p->dir_bits),
-                                        p->dir_bits);
-        t[j] = silk_feature_tangent(d, chord);
-    }
-    out->t0 = t[0];
-    out->t1 = t[1];
+    out->t0 = list_end(m, b, chord);
+    out->t1 = list_end(m, b + 1 + 2u * p->dir_bits, chord);
     return 1;
 }
 

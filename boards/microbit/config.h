@@ -12,5 +12,6 @@
 #define SILK_AA 0
 #define SILK_TEXTURES 0
 #define SILK_PLAN_INDEX16 1
+#define SILK_INLINE_ACCESS 0     /* the accessors as calls: less code and shallower frames (the model is a compact one) */
 #define SILK_SHORTCUTS 0
 #define SILK_CPU32 1

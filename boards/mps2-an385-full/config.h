@@ -11,6 +11,7 @@
 #define SILK_SILTEX_MODE 0
 #define SILK_AA_CREASES 0        /* anti-aliased creases (about 1 KiB) do not fit the code budget: outlines only */
 #define SILK_PLAN_INDEX16 1
+#define SILK_INLINE_ACCESS 0     /* the accessors as calls: less code and shallower frames (the model is a compact one) */
 #define SILK_SHORTCUTS 0
 #define SILK_CPU32 1
 #ifndef SILK_SCENES             /* the scene firmware (cli_scene_fw.sh) builds its core with -DSILK_SCENES=1 */

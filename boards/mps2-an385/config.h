@@ -13,6 +13,7 @@
 #define SILK_AA 0                /* 3 KiB of code and about 12 KiB of scratch a band: boards/mps2-an385-full has it */
 #define SILK_TEXTURES 0          /* boards/mps2-an385-full has them */
 #define SILK_PLAN_INDEX16 1      /* the plan in half the RAM: a frame of a model this part holds fits */
+#define SILK_INLINE_ACCESS 0     /* the accessors as calls: less code and shallower frames (the model is a compact one) */
 #define SILK_SHORTCUTS 0         /* the code budget; the firmware gives the arena-taking ones no room anyway */
 #define SILK_CPU32 1             /* a 32-bit part: its unit tests on the host take its routes */
 #ifndef SILK_SCENES             /* the scene firmware (cli_scene_fw.sh) builds its core with -DSILK_SCENES=1 */

@@ -12,4 +12,5 @@
 #define SILK_SILTEX_MODE 0
 #define SILK_AA_CREASES 0
 #define SILK_PLAN_INDEX16 1
+#define SILK_INLINE_ACCESS 0     /* the accessors as calls: less code and shallower frames (the model is a compact one) */
 #define SILK_CPU32 1

@@ -88,6 +88,14 @@
 #define SILK_PLAN_INDEX16 0
 #endif
 
+/* The mesh accessors of silk/mesh.h written out where they are used (a
+ * test of the mesh's kind and an array read, inline); 0: one call each,
+ * which keeps a small part's code and its deepest stack frames smaller
+ * (its model is a compact one, read by a call anyway) */
+#ifndef SILK_INLINE_ACCESS
+#define SILK_INLINE_ACCESS 1
+#endif
+
 /* ---- shortcuts: code bytes or spare arena for instructions, the same bits ---- */
 
 /* Every shortcut below (a host's choice); 0: none, a small part's, whose code budget is tight (each may still be set alone) */

@@ -203,6 +203,13 @@ uint32_t   silk_packed_vertex_normals(const silk_mesh *m, silk_index v);   /* ho
 silk_index silk_packed_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k);
 void       silk_packed_tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3]);   /* all three at once */
 
+/* Whether the corners have shading normals (a loaded mesh always has). */
+static inline int silk_mesh_has_corner_normals(const silk_mesh *m)
+{
+    return m->packed.base || m->tri_normal;
+}
+
+#if SILK_INLINE_ACCESS
 /* Position of vertex v, model units. */
 static inline silk_vec3 silk_mesh_pos(const silk_mesh *m, silk_index v)
 {
@@ -222,11 +229,6 @@ static inline silk_index silk_mesh_corner(const silk_mesh *m, uint32_t c)
 static inline silk_index silk_mesh_corner_normal(const silk_mesh *m, uint32_t c)
 {
     return m->packed.base ? silk_packed_corner_normal(m, c) : m->tri_normal[c];
-}
-/* Whether the corners have shading normals (a loaded mesh always has). */
-static inline int silk_mesh_has_corner_normals(const silk_mesh *m)
-{
-    return m->packed.base || m->tri_normal;
 }
 /* The vertex shading normal n belongs to. */
 static inline silk_index silk_mesh_normal_vertex(const silk_mesh *m, silk_index n)
@@ -259,18 +261,32 @@ static inline void silk_mesh_edge_tris(const silk_mesh *m, silk_index e, silk_in
         t[1] = m->edge[e].t[1];
     }
 }
-/* The lower vertex of edge e. */
-static inline silk_index silk_mesh_edge_v0(const silk_mesh *m, silk_index e)
-{
-    silk_index v[2];
-    silk_mesh_edge_ends(m, e, v);
-    return v[0];
-}
 /* Flags of edge e (enum silk_edge_flag). */
 static inline uint8_t silk_mesh_edge_flags(const silk_mesh *m, silk_index e)
 {
     return m->packed.base ? silk_packed_edge_flags(m, e) : m->edge[e].flags;
 }
+
+#else
+/* Position of vertex v, model units. */
+silk_vec3 silk_mesh_pos(const silk_mesh *m, silk_index v);
+/* Unit shading normal n. */
+silk_vec3 silk_mesh_normal(const silk_mesh *m, silk_index n);
+/* The vertex of corner c (corner k of triangle t is c = 3t + k). */
+silk_index silk_mesh_corner(const silk_mesh *m, uint32_t c);
+/* The shading normal of corner c. */
+silk_index silk_mesh_corner_normal(const silk_mesh *m, uint32_t c);
+/* The vertex shading normal n belongs to. */
+silk_index silk_mesh_normal_vertex(const silk_mesh *m, silk_index n);
+/* Edge e. */
+silk_edge silk_mesh_edge(const silk_mesh *m, silk_index e);
+/* The vertices of edge e, v[0] < v[1]. */
+void silk_mesh_edge_ends(const silk_mesh *m, silk_index e, silk_index v[2]);
+/* The triangles of edge e (edge.t). */
+void silk_mesh_edge_tris(const silk_mesh *m, silk_index e, silk_index t[2]);
+/* Flags of edge e (enum silk_edge_flag). */
+uint8_t silk_mesh_edge_flags(const silk_mesh *m, silk_index e);
+#endif
 
 /* Every edge index is below this: nedges for a mesh in arrays; 3 ntris for
  * a compact model, whose edge indices are the sides that own them (with
@@ -278,6 +294,14 @@ static inline uint8_t silk_mesh_edge_flags(const silk_mesh *m, silk_index e)
 static inline uint32_t silk_mesh_edge_bound(const silk_mesh *m)
 {
     return m->packed.base && m->nedges ? 3 * m->ntris : m->nedges;
+}
+
+/* The lower vertex of edge e. */
+static inline silk_index silk_mesh_edge_v0(const silk_mesh *m, silk_index e)
+{
+    silk_index v[2];
+    silk_mesh_edge_ends(m, e, v);
+    return v[0];
 }
 
 /* The edge joining vertices a and b (SILK_NO_INDEX when there is none),
