@@ -168,4 +168,15 @@ static inline void fuzz_model_fix(uint8_t *b, size_t size)
     }
 }
 
+/* Points cam at the centre of m's box; returns a distance from which the
+ * whole box is in view (three times its largest side, at least 1). */
+static inline silk_fx fuzz_aim(const silk_mesh *m, silk_camera *cam)
+{
+    silk_vec3 lo = m->bbox_min, hi = m->bbox_max;
+    cam->target = silk_v3((silk_fx)(((int64_t)lo.x + hi.x) / 2), (silk_fx)(((int64_t)lo.y + hi.y) / 2),
+                          (silk_fx)(((int64_t)lo.z + hi.z) / 2));
+    silk_fx d = silk_fx_max(silk_fx_max(silk_fx_sub(hi.x, lo.x), silk_fx_sub(hi.y, lo.y)), silk_fx_sub(hi.z, lo.z));
+    return silk_fx_max(silk_fx_mul(d, 3 * SILK_FX_ONE), SILK_FX_ONE);
+}
+
 #endif

@@ -83,11 +83,7 @@ static void fc_draw(const silk_mesh *m, uint32_t mode)
 {
     silk_camera cam;
     memset(&cam, 0, sizeof cam);
-    silk_vec3 lo = m->bbox_min, hi = m->bbox_max;
-    cam.target = silk_v3((silk_fx)(((int64_t)lo.x + hi.x) / 2), (silk_fx)(((int64_t)lo.y + hi.y) / 2),
-                         (silk_fx)(((int64_t)lo.z + hi.z) / 2));
-    silk_fx d = silk_fx_max(silk_fx_max(silk_fx_sub(hi.x, lo.x), silk_fx_sub(hi.y, lo.y)), silk_fx_sub(hi.z, lo.z));
-    d = silk_fx_max(silk_fx_mul(d, 3 * SILK_FX_ONE), SILK_FX_ONE);
+    silk_fx d = fuzz_aim(m, &cam);
     cam.eye = silk_v3(silk_fx_add(cam.target.x, d / 2), silk_fx_add(cam.target.y, d / 3), silk_fx_add(cam.target.z, d));
     cam.up = silk_v3(0, SILK_FX_ONE, 0);
     cam.fov_deg = SILK_FX_C(40, 1);

@@ -112,11 +112,7 @@ static void draw(const silk_mesh *m, uint32_t view_bits)
 {
     silk_camera cam;
     memset(&cam, 0, sizeof cam);
-    silk_vec3 lo = m->bbox_min, hi = m->bbox_max;
-    cam.target = silk_v3((silk_fx)(((int64_t)lo.x + hi.x) / 2), (silk_fx)(((int64_t)lo.y + hi.y) / 2),
-                         (silk_fx)(((int64_t)lo.z + hi.z) / 2));
-    silk_fx d = silk_fx_max(silk_fx_max(silk_fx_sub(hi.x, lo.x), silk_fx_sub(hi.y, lo.y)), silk_fx_sub(hi.z, lo.z));
-    d = silk_fx_max(silk_fx_mul(d, 3 * SILK_FX_ONE), SILK_FX_ONE);
+    silk_fx d = fuzz_aim(m, &cam);
     int oct = (int)(view_bits >> 3) & 7;
     cam.eye = silk_v3(silk_fx_add(cam.target.x, (oct & 1) ? d : -d / 2),
                       silk_fx_add(cam.target.y, (oct & 2) ? d / 3 : -d / 3),

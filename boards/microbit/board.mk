@@ -14,13 +14,14 @@
 BOARD_WIDTH  := 160
 BOARD_HEIGHT := 128
 BOARD_FORMAT := SILK_PIX_RGB565
-# A band costs 160 * rows * (2 + 4) bytes.  3 rows (2 880 bytes) are the
-# most that fit beside a smooth frame's scratch (7 712 bytes for bunny-500,
-# 7 440 for the torus) and the stack; every band sets up again the
-# triangles that reach into it, so taller bands are faster: a smooth frame
-# in bands of 3 rows takes about 1.6 times the instructions of one in
-# bands of 7 (docs/small-devices.md).
-BOARD_BAND_ROWS := 3
+# A band costs 160 * rows * (2 + 4) bytes.  Every band sets up again the
+# triangles that reach into it, so taller bands are faster, but 2 rows
+# (1 920 bytes) leave a smooth frame room to keep its edge tangents: in
+# bands of 3 (2 880 bytes) bunny-500's frame from the second packed view
+# has none and takes 681 M instructions instead of 133 M (the others are
+# 109 and 135 M in bands of 3, 124 and 156 M in bands of 2;
+# docs/small-devices.md).
+BOARD_BAND_ROWS := 2
 BOARD_SINK   := semihosting
 
 # The part.  The arena takes what the stack, libc's few hundred bytes and

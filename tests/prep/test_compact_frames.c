@@ -67,27 +67,12 @@ static char *mesh_text(const char *name, size_t *len)
     return tm_read_file(path, len);
 }
 
-static silk_fx d2fx(double v) { return (silk_fx)llround(v * 65536.0); }
-
+/* The box's centre seen from azimuth/elevation (degrees), 3 radii away. */
 static int make_view(const silk_mesh *m, double az, double el, int ortho, silk_view *v)
 {
     const double deg = 3.14159265358979323846 / 180;
-    double c[3], r = tf_bounds(m, c);
     double d[3] = { cos(el * deg) * sin(az * deg), sin(el * deg), cos(el * deg) * cos(az * deg) };
-    silk_camera cam;
-    memset(&cam, 0, sizeof cam);
-    cam.eye = silk_v3(d2fx(c[0] + 3 * r * d[0]), d2fx(c[1] + 3 * r * d[1]), d2fx(c[2] + 3 * r * d[2]));
-    cam.target = silk_v3(d2fx(c[0]), d2fx(c[1]), d2fx(c[2]));
-    cam.up = silk_v3(0, SILK_FX_ONE, 0);
-    cam.ortho = ortho;
-    cam.fov_deg = SILK_FX_C(40, 1);
-    cam.ortho_half_height = d2fx(r * 1.1);
-    cam.znear = d2fx(r * 0.5);
-    cam.zfar = d2fx(r * 5);
-    cam.width = W;
-    cam.height = H;
-    silk_error err;
-    return silk_view_init(v, &cam, &err) == SILK_OK;
+    return tf_view_around_size(m, d, 3, ortho, W, H, v);
 }
 
 /* One frame of m into frame (W x H RGB888), whole or in bands of `rows`. */
