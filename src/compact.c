@@ -166,11 +166,6 @@ silk_index silk_packed_corner_normal(const silk_mesh *m, uint32_t c)
     return s ? m->nverts + extra_below(m, v) + s - 1 : v;
 }
 
-uint32_t silk_packed_vertex_normals(const silk_mesh *m, silk_index v)
-{
-    return PK(m)->nextra ? 1 + extra_below(m, v + 1) - extra_below(m, v) : 1;
-}
-
 silk_index silk_packed_normal_vertex(const silk_mesh *m, silk_index n)
 {
     return n < m->nverts ? n : field(ARR(m, extra), n - m->nverts, PK(m)->vtx_bits);
@@ -203,11 +198,6 @@ silk_index silk_packed_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k)
     if (o == none_tri(PK(m)) || o > t) return 3 * t + k;   /* the edge is this side */
     silk_index a = silk_packed_corner(m, 3 * t + k), b = silk_packed_corner(m, 3 * t + next3(k));
     return 3 * o + side_of(m, o, a, b);
-}
-
-void silk_packed_tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
-{
-    for (uint32_t k = 0; k < 3; k++) e[k] = silk_packed_tri_edge(m, t, k);
 }
 
 /* LIST: the bit offset of the record of edge e, or UINT32_MAX. */

@@ -346,10 +346,6 @@ static int tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3])
                (e[0] < ne) & (e[1] < ne) & (e[2] < ne);
     }
     if (!silk_sil_tri_ok(m, t)) return 0;
-    if (m->packed.base) {
-        silk_packed_tri_edges(m, t, e);
-        return 1;
-    }
     for (uint32_t k = 0; k < 3; k++) e[k] = silk_mesh_tri_edge(m, t, k);
     return 1;
 }

@@ -199,9 +199,7 @@ silk_edge  silk_packed_edge(const silk_mesh *m, silk_index e);
 uint8_t    silk_packed_edge_flags(const silk_mesh *m, silk_index e);
 void       silk_packed_edge_ends(const silk_mesh *m, silk_index e, silk_index v[2]);
 void       silk_packed_edge_tris(const silk_mesh *m, silk_index e, silk_index t[2]);
-uint32_t   silk_packed_vertex_normals(const silk_mesh *m, silk_index v);   /* how many vertex v has */
 silk_index silk_packed_tri_edge(const silk_mesh *m, uint32_t t, uint32_t k);
-void       silk_packed_tri_edges(const silk_mesh *m, uint32_t t, silk_index e[3]);   /* all three at once */
 
 /* Whether the corners have shading normals (a loaded mesh always has). */
 static inline int silk_mesh_has_corner_normals(const silk_mesh *m)
